@@ -1,0 +1,1 @@
+#include "sfx/status.hpp"

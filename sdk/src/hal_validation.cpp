@@ -1,0 +1,160 @@
+#include "sfx/hal_validation.hpp"
+
+#include <string>
+
+namespace sfx::validation {
+namespace {
+std::string str(uint64_t v) { return std::to_string(v); }
+}  // namespace
+
+Status textureDesc(const TextureDesc& d, const DeviceCaps& caps) {
+    const uint32_t maxSize = caps.limits.maxTextureSize;
+    const std::string range = "[1, " + str(maxSize) + "]";
+    if (d.width == 0 || d.width > maxSize) return invalidArgument("TextureDesc.width", str(d.width), range);
+    if (d.height == 0 || d.height > maxSize) return invalidArgument("TextureDesc.height", str(d.height), range);
+    const uint32_t maxLevels = maxMipLevels(d.width, d.height);
+    if (d.mipLevels == 0 || d.mipLevels > maxLevels)
+        return invalidArgument("TextureDesc.mipLevels", str(d.mipLevels), "[1, " + str(maxLevels) + "] for " +
+                                                                             str(d.width) + "x" + str(d.height));
+    if (d.format == Format::Undefined || uint32_t(d.format) >= uint32_t(Format::Count))
+        return {StatusCode::UnsupportedFormat,
+                "TextureDesc.format is " + std::to_string(uint32_t(d.format)) + ", not a known Format"};
+    const uint32_t known = kTextureSampled | kTextureRenderTarget | kTextureStorage;
+    if (d.usage == 0 || (d.usage & ~known) != 0)
+        return invalidArgument("TextureDesc.usage", str(d.usage), "a non-empty set of TextureUsage bits");
+    if ((d.usage & kTextureSampled) && !caps.sampledFormat[size_t(d.format)])
+        return {StatusCode::UnsupportedFormat,
+                std::string("TextureDesc.format ") + toString(d.format) + " cannot be sampled on this device"};
+    if ((d.usage & kTextureRenderTarget) && !caps.renderableFormat[size_t(d.format)])
+        return {StatusCode::UnsupportedFormat,
+                std::string("TextureDesc.format ") + toString(d.format) + " is not renderable on this device"};
+    if (d.usage & kTextureStorage) {
+        if (!caps.storageImages)
+            return {StatusCode::UnsupportedFeature, "TextureDesc.usage has kTextureStorage; the device has no storage images"};
+        if (isDepthFormat(d.format))
+            return {StatusCode::UnsupportedFormat, std::string("TextureDesc.format ") + toString(d.format) +
+                                                       " cannot be a storage image"};
+    }
+    return Status::ok();
+}
+
+Status bufferDesc(const BufferDesc& d, const DeviceCaps& caps) {
+    if (d.size == 0 || d.size > caps.limits.maxBufferSize)
+        return invalidArgument("BufferDesc.size", str(d.size), "[1, " + str(caps.limits.maxBufferSize) + "]");
+    const uint32_t known = kBufferUniform | kBufferStorage | kBufferVertex | kBufferIndex;
+    if (d.usage == 0 || (d.usage & ~known) != 0)
+        return invalidArgument("BufferDesc.usage", str(d.usage), "a non-empty set of BufferUsage bits");
+    if ((d.usage & kBufferStorage) && !caps.storageBuffers)
+        return {StatusCode::UnsupportedFeature, "BufferDesc.usage has kBufferStorage; the device has no storage buffers" +
+                                                    std::string(caps.ceiling != CapabilityCeiling::None
+                                                                    ? " under its capability ceiling"
+                                                                    : "")};
+    if ((d.usage & kBufferUniform) && d.size > caps.limits.maxUniformBlockSize)
+        return invalidArgument("BufferDesc.size", str(d.size),
+                               "[1, " + str(caps.limits.maxUniformBlockSize) + "] for a uniform buffer");
+    return Status::ok();
+}
+
+Status samplerDesc(const SamplerDesc& d) {
+    if (uint32_t(d.minFilter) > 1) return invalidArgument("SamplerDesc.minFilter", str(uint32_t(d.minFilter)), "Nearest or Linear");
+    if (uint32_t(d.magFilter) > 1) return invalidArgument("SamplerDesc.magFilter", str(uint32_t(d.magFilter)), "Nearest or Linear");
+    if (uint32_t(d.mipFilter) > 1) return invalidArgument("SamplerDesc.mipFilter", str(uint32_t(d.mipFilter)), "Nearest or Linear");
+    if (uint32_t(d.address) > 2)
+        return invalidArgument("SamplerDesc.address", str(uint32_t(d.address)), "ClampToEdge, Repeat or MirroredRepeat");
+    return Status::ok();
+}
+
+Status program(const CompiledProgram& p, const DeviceCaps& caps) {
+    if (p.stages.empty()) return {StatusCode::ShaderError, "program '" + p.name + "' has no stages"};
+    bool hasVertex = false, hasFragment = false, hasCompute = false;
+    for (const StageCode& s : p.stages) {
+        hasVertex |= s.stage == ShaderStage::Vertex;
+        hasFragment |= s.stage == ShaderStage::Fragment;
+        hasCompute |= s.stage == ShaderStage::Compute;
+        if (caps.dialect == ShaderDialect::Spirv) {
+            if (s.spirv.size() < 5 || s.spirv[0] != 0x07230203u)
+                return {StatusCode::ShaderError, "program '" + p.name + "' " + toString(s.stage) +
+                                                     " stage has no valid SPIR-V module (bad magic or empty)"};
+        } else if (s.glsl[size_t(caps.dialect)].empty()) {
+            return {StatusCode::ShaderError, "program '" + p.name + "' " + toString(s.stage) + " stage has no " +
+                                                 toString(caps.dialect) + " source"};
+        }
+    }
+    if (hasCompute && (hasVertex || hasFragment))
+        return {StatusCode::ShaderError, "program '" + p.name + "' mixes compute with graphics stages"};
+    if (!hasCompute && !(hasVertex && hasFragment))
+        return {StatusCode::ShaderError, "program '" + p.name + "' needs a vertex and a fragment stage"};
+    const char* under = caps.ceiling != CapabilityCeiling::None ? " (capability ceiling)" : "";
+    if (hasCompute && !caps.computeShaders)
+        return {StatusCode::UnsupportedFeature, "program '" + p.name + "' is a compute program; the device has no compute shaders" + under};
+    for (const ShaderResource& r : p.resources) {
+        if (r.kind == ResourceKind::StorageBuffer && !caps.storageBuffers)
+            return {StatusCode::UnsupportedFeature, "program '" + p.name + "' uses storage buffer '" + r.name +
+                                                        "'; the device has no storage buffers" + under};
+        if (r.kind == ResourceKind::StorageImage && !caps.storageImages)
+            return {StatusCode::UnsupportedFeature, "program '" + p.name + "' uses storage image '" + r.name +
+                                                        "'; the device has no storage images" + under};
+    }
+    return Status::ok();
+}
+
+Status graphicsPipelineShape(const GraphicsPipelineDesc& d, const DeviceCaps& caps) {
+    if (d.colorFormats.size() > caps.limits.maxColorAttachments)
+        return invalidArgument("GraphicsPipelineDesc.colorFormats.size()", str(d.colorFormats.size()),
+                               "[0, " + str(caps.limits.maxColorAttachments) + "]");
+    for (size_t i = 0; i < d.colorFormats.size(); ++i) {
+        Format f = d.colorFormats[i];
+        if (f == Format::Undefined || uint32_t(f) >= uint32_t(Format::Count) || isDepthFormat(f) ||
+            !caps.renderableFormat[size_t(f)])
+            return {StatusCode::UnsupportedFormat, "GraphicsPipelineDesc.colorFormats[" + str(i) + "] " +
+                                                       (uint32_t(f) < uint32_t(Format::Count) ? toString(f) : "?") +
+                                                       " is not a renderable colour format on this device"};
+    }
+    if (d.depthFormat != Format::Undefined &&
+        (uint32_t(d.depthFormat) >= uint32_t(Format::Count) || !isDepthFormat(d.depthFormat)))
+        return {StatusCode::UnsupportedFormat, "GraphicsPipelineDesc.depthFormat is not a depth format"};
+    if (d.colorFormats.empty() && d.depthFormat == Format::Undefined)
+        return invalidArgument("GraphicsPipelineDesc", "without attachments", "at least one colour or depth format");
+    if ((d.vertexLayout.stride == 0) != d.vertexLayout.attributes.empty())
+        return invalidArgument("GraphicsPipelineDesc.vertexLayout.stride", str(d.vertexLayout.stride),
+                               "> 0 exactly when attributes are given");
+    for (const VertexAttribute& a : d.vertexLayout.attributes) {
+        uint32_t size = a.format == VertexFormat::Float2 ? 8 : a.format == VertexFormat::Float3 ? 12 : 16;
+        if (a.offset + size > d.vertexLayout.stride)
+            return invalidArgument("VertexAttribute.offset", str(a.offset),
+                                   "offset + size <= stride (" + str(d.vertexLayout.stride) + ")");
+    }
+    return Status::ok();
+}
+
+Status mipRange(const TextureDesc& d, uint32_t mip, const char* argument) {
+    if (mip >= d.mipLevels) return invalidArgument(argument, str(mip), "[0, " + str(d.mipLevels - 1) + "]");
+    return Status::ok();
+}
+
+Status textureBytes(const TextureDesc& d, uint32_t mip, size_t bytes, const char* argument) {
+    SFX_TRY(mipRange(d, mip, "mip"));
+    const uint64_t want = mipLevelBytes(d, mip);
+    if (bytes != want)
+        return invalidArgument(argument, str(bytes), str(want) + " (mip " + str(mip) + " of a " + str(d.width) + "x" +
+                                                         str(d.height) + " " + toString(d.format) + " texture)");
+    return Status::ok();
+}
+
+Status bufferRange(const BufferDesc& d, uint64_t offset, uint64_t bytes, const char* argument) {
+    if (bytes == 0 || offset > d.size || bytes > d.size - offset)
+        return invalidArgument(argument, "offset " + str(offset) + " + " + str(bytes) + " bytes",
+                               "a non-empty range inside the buffer's " + str(d.size) + " bytes");
+    return Status::ok();
+}
+
+Status dispatchGroups(const DispatchDesc& d, const DeviceCaps& caps) {
+    if (!caps.computeShaders) return {StatusCode::UnsupportedFeature, "dispatch: the device has no compute shaders"};
+    const uint32_t kMax = 65535;
+    if (d.groupsX == 0 || d.groupsX > kMax) return invalidArgument("DispatchDesc.groupsX", str(d.groupsX), "[1, 65535]");
+    if (d.groupsY == 0 || d.groupsY > kMax) return invalidArgument("DispatchDesc.groupsY", str(d.groupsY), "[1, 65535]");
+    if (d.groupsZ == 0 || d.groupsZ > kMax) return invalidArgument("DispatchDesc.groupsZ", str(d.groupsZ), "[1, 65535]");
+    return Status::ok();
+}
+
+}  // namespace sfx::validation

@@ -1,0 +1,66 @@
+// Constants and sample patterns shared by the GLSL shaders in shader_src/ and the C++ CPU
+// references: both include this one file, so they cannot drift apart.
+//
+// Written in the common subset of GLSL 450 and C++20. Arrays use SFX_ARRAY_* macros, which
+// expand to `const T name[N] = T[N](...)` in GLSL and to a constexpr array in C++.
+#ifndef SFX_SHARED_H
+#define SFX_SHARED_H
+
+#ifdef __cplusplus
+#include <cstdint>
+namespace sfx::shared {
+struct vec2 { float x, y; };
+struct ivec2 { int x, y; };
+#define SFX_CONST(type, name, value) inline constexpr type name = value;
+#define SFX_ARRAY_BEGIN(type, name, count) inline constexpr type name[count] = {
+#define SFX_ARRAY_END };
+#define SFX_VEC2(x, y) vec2{x, y}
+#define SFX_IVEC2(x, y) ivec2{x, y}
+#define SFX_UINT uint32_t
+#else
+#define SFX_CONST(type, name, value) const type name = value;
+#define SFX_ARRAY_BEGIN(type, name, count) const type name[count] = type[count](
+#define SFX_ARRAY_END );
+#define SFX_VEC2(x, y) vec2(x, y)
+#define SFX_IVEC2(x, y) ivec2(x, y)
+#define SFX_UINT uint
+#endif
+
+// ---- Depth -------------------------------------------------------------------------------
+// Linear depth is the positive eye-space distance along the view axis, in scene units.
+// Pixels at or beyond SFX_SKY_DEPTH (the far plane of an infinite projection, or a cleared
+// depth buffer) are sky: effects leave them unoccluded and unblurred.
+SFX_CONST(float, SFX_SKY_DEPTH, 1.0e8)
+
+// The depth MIP pyramid of the high tier holds at most this many levels (level 0 included).
+SFX_CONST(int, SFX_DEPTH_MIP_MAX_LEVELS, 5)
+
+// Rotated-grid subsample (Scalable Ambient Obscurance): texel p of level i+1 takes texel
+// 2p + (p.y & 1, p.x & 1) of level i. Averaging depths would invent surfaces.
+#ifdef __cplusplus
+inline constexpr ivec2 depthMipSource(ivec2 p) { return ivec2{2 * p.x + (p.y & 1), 2 * p.y + (p.x & 1)}; }
+#else
+ivec2 depthMipSource(ivec2 p) { return ivec2(2 * p.x + (p.y & 1), 2 * p.y + (p.x & 1)); }
+#endif
+
+
+// ---- Tier parameters (the design card's tier table; tiers/ selects among them) ------------
+SFX_CONST(int, SFX_AO_SCALABLE_TAPS_CURRENT, 4)      // mirrored: 2 offsets, each also negated
+SFX_CONST(int, SFX_AO_SCALABLE_TAPS_HIGH, 9)         // spiral taps reading the depth MIP
+SFX_CONST(float, SFX_AO_RADIUS_CLAMP_PX_CURRENT, 20.0)
+SFX_CONST(int, SFX_AO_ALCHEMY_SAMPLES_CURRENT, 6)
+SFX_CONST(int, SFX_AO_ALCHEMY_SAMPLES_HIGH, 12)      // the paper's 12 samples per pixel
+SFX_CONST(int, SFX_AO_BLUR_RADIUS_CURRENT, 2)        // 5-tap separable bilateral
+SFX_CONST(int, SFX_AO_BLUR_RADIUS_HIGH, 6)           // 13-tap, as Alchemy's filter
+SFX_CONST(int, SFX_MB_TAPS_CURRENT, 7)               // 6 samples + centre
+SFX_CONST(int, SFX_MB_TAPS_HIGH, 9)                  // 8 samples + centre
+SFX_CONST(float, SFX_MB_MAX_RADIUS_PX_CURRENT, 10.0)
+SFX_CONST(float, SFX_MB_MAX_RADIUS_PX_HIGH, 18.0)
+SFX_CONST(int, SFX_MB_JITTER_SIZE_CURRENT, 2)        // checkerboard
+SFX_CONST(int, SFX_MB_JITTER_SIZE_HIGH, 4)           // 4x4 randomised
+
+#ifdef __cplusplus
+}  // namespace sfx::shared
+#endif
+
+#endif  // SFX_SHARED_H

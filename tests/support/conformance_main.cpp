@@ -1,0 +1,92 @@
+// Entry point of the conformance tests: opens the device named on the command line once,
+// runs the Catch2 session, and fails the run on any validation message.
+#define CATCH_CONFIG_RUNNER
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "test_device.hpp"
+
+namespace sfx::test {
+namespace {
+std::unique_ptr<Device> gDevice;
+BackendConfig gConfig;
+Tier gTier = Tier::High;
+std::vector<std::string> gAllMessages;
+}  // namespace
+
+Device& device() { return *gDevice; }
+const BackendConfig& backendConfig() { return gConfig; }
+Tier tier() { return gTier; }
+const TierProfile& tierProfile() { return tiers::profile(gTier); }
+std::string label() { return toString(gConfig) + "/" + toString(gTier); }
+
+std::vector<std::string> takeValidationMessages() {
+    std::vector<std::string> m = gDevice->takeValidationMessages();
+    gAllMessages.insert(gAllMessages.end(), m.begin(), m.end());
+    return m;
+}
+
+std::string outputDir() {
+    const char* env = std::getenv("SFX_TEST_OUTPUT");
+    std::string dir = env && *env ? env : "test-output";
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+}  // namespace sfx::test
+
+// Exit code CTest reads as "skipped" (SKIP_RETURN_CODE): the backend is absent on this machine.
+constexpr int kSkipped = 77;
+
+int main(int argc, char** argv) {
+    using namespace sfx;
+    Catch::Session session;
+    std::string backendName = "vulkan", tierName = "high";
+    using namespace Catch::clara;
+    auto cli = session.cli() | Opt(backendName, "backend")["--backend"]("vulkan, gles, gl-egl, gl-osmesa, null") |
+               Opt(tierName, "tier")["--tier"]("high, or current (opened under the GL ES 3.0 ceiling)");
+    session.cli(cli);
+    if (int rc = session.applyCommandLine(argc, argv); rc != 0) return rc;
+
+    if (!parseBackendConfig(backendName, &test::gConfig)) {
+        std::cerr << "--backend '" << backendName << "' is unknown; allowed vulkan, gles, gl-egl, gl-osmesa, null\n";
+        return 2;
+    }
+    if (!parseTier(tierName, &test::gTier)) {
+        std::cerr << "--tier '" << tierName << "' is unknown; allowed high, current\n";
+        return 2;
+    }
+    DeviceOptions options;
+    options.validation = true;
+    options.ceiling = test::gTier == Tier::Current ? CapabilityCeiling::GLES30 : CapabilityCeiling::None;
+    Result<std::unique_ptr<Device>> device = openDevice(test::gConfig, options);
+    if (!device) {
+        const bool required = std::getenv("SFX_REQUIRE_ALL_BACKENDS") != nullptr;
+        std::cerr << (required ? "FAILED: " : "SKIPPED: ") << "backend " << backendName
+                  << " could not be opened: " << device.status().toString() << "\n";
+        if (device.status().code() == StatusCode::BackendUnavailable && !required) return kSkipped;
+        return 1;
+    }
+    test::gDevice = std::move(device.value());
+    Result<tiers::TierChoice> choice = tiers::choose(test::gDevice->caps(), test::gTier);
+    std::cout << "device: " << test::gDevice->caps().summary() << "\n";
+    if (!choice) {
+        std::cerr << "FAILED: " << choice.status().toString() << "\n";
+        return 1;
+    }
+    std::cout << "tier: " << choice->reason << "\n";
+
+    int rc = session.run();
+    test::takeValidationMessages();
+    if (!test::gAllMessages.empty()) {
+        std::cerr << "FAILED: " << test::gAllMessages.size() << " validation message(s):\n";
+        for (const auto& m : test::gAllMessages) std::cerr << "  " << m << "\n";
+        rc = rc ? rc : 1;
+    }
+    test::gDevice.reset();
+    return rc;
+}

@@ -1,0 +1,41 @@
+// The device a conformance test run uses, chosen on the command line:
+//   sfx_conformance --backend vulkan|gles|gl-egl|gl-osmesa --tier high|current
+// The current tier runs under the GL ES 3.0 capability ceiling, so it is really tested.
+#pragma once
+
+#include <string>
+
+#include "sfx/backends.hpp"
+#include "sfx/hal.hpp"
+#include "sfx/tiers.hpp"
+
+namespace sfx::test {
+
+Device& device();                  // opened once per process
+const BackendConfig& backendConfig();
+Tier tier();                       // the tier under test
+const TierProfile& tierProfile();
+std::string label();               // "vulkan/high" for messages and file names
+
+// Validation messages (Vulkan layers, GL errors) seen so far; also fails the run at exit.
+std::vector<std::string> takeValidationMessages();
+
+// Where tests write diff images and other artifacts: $SFX_TEST_OUTPUT or build/test-output.
+std::string outputDir();
+
+}  // namespace sfx::test
+
+// Fails the test case if the backend reported validation messages since the last check.
+#define SFX_REQUIRE_NO_VALIDATION_MESSAGES()                                  \
+    do {                                                                      \
+        auto sfx_msgs_ = ::sfx::test::takeValidationMessages();               \
+        for (const auto& m : sfx_msgs_) UNSCOPED_INFO("validation: " << m);   \
+        REQUIRE(sfx_msgs_.empty());                                           \
+    } while (0)
+
+#define SFX_REQUIRE_OK(expr)                                                  \
+    do {                                                                      \
+        ::sfx::Status sfx_st_ = (expr);                                       \
+        INFO(#expr << " -> " << sfx_st_.toString());                          \
+        REQUIRE(sfx_st_.isOk());                                              \
+    } while (0)

@@ -1,0 +1,222 @@
+#include "sfx/image_io.hpp"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <png.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+namespace sfx::io {
+namespace {
+
+std::string extensionOf(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
+Status fileError(const std::string& path, const std::string& what) { return {StatusCode::FileError, path + ": " + what}; }
+
+Status checkImage(const Image& image, const std::string& path) {
+    if (image.width == 0 || image.height == 0 || image.channels == 0 || image.channels > 4 ||
+        image.pixels.size() != size_t(image.width) * image.height * image.channels)
+        return fileError(path, "image to write is malformed (" + std::to_string(image.width) + "x" +
+                                   std::to_string(image.height) + "x" + std::to_string(image.channels) + ", " +
+                                   std::to_string(image.pixels.size()) + " values)");
+    return Status::ok();
+}
+
+// ---- PNG ------------------------------------------------------------------------------------
+Result<Image> readPng(const std::string& path) {
+    png_image png;
+    std::memset(&png, 0, sizeof png);
+    png.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&png, path.c_str()))
+        return fileError(path, std::string("not a readable PNG: ") + png.message);
+    const uint32_t channels = PNG_IMAGE_SAMPLE_CHANNELS(png.format);
+    png.format = channels == 1 ? PNG_FORMAT_GRAY : channels == 2 ? PNG_FORMAT_GA : channels == 3 ? PNG_FORMAT_RGB : PNG_FORMAT_RGBA;
+    std::vector<uint8_t> bytes(PNG_IMAGE_SIZE(png));
+    if (!png_image_finish_read(&png, nullptr, bytes.data(), 0, nullptr)) {
+        png_image_free(&png);
+        return fileError(path, std::string("corrupt PNG: ") + png.message);
+    }
+    Image image(png.width, png.height, channels);
+    for (size_t i = 0; i < bytes.size(); ++i) image.pixels[i] = bytes[i] / 255.0f;
+    return image;
+}
+
+Status writePngFile(const std::string& path, const Image& image) {
+    png_image png;
+    std::memset(&png, 0, sizeof png);
+    png.version = PNG_IMAGE_VERSION;
+    png.width = image.width;
+    png.height = image.height;
+    png.format = image.channels == 1 ? PNG_FORMAT_GRAY
+                 : image.channels == 2 ? PNG_FORMAT_GA
+                 : image.channels == 3 ? PNG_FORMAT_RGB
+                                       : PNG_FORMAT_RGBA;
+    std::vector<uint8_t> bytes(image.pixels.size());
+    for (size_t i = 0; i < bytes.size(); ++i) {
+        float v = image.pixels[i];
+        v = std::isnan(v) ? 0.0f : std::clamp(v, 0.0f, 1.0f);
+        bytes[i] = uint8_t(std::lround(v * 255.0f));
+    }
+    if (!png_image_write_to_file(&png, path.c_str(), 0, bytes.data(), 0, nullptr))
+        return fileError(path, std::string("cannot write PNG: ") + png.message);
+    return Status::ok();
+}
+
+// ---- PFM ------------------------------------------------------------------------------------
+// Header: "PF" (RGB) or "Pf" (grey), "width height", scale (negative: little endian); then
+// float rows from the bottom of the picture to the top.
+Result<Image> readPfm(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return fileError(path, "cannot open for reading");
+    std::string magic;
+    long long w = 0, h = 0;
+    double scale = 0;
+    in >> magic >> w >> h >> scale;
+    if (!in || (magic != "PF" && magic != "Pf"))
+        return fileError(path, "not a PFM file (expected 'PF' or 'Pf', width, height and scale)");
+    if (w <= 0 || h <= 0 || w > 65536 || h > 65536)
+        return fileError(path, "PFM size " + std::to_string(w) + "x" + std::to_string(h) + " is outside 1..65536");
+    if (scale == 0 || !std::isfinite(scale)) return fileError(path, "PFM scale must be a non-zero number");
+    in.get();  // the single whitespace character after the scale
+    const uint32_t channels = magic == "PF" ? 3 : 1;
+    Image image(uint32_t(w), uint32_t(h), channels);
+    const size_t rowValues = size_t(w) * channels;
+    std::vector<uint8_t> row(rowValues * 4);
+    const bool littleEndian = scale < 0;
+    for (uint32_t r = 0; r < image.height; ++r) {
+        if (!in.read(reinterpret_cast<char*>(row.data()), std::streamsize(row.size())))
+            return fileError(path, "PFM data ends early at row " + std::to_string(r) + " of " + std::to_string(h));
+        float* dst = &image.pixels[size_t(image.height - 1 - r) * rowValues];
+        for (size_t i = 0; i < rowValues; ++i) {
+            uint8_t b[4];
+            std::memcpy(b, &row[i * 4], 4);
+            if (!littleEndian) std::swap(b[0], b[3]), std::swap(b[1], b[2]);
+            std::memcpy(&dst[i], b, 4);
+        }
+    }
+    return image;
+}
+
+Status writePfmFile(const std::string& path, const Image& image) {
+    const uint32_t outChannels = image.channels == 1 ? 1 : 3;
+    std::ofstream out(path, std::ios::binary);
+    if (!out) return fileError(path, "cannot open for writing");
+    out << (outChannels == 3 ? "PF" : "Pf") << "\n" << image.width << " " << image.height << "\n-1.0\n";
+    std::vector<float> row(size_t(image.width) * outChannels);
+    for (uint32_t r = 0; r < image.height; ++r) {
+        const uint32_t y = image.height - 1 - r;
+        for (uint32_t x = 0; x < image.width; ++x)
+            for (uint32_t c = 0; c < outChannels; ++c)
+                row[size_t(x) * outChannels + c] = c < image.channels ? image.at(x, y, c) : 0.0f;
+        out.write(reinterpret_cast<const char*>(row.data()), std::streamsize(row.size() * 4));
+    }
+    if (!out) return fileError(path, "write failed");
+    return Status::ok();
+}
+
+// ---- EXR ------------------------------------------------------------------------------------
+Result<Image> readExr(const std::string& path) {
+    try {
+        Imf::InputFile file(path.c_str());
+        const Imath::Box2i dw = file.header().dataWindow();
+        const int w = dw.max.x - dw.min.x + 1, h = dw.max.y - dw.min.y + 1;
+        if (w <= 0 || h <= 0) return fileError(path, "EXR has an empty data window");
+        std::vector<std::string> names;
+        for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) names.push_back(it.name());
+        // Conventional orders first; otherwise the channels in the file's (alphabetical) order.
+        std::vector<std::string> order;
+        auto has = [&](const char* n) { return std::find(names.begin(), names.end(), n) != names.end(); };
+        if (has("R") && has("G") && has("B")) order = has("A") ? std::vector<std::string>{"R", "G", "B", "A"} : std::vector<std::string>{"R", "G", "B"};
+        else if (has("R") && has("G")) order = {"R", "G"};
+        else if (has("Y")) order = {"Y"};
+        else order = names;
+        if (order.empty() || order.size() > 4)
+            return fileError(path, "EXR has " + std::to_string(order.size()) + " channels; 1 to 4 are supported");
+        Image image(uint32_t(w), uint32_t(h), uint32_t(order.size()));
+        Imf::FrameBuffer fb;
+        const size_t xStride = sizeof(float) * image.channels, yStride = xStride * size_t(w);
+        for (size_t c = 0; c < order.size(); ++c) {
+            char* base = reinterpret_cast<char*>(image.pixels.data() + c) - (dw.min.x * xStride) - (dw.min.y * yStride);
+            fb.insert(order[c].c_str(), Imf::Slice(Imf::FLOAT, base, xStride, yStride, 1, 1, 0.0));
+        }
+        file.setFrameBuffer(fb);
+        file.readPixels(dw.min.y, dw.max.y);
+        return image;
+    } catch (const std::exception& e) {
+        return fileError(path, std::string("not a readable EXR: ") + e.what());
+    }
+}
+
+Status writeExrFile(const std::string& path, const Image& image) {
+    try {
+        static const char* kNames[4][4] = {{"Y"}, {"R", "G"}, {"R", "G", "B"}, {"R", "G", "B", "A"}};
+        Imf::Header header(int(image.width), int(image.height));
+        for (uint32_t c = 0; c < image.channels; ++c) header.channels().insert(kNames[image.channels - 1][c], Imf::Channel(Imf::FLOAT));
+        Imf::OutputFile file(path.c_str(), header);
+        Imf::FrameBuffer fb;
+        const size_t xStride = sizeof(float) * image.channels, yStride = xStride * image.width;
+        for (uint32_t c = 0; c < image.channels; ++c)
+            fb.insert(kNames[image.channels - 1][c],
+                      Imf::Slice(Imf::FLOAT, (char*)(image.pixels.data() + c), xStride, yStride));
+        file.setFrameBuffer(fb);
+        file.writePixels(int(image.height));
+        return Status::ok();
+    } catch (const std::exception& e) {
+        return fileError(path, std::string("cannot write EXR: ") + e.what());
+    }
+}
+
+}  // namespace
+
+Result<Image> readImage(const std::string& path) {
+    if (!std::filesystem::exists(path)) return fileError(path, "no such file");
+    const std::string ext = extensionOf(path);
+    if (ext == ".png") return readPng(path);
+    if (ext == ".pfm") return readPfm(path);
+    if (ext == ".exr") return readExr(path);
+    return fileError(path, "unknown image extension '" + ext + "'; allowed .png, .pfm, .exr");
+}
+
+Status writePng(const std::string& path, const Image& image) {
+    SFX_TRY(checkImage(image, path));
+    return writePngFile(path, image);
+}
+Status writePfm(const std::string& path, const Image& image) {
+    SFX_TRY(checkImage(image, path));
+    return writePfmFile(path, image);
+}
+Status writeExr(const std::string& path, const Image& image) {
+    SFX_TRY(checkImage(image, path));
+    return writeExrFile(path, image);
+}
+
+Status writeImage(const std::string& path, const Image& image) {
+    const std::string ext = extensionOf(path);
+    if (ext == ".png") return writePng(path, image);
+    if (ext == ".pfm") return writePfm(path, image);
+    if (ext == ".exr") return writeExr(path, image);
+    return fileError(path, "unknown image extension '" + ext + "'; allowed .png, .pfm, .exr");
+}
+
+Image normalized(const Image& image, float lo, float hi) {
+    Image out = image;
+    const float scale = hi > lo ? 1.0f / (hi - lo) : 0.0f;
+    for (float& v : out.pixels) v = (v - lo) * scale;
+    return out;
+}
+
+}  // namespace sfx::io

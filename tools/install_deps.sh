@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs ScalableFX's build and test dependencies from Debian's packages.
+# Idempotent: when every package is present it installs nothing and touches no network.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake pkg-config
+  libglm-dev                      # math
+  glslang-dev glslang-tools       # GLSL -> SPIR-V (C++ API used by tools/sfxc)
+  spirv-tools                     # SPIR-V validation
+  libspirv-cross-c-shared-dev     # SPIR-V -> ESSL/GLSL + reflection (static C++ libs)
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers  # loader, lavapipe, validation
+  libegl-dev libgles-dev libgl-dev libosmesa6-dev libegl-mesa0 libgl1-mesa-dri  # EGL, GLES, GL, OSMesa
+  catch2                          # unit tests (v2)
+  libpng-dev libopenexr-dev       # PNG and EXR image files
+  libcli11-dev                    # CLI parsing for sfx and sfxc
+  libtinyobjloader-dev glmark2-data  # OBJ loading, the Stanford bunny
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install_deps: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+
+echo "install_deps: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+echo "install_deps: done"
