@@ -12,14 +12,18 @@ layout(set = 0, binding = 1, std140) uniform LinearizeParams {
     float denomOffset;  // ndcOffset + A
     float numerator;    // B
     float maxDepth;     // far plane, or SFX_SKY_DEPTH for an infinite projection
+    float linearInput;  // 1: the source already holds linear depth; only the clamp applies
 } params;
 
 layout(location = 0) out float outLinearDepth;
 
 void main() {
     float d = texelFetch(uHardwareDepth, ivec2(gl_FragCoord.xy), 0).r;
-    float denom = d * params.ndcScale + params.denomOffset;
-    float z = params.numerator / denom;
+    float z = d;
+    if (params.linearInput == 0.0) {
+        float denom = d * params.ndcScale + params.denomOffset;
+        z = params.numerator / denom;
+    }
     // A non-positive or overflowing quotient is a point at or beyond the far plane.
     bool beyond = !(z > 0.0) || !(z < params.maxDepth);
     outLinearDepth = beyond ? params.maxDepth : z;

@@ -44,6 +44,23 @@ ivec2 depthMipSource(ivec2 p) { return ivec2(2 * p.x + (p.y & 1), 2 * p.y + (p.x
 #endif
 
 
+// ---- Position reconstruction -------------------------------------------------------------
+// From a pixel centre (px + 0.5, py + 0.5), in memory rows (row 0 = NDC y -1 on every API),
+// and linear depth z > 0, the view-space position (x right, y up, camera looking down -z):
+//     x = z * (pc.x * projInfo.x + projInfo.z),  y = z * (pc.y * projInfo.y + projInfo.w),  -z
+// with projInfo = (2 / (W * P00), 2 / (H * P11), (P20 - 1) / P00, (P21 - 1) / P11) from the
+// column-major projection P (P20 = P[2][0]). Off-centre (jittered) projections work too.
+#ifdef __cplusplus
+struct dvec3 { double x, y, z; };
+inline dvec3 reconstructViewPosition(double pcx, double pcy, double z, const double projInfo[4]) {
+    return dvec3{z * (pcx * projInfo[0] + projInfo[2]), z * (pcy * projInfo[1] + projInfo[3]), -z};
+}
+#else
+vec3 reconstructViewPosition(vec2 pixelCentre, float z, vec4 projInfo) {
+    return vec3(z * (pixelCentre * projInfo.xy + projInfo.zw), -z);
+}
+#endif
+
 // ---- Tier parameters (the design card's tier table; tiers/ selects among them) ------------
 SFX_CONST(int, SFX_AO_SCALABLE_TAPS_CURRENT, 4)      // mirrored: 2 offsets, each also negated
 SFX_CONST(int, SFX_AO_SCALABLE_TAPS_HIGH, 9)         // spiral taps reading the depth MIP

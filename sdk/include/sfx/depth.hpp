@@ -1,0 +1,69 @@
+// Depth linearisation and the depth MIP pyramid: the first passes every effect builds on.
+// Shape shared by every effect: create / dispatch / resize / destroy (RAII), a description
+// struct, status returns, and a plan of the passes and bytes it holds.
+#pragma once
+
+#include <memory>
+
+#include "sfx/camera.hpp"
+#include "sfx/hal.hpp"
+#include "sfx/plan.hpp"
+#include "sfx/tier.hpp"
+
+namespace sfx {
+
+enum class DepthKind : uint32_t {
+    Hardware,  // the depth buffer as rendered (D16, D24S8, D32F), mapped by the camera's projection
+    Linear,    // already positive eye-space distance along the view axis, R32F
+};
+
+// Where an effect reads the scene's depth.
+struct DepthSource {
+    TextureHandle texture;
+    DepthKind kind = DepthKind::Hardware;
+    CameraProjection camera;
+};
+
+struct LinearDepthDesc {
+    uint32_t width = 0;      // [1, caps.limits.maxTextureSize]
+    uint32_t height = 0;
+    Tier tier = Tier::Current;
+    // Levels of the rotated-grid depth pyramid, level 0 included: 1 = linear depth only (the
+    // current tier never needs more); [1, SFX_DEPTH_MIP_MAX_LEVELS] and at most what the size allows.
+    uint32_t mipLevels = 1;
+};
+
+// Owns an R32F texture of linear depth (and its MIP pyramid when mipLevels > 1).
+class LinearDepth {
+public:
+    static Result<std::unique_ptr<LinearDepth>> create(Device& device, const LinearDepthDesc& desc);
+    ~LinearDepth();
+    LinearDepth(const LinearDepth&) = delete;
+    LinearDepth& operator=(const LinearDepth&) = delete;
+
+    // Records linearisation (or a copy for linear input) and the pyramid levels.
+    // The source must match the size given at creation.
+    Status dispatch(const DepthSource& source);
+    Status resize(uint32_t width, uint32_t height);
+
+    TextureHandle texture() const { return texture_; }  // R32F, mipLevels levels
+    const LinearDepthDesc& desc() const { return desc_; }
+    // Reconstruction constants of the last dispatched camera (valid after dispatch).
+    const DepthReconstruction& reconstruction() const { return reconstruction_; }
+    Plan plan() const;
+
+private:
+    LinearDepth(Device& device, const LinearDepthDesc& desc);
+    Status allocate();
+    void release();
+
+    Device& device_;
+    LinearDepthDesc desc_;
+    TextureHandle texture_;
+    BufferHandle params_;
+    ProgramHandle linearizeProgram_, mipProgram_;
+    PipelineHandle linearizePipeline_, mipPipeline_;
+    DepthReconstruction reconstruction_;
+};
+
+}  // namespace sfx

@@ -1,0 +1,178 @@
+#include "sfx/depth.hpp"
+
+#include <string>
+
+#include "sfx_shaders.hpp"
+#include "sfx_shared.h"
+
+namespace sfx {
+namespace {
+
+// Mirrors LinearizeParams in shader_src/linearize_depth.frag (std140).
+struct LinearizeParams {
+    float ndcScale;
+    float denomOffset;
+    float numerator;
+    float maxDepth;
+    float linearInput;
+    float pad[3];
+};
+static_assert(sizeof(LinearizeParams) == 32);
+
+bool isHardwareDepthFormat(Format f) {
+    return f == Format::D16 || f == Format::D24S8 || f == Format::D32F || f == Format::R32F;
+}
+
+Result<ProgramHandle> loadProgram(Device& device, const char* name, Tier tier) {
+    Result<const CompiledProgram*> program = shaders::find(name, tier);
+    if (!program) return program.status();
+    return device.createProgram(*program.value());
+}
+
+}  // namespace
+
+Result<std::unique_ptr<LinearDepth>> LinearDepth::create(Device& device, const LinearDepthDesc& desc) {
+    if (uint32_t(desc.tier) >= kTierCount) return invalidArgument("LinearDepthDesc.tier", std::to_string(uint32_t(desc.tier)), "Current or High");
+    const uint32_t maxLevels = uint32_t(shared::SFX_DEPTH_MIP_MAX_LEVELS);
+    if (desc.mipLevels == 0 || desc.mipLevels > maxLevels)
+        return invalidArgument("LinearDepthDesc.mipLevels", std::to_string(desc.mipLevels), "[1, " + std::to_string(maxLevels) + "]");
+    if (desc.tier == Tier::Current && desc.mipLevels > 1)
+        return invalidArgument("LinearDepthDesc.mipLevels", std::to_string(desc.mipLevels),
+                               "1 on the current tier (the depth MIP pyramid is a high-tier pass)");
+    std::unique_ptr<LinearDepth> depth(new LinearDepth(device, desc));
+    SFX_TRY(depth->allocate());
+    return depth;
+}
+
+LinearDepth::LinearDepth(Device& device, const LinearDepthDesc& desc) : device_(device), desc_(desc) {}
+
+LinearDepth::~LinearDepth() { release(); }
+
+Status LinearDepth::allocate() {
+    const uint32_t allowed = maxMipLevels(std::max(desc_.width, 1u), std::max(desc_.height, 1u));
+    if (desc_.width > 0 && desc_.height > 0 && desc_.mipLevels > allowed)
+        return invalidArgument("LinearDepthDesc.mipLevels", std::to_string(desc_.mipLevels),
+                               "[1, " + std::to_string(allowed) + "] for " + std::to_string(desc_.width) + "x" +
+                                   std::to_string(desc_.height));
+    TextureDesc td{desc_.width, desc_.height, desc_.mipLevels, Format::R32F, kTextureSampled | kTextureRenderTarget,
+                   "sfx-linear-depth"};
+    Result<TextureHandle> tex = device_.createTexture(td);
+    if (!tex) return tex.status();
+    texture_ = tex.value();
+    Result<BufferHandle> params = device_.createBuffer({sizeof(LinearizeParams), kBufferUniform, "sfx-linearize-params"});
+    if (!params) return params.status();
+    params_ = params.value();
+
+    Result<ProgramHandle> lin = loadProgram(device_, gen::linearize_depth::kName, desc_.tier);
+    if (!lin) return lin.status();
+    linearizeProgram_ = lin.value();
+    GraphicsPipelineDesc pd;
+    pd.program = linearizeProgram_;
+    pd.colorFormats = {Format::R32F};
+    pd.debugName = "sfx-linearize-depth";
+    Result<PipelineHandle> lp = device_.createGraphicsPipeline(pd);
+    if (!lp) return lp.status();
+    linearizePipeline_ = lp.value();
+
+    if (desc_.mipLevels > 1) {
+        Result<ProgramHandle> mip = loadProgram(device_, gen::depth_mip::kName, desc_.tier);
+        if (!mip) return mip.status();
+        mipProgram_ = mip.value();
+        pd.program = mipProgram_;
+        pd.debugName = "sfx-depth-mip";
+        Result<PipelineHandle> mp = device_.createGraphicsPipeline(pd);
+        if (!mp) return mp.status();
+        mipPipeline_ = mp.value();
+    }
+    return Status::ok();
+}
+
+void LinearDepth::release() {
+    // Destroy calls on null handles report InvalidHandle; there is nothing to release then.
+    if (!mipPipeline_.isNull()) (void)device_.destroyPipeline(mipPipeline_);
+    if (!linearizePipeline_.isNull()) (void)device_.destroyPipeline(linearizePipeline_);
+    if (!mipProgram_.isNull()) (void)device_.destroyProgram(mipProgram_);
+    if (!linearizeProgram_.isNull()) (void)device_.destroyProgram(linearizeProgram_);
+    if (!params_.isNull()) (void)device_.destroyBuffer(params_);
+    if (!texture_.isNull()) (void)device_.destroyTexture(texture_);
+    mipPipeline_ = {};
+    linearizePipeline_ = {};
+    mipProgram_ = {};
+    linearizeProgram_ = {};
+    params_ = {};
+    texture_ = {};
+}
+
+Status LinearDepth::resize(uint32_t width, uint32_t height) {
+    const uint32_t maxSize = device_.caps().limits.maxTextureSize;
+    if (width == 0 || width > maxSize) return invalidArgument("width", std::to_string(width), "[1, " + std::to_string(maxSize) + "]");
+    if (height == 0 || height > maxSize) return invalidArgument("height", std::to_string(height), "[1, " + std::to_string(maxSize) + "]");
+    if (width == desc_.width && height == desc_.height) return Status::ok();
+    release();
+    desc_.width = width;
+    desc_.height = height;
+    return allocate();
+}
+
+Status LinearDepth::dispatch(const DepthSource& source) {
+    if (texture_.isNull()) return {StatusCode::InvalidHandle, "LinearDepth: resources were not created (failed resize?)"};
+    Result<TextureDesc> src = device_.textureDesc(source.texture);
+    if (!src) return Status{src.status().code(), "DepthSource.texture: " + src.status().message()};
+    if (src->width != desc_.width || src->height != desc_.height)
+        return invalidArgument("DepthSource.texture size", std::to_string(src->width) + "x" + std::to_string(src->height),
+                               std::to_string(desc_.width) + "x" + std::to_string(desc_.height) + " (the LinearDepth size)");
+    if (source.kind == DepthKind::Hardware && !isHardwareDepthFormat(src->format))
+        return {StatusCode::UnsupportedFormat, std::string("DepthSource.texture format ") + toString(src->format) +
+                                                   " is not hardware depth; allowed D16, D24S8, D32F, R32F"};
+    if (source.kind == DepthKind::Linear && src->format != Format::R32F)
+        return {StatusCode::UnsupportedFormat,
+                std::string("DepthSource.texture format ") + toString(src->format) + " is not linear depth; allowed R32F"};
+    if (uint32_t(source.kind) > 1) return invalidArgument("DepthSource.kind", std::to_string(uint32_t(source.kind)), "Hardware or Linear");
+    if (!(src->usage & kTextureSampled)) return invalidArgument("DepthSource.texture usage", "without kTextureSampled", "a sampled texture");
+
+    Result<DepthReconstruction> rec = makeDepthReconstruction(source.camera, desc_.width, desc_.height);
+    if (!rec) return rec.status();
+    reconstruction_ = rec.value();
+
+    LinearizeParams p{};
+    p.ndcScale = float(reconstruction_.ndcScale);
+    p.denomOffset = float(reconstruction_.denomOffset);
+    p.numerator = float(reconstruction_.numerator);
+    p.maxDepth = float(reconstruction_.maxDepth);
+    p.linearInput = source.kind == DepthKind::Linear ? 1.0f : 0.0f;
+    SFX_TRY(device_.writeBuffer(params_, 0, &p, sizeof p));
+
+    RenderPassDesc pass;
+    pass.colors = {ColorAttachment{texture_, 0, LoadOp::DontCare, {}}};
+    pass.debugName = "sfx-linearize-depth";
+    DrawDesc draw;
+    draw.pipeline = linearizePipeline_;
+    draw.bindings.textures = {TextureBinding{gen::linearize_depth::uHardwareDepth, source.texture, 0, 1, {}}};
+    draw.bindings.uniformBuffers = {BufferBinding{gen::linearize_depth::LinearizeParams, params_, 0, 0}};
+    SFX_TRY(device_.renderPass(pass, std::span<const DrawDesc>(&draw, 1)));
+
+    for (uint32_t level = 1; level < desc_.mipLevels; ++level) {
+        RenderPassDesc mipPass;
+        mipPass.colors = {ColorAttachment{texture_, level, LoadOp::DontCare, {}}};
+        mipPass.debugName = "sfx-depth-mip";
+        DrawDesc mipDraw;
+        mipDraw.pipeline = mipPipeline_;
+        mipDraw.bindings.textures = {TextureBinding{gen::depth_mip::uPreviousLevel, texture_, level - 1, 1, {}}};
+        SFX_TRY(device_.renderPass(mipPass, std::span<const DrawDesc>(&mipDraw, 1)));
+    }
+    return Status::ok();
+}
+
+Plan LinearDepth::plan() const {
+    Plan plan;
+    plan.passes.push_back({"depth", "linearize", desc_.width, desc_.height});
+    for (uint32_t level = 1; level < desc_.mipLevels; ++level)
+        plan.passes.push_back({"depth", "depth_mip " + std::to_string(level), mipExtent(desc_.width, level),
+                               mipExtent(desc_.height, level)});
+    TextureDesc td{desc_.width, desc_.height, desc_.mipLevels, Format::R32F, kTextureSampled | kTextureRenderTarget};
+    plan.resources.push_back(plannedTexture("depth", desc_.mipLevels > 1 ? "linear depth + MIP pyramid" : "linear depth", td));
+    plan.resources.push_back({"depth", "linearize params", Format::Undefined, 0, 0, 1, sizeof(LinearizeParams)});
+    return plan;
+}
+
+}  // namespace sfx

@@ -1,0 +1,127 @@
+#include "cli_common.hpp"
+
+#include <cmath>
+#include <iostream>
+#include <limits>
+
+namespace sfx::cli {
+
+void DeviceFlags::add(CLI::App& app) {
+    app.add_option("--backend", backend, "auto | vulkan | gles | gl | gl-egl | gl-osmesa")->capture_default_str();
+    app.add_option("--tier", tier, "auto | current | high (current runs under the GL ES 3.0 ceiling)")
+        ->capture_default_str();
+}
+
+Result<OpenedDevice> openDevice(const DeviceFlags& flags) {
+    std::optional<Tier> tier;
+    if (flags.tier != "auto") {
+        Tier t;
+        if (!parseTier(flags.tier, &t))
+            return invalidArgument("--tier", "'" + flags.tier + "'", "auto, current or high");
+        tier = t;
+    }
+    DeviceOptions options;
+    options.validation = false;
+    options.ceiling = tier == Tier::Current ? CapabilityCeiling::GLES30 : CapabilityCeiling::None;
+    OpenedDevice out;
+    if (flags.backend == "auto") {
+        Result<DeviceSelection> sel = openBestDevice(options);
+        if (!sel) return sel.status();
+        out.device = std::move(sel->device);
+        out.config = sel->config;
+    } else {
+        if (!parseBackendConfig(flags.backend, &out.config) || out.config.backend == BackendKind::Null)
+            return invalidArgument("--backend", "'" + flags.backend + "'", "auto, vulkan, gles, gl, gl-egl or gl-osmesa");
+        Result<std::unique_ptr<Device>> dev = sfx::openDevice(out.config, options);
+        if (!dev) return dev.status();
+        out.device = std::move(dev.value());
+    }
+    Result<tiers::TierChoice> choice = tiers::choose(out.device->caps(), tier);
+    if (!choice) return choice.status();
+    out.tier = choice.value();
+    return out;
+}
+
+void CameraFlags::add(CLI::App& app) {
+    app.add_option("--depth", depthPath,
+                   "depth file (PFM, EXR or PNG; first channel; row order as the format defines)")
+        ->required();
+    app.add_option("--depth-kind", depthKind,
+                   "linear: positive eye-space distance along the view axis, in scene units;\n"
+                   "hardware: the stored depth-buffer value in [0,1], mapped by the projection below")
+        ->capture_default_str();
+    app.add_option("--fov-y", fovYDegrees, "vertical field of view in degrees, (0, 180)")->capture_default_str();
+    app.add_option("--near", nearPlane, "near plane distance, > 0")->capture_default_str();
+    app.add_option("--far", farPlane, "far plane distance, > near; 'inf' for an infinite far plane")
+        ->capture_default_str();
+    app.add_option("--clip-depth", clipDepth, "hardware depth convention: 0,1 (Vulkan/D3D) or -1,1 (GL default)")
+        ->capture_default_str();
+    app.add_flag("--reversed-z", reversedZ, "hardware depth is reversed (near = 1, far = 0)");
+}
+
+Result<io::Image> loadMatching(const std::string& path, uint32_t width, uint32_t height, const char* what) {
+    Result<io::Image> image = io::readImage(path);
+    if (!image) return image.status();
+    if (image->width != width || image->height != height)
+        return Status{StatusCode::InvalidArgument, std::string(what) + " " + path + " is " + std::to_string(image->width) +
+                                                       "x" + std::to_string(image->height) + "; the depth is " +
+                                                       std::to_string(width) + "x" + std::to_string(height)};
+    return image;
+}
+
+Result<LoadedDepth> loadDepth(Device& device, const CameraFlags& f) {
+    if (f.depthKind != "linear" && f.depthKind != "hardware")
+        return invalidArgument("--depth-kind", "'" + f.depthKind + "'", "linear or hardware");
+    if (!(f.fovYDegrees > 0 && f.fovYDegrees < 180))
+        return invalidArgument("--fov-y", std::to_string(f.fovYDegrees), "(0, 180) degrees");
+    if (!(f.nearPlane > 0) || !std::isfinite(f.nearPlane))
+        return invalidArgument("--near", std::to_string(f.nearPlane), "a finite distance > 0");
+    if (!(f.farPlane > f.nearPlane))
+        return invalidArgument("--far", std::to_string(f.farPlane), "> --near (" + std::to_string(f.nearPlane) + "), or inf");
+    if (f.clipDepth != "0,1" && f.clipDepth != "-1,1")
+        return invalidArgument("--clip-depth", "'" + f.clipDepth + "'", "0,1 or -1,1");
+
+    LoadedDepth out;
+    Result<io::Image> image = io::readImage(f.depthPath);
+    if (!image) return image.status();
+    out.image = io::Image(image->width, image->height, 1);
+    const bool hardware = f.depthKind == "hardware";
+    for (uint32_t y = 0; y < image->height; ++y) {
+        for (uint32_t x = 0; x < image->width; ++x) {
+            const float v = image->at(x, y, 0);
+            const bool ok = hardware ? (v >= 0.0f && v <= 1.0f) : (std::isfinite(v) && v > 0.0f);
+            if (!ok)
+                return Status{StatusCode::InvalidArgument,
+                              "--depth " + f.depthPath + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                                  ") is " + std::to_string(v) + "; " +
+                                  (hardware ? "hardware depth must lie in [0, 1]" : "linear depth must be finite and > 0")};
+            out.image.at(x, y) = v;
+        }
+    }
+    PerspectiveDesc p;
+    p.fovYRadians = f.fovYDegrees * 3.14159265358979323846 / 180.0;
+    p.aspect = double(image->width) / double(image->height);
+    p.nearPlane = f.nearPlane;
+    p.farPlane = f.farPlane;
+    p.reversedZ = f.reversedZ;
+    p.clipDepth = f.clipDepth == "0,1" ? ClipDepthRange::ZeroToOne : ClipDepthRange::MinusOneToOne;
+    p.rowZeroIsTop = true;  // image files put row 0 at the top; so does the upload below
+    Result<CameraProjection> camera = makePerspective(p);
+    if (!camera) return camera.status();
+
+    TextureDesc desc{image->width, image->height, 1, Format::R32F, kTextureSampled, "sfx-cli-depth"};
+    Result<TextureHandle> tex = device.createTexture(desc);
+    if (!tex) return tex.status();
+    SFX_TRY(device.writeTexture(tex.value(), 0, out.image.pixels.data(), out.image.pixels.size() * sizeof(float)));
+    out.source.texture = tex.value();
+    out.source.kind = hardware ? DepthKind::Hardware : DepthKind::Linear;
+    out.source.camera = camera.value();
+    return out;
+}
+
+int fail(const std::string& command, const Status& status) {
+    std::cerr << "sfx " << command << ": error: " << status.toString() << "\n";
+    return 1;
+}
+
+}  // namespace sfx::cli

@@ -1,0 +1,60 @@
+// Pieces every `sfx` subcommand shares: opening the device a user asked for, reading the
+// G-buffer files into textures, building the camera from --fov-y/--near/--far.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "sfx/backends.hpp"
+#include "sfx/camera.hpp"
+#include "sfx/depth.hpp"
+#include "sfx/image_io.hpp"
+#include "sfx/tiers.hpp"
+
+namespace sfx::cli {
+
+// --backend auto|vulkan|gles|gl|gl-egl|gl-osmesa and --tier auto|current|high.
+struct DeviceFlags {
+    std::string backend = "auto";
+    std::string tier = "auto";
+    void add(CLI::App& app);
+};
+
+struct OpenedDevice {
+    std::unique_ptr<Device> device;
+    BackendConfig config;
+    tiers::TierChoice tier;
+};
+// Forcing "current" opens the device under the GL ES 3.0 ceiling, as a phone would run it.
+Result<OpenedDevice> openDevice(const DeviceFlags& flags);
+
+// --depth FILE --depth-kind linear|hardware --fov-y --near --far [--clip-depth 0,1|-1,1] [--reversed-z]
+struct CameraFlags {
+    std::string depthPath;
+    std::string depthKind = "linear";
+    double fovYDegrees = 60.0;
+    double nearPlane = 0.1;
+    double farPlane = 100.0;  // "inf" accepted
+    std::string clipDepth = "0,1";
+    bool reversedZ = false;
+    void add(CLI::App& app);
+};
+
+struct LoadedDepth {
+    io::Image image;   // as read, one channel, row 0 = top
+    DepthSource source;  // texture uploaded to the device (R32F), with the camera
+};
+// Reads the depth file (PFM/EXR/PNG; first channel), validates flags and values (finite,
+// hardware depth in [0,1], linear depth > 0), uploads it and builds the camera.
+Result<LoadedDepth> loadDepth(Device& device, const CameraFlags& flags);
+
+// Reads an image and checks it matches width x height; `what` names the flag in errors.
+Result<io::Image> loadMatching(const std::string& path, uint32_t width, uint32_t height, const char* what);
+
+// Prints "sfx <command>: error: <message>" to stderr and returns the process exit code 1.
+int fail(const std::string& command, const Status& status);
+
+}  // namespace sfx::cli
