@@ -1895,19 +1895,26 @@ Status VulkanDevice::setHostCommandBuffer(VkCommandBuffer cb) {
     return Status::ok();
 }
 
+// A failed open explains itself with what the loader and layers said on the way.
+Status withMessages(const Status& s, VulkanDevice& device) {
+    std::string text = s.message();
+    for (const std::string& m : device.takeValidationMessages()) text += "; " + m;
+    return {s.code(), text};
+}
+
 }  // namespace
 
 Result<std::unique_ptr<Device>> createDevice(const DeviceOptions& options) {
     auto device = std::make_unique<VulkanDevice>();
     Status s = device->initOwn(options);
-    if (!s) return s;
+    if (!s) return withMessages(s, *device);
     return std::unique_ptr<Device>(std::move(device));
 }
 
 Result<std::unique_ptr<Device>> wrapDevice(const ExternalVulkan& external, const DeviceOptions& options) {
     auto device = std::make_unique<VulkanDevice>();
     Status s = device->initWrapped(external, options);
-    if (!s) return s;
+    if (!s) return withMessages(s, *device);
     return std::unique_ptr<Device>(std::move(device));
 }
 
