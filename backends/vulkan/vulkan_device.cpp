@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <mutex>
@@ -349,7 +350,12 @@ public:
     VulkanDevice() : serial_(nextDeviceSerial()), textures_(serial_, "texture"), buffers_(serial_, "buffer"),
                      samplers_(serial_, "sampler"), programs_(serial_, "program"), pipelines_(serial_, "pipeline"),
                      timers_(serial_, "timer") {}
-    ~VulkanDevice() override { shutdown(); }
+    ~VulkanDevice() override {
+        shutdown();
+        // Messages nobody took (teardown ones included) can only be told on stderr now.
+        for (const std::string& m : takeValidationMessages())
+            std::fprintf(stderr, "sfx vulkan: untaken validation message at teardown: %s\n", m.c_str());
+    }
 
     // Own instance and device.
     Status initOwn(const DeviceOptions& options);
@@ -940,7 +946,8 @@ void VulkanDevice::barrier(VkCommandBuffer cb, const std::vector<ImageUse>& uses
 
 Result<VkDescriptorSet> VulkanDevice::allocateSet(VkDescriptorSetLayout layout) {
     for (;;) {
-        if (currentPool_ == descriptorPools_.size()) {
+        const bool fresh = currentPool_ == descriptorPools_.size();
+        if (fresh) {
             const VkDescriptorPoolSize sizes[] = {
                 {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kDescriptorPoolSets * 4},
                 {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kDescriptorPoolSets * 8},
@@ -962,7 +969,9 @@ Result<VkDescriptorSet> VulkanDevice::allocateSet(VkDescriptorSetLayout layout) 
         VkDescriptorSet set;
         VkResult r = vk_.vkAllocateDescriptorSets(device_, &ai, &set);
         if (r == VK_SUCCESS) return set;
-        if (r != VK_ERROR_OUT_OF_POOL_MEMORY && r != VK_ERROR_FRAGMENTED_POOL) return vkError("vkAllocateDescriptorSets", r);
+        // A new pool that cannot hold one set never will: stop rather than loop.
+        if (fresh || (r != VK_ERROR_OUT_OF_POOL_MEMORY && r != VK_ERROR_FRAGMENTED_POOL))
+            return vkError("vkAllocateDescriptorSets", r);
         ++currentPool_;  // full: move on to the next (or a new) pool
     }
 }
@@ -1886,19 +1895,26 @@ Status VulkanDevice::setHostCommandBuffer(VkCommandBuffer cb) {
     return Status::ok();
 }
 
+// A failed open explains itself with what the loader and layers said on the way.
+Status withMessages(const Status& s, VulkanDevice& device) {
+    std::string text = s.message();
+    for (const std::string& m : device.takeValidationMessages()) text += "; " + m;
+    return {s.code(), text};
+}
+
 }  // namespace
 
 Result<std::unique_ptr<Device>> createDevice(const DeviceOptions& options) {
     auto device = std::make_unique<VulkanDevice>();
     Status s = device->initOwn(options);
-    if (!s) return s;
+    if (!s) return withMessages(s, *device);
     return std::unique_ptr<Device>(std::move(device));
 }
 
 Result<std::unique_ptr<Device>> wrapDevice(const ExternalVulkan& external, const DeviceOptions& options) {
     auto device = std::make_unique<VulkanDevice>();
     Status s = device->initWrapped(external, options);
-    if (!s) return s;
+    if (!s) return withMessages(s, *device);
     return std::unique_ptr<Device>(std::move(device));
 }
 

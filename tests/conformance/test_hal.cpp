@@ -212,6 +212,13 @@ TEST_CASE("hal: clear values and load ops", "[hal]") {
         SFX_REQUIRE_OK(dev().renderPass(depthOnly, {}));
         for (float d : readLevel<float>(depth)) REQUIRE(d == 0.375f);
     }
+    if (renderable(Format::D16)) {
+        TextureHandle depth = makeTexture(c, kW, kH, Format::D16, kTextureSampled | kTextureRenderTarget);
+        RenderPassDesc depthOnly;
+        depthOnly.depth = {depth, LoadOp::Clear, 0.5f};
+        SFX_REQUIRE_OK(dev().renderPass(depthOnly, {}));
+        for (uint16_t d : readLevel<uint16_t>(depth)) REQUIRE(std::abs(int(d) - 32768) <= 1);
+    }
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
@@ -359,6 +366,13 @@ TEST_CASE("hal: indexed mesh with depth test, nearer wins; depth reads back; row
             REQUIRE(t[1] == (nearSide ? 0 : 255));
             REQUIRE(z[y * n + x] == (nearSide ? 0.25f : 0.75f));
         }
+    // The depth attachment, sampled right after the pass that wrote it.
+    if (renderable(Format::R32F)) {
+        TextureHandle linear = makeTexture(c, n, n, Format::R32F, kTextureSampled | kTextureRenderTarget);
+        PipelineHandle copy = fullscreenPipeline(c, "copy", Format::R32F);
+        fullscreenPass(linear, copy, {.textures = {{gen::copy::uSource, depth}}});
+        REQUIRE(readLevel<float>(linear) == z);
+    }
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
@@ -448,6 +462,37 @@ TEST_CASE("hal: compute, storage buffers and atomics on the high tier; refused u
     CHECK(out[0] == 2 * invocations);
     CHECK(out[1] == 2 * (invocations * (invocations - 1) / 2));
     for (uint32_t i = 0; i < invocations; ++i) REQUIRE(out[2 + i] == 3 * i);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("hal: compute writes a storage image mip, then it is sampled (high tier)", "[hal]") {
+    if (test::tier() == Tier::Current) {
+        CHECK(dev().createTexture({8, 8, 1, Format::R32F, kTextureStorage}).status().code() ==
+              StatusCode::UnsupportedFeature);
+        SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+        return;
+    }
+    Cleanup c;
+    TextureHandle image = makeTexture(c, 32, 16, Format::R32F, kTextureSampled | kTextureStorage, 2);
+    ProgramHandle prog = makeProgram(c, program("hal_test_storage_image"));
+    Result<PipelineHandle> pipeline = dev().createComputePipeline({prog, "hal_test_storage_image"});
+    REQUIRE(pipeline.isOk());
+    c.steps.push_back([p = pipeline.value()] { (void)dev().destroyPipeline(p); });
+    DispatchDesc d;
+    d.pipeline = pipeline.value();
+    d.groupsX = 2;  // mip 1 is 16x8
+    d.groupsY = 1;
+    d.bindings.storageImages = {{gen::hal_test_storage_image::uImage, image, 1}};
+    SFX_REQUIRE_OK(dev().dispatch(d));
+    std::vector<float> texels = readLevel<float>(image, 1);
+    for (uint32_t y = 0; y < 8; ++y)
+        for (uint32_t x = 0; x < 16; ++x) REQUIRE(texels[y * 16 + x] == float(x + 16 * y));
+    if (renderable(Format::R32F)) {
+        TextureHandle target = makeTexture(c, 16, 8, Format::R32F, kTextureSampled | kTextureRenderTarget);
+        PipelineHandle copy = fullscreenPipeline(c, "copy", Format::R32F);
+        fullscreenPass(target, copy, {.textures = {{gen::copy::uSource, image, 1, 1}}});
+        REQUIRE(readLevel<float>(target) == texels);
+    }
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
