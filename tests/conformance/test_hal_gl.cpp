@@ -247,6 +247,10 @@ TEST_CASE("gl: render mip i+1 while sampling mip i", "[hal][gl]") {
         b.textures.push_back({gen::hal_gltest_downsample::uPrevious, tex, m - 1, 1, {}});
         SFX_REQUIRE_OK(drawFullScreen(dev, fs.pipeline, tex, m, b));
     }
+    // Sampling the very mip the pass renders to is refused, not undefined.
+    BindingSet loop;
+    loop.textures.push_back({gen::hal_gltest_downsample::uPrevious, tex, 0, 2, {}});
+    CHECK(drawFullScreen(dev, fs.pipeline, tex, 1, loop).code() == StatusCode::InvalidArgument);
     for (uint32_t m = 0; m < levels; ++m) {
         std::vector<float> got(want[m].size());
         SFX_REQUIRE_OK(dev.readTexture(tex, m, got.data(), got.size() * 4));
@@ -510,6 +514,7 @@ TEST_CASE("gl: a host's current context wrapped as a device", "[hal][gl]") {
     CHECK(dev.caps().dialect == host.caps().dialect);
     FullScreen fs = makeFullScreen(dev, "hal_gltest_pattern_uint", Format::R32UI);
     TextureHandle t = dev.createTexture({4, 3, 1, Format::R32UI, kTextureRenderTarget}).value();
+    CHECK(gl::wrapCurrentContext(nullptr, api, options).status().code() == StatusCode::InvalidArgument);
     SFX_REQUIRE_OK(drawFullScreen(dev, fs.pipeline, t));
     std::vector<uint32_t> out(12);
     SFX_REQUIRE_OK(dev.readTexture(t, 0, out.data(), out.size() * 4));
@@ -520,6 +525,16 @@ TEST_CASE("gl: a host's current context wrapped as a device", "[hal][gl]") {
     // The host's context survives the wrapper.
     SFX_REQUIRE_OK(host.flush());
     checkPattern(host, Format::RGBA8, 4, 4);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("gl: an API the platform lacks is BackendUnavailable", "[hal][gl]") {
+    SFX_GL_ONLY();
+    Result<std::unique_ptr<Device>> es = gl::createDevice(gl::Platform::OSMesa, gl::Api::GLES, {});
+    CHECK(es.status().code() == StatusCode::BackendUnavailable);
+    CHECK(es.status().message().find("OSMesa") != std::string::npos);
+    // The test device still works after the refused open.
+    checkPattern(test::device(), Format::RGBA8, 3, 2);
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
 #endif
