@@ -121,7 +121,11 @@ Result<std::unique_ptr<GlPlatform>> openEglPlatform(Api api, bool debugContext) 
     const Version* versions = es ? esVersions : glVersions;
     const size_t versionCount = es ? std::size(esVersions) : std::size(glVersions);
     EGLContext context = EGL_NO_CONTEXT;
-    for (size_t i = 0; i < versionCount && context == EGL_NO_CONTEXT; ++i) {
+    // A driver may refuse debug contexts: then take a plain one (only KHR_debug output is lost).
+    for (size_t attempt = 0; attempt < versionCount * 2 && context == EGL_NO_CONTEXT; ++attempt) {
+        const size_t i = attempt % versionCount;
+        const bool debug = debugContext && attempt < versionCount;
+        if (attempt >= versionCount && !debugContext) break;
         EGLint attribs[16];
         int n = 0;
         attribs[n++] = EGL_CONTEXT_MAJOR_VERSION;
@@ -132,7 +136,7 @@ Result<std::unique_ptr<GlPlatform>> openEglPlatform(Api api, bool debugContext) 
             attribs[n++] = EGL_CONTEXT_OPENGL_PROFILE_MASK;
             attribs[n++] = EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT;
         }
-        if (debugContext) {
+        if (debug) {
             attribs[n++] = EGL_CONTEXT_OPENGL_DEBUG;
             attribs[n++] = EGL_TRUE;
         }

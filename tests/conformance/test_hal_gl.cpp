@@ -11,6 +11,15 @@
 #include "sfx_shaders.hpp"
 #include "test_device.hpp"
 
+#if __has_include("sfx/gl_device.hpp") && __has_include(<EGL/egl.h>) && __has_include(<GL/osmesa.h>)
+#define SFX_TEST_GL_WRAP 1
+#define EGL_NO_X11 1
+#include <EGL/egl.h>
+#include <GL/osmesa.h>
+
+#include "sfx/gl_device.hpp"
+#endif
+
 namespace sfx {
 namespace {
 
@@ -238,6 +247,10 @@ TEST_CASE("gl: render mip i+1 while sampling mip i", "[hal][gl]") {
         b.textures.push_back({gen::hal_gltest_downsample::uPrevious, tex, m - 1, 1, {}});
         SFX_REQUIRE_OK(drawFullScreen(dev, fs.pipeline, tex, m, b));
     }
+    // Sampling the very mip the pass renders to is refused, not undefined.
+    BindingSet loop;
+    loop.textures.push_back({gen::hal_gltest_downsample::uPrevious, tex, 0, 2, {}});
+    CHECK(drawFullScreen(dev, fs.pipeline, tex, 1, loop).code() == StatusCode::InvalidArgument);
     for (uint32_t m = 0; m < levels; ++m) {
         std::vector<float> got(want[m].size());
         SFX_REQUIRE_OK(dev.readTexture(tex, m, got.data(), got.size() * 4));
@@ -337,6 +350,18 @@ TEST_CASE("gl: depth formats upload and read back", "[hal][gl]") {
     std::vector<uint16_t> back16(u16.size());
     SFX_REQUIRE_OK(dev.readTexture(d16, 0, back16.data(), back16.size() * 2));
     CHECK(back16 == u16);
+    // D24S8: depth in the high 24 bits; GL ES reads depth through a shader, so allow one step.
+    std::vector<uint32_t> u24(w * h);
+    for (size_t i = 0; i < u24.size(); ++i) u24[i] = uint32_t(i * 1000003u % 16777216u) << 8;
+    TextureHandle d24 = dev.createTexture({w, h, 1, Format::D24S8, kTextureSampled | kTextureRenderTarget}).value();
+    SFX_REQUIRE_OK(dev.writeTexture(d24, 0, u24.data(), u24.size() * 4));
+    std::vector<uint32_t> back24(u24.size());
+    SFX_REQUIRE_OK(dev.readTexture(d24, 0, back24.data(), back24.size() * 4));
+    for (size_t i = 0; i < u24.size(); ++i) {
+        INFO("D24S8 texel " << i);
+        CHECK(std::abs(int64_t(back24[i] >> 8) - int64_t(u24[i] >> 8)) <= 1);
+    }
+    SFX_REQUIRE_OK(dev.destroyTexture(d24));
     SFX_REQUIRE_OK(dev.destroyTexture(d32));
     SFX_REQUIRE_OK(dev.destroyTexture(d16));
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
@@ -468,6 +493,51 @@ TEST_CASE("gl: two GL devices in one process switch contexts", "[hal][gl]") {
     destroy(a, fa);
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
+
+#ifdef SFX_TEST_GL_WRAP
+TEST_CASE("gl: a host's current context wrapped as a device", "[hal][gl]") {
+    SFX_GL_ONLY();
+    Device& host = test::device();
+    SFX_REQUIRE_OK(host.flush());  // the test device's context is now current: play the host
+    const bool osmesa = test::backendConfig().platform == "osmesa";
+    gl::GetProcAddressFn loader = osmesa ? reinterpret_cast<gl::GetProcAddressFn>(&OSMesaGetProcAddress)
+                                         : reinterpret_cast<gl::GetProcAddressFn>(&eglGetProcAddress);
+    DeviceOptions options;
+    options.ceiling = host.caps().ceiling;
+    options.validation = false;  // KHR_debug's callback belongs to the test device here
+    const gl::Api api = host.caps().backend == BackendKind::GLES ? gl::Api::GLES : gl::Api::DesktopGL;
+    Result<std::unique_ptr<Device>> wrapped = gl::wrapCurrentContext(loader, api, options);
+    INFO(wrapped.status().toString());
+    REQUIRE(wrapped.isOk());
+    Device& dev = *wrapped.value();
+    CHECK(dev.caps().platform == "host");
+    CHECK(dev.caps().dialect == host.caps().dialect);
+    FullScreen fs = makeFullScreen(dev, "hal_gltest_pattern_uint", Format::R32UI);
+    TextureHandle t = dev.createTexture({4, 3, 1, Format::R32UI, kTextureRenderTarget}).value();
+    CHECK(gl::wrapCurrentContext(nullptr, api, options).status().code() == StatusCode::InvalidArgument);
+    SFX_REQUIRE_OK(drawFullScreen(dev, fs.pipeline, t));
+    std::vector<uint32_t> out(12);
+    SFX_REQUIRE_OK(dev.readTexture(t, 0, out.data(), out.size() * 4));
+    CHECK(out[2 * 4 + 3] == 3 + 2000 + 7);
+    SFX_REQUIRE_OK(dev.destroyTexture(t));
+    destroy(dev, fs);
+    wrapped.value().reset();
+    // The host's context survives the wrapper.
+    SFX_REQUIRE_OK(host.flush());
+    checkPattern(host, Format::RGBA8, 4, 4);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("gl: an API the platform lacks is BackendUnavailable", "[hal][gl]") {
+    SFX_GL_ONLY();
+    Result<std::unique_ptr<Device>> es = gl::createDevice(gl::Platform::OSMesa, gl::Api::GLES, {});
+    CHECK(es.status().code() == StatusCode::BackendUnavailable);
+    CHECK(es.status().message().find("OSMesa") != std::string::npos);
+    // The test device still works after the refused open.
+    checkPattern(test::device(), Format::RGBA8, 3, 2);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+#endif
 
 }  // namespace
 }  // namespace sfx
