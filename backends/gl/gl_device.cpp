@@ -483,15 +483,7 @@ public:
     // ---- Programs and pipelines -----------------------------------------------------------
 
     Result<ProgramHandle> createProgram(const CompiledProgram& program) override {
-        // Under the ceiling the dialect (ESSL 300 / GLSL 330) has no compute or storage code at
-        // all; say what is missing rather than "no source", as other backends do.
-        const char* under = caps_.ceiling != CapabilityCeiling::None ? " (capability ceiling)" : "";
-        if (program.isCompute() && !caps_.computeShaders)
-            return Status{StatusCode::UnsupportedFeature, "program '" + program.name +
-                                                              "' is a compute program; the device has no compute shaders" + under};
-        if (program.usesStorage() && !caps_.storageBuffers)
-            return Status{StatusCode::UnsupportedFeature, "program '" + program.name +
-                                                              "' uses storage buffers or images; the device has none" + under};
+        // The shared check names what the device lacks before looking for the dialect's text.
         SFX_TRY(validation::program(program, caps_));
         SFX_TRY(enter());
         std::vector<std::pair<GLenum, std::string>> sources;
