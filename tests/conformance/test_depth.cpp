@@ -36,14 +36,15 @@ const Convention kConventions[] = {
 
 // The GPU evaluates z = B / (d*s + c) in 32-bit float from the same float d the reference
 // reads. Its relative error is bounded by the conditioning of the denominator:
-//   |dz| / z <= k * eps * (|d*s| + |c|) / |d*s + c|   (k = 8 covers the multiply-add,
-// the divide and the constants' rounding to float), plus the ulp of the result.
+//   |dz| / z <= eps * (2 * (|d*s| + |c|) / |d*s + c| + 1)
+// (2 half-ulps for the multiply-add, 2 for rounding the constants s and c to float, relative
+// to the operands' size; 1 ulp for the divide and the stored result).
 double linearizeTolerance(double stored, const DepthReconstruction& r, double z) {
     const double eps = std::ldexp(1.0, -23);
     const double ds = stored * r.ndcScale;
     const double denom = std::abs(ds + r.denomOffset);
     const double condition = denom > 0 ? (std::abs(ds) + std::abs(r.denomOffset)) / denom : 1e30;
-    return z * (8.0 * eps * condition + 2.0 * eps);
+    return z * eps * (2.0 * condition + 1.0);
 }
 
 std::vector<float> readLevel(Device& device, TextureHandle texture, uint32_t w, uint32_t h, uint32_t mip) {

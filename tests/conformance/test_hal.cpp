@@ -364,7 +364,10 @@ TEST_CASE("hal: indexed mesh with depth test, nearer wins; depth reads back; row
             const uint8_t* t = &rgba[(y * n + x) * 4];
             REQUIRE(t[0] == (nearSide ? 255 : 0));
             REQUIRE(t[1] == (nearSide ? 0 : 255));
-            REQUIRE(z[y * n + x] == (nearSide ? 0.25f : 0.75f));
+            // Clip z lands in the depth buffer by the API's convention (caps.clipDepth).
+            const float clipZ = nearSide ? 0.25f : 0.75f;
+            const float stored = dev().caps().clipDepth == ClipDepthRange::ZeroToOne ? clipZ : clipZ * 0.5f + 0.5f;
+            REQUIRE(z[y * n + x] == stored);
         }
     // The depth attachment, sampled right after the pass that wrote it.
     if (renderable(Format::R32F)) {
