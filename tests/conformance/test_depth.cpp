@@ -161,6 +161,7 @@ TEST_CASE("rasterised hardware depth linearises to the scene's distances", "[dep
     INFO(renderer.status().toString());
     REQUIRE(renderer.isOk());
     samples::Scene scene = samples::makeScene("contact").value();
+    SFX_REQUIRE_OK(renderer.value()->load(scene));
     auto g = renderer.value()->render(scene, W, H);
     INFO(g.status().toString());
     REQUIRE(g.isOk());
