@@ -10,29 +10,14 @@
 #include "sfx/null_device.hpp"
 #include "sfx/reference/depth_reference.hpp"
 #include "sfx_shared.h"
+#include "depth_conventions.hpp"
 #include "test_device.hpp"
 
 using namespace sfx;
 
 namespace {
 
-const double kInf = std::numeric_limits<double>::infinity();
 
-struct Convention {
-    const char* name;
-    ClipDepthRange clip;
-    bool reversed;
-    double farPlane;
-};
-const Convention kConventions[] = {
-    {"[0,1] standard", ClipDepthRange::ZeroToOne, false, 100.0},
-    {"[0,1] reversed", ClipDepthRange::ZeroToOne, true, 100.0},
-    {"[0,1] standard infinite", ClipDepthRange::ZeroToOne, false, kInf},
-    {"[0,1] reversed infinite", ClipDepthRange::ZeroToOne, true, kInf},
-    {"[-1,1] standard", ClipDepthRange::MinusOneToOne, false, 100.0},
-    {"[-1,1] standard infinite", ClipDepthRange::MinusOneToOne, false, kInf},
-    {"[-1,1] reversed", ClipDepthRange::MinusOneToOne, true, 100.0},
-};
 
 // The GPU evaluates z = B / (d*s + c) in 32-bit float from the same float d the reference
 // reads. Its relative error is bounded by the conditioning of the denominator:
@@ -62,7 +47,7 @@ uint32_t levelsFor(Tier tier) { return tier == Tier::High ? uint32_t(shared::SFX
 TEST_CASE("linear depth matches the reference for every depth convention", "[depth][conformance]") {
     Device& device = test::device();
     const uint32_t W = 61, H = 37;  // odd sizes exercise the pyramid's edge texels
-    for (const Convention& c : kConventions) {
+    for (const test::DepthConvention& c : test::kDepthConventions) {
         INFO(test::label() << " " << c.name);
         PerspectiveDesc pd;
         pd.nearPlane = 0.1;
