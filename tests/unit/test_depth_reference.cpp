@@ -11,9 +11,6 @@
 
 using namespace sfx;
 
-namespace {
-}  // namespace
-
 TEST_CASE("linearisation inverts the projection for every depth convention", "[depth]") {
     for (const test::DepthConvention& c : test::kDepthConventions) {
         INFO(c.name);
