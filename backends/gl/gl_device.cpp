@@ -1063,21 +1063,7 @@ private:
             return invalidArgument("DrawDesc.pipeline depthFormat", toString(pd.depthFormat),
                                    std::string(toString(passDepth)) + ", the pass's depth attachment");
         SFX_TRY(checkBindingsMatch(programs_.get(p.program), d.bindings, "DrawDesc.bindings"));
-        // Sampling the mip being rendered is a GL feedback loop with undefined results.
-        for (const TextureBinding& tb : d.bindings.textures) {
-            if (textures_.check(tb.texture, "TextureBinding.texture").code() != StatusCode::Ok) continue;
-            const GlTexture* sampled = &textures_.get(tb.texture);
-            auto inRange = [&](uint32_t mip) { return mip >= tb.baseMip && mip - tb.baseMip < tb.mipCount; };
-            for (const auto& [target, mip] : colors)
-                if (target == sampled && inRange(mip))
-                    return invalidArgument("TextureBinding (binding " + str(tb.binding) + ") mips",
-                                           str(tb.baseMip) + "+" + str(tb.mipCount),
-                                           "a range without mip " + str(mip) + ", which the pass renders to");
-            if (depth == sampled && inRange(0))
-                return invalidArgument("TextureBinding (binding " + str(tb.binding) + ") mips",
-                                       str(tb.baseMip) + "+" + str(tb.mipCount),
-                                       "a range without mip 0 of the pass's depth attachment");
-        }
+        SFX_TRY(validation::noFeedbackLoop(pass, d));
         if (d.instanceCount == 0) return invalidArgument("DrawDesc.instanceCount", "0", ">= 1");
         if (!pd.vertexLayout.attributes.empty()) {
             SFX_TRY(buffers_.check(d.vertexBuffer, "DrawDesc.vertexBuffer"));

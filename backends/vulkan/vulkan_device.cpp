@@ -1711,6 +1711,7 @@ Status VulkanDevice::renderPass(const RenderPassDesc& pass, std::span<const Draw
             return invalidArgument("DrawDesc.pipeline", "a pipeline made for other attachment formats",
                                    "a pipeline whose colorFormats and depthFormat match the pass's attachments");
         SFX_TRY(resolveBindings(d.bindings, pl, "DrawDesc.bindings", uses, resolved[i]));
+        SFX_TRY(validation::noFeedbackLoop(pass, d));
         if (pl.usesVertexBuffer) {
             SFX_TRY(buffers_.check(d.vertexBuffer, "DrawDesc.vertexBuffer"));
             if (!(buffers_.get(d.vertexBuffer).desc.usage & kBufferVertex))

@@ -164,4 +164,18 @@ Status dispatchGroups(const DispatchDesc& d, const DeviceCaps& caps) {
     return Status::ok();
 }
 
+Status noFeedbackLoop(const RenderPassDesc& pass, const DrawDesc& draw) {
+    for (const TextureBinding& tb : draw.bindings.textures) {
+        auto inRange = [&](uint32_t mip) { return mip >= tb.baseMip && mip - tb.baseMip < tb.mipCount; };
+        const std::string what = "TextureBinding (binding " + str(tb.binding) + ") mips";
+        const std::string got = str(tb.baseMip) + "+" + str(tb.mipCount);
+        for (const ColorAttachment& c : pass.colors)
+            if (c.texture == tb.texture && inRange(c.mip))
+                return invalidArgument(what, got, "a range without mip " + str(c.mip) + ", which the pass renders to");
+        if (!pass.depth.texture.isNull() && pass.depth.texture == tb.texture && inRange(0))
+            return invalidArgument(what, got, "a range without mip 0 of the pass's depth attachment");
+    }
+    return Status::ok();
+}
+
 }  // namespace sfx::validation

@@ -321,6 +321,16 @@ TEST_CASE("hal: rendering into mip 1 while sampling mip 0 of the same texture", 
     fullscreenPass(small, copy, {.textures = {{gen::copy::uSource, pyramid, 2, 1}}});
     REQUIRE(readLevel<uint8_t>(small) == expected);
     REQUIRE(readLevel<uint8_t>(pyramid, 0) == level0);
+
+    // Sampling the very mip the pass renders to is refused with a named error, not undefined.
+    RenderPassDesc loopPass;
+    loopPass.colors = {{pyramid, 1, LoadOp::Load, {}}};
+    DrawDesc loopDraw;
+    loopDraw.pipeline = down;
+    loopDraw.bindings.textures = {{gen::hal_test_downsample::uSource, pyramid, 0, 2, {}}};
+    const Status loop = dev().renderPass(loopPass, {&loopDraw, 1});
+    CHECK(loop.code() == StatusCode::InvalidArgument);
+    CHECK(loop.message().find("which the pass renders to") != std::string::npos);
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
