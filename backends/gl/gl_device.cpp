@@ -1011,7 +1011,10 @@ private:
             SFX_TRY(extentMatches(depth->desc, 0, "RenderPassDesc.depth extent"));
         }
         // Check every draw before any GL work, so a bad draw leaves the targets untouched.
-        for (const DrawDesc& d : draws) SFX_TRY(checkDraw(d, colors, depth));
+        for (const DrawDesc& d : draws) {
+            SFX_TRY(checkDraw(d, colors, depth));
+            SFX_TRY(validation::noFeedbackLoop(pass, d));
+        }
 
         Result<GLuint> fbo = framebuffer(colors, depth, 0);
         if (!fbo) return fbo.status();
@@ -1063,7 +1066,6 @@ private:
             return invalidArgument("DrawDesc.pipeline depthFormat", toString(pd.depthFormat),
                                    std::string(toString(passDepth)) + ", the pass's depth attachment");
         SFX_TRY(checkBindingsMatch(programs_.get(p.program), d.bindings, "DrawDesc.bindings"));
-        SFX_TRY(validation::noFeedbackLoop(pass, d));
         if (d.instanceCount == 0) return invalidArgument("DrawDesc.instanceCount", "0", ">= 1");
         if (!pd.vertexLayout.attributes.empty()) {
             SFX_TRY(buffers_.check(d.vertexBuffer, "DrawDesc.vertexBuffer"));
