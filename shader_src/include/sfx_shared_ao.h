@@ -98,4 +98,69 @@ float aoUnpackDepthKey(vec2 ba) {
 }  // namespace sfx::shared
 #endif
 
+// ---- GLSL of the obscurance passes (ao_alchemy/ao_scalable/ao_crease.frag define SFX_AO_PASS) ----
+#if !defined(__cplusplus) && defined(SFX_AO_PASS)
+layout(set = 0, binding = 0) uniform sampler2D uDepth;    // linear depth (+ MIP levels for Scalable, high tier)
+layout(set = 0, binding = 1) uniform sampler2D uNormals;  // host normals; the depth again when derived
+// Mirrors AoParams in sdk/src/effects/ao.cpp (std140).
+layout(set = 0, binding = 2, std140) uniform AoParams {
+    vec4 projInfo;
+    float radius, intensity, contrast, bias;
+    float epsilon, pixelsPerUnit, maxRadiusPx, maxDepth;
+    int samples, mirrored, mipLevels, normalSource;  // normalSource: 0 derived, 1 signed float, 2 unorm8
+    float spiralTurns, keyNear, keyInvLog2Range, packDepth;
+    float creaseRange, creaseBias, creaseAverager, creaseMinimum;
+    float fadeStart, invFadeRange, pad0, pad1;
+} params;
+layout(location = 0) out vec4 outAo;
+
+float aoDepth(ivec2 q) { return texelFetch(uDepth, q, 0).r; }
+vec3 aoPosition(ivec2 q, float z) { return reconstructViewPosition(vec2(q) + 0.5, z, params.projInfo); }
+// The pixel a tap lands on: floor(centre + offset), clamped to the image (as the reference).
+ivec2 aoTap(ivec2 p, vec2 offset, ivec2 size) { return clamp(ivec2(floor(vec2(p) + 0.5 + offset)), ivec2(0), size - 1); }
+
+// Normal from depth: on each axis the neighbour whose depth is closer to the centre's (the only
+// in-bounds one at the border; ties take the lower index), oriented toward the camera.
+vec3 aoDerivedNormal(ivec2 p, vec3 C, float z, ivec2 size) {
+    vec3 dx = vec3(1.0, 0.0, 0.0), dy = vec3(0.0, 1.0, 0.0);
+    if (size.x > 1) {
+        float zl = p.x > 0 ? aoDepth(p - ivec2(1, 0)) : 0.0, zr = p.x < size.x - 1 ? aoDepth(p + ivec2(1, 0)) : 0.0;
+        bool useRight = p.x == 0 || (p.x < size.x - 1 && abs(zr - z) < abs(zl - z));
+        dx = useRight ? aoPosition(p + ivec2(1, 0), zr) - C : C - aoPosition(p - ivec2(1, 0), zl);
+    }
+    if (size.y > 1) {
+        float zd = p.y > 0 ? aoDepth(p - ivec2(0, 1)) : 0.0, zu = p.y < size.y - 1 ? aoDepth(p + ivec2(0, 1)) : 0.0;
+        bool useNext = p.y == 0 || (p.y < size.y - 1 && abs(zu - z) < abs(zd - z));
+        dy = useNext ? aoPosition(p + ivec2(0, 1), zu) - C : C - aoPosition(p - ivec2(0, 1), zd);
+    }
+    vec3 n = cross(dx, dy);
+    float len = length(n);
+    n = len > 0.0 ? n / len : vec3(0.0, 0.0, 1.0);
+    return dot(n, C) > 0.0 ? -n : n;
+}
+
+vec3 aoNormal(ivec2 p, vec3 C, float z, ivec2 size) {
+    if (params.normalSource != 0) {
+        vec3 n = texelFetch(uNormals, p, 0).xyz;
+        if (params.normalSource == 2) n = n * 2.0 - 1.0;
+        float len = length(n);
+        if (len > 1e-3) return n / len;
+    }
+    return aoDerivedNormal(p, C, z, size);
+}
+
+// Visibility out; with packDepth (current tier, blur on) the depth key goes to b and a, and sky
+// gets the key 1 exactly (surfaces stay below it), so the blur can tell sky apart.
+void aoWrite(float visibility, float z, bool sky) {
+    float v = clamp(visibility, 0.0, 1.0);
+    if (params.packDepth != 0.0) {
+        float key = sky ? 1.0 : min(log2(z / params.keyNear) * params.keyInvLog2Range, 65534.0 / 65535.0);
+        outAo = vec4(v, v, aoPackDepthKey(key));
+    } else {
+        outAo = vec4(v, v, v, 1.0);
+    }
+}
+float aoFinish(float occlusion) { return pow(max(0.0, 1.0 - occlusion), params.contrast); }
+#endif
+
 #endif  // SFX_SHARED_AO_H

@@ -54,7 +54,8 @@ AnalyticScene cornerScene(uint32_t w, uint32_t h, double scale = 1.0);
 extern const glm::dvec3 kCornerCrease, kCornerNormalA, kCornerNormalB;
 // A sphere of radius 0.6 resting on the floor y = -1 (one unit below the eye), touching it at
 // (0.9, -1, -4). Floor within ~0.25 of the contact lies under the sphere's overhang, where the
-// visible sphere surface is farther than the hidden underside: screen-space AO cannot see it.
+// visible sphere surface is farther than the hidden underside: screen-space AO cannot see it
+// (tests bin from 0.35 on).
 AnalyticScene sphereOnPlaneScene(uint32_t w, uint32_t h, double scale = 1.0);
 extern const glm::dvec3 kSphereContactPoint, kContactFloorNormal;
 extern const double kContactSphereRadius;

