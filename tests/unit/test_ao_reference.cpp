@@ -4,10 +4,12 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "analytic_scenes.hpp"
 #include "sfx/ao.hpp"
+#include "sfx/image_io.hpp"
 #include "sfx/reference/ao_reference.hpp"
 #include "sfx/tiers.hpp"
 #include "sfx_shared_ao.h"
@@ -261,4 +263,23 @@ TEST_CASE("ao reference: the bilateral blur does not carry occlusion across a de
         for (uint32_t y = 0; y < 4; ++y)
             for (uint32_t x = 0; x < 16; ++x) REQUIRE(h.at(x, y) == (x < 8 ? 0.0 : 1.0));
     }
+}
+
+// Not a check: writes the G-buffer files the `sfx ao` CTest entries read (fixture ao_cli_files).
+TEST_CASE("ao cli fixture: write small G-buffer files", "[.ao-cli-fixture]") {
+    const test::AnalyticScene s = test::cornerScene(64, 48);
+    io::Image depth(s.width, s.height, 1), normals(s.width, s.height, 3);
+    for (uint32_t y = 0; y < s.height; ++y)
+        for (uint32_t x = 0; x < s.width; ++x) {
+            depth.at(x, y) = float(s.linearDepth.at(x, y));
+            const glm::dvec3 n = s.normals[size_t(y) * s.width + x];
+            for (uint32_t c = 0; c < 3; ++c) normals.at(x, y, c) = float(n[int(c)]);
+        }
+    REQUIRE(io::writePfm("ao_cli_depth.pfm", depth).isOk());
+    REQUIRE(io::writePfm("ao_cli_normals.pfm", normals).isOk());
+    REQUIRE(io::writePfm("ao_cli_small.pfm", io::Image(32, 24, 1, 4.0f)).isOk());
+    std::FILE* f = std::fopen("ao_cli_malformed.pfm", "wb");
+    REQUIRE(f);
+    std::fputs("Pf\n64 oops\n-1\n", f);
+    std::fclose(f);
 }
