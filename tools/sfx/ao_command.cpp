@@ -38,6 +38,13 @@ int runAo(const AoFlags& f) {
     s.blurRadius = f.blurRadius;
     s.normals = f.normalsPath.empty() ? AoNormals::FromDepth : AoNormals::FromTexture;
 
+    // Files first: a malformed or mismatched file is named before any device is opened.
+    Result<io::Image> probe = io::readImage(f.camera.depthPath);
+    if (!probe) return fail(cmd, Status{probe.status().code(), "--depth: " + probe.status().message()});
+    if (!f.normalsPath.empty()) {
+        Result<io::Image> n = loadMatching(f.normalsPath, probe->width, probe->height, "--normals");
+        if (!n) return fail(cmd, n.status());
+    }
     Result<OpenedDevice> opened = openDevice(f.device);
     if (!opened) return fail(cmd, opened.status());
     Device& dev = *opened->device;
