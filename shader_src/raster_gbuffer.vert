@@ -9,8 +9,11 @@ layout(set = 0, binding = 0, std140) uniform RasterParams {
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 0) out vec3 vNormal;
+layout(location = 1) out vec3 vViewPosition;
 
 void main() {
     vNormal = mat3(raster.normalMatrix) * inNormal;
-    gl_Position = raster.projection * (raster.modelView * vec4(inPosition, 1.0));
+    vec4 viewPosition = raster.modelView * vec4(inPosition, 1.0);
+    vViewPosition = viewPosition.xyz;
+    gl_Position = raster.projection * viewPosition;
 }

@@ -198,11 +198,9 @@ void SceneRenderer::releaseMeshes() {
         (void)device_.destroyBuffer(m.params);
     }
     meshes_.clear();
-    uploaded_ = nullptr;
 }
 
-Status SceneRenderer::upload(const Scene& scene) {
-    if (uploaded_ == &scene) return Status::ok();
+Status SceneRenderer::load(const Scene& scene) {
     releaseMeshes();
     for (const Mesh& mesh : scene.meshes) {
         GpuMesh g;
@@ -221,12 +219,12 @@ Status SceneRenderer::upload(const Scene& scene) {
         SFX_TRY(device_.writeBuffer(g.vertices, 0, mesh.vertices.data(), mesh.vertices.size() * sizeof(Vertex)));
         SFX_TRY(device_.writeBuffer(g.indices, 0, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t)));
     }
-    uploaded_ = &scene;
     return Status::ok();
 }
 
 Result<GBuffer> SceneRenderer::render(const Scene& scene, uint32_t width, uint32_t height, double time) {
-    SFX_TRY(upload(scene));
+    if (meshes_.size() != scene.meshes.size())
+        return Status{StatusCode::InvalidArgument, "SceneRenderer::render: scene '" + scene.name + "' is not the loaded one"};
     GBuffer g;
     g.width = width;
     g.height = height;

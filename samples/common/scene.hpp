@@ -55,7 +55,10 @@ class SceneRenderer {
 public:
     static Result<std::unique_ptr<SceneRenderer>> create(Device& device, Tier tier);
     ~SceneRenderer();
-    // Renders `scene` with its objects moved by `time` * velocity (time in shutter intervals).
+    // Uploads the scene's meshes (replacing the previous scene's); render() draws them.
+    Status load(const Scene& scene);
+    // Renders the loaded scene with its objects moved by `time` * velocity (time in shutter
+    // intervals); `scene` supplies the camera and must be the one loaded.
     Result<GBuffer> render(const Scene& scene, uint32_t width, uint32_t height, double time = 0.0);
     void destroy(GBuffer& gbuffer);
 
@@ -70,8 +73,6 @@ private:
         uint32_t indexCount = 0;
     };
     std::vector<GpuMesh> meshes_;
-    const Scene* uploaded_ = nullptr;
-    Status upload(const Scene& scene);
     void releaseMeshes();
 };
 
