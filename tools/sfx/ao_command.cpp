@@ -1,11 +1,133 @@
+// sfx ao: ambient obscurance on G-buffer files, with any technique, tier and backend.
+// Writes visibility in [0, 1] (1 = unoccluded) to --out (.pfm or .exr) and a PNG beside it.
+#include <filesystem>
+#include <iostream>
+
+#include "cli_common.hpp"
 #include "commands.hpp"
+#include "sfx/ao.hpp"
 
 namespace sfx::cli {
-// Placeholder until the AO effect lands (issue 3): the subcommand exists and says so.
+namespace {
+
+struct AoFlags {
+    DeviceFlags device;
+    CameraFlags camera;
+    std::string technique = "scalable";
+    std::string normalsPath;
+    std::string outPath;
+    float radius = 0.5f, intensity = 1.0f, contrast = 1.0f, bias = -1.0f;
+    uint32_t samples = 0, blurRadius = 0;
+    bool noBlur = false;
+    bool showPlan = false;
+};
+
+int runAo(const AoFlags& f) {
+    const std::string cmd = "ao";
+    const std::string ext = std::filesystem::path(f.outPath).extension().string();
+    if (ext != ".pfm" && ext != ".exr") return fail(cmd, invalidArgument("--out", "'" + f.outPath + "'", "a .pfm or .exr file"));
+    AoSettings s;
+    if (!parseAoTechnique(f.technique, &s.technique))
+        return fail(cmd, invalidArgument("--technique", "'" + f.technique + "'", "alchemy, scalable or crease"));
+    s.radius = f.radius;
+    s.intensity = f.intensity;
+    s.contrast = f.contrast;
+    s.bias = f.bias;
+    s.samples = f.samples;
+    s.blur = !f.noBlur;
+    s.blurRadius = f.blurRadius;
+    s.normals = f.normalsPath.empty() ? AoNormals::FromDepth : AoNormals::FromTexture;
+
+    // Files first: a malformed or mismatched file is named before any device is opened.
+    Result<io::Image> probe = io::readImage(f.camera.depthPath);
+    if (!probe) return fail(cmd, Status{probe.status().code(), "--depth: " + probe.status().message()});
+    if (!f.normalsPath.empty()) {
+        Result<io::Image> n = loadMatching(f.normalsPath, probe->width, probe->height, "--normals");
+        if (!n) return fail(cmd, n.status());
+    }
+    Result<OpenedDevice> opened = openDevice(f.device);
+    if (!opened) return fail(cmd, opened.status());
+    Device& dev = *opened->device;
+    Result<LoadedDepth> depth = loadDepth(dev, f.camera);
+    if (!depth) return fail(cmd, depth.status());
+    const uint32_t w = depth->image.width, h = depth->image.height;
+
+    TextureHandle normals;
+    if (!f.normalsPath.empty()) {
+        Result<io::Image> n = loadMatching(f.normalsPath, w, h, "--normals");
+        if (!n) return fail(cmd, n.status());
+        if (n->channels < 3)
+            return fail(cmd, Status{StatusCode::FileError, "--normals " + f.normalsPath + " has " + std::to_string(n->channels) +
+                                                               " channel(s); view-space normals need x, y, z"});
+        std::vector<float> px(size_t(w) * h * 4, 0.0f);
+        for (uint32_t y = 0; y < h; ++y)
+            for (uint32_t x = 0; x < w; ++x)
+                for (uint32_t c = 0; c < 3; ++c) {
+                    const float v = n->at(x, y, c);
+                    if (!std::isfinite(v))
+                        return fail(cmd, Status{StatusCode::FileError, "--normals " + f.normalsPath + ": pixel (" + std::to_string(x) + ", " +
+                                                                           std::to_string(y) + ") is not finite"});
+                    px[(size_t(y) * w + x) * 4 + c] = v;
+                }
+        Result<TextureHandle> t = dev.createTexture({w, h, 1, Format::RGBA32F, kTextureSampled, "sfx-cli-normals"});
+        if (!t) return fail(cmd, t.status());
+        normals = t.value();
+        if (Status st = dev.writeTexture(normals, 0, px.data(), px.size() * sizeof(float)); !st) return fail(cmd, st);
+    }
+
+    Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev, {w, h, opened->tier.profile, s});
+    if (!ao) return fail(cmd, ao.status());
+    const bool r32 = dev.caps().renderableFormat[size_t(Format::R32F)];
+    const Format outFormat = r32 ? Format::R32F : Format::RGBA8;
+    Result<TextureHandle> out = dev.createTexture({w, h, 1, outFormat, kTextureSampled | kTextureRenderTarget, "sfx-cli-ao"});
+    if (!out) return fail(cmd, out.status());
+    AoInputs in;
+    in.depth = depth->source;
+    in.normals = normals;
+    in.output = out.value();
+    if (Status st = ao.value()->dispatch(in); !st) return fail(cmd, st);
+    if (Status st = dev.flush(); !st) return fail(cmd, st);
+
+    io::Image image(w, h, 1);
+    if (r32) {
+        if (Status st = dev.readTexture(out.value(), 0, image.pixels.data(), image.pixels.size() * sizeof(float)); !st) return fail(cmd, st);
+    } else {
+        std::vector<uint8_t> px(size_t(w) * h * 4);
+        if (Status st = dev.readTexture(out.value(), 0, px.data(), px.size()); !st) return fail(cmd, st);
+        for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = px[i * 4] / 255.0f;
+    }
+    // Texture rows are image rows (row 0 = top, as loadDepth uploaded them).
+    if (Status st = io::writeImage(f.outPath, image); !st) return fail(cmd, st);
+    const std::string png = std::filesystem::path(f.outPath).replace_extension(".png").string();
+    if (Status st = io::writePng(png, image); !st) return fail(cmd, st);
+    std::cout << "sfx ao: " << toString(s.technique) << " on " << dev.caps().summary() << ", tier " << toString(opened->tier.tier)
+              << ", " << w << "x" << h << " -> " << f.outPath << " and " << png << "\n";
+    if (f.showPlan) std::cout << ao.value()->plan().describe();
+    return 0;
+}
+
+}  // namespace
+
 Command addAoCommand(CLI::App& app) {
+    auto flags = std::make_shared<AoFlags>();
     Command c;
-    c.app = app.add_subcommand("ao", "Ambient obscurance on G-buffer files (not built yet)");
-    c.run = [] { return 1; };
+    c.app = app.add_subcommand("ao", "Ambient obscurance on G-buffer files: visibility in [0,1] (1 = unoccluded)");
+    flags->device.add(*c.app);
+    flags->camera.add(*c.app);
+    c.app->add_option("--technique", flags->technique, "alchemy | scalable | crease")->capture_default_str();
+    c.app->add_option("--normals", flags->normalsPath,
+                      "view-space normals file (x right, y up, camera looking down -z; signed float xyz in PFM/EXR)");
+    c.app->add_option("--radius", flags->radius, "world-space radius, (0, 1000]")->capture_default_str();
+    c.app->add_option("--intensity", flags->intensity, "occlusion scale, [0, 100]")->capture_default_str();
+    c.app->add_option("--contrast", flags->contrast, "visibility exponent, [0.1, 10]")->capture_default_str();
+    c.app->add_option("--bias", flags->bias, "[0, 1]; -1 = the technique's default")->capture_default_str();
+    c.app->add_option("--samples", flags->samples, "taps per pixel; 0 = tier default")->capture_default_str();
+    c.app->add_option("--blur-radius", flags->blurRadius, "bilateral half-width in px; 0 = tier default")->capture_default_str();
+    c.app->add_flag("--no-blur", flags->noBlur, "skip the bilateral blur");
+    c.app->add_flag("--plan", flags->showPlan, "print the passes and memory");
+    c.app->add_option("--out", flags->outPath, "output visibility, .pfm or .exr (a .png is written beside it)")->required();
+    c.run = [flags] { return runAo(*flags); };
     return c;
 }
+
 }  // namespace sfx::cli

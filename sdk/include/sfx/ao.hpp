@@ -1,0 +1,142 @@
+// Ambient obscurance: Alchemy AO, Scalable AO and crease shading, with a depth-aware
+// bilateral blur. Same shape as every effect: create / dispatch / resize / destroy (RAII),
+// status returns, and a plan of the passes and bytes it holds.
+//
+// Output: ambient visibility in [0, 1] (1 = unoccluded) in the r channel of the host's output
+// texture (every channel of an RGBA target holds it, alpha 1). Sky (linear depth at or past
+// SFX_SKY_DEPTH, or the far plane) is 1.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "sfx/depth.hpp"
+#include "sfx/plan.hpp"
+#include "sfx/tier.hpp"
+
+namespace sfx {
+
+enum class AoTechnique : uint32_t {
+    Alchemy,   // McGuire et al. 2011: samples uniform in the projected world-space disk
+    Scalable,  // Bukowski et al. 2012: few spiral taps with falloff, squared sum; depth MIP on high
+    Crease,    // Fox & Compton 2007: 24 taps on the 11x11 stippled diamond, artist-tuned
+};
+const char* toString(AoTechnique technique);  // "alchemy", "scalable", "crease"
+bool parseAoTechnique(const std::string& text, AoTechnique* out);
+
+enum class AoNormals : uint32_t {
+    FromDepth,    // derived from linear depth (smaller-difference neighbour on each axis)
+    FromTexture,  // AoInputs.normals: view-space unit normals, x right, y up, camera looking down -z.
+                  // Float formats (RGBA16F, RGBA32F) hold signed xyz; RGBA8 holds xyz * 0.5 + 0.5.
+};
+
+struct AoCreaseSettings {
+    float range = 1.0f;           // (0, 1000] world distance at which a tap's influence reaches 0
+    float bias = 0.25f;           // (0, 100]  scales (cos - minimumCrease) before saturating
+    float averager = 10.0f;       // (0, 1000] divisor of the summed 24 taps
+    float minimumCrease = 0.3f;   // [-1, 1)   cosine below which a tap adds nothing (stops radial banding)
+    float fadeStart = 50.0f;      // [0, inf)  linear depth where the distance fade begins
+    float fadeEnd = 100.0f;       // (fadeStart, inf] linear depth where crease shading is gone
+};
+
+// Every knob of the effect. Defaults are the seeds' nominal values; ranges are enforced:
+// a value outside its range is InvalidArgument naming the field ("AoSettings.radius").
+struct AoSettings {
+    AoTechnique technique = AoTechnique::Scalable;
+    float radius = 0.5f;     // (0, 1000] world-space sampling radius (Alchemy, Scalable)
+    float intensity = 1.0f;  // [0, 100]  sigma: scales occlusion (all techniques)
+    float contrast = 1.0f;   // [0.1, 10] k: visibility = max(0, 1 - occlusion)^k (all techniques)
+    // [0, 1], or -1 for the technique's default. Alchemy: beta, a distance per unit of depth
+    // (the term v.n + z_C beta; default 1e-4 as in the paper). Scalable: subtracted from the
+    // cosine of each tap (default 0.02).
+    float bias = -1.0f;
+    float epsilon = 1e-4f;   // [1e-8, 1] guards divisions; in units of radius^2 (scale-invariant)
+    uint32_t samples = 0;    // 0 = tier default; Alchemy [1, 64]; Scalable [1, 64] (even on the
+                             // current tier: mirrored pairs); Crease 0 or 24 (its pattern is fixed)
+    bool blur = true;        // the separable depth-aware bilateral blur (and crease's two-blur look)
+    uint32_t blurRadius = 0; // 0 = tier default (SFX_AO_BLUR_RADIUS_*); else [1, SFX_AO_MAX_BLUR_RADIUS] px
+    AoNormals normals = AoNormals::FromDepth;
+    AoCreaseSettings crease;
+};
+
+inline constexpr float kAoAlchemyDefaultBias = 1e-4f;
+inline constexpr float kAoScalableDefaultBias = 0.02f;
+
+// What a dispatch computes once settings and tier are resolved: the numbers the shaders get
+// and the CPU reference (sfx/reference/ao_reference.hpp) consumes. Benchmarks may edit a
+// resolved config (e.g. many samples, no MIP) to build a converged reference.
+struct AoConfig {
+    AoTechnique technique = AoTechnique::Scalable;
+    double radius = 0.5, intensity = 1, contrast = 1, bias = 0.02, epsilon = 1e-4;
+    uint32_t samples = 4;         // taps per pixel (Scalable mirrored: total, both signs)
+    bool mirrored = false;        // Scalable: samples / 2 offsets, each also negated
+    double spiralTurns = 7;       // Scalable spiral turns
+    double maxRadiusPx = 0;       // Scalable: screen radius clamp, 0 = none
+    uint32_t depthMipLevels = 1;  // Scalable: depth MIP levels read (1 = full resolution only)
+    uint32_t blurRadius = 0;      // 0 = no blur
+    AoNormals normals = AoNormals::FromDepth;
+    AoCreaseSettings crease;
+};
+
+// InvalidArgument naming the first field out of range.
+Status validateAoSettings(const AoSettings& settings, const TierProfile& profile);
+// Settings + tier -> config. mipLevelsAllowed: what the target size allows (maxMipLevels).
+Result<AoConfig> resolveAoConfig(const AoSettings& settings, const TierProfile& profile, uint32_t mipLevelsAllowed);
+
+struct AoDesc {
+    uint32_t width = 0;  // [1, caps.limits.maxTextureSize]
+    uint32_t height = 0;
+    TierProfile profile;  // tiers::profile(tier) or tiers::choose(caps)->profile
+    AoSettings settings;
+};
+
+// The host's inputs for one frame.
+struct AoInputs {
+    DepthSource depth;      // hardware or linear depth with its projection, the context's size
+    TextureHandle normals;  // required when settings.normals == FromTexture (see AoNormals)
+    // Where visibility goes: the context's size, kTextureRenderTarget, one of R8, RGBA8, R16F,
+    // RG16F, RGBA16F, R32F, RGBA32F renderable on the device.
+    TextureHandle output;
+};
+
+class AmbientObscurance {
+public:
+    static Result<std::unique_ptr<AmbientObscurance>> create(Device& device, const AoDesc& desc);
+    ~AmbientObscurance();
+    AmbientObscurance(const AmbientObscurance&) = delete;
+    AmbientObscurance& operator=(const AmbientObscurance&) = delete;
+
+    // Records depth linearisation (+ MIP), the obscurance pass and, with blur, two blur passes.
+    Status dispatch(const AoInputs& inputs);
+    Status resize(uint32_t width, uint32_t height);
+    // Validates, then reallocates only what the new settings need (MIP levels, blur targets).
+    Status setSettings(const AoSettings& settings);
+
+    const AoDesc& desc() const { return desc_; }
+    const AoConfig& config() const { return config_; }
+    const LinearDepth& linearDepth() const { return *depth_; }
+    Plan plan() const;
+
+private:
+    AmbientObscurance(Device& device, const AoDesc& desc);
+    Status allocate();
+    void release();
+    Result<PipelineHandle> pipelineFor(uint32_t programIndex, Format format);
+
+    Device& device_;
+    AoDesc desc_;
+    AoConfig config_;
+    std::unique_ptr<LinearDepth> depth_;
+    TextureHandle aoTarget_, blurTarget_;
+    Format targetFormat_ = Format::Undefined;
+    BufferHandle aoParams_, blurParamsH_, blurParamsV_;
+    ProgramHandle aoProgram_, blurProgram_;
+    struct CachedPipeline {
+        uint32_t program;  // 0 = AO pass, 1 = blur pass
+        Format format;
+        PipelineHandle pipeline;
+    };
+    std::vector<CachedPipeline> pipelines_;
+};
+
+}  // namespace sfx

@@ -1,0 +1,40 @@
+// CPU references of ambient obscurance (Alchemy, Scalable, Crease), normals from depth and the
+// bilateral blur: double precision, written for clarity, using the sample patterns of
+// shader_src/include/sfx_shared_ao.h exactly as the shaders do.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "sfx/ao.hpp"
+#include "sfx/reference/depth_reference.hpp"
+
+namespace sfx::reference {
+
+struct AoInput {
+    Grid linearDepth;                 // positive eye depth; >= reconstruction.maxDepth is sky
+    std::vector<glm::dvec3> normals;  // view-space unit normals, row 0 first; empty: derive from depth
+    DepthReconstruction reconstruction;
+};
+
+// View-space position of pixel (x, y)'s centre at its linear depth.
+glm::dvec3 viewPosition(const AoInput& in, uint32_t x, uint32_t y);
+
+// Normals from depth, robust at edges: on each axis, the difference to the neighbour whose
+// depth is closer to the centre's (the only in-bounds one at the border), so a normal never
+// differences across a discontinuity; oriented toward the camera.
+std::vector<glm::dvec3> normalsFromDepth(const Grid& linearDepth, const DepthReconstruction& reconstruction);
+
+// Visibility of every pixel before any blur (1 = unoccluded, sky = 1).
+Grid rawVisibility(const AoInput& in, const AoConfig& config);
+
+// One separable bilateral pass along (dx, dy) with half-width radius; depth weights relative
+// to the centre's depth (SFX_AO_BLUR_DEPTH_TOLERANCE). Sky pixels pass through.
+Grid bilateralBlurPass(const Grid& visibility, const Grid& linearDepth, double maxDepth, int radius, int dx, int dy);
+
+// The whole effect: raw visibility, then (blurRadius > 0) the two blur passes, or for Crease
+// its two-blur look (a wide and a moderate blur, blended with SFX_AO_CREASE_*_GAIN).
+Grid ambientVisibility(const AoInput& in, const AoConfig& config);
+
+}  // namespace sfx::reference

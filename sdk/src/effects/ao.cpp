@@ -1,0 +1,293 @@
+// The AmbientObscurance effect: linear depth (+ MIP for high-tier Scalable AO), one obscurance
+// pass of the chosen technique, and a two-pass separable bilateral blur into the host's output.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "sfx/ao.hpp"
+#include "sfx_shaders.hpp"
+#include "sfx_shared_ao.h"
+
+namespace sfx {
+namespace {
+
+// Mirrors AoParams in shader_src/include/sfx_shared_ao.h (std140: 4-byte scalars, vec4 first).
+struct AoParams {
+    float projInfo[4];
+    float radius, intensity, contrast, bias;
+    float epsilon, pixelsPerUnit, maxRadiusPx, maxDepth;
+    int32_t samples, mirrored, mipLevels, normalSource;
+    float spiralTurns, keyNear, keyInvLog2Range, packDepth;
+    float creaseRange, creaseBias, creaseAverager, creaseMinimum;
+    float fadeStart, invFadeRange, pad0, pad1;
+};
+static_assert(sizeof(AoParams) == 112);
+
+// Mirrors BlurParams in shader_src/ao_blur.frag (std140).
+struct BlurParams {
+    int32_t direction[2];
+    int32_t radius, moderateRadius;
+    int32_t crease, finalPass, pad0, pad1;
+    float maxDepth, keyNear, keyLog2Range, pad2;
+};
+static_assert(sizeof(BlurParams) == 48);
+
+const char* programName(AoTechnique t) {
+    switch (t) {
+        case AoTechnique::Alchemy: return gen::ao_alchemy::kName;
+        case AoTechnique::Scalable: return gen::ao_scalable::kName;
+        case AoTechnique::Crease: return gen::ao_crease::kName;
+    }
+    return gen::ao_scalable::kName;
+}
+
+bool isOutputFormat(Format f) {
+    return f == Format::R8 || f == Format::RGBA8 || f == Format::R16F || f == Format::RG16F || f == Format::RGBA16F ||
+           f == Format::R32F || f == Format::RGBA32F;
+}
+
+// The current tier packs depth into the RGBA8 AO target; the high tier keeps AO in RG16F and
+// reads full-precision linear depth.
+Format aoTargetFormat(Tier tier) { return tier == Tier::High ? Format::RG16F : Format::RGBA8; }
+
+Result<ProgramHandle> loadProgram(Device& device, const char* name, Tier tier) {
+    Result<const CompiledProgram*> program = shaders::find(name, tier);
+    if (!program) return program.status();
+    return device.createProgram(*program.value());
+}
+
+}  // namespace
+
+Result<std::unique_ptr<AmbientObscurance>> AmbientObscurance::create(Device& device, const AoDesc& desc) {
+    if (uint32_t(desc.profile.tier) >= kTierCount)
+        return invalidArgument("AoDesc.profile.tier", std::to_string(uint32_t(desc.profile.tier)), "Current or High");
+    const uint32_t maxSize = device.caps().limits.maxTextureSize;
+    if (desc.width == 0 || desc.width > maxSize) return invalidArgument("AoDesc.width", std::to_string(desc.width), "[1, " + std::to_string(maxSize) + "]");
+    if (desc.height == 0 || desc.height > maxSize) return invalidArgument("AoDesc.height", std::to_string(desc.height), "[1, " + std::to_string(maxSize) + "]");
+    SFX_TRY(validateAoSettings(desc.settings, desc.profile));
+    std::unique_ptr<AmbientObscurance> ao(new AmbientObscurance(device, desc));
+    SFX_TRY(ao->allocate());
+    return ao;
+}
+
+AmbientObscurance::AmbientObscurance(Device& device, const AoDesc& desc) : device_(device), desc_(desc) {}
+
+AmbientObscurance::~AmbientObscurance() { release(); }
+
+Status AmbientObscurance::allocate() {
+    Result<AoConfig> config = resolveAoConfig(desc_.settings, desc_.profile, maxMipLevels(desc_.width, desc_.height));
+    if (!config) return config.status();
+    config_ = config.value();
+    const Tier tier = desc_.profile.tier;
+
+    LinearDepthDesc dd{desc_.width, desc_.height, tier, config_.depthMipLevels};
+    Result<std::unique_ptr<LinearDepth>> depth = LinearDepth::create(device_, dd);
+    if (!depth) return depth.status();
+    depth_ = std::move(depth.value());
+
+    Result<BufferHandle> params = device_.createBuffer({sizeof(AoParams), kBufferUniform, "sfx-ao-params"});
+    if (!params) return params.status();
+    aoParams_ = params.value();
+    Result<ProgramHandle> program = loadProgram(device_, programName(config_.technique), tier);
+    if (!program) return program.status();
+    aoProgram_ = program.value();
+
+    if (config_.blurRadius > 0) {
+        targetFormat_ = aoTargetFormat(tier);
+        if (!device_.caps().renderableFormat[size_t(targetFormat_)])
+            return {StatusCode::UnsupportedFormat, std::string("AO target format ") + toString(targetFormat_) + " is not renderable on this device"};
+        for (TextureHandle* t : {&aoTarget_, &blurTarget_}) {
+            TextureDesc td{desc_.width, desc_.height, 1, targetFormat_, kTextureSampled | kTextureRenderTarget,
+                           t == &aoTarget_ ? "sfx-ao-raw" : "sfx-ao-blur"};
+            Result<TextureHandle> tex = device_.createTexture(td);
+            if (!tex) return tex.status();
+            *t = tex.value();
+        }
+        for (BufferHandle* b : {&blurParamsH_, &blurParamsV_}) {
+            Result<BufferHandle> buf = device_.createBuffer({sizeof(BlurParams), kBufferUniform, "sfx-ao-blur-params"});
+            if (!buf) return buf.status();
+            *b = buf.value();
+        }
+        Result<ProgramHandle> blur = loadProgram(device_, gen::ao_blur::kName, tier);
+        if (!blur) return blur.status();
+        blurProgram_ = blur.value();
+    }
+    return Status::ok();
+}
+
+void AmbientObscurance::release() {
+    // Destroy calls on null handles report InvalidHandle; there is nothing to release then.
+    for (const CachedPipeline& p : pipelines_) (void)device_.destroyPipeline(p.pipeline);
+    pipelines_.clear();
+    for (ProgramHandle* p : {&aoProgram_, &blurProgram_}) {
+        if (!p->isNull()) (void)device_.destroyProgram(*p);
+        *p = {};
+    }
+    for (BufferHandle* b : {&aoParams_, &blurParamsH_, &blurParamsV_}) {
+        if (!b->isNull()) (void)device_.destroyBuffer(*b);
+        *b = {};
+    }
+    for (TextureHandle* t : {&aoTarget_, &blurTarget_}) {
+        if (!t->isNull()) (void)device_.destroyTexture(*t);
+        *t = {};
+    }
+    targetFormat_ = Format::Undefined;
+    depth_.reset();
+}
+
+Result<PipelineHandle> AmbientObscurance::pipelineFor(uint32_t programIndex, Format format) {
+    for (const CachedPipeline& p : pipelines_)
+        if (p.program == programIndex && p.format == format) return p.pipeline;
+    GraphicsPipelineDesc pd;
+    pd.program = programIndex == 0 ? aoProgram_ : blurProgram_;
+    pd.colorFormats = {format};
+    pd.debugName = programIndex == 0 ? "sfx-ao" : "sfx-ao-blur";
+    Result<PipelineHandle> pipeline = device_.createGraphicsPipeline(pd);
+    if (!pipeline) return pipeline.status();
+    pipelines_.push_back({programIndex, format, pipeline.value()});
+    return pipeline.value();
+}
+
+Status AmbientObscurance::resize(uint32_t width, uint32_t height) {
+    const uint32_t maxSize = device_.caps().limits.maxTextureSize;
+    if (width == 0 || width > maxSize) return invalidArgument("width", std::to_string(width), "[1, " + std::to_string(maxSize) + "]");
+    if (height == 0 || height > maxSize) return invalidArgument("height", std::to_string(height), "[1, " + std::to_string(maxSize) + "]");
+    if (width == desc_.width && height == desc_.height && depth_) return Status::ok();
+    release();
+    desc_.width = width;
+    desc_.height = height;
+    return allocate();
+}
+
+Status AmbientObscurance::setSettings(const AoSettings& settings) {
+    SFX_TRY(validateAoSettings(settings, desc_.profile));
+    desc_.settings = settings;
+    // Programs, MIP levels and blur targets all follow from the settings; rebuilding is cheap
+    // next to a frame and keeps one code path.
+    release();
+    return allocate();
+}
+
+Status AmbientObscurance::dispatch(const AoInputs& in) {
+    if (!depth_ || aoProgram_.isNull()) return {StatusCode::InvalidHandle, "AmbientObscurance: resources were not created (failed resize?)"};
+    Result<TextureDesc> out = device_.textureDesc(in.output);
+    if (!out) return Status{out.status().code(), "AoInputs.output: " + out.status().message()};
+    if (out->width != desc_.width || out->height != desc_.height)
+        return invalidArgument("AoInputs.output size", std::to_string(out->width) + "x" + std::to_string(out->height),
+                               std::to_string(desc_.width) + "x" + std::to_string(desc_.height) + " (the AO size)");
+    if (!isOutputFormat(out->format) || !device_.caps().renderableFormat[size_t(out->format)])
+        return {StatusCode::UnsupportedFormat, std::string("AoInputs.output format ") + toString(out->format) +
+                                                   " is not allowed; R8, RGBA8, R16F, RG16F, RGBA16F, R32F or RGBA32F renderable on the device"};
+    if (!(out->usage & kTextureRenderTarget)) return invalidArgument("AoInputs.output usage", "without kTextureRenderTarget", "a render target");
+    int32_t normalSource = 0;
+    if (config_.normals == AoNormals::FromTexture) {
+        Result<TextureDesc> nd = device_.textureDesc(in.normals);
+        if (!nd) return Status{nd.status().code(), "AoInputs.normals (AoSettings.normals is FromTexture): " + nd.status().message()};
+        if (nd->width != desc_.width || nd->height != desc_.height)
+            return invalidArgument("AoInputs.normals size", std::to_string(nd->width) + "x" + std::to_string(nd->height),
+                                   std::to_string(desc_.width) + "x" + std::to_string(desc_.height) + " (the AO size)");
+        if (nd->format == Format::RGBA8) normalSource = 2;
+        else if (nd->format == Format::RGBA16F || nd->format == Format::RGBA32F) normalSource = 1;
+        else return {StatusCode::UnsupportedFormat, std::string("AoInputs.normals format ") + toString(nd->format) +
+                                                        "; allowed RGBA16F/RGBA32F (signed xyz) or RGBA8 (xyz * 0.5 + 0.5)"};
+    }
+
+    SFX_TRY(depth_->dispatch(in.depth));
+    const DepthReconstruction& rec = depth_->reconstruction();
+    const bool blur = config_.blurRadius > 0;
+    const double keyNear = std::max(rec.nearDepth, 1e-6);
+    const double keyLog2Range = std::log2(double(shared::SFX_SKY_DEPTH) / keyNear);
+
+    AoParams p{};
+    for (int i = 0; i < 4; ++i) p.projInfo[i] = float(rec.projInfo[i]);
+    p.radius = float(config_.radius);
+    p.intensity = float(config_.intensity);
+    p.contrast = float(config_.contrast);
+    p.bias = float(config_.bias);
+    p.epsilon = float(config_.epsilon);
+    p.pixelsPerUnit = float(rec.pixelsPerUnitAtUnitDepth);
+    p.maxRadiusPx = float(config_.maxRadiusPx);
+    p.maxDepth = float(rec.maxDepth);
+    p.samples = int32_t(config_.samples);
+    p.mirrored = config_.mirrored ? 1 : 0;
+    p.mipLevels = int32_t(config_.depthMipLevels);
+    p.normalSource = normalSource;
+    p.spiralTurns = float(config_.spiralTurns);
+    p.keyNear = float(keyNear);
+    p.keyInvLog2Range = float(1.0 / keyLog2Range);
+    p.packDepth = blur && targetFormat_ == Format::RGBA8 ? 1.0f : 0.0f;
+    p.creaseRange = config_.crease.range;
+    p.creaseBias = config_.crease.bias;
+    p.creaseAverager = config_.crease.averager;
+    p.creaseMinimum = config_.crease.minimumCrease;
+    p.fadeStart = config_.crease.fadeStart;
+    p.invFadeRange = std::isinf(config_.crease.fadeEnd) ? 0.0f : float(1.0 / (double(config_.crease.fadeEnd) - config_.crease.fadeStart));
+    SFX_TRY(device_.writeBuffer(aoParams_, 0, &p, sizeof p));
+
+    // Obscurance: straight into the output without blur.
+    const TextureHandle aoDest = blur ? aoTarget_ : in.output;
+    Result<PipelineHandle> aoPipeline = pipelineFor(0, blur ? targetFormat_ : out->format);
+    if (!aoPipeline) return aoPipeline.status();
+    RenderPassDesc pass;
+    pass.colors = {ColorAttachment{aoDest, 0, LoadOp::DontCare, {}}};
+    pass.debugName = "sfx-ao";
+    DrawDesc draw;
+    draw.pipeline = aoPipeline.value();
+    // Without host normals the normals binding gets the depth texture: the shader never reads it
+    // then, but every declared sampler needs a valid texture.
+    const TextureHandle normals = normalSource ? in.normals : depth_->texture();
+    draw.bindings.textures = {TextureBinding{gen::ao_scalable::uDepth, depth_->texture(), 0, config_.depthMipLevels, {}},
+                              TextureBinding{gen::ao_scalable::uNormals, normals, 0, 1, {}}};
+    draw.bindings.uniformBuffers = {BufferBinding{gen::ao_scalable::AoParams, aoParams_, 0, 0}};
+    SFX_TRY(device_.renderPass(pass, std::span<const DrawDesc>(&draw, 1)));
+    if (!blur) return Status::ok();
+
+    const int radius = int(config_.blurRadius);
+    for (int passIndex = 0; passIndex < 2; ++passIndex) {
+        BlurParams b{};
+        b.direction[0] = passIndex == 0 ? 1 : 0;
+        b.direction[1] = passIndex == 0 ? 0 : 1;
+        b.radius = radius;
+        b.moderateRadius = std::max(1, radius / 2);
+        b.crease = config_.technique == AoTechnique::Crease ? 1 : 0;
+        b.finalPass = passIndex;
+        b.maxDepth = float(rec.maxDepth);
+        b.keyNear = float(keyNear);
+        b.keyLog2Range = float(keyLog2Range);
+        const BufferHandle buffer = passIndex == 0 ? blurParamsH_ : blurParamsV_;
+        SFX_TRY(device_.writeBuffer(buffer, 0, &b, sizeof b));
+        const TextureHandle src = passIndex == 0 ? aoTarget_ : blurTarget_;
+        const TextureHandle dst = passIndex == 0 ? blurTarget_ : in.output;
+        Result<PipelineHandle> bp = pipelineFor(1, passIndex == 0 ? targetFormat_ : out->format);
+        if (!bp) return bp.status();
+        RenderPassDesc bpass;
+        bpass.colors = {ColorAttachment{dst, 0, LoadOp::DontCare, {}}};
+        bpass.debugName = passIndex == 0 ? "sfx-ao-blur-h" : "sfx-ao-blur-v";
+        DrawDesc bdraw;
+        bdraw.pipeline = bp.value();
+        bdraw.bindings.textures = {TextureBinding{gen::ao_blur::uSource, src, 0, 1, {}}};
+        if (desc_.profile.tier == Tier::High)
+            bdraw.bindings.textures.push_back(TextureBinding{gen::ao_blur::uDepth, depth_->texture(), 0, 1, {}});
+        bdraw.bindings.uniformBuffers = {BufferBinding{gen::ao_blur::BlurParams, buffer, 0, 0}};
+        SFX_TRY(device_.renderPass(bpass, std::span<const DrawDesc>(&bdraw, 1)));
+    }
+    return Status::ok();
+}
+
+Plan AmbientObscurance::plan() const {
+    Plan plan;
+    if (depth_) plan = depth_->plan();
+    plan.passes.push_back({"ao", std::string("obscurance (") + toString(config_.technique) + ")", desc_.width, desc_.height});
+    plan.resources.push_back({"ao", "ao params", Format::Undefined, 0, 0, 1, sizeof(AoParams)});
+    if (config_.blurRadius > 0) {
+        plan.passes.push_back({"ao", "bilateral blur h", desc_.width, desc_.height});
+        plan.passes.push_back({"ao", "bilateral blur v", desc_.width, desc_.height});
+        const TextureDesc td{desc_.width, desc_.height, 1, aoTargetFormat(desc_.profile.tier), kTextureSampled | kTextureRenderTarget};
+        plan.resources.push_back(plannedTexture("ao", desc_.profile.tier == Tier::High ? "raw AO (RG16F)" : "raw AO + packed depth (RGBA8)", td));
+        plan.resources.push_back(plannedTexture("ao", "blur intermediate", td));
+        plan.resources.push_back({"ao", "blur params", Format::Undefined, 0, 0, 1, 2 * sizeof(BlurParams)});
+    }
+    return plan;
+}
+
+}  // namespace sfx

@@ -1,0 +1,108 @@
+// AoSettings: names, validation (named errors, never silent clamps) and resolution against a tier.
+#include <cmath>
+#include <string>
+
+#include "sfx/ao.hpp"
+#include "sfx_shared_ao.h"
+
+namespace sfx {
+namespace {
+
+std::string num(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+// NaN fails every comparison, so each check is written as "inside the range" negated.
+Status checkRange(const char* field, double v, double lo, bool loOpen, double hi, bool hiOpen, const char* allowed) {
+    const bool aboveLo = loOpen ? v > lo : v >= lo;
+    const bool belowHi = hiOpen ? v < hi : v <= hi;
+    if (!(aboveLo && belowHi)) return invalidArgument(field, num(v), allowed);
+    return Status::ok();
+}
+
+}  // namespace
+
+const char* toString(AoTechnique technique) {
+    switch (technique) {
+        case AoTechnique::Alchemy: return "alchemy";
+        case AoTechnique::Scalable: return "scalable";
+        case AoTechnique::Crease: return "crease";
+    }
+    return "unknown";
+}
+
+bool parseAoTechnique(const std::string& text, AoTechnique* out) {
+    for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease})
+        if (text == toString(t)) {
+            *out = t;
+            return true;
+        }
+    return false;
+}
+
+Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
+    if (uint32_t(s.technique) > 2) return invalidArgument("AoSettings.technique", std::to_string(uint32_t(s.technique)), "Alchemy, Scalable or Crease");
+    SFX_TRY(checkRange("AoSettings.radius", s.radius, 0, true, 1000, false, "(0, 1000]"));
+    SFX_TRY(checkRange("AoSettings.intensity", s.intensity, 0, false, 100, false, "[0, 100]"));
+    SFX_TRY(checkRange("AoSettings.contrast", s.contrast, 0.1, false, 10, false, "[0.1, 10]"));
+    if (s.bias != -1.0f) SFX_TRY(checkRange("AoSettings.bias", s.bias, 0, false, 1, false, "[0, 1], or -1 for the technique's default"));
+    SFX_TRY(checkRange("AoSettings.epsilon", s.epsilon, 1e-8, false, 1, false, "[1e-8, 1]"));
+    const uint32_t maxSamples = uint32_t(shared::SFX_AO_MAX_SAMPLES);
+    if (s.technique == AoTechnique::Crease) {
+        if (s.samples != 0 && s.samples != uint32_t(shared::SFX_AO_CREASE_TAPS))
+            return invalidArgument("AoSettings.samples", std::to_string(s.samples), "0 or 24 for Crease (its 11x11 stippled diamond is fixed)");
+    } else if (s.samples > maxSamples) {
+        return invalidArgument("AoSettings.samples", std::to_string(s.samples), "[0, " + std::to_string(maxSamples) + "] (0 = tier default)");
+    } else if (s.technique == AoTechnique::Scalable && profile.aoScalableMirrored && s.samples % 2 != 0) {
+        return invalidArgument("AoSettings.samples", std::to_string(s.samples),
+                               "an even count on the current tier (taps come in mirrored pairs), or 0");
+    }
+    if (s.blurRadius > uint32_t(shared::SFX_AO_MAX_BLUR_RADIUS))
+        return invalidArgument("AoSettings.blurRadius", std::to_string(s.blurRadius),
+                               "[0, " + std::to_string(shared::SFX_AO_MAX_BLUR_RADIUS) + "] (0 = tier default)");
+    if (uint32_t(s.normals) > 1) return invalidArgument("AoSettings.normals", std::to_string(uint32_t(s.normals)), "FromDepth or FromTexture");
+    const AoCreaseSettings& c = s.crease;
+    SFX_TRY(checkRange("AoSettings.crease.range", c.range, 0, true, 1000, false, "(0, 1000]"));
+    SFX_TRY(checkRange("AoSettings.crease.bias", c.bias, 0, true, 100, false, "(0, 100]"));
+    SFX_TRY(checkRange("AoSettings.crease.averager", c.averager, 0, true, 1000, false, "(0, 1000]"));
+    SFX_TRY(checkRange("AoSettings.crease.minimumCrease", c.minimumCrease, -1, false, 1, true, "[-1, 1)"));
+    if (!(c.fadeStart >= 0) || std::isinf(c.fadeStart)) return invalidArgument("AoSettings.crease.fadeStart", num(c.fadeStart), "[0, inf)");
+    if (!(c.fadeEnd > c.fadeStart)) return invalidArgument("AoSettings.crease.fadeEnd", num(c.fadeEnd), "(fadeStart, inf]");
+    return Status::ok();
+}
+
+Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile, uint32_t mipLevelsAllowed) {
+    SFX_TRY(validateAoSettings(s, profile));
+    AoConfig c;
+    c.technique = s.technique;
+    c.radius = s.radius;
+    c.intensity = s.intensity;
+    c.contrast = s.contrast;
+    c.epsilon = s.epsilon;
+    c.normals = s.normals;
+    c.crease = s.crease;
+    c.blurRadius = s.blur ? (s.blurRadius ? s.blurRadius : profile.aoBlurRadiusPx) : 0;
+    switch (s.technique) {
+        case AoTechnique::Alchemy:
+            c.bias = s.bias == -1.0f ? kAoAlchemyDefaultBias : s.bias;
+            c.samples = s.samples ? s.samples : profile.aoAlchemySamples;
+            break;
+        case AoTechnique::Scalable:
+            c.bias = s.bias == -1.0f ? kAoScalableDefaultBias : s.bias;
+            c.samples = s.samples ? s.samples : profile.aoScalableTaps;
+            c.mirrored = profile.aoScalableMirrored;
+            c.spiralTurns = c.mirrored ? shared::SFX_AO_SPIRAL_TURNS_MIRRORED : shared::SFX_AO_SPIRAL_TURNS_HIGH;
+            c.maxRadiusPx = profile.aoScalableMaxRadiusPx;
+            c.depthMipLevels = profile.aoUsesDepthMip ? std::max(1u, std::min(profile.aoDepthMipLevels, mipLevelsAllowed)) : 1;
+            break;
+        case AoTechnique::Crease:
+            c.bias = 0;
+            c.samples = uint32_t(shared::SFX_AO_CREASE_TAPS);
+            break;
+    }
+    return c;
+}
+
+}  // namespace sfx

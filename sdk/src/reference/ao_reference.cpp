@@ -1,0 +1,219 @@
+#include "sfx/reference/ao_reference.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sfx_shared_ao.h"
+
+namespace sfx::reference {
+namespace {
+
+using glm::dvec3;
+namespace sh = sfx::shared;
+
+double saturate(double v) { return std::clamp(v, 0.0, 1.0); }
+
+bool isSky(double z, double maxDepth) { return !(z < maxDepth); }
+
+// The pixel a tap lands on: floor of the pixel centre plus the offset, clamped to the image
+// (the shaders clamp the same way; texelFetch outside the image is undefined).
+void tapPixel(uint32_t x, uint32_t y, double ox, double oy, uint32_t w, uint32_t h, int* qx, int* qy) {
+    *qx = std::clamp(int(std::floor(double(x) + 0.5 + ox)), 0, int(w) - 1);
+    *qy = std::clamp(int(std::floor(double(y) + 0.5 + oy)), 0, int(h) - 1);
+}
+
+dvec3 positionAt(const DepthReconstruction& rec, int x, int y, double z) {
+    sh::dvec3 p = sh::reconstructViewPosition(double(x) + 0.5, double(y) + 0.5, z, rec.projInfo);
+    return dvec3(p.x, p.y, p.z);
+}
+
+double finishVisibility(double occlusion, double contrast) { return std::pow(std::max(0.0, 1.0 - occlusion), contrast); }
+
+double alchemy(const AoInput& in, const AoConfig& c, uint32_t x, uint32_t y, const dvec3& C, const dvec3& n, double z) {
+    const Grid& d = in.linearDepth;
+    const double r = c.radius;
+    const double screenRadius = r * in.reconstruction.pixelsPerUnitAtUnitDepth / z;
+    const double phi = sh::aoRotationAngle(int(x), int(y));
+    double sum = 0;
+    for (uint32_t i = 0; i < c.samples; ++i) {
+        const double rho = std::sqrt((double(i) + 0.5) / double(c.samples)) * screenRadius;
+        const double theta = double(i) * double(sh::SFX_AO_GOLDEN_ANGLE) + phi;
+        int qx, qy;
+        tapPixel(x, y, rho * std::cos(theta), rho * std::sin(theta), d.width, d.height, &qx, &qy);
+        const dvec3 v = positionAt(in.reconstruction, qx, qy, d.at(uint32_t(qx), uint32_t(qy))) - C;
+        const double vv = glm::dot(v, v);
+        if (!(vv < r * r)) continue;  // the Heaviside of eq. 9: only samples inside the sphere
+        // z_C * beta with z_C = -z: the bias grows with distance, as the paper prescribes.
+        sum += std::max(0.0, glm::dot(v, n) - z * c.bias) / (vv + c.epsilon * r * r);
+    }
+    // The falloff length u of the paper's g(t) is taken as r, so that the result is
+    // scale-invariant (epsilon is relative to r^2 for the same reason).
+    const double occlusion = 2.0 * c.intensity * r / double(c.samples) * sum;
+    return finishVisibility(occlusion, c.contrast);
+}
+
+double scalable(const AoInput& in, const std::vector<Grid>& pyramid, const AoConfig& c, uint32_t x, uint32_t y,
+                const dvec3& C, const dvec3& n, double z) {
+    const Grid& d = in.linearDepth;
+    const double r = c.radius;
+    double screenRadius = r * in.reconstruction.pixelsPerUnitAtUnitDepth / z;
+    if (c.maxRadiusPx > 0) screenRadius = std::min(screenRadius, c.maxRadiusPx);
+    const double phi = sh::aoRotationAngle(int(x), int(y));
+    const uint32_t offsets = c.mirrored ? c.samples / 2 : c.samples;
+    double sum = 0;
+    for (uint32_t i = 0; i < offsets; ++i) {
+        const double alpha = (double(i) + 0.5) / double(offsets);
+        const double h = alpha * screenRadius;
+        const double theta = double(sh::SFX_AO_TWO_PI) * alpha * c.spiralTurns + phi;
+        int level = 0;
+        if (c.depthMipLevels > 1 && h >= 1.0)
+            level = std::clamp(int(std::floor(std::log2(h))) - int(sh::SFX_AO_MIP_LEVEL_OFFSET), 0, int(c.depthMipLevels) - 1);
+        for (int sign = 1; sign >= (c.mirrored ? -1 : 1); sign -= 2) {
+            int qx, qy;
+            tapPixel(x, y, sign * h * std::cos(theta), sign * h * std::sin(theta), d.width, d.height, &qx, &qy);
+            const Grid& g = pyramid[size_t(level)];
+            const uint32_t mx = std::min(uint32_t(qx) >> level, g.width - 1);
+            const uint32_t my = std::min(uint32_t(qy) >> level, g.height - 1);
+            // The tap's depth may come from a coarse level; its position is the tap's own pixel.
+            const dvec3 v = positionAt(in.reconstruction, qx, qy, g.at(mx, my)) - C;
+            const double vv = glm::dot(v, v);
+            if (vv < c.epsilon * r * r) continue;  // the centre itself: no direction
+            const double len = std::sqrt(vv);
+            sum += std::max(1.0 - len / r, 0.0) * std::max(glm::dot(v, n) / len - c.bias, 0.0);
+        }
+    }
+    const double a = 2.0 * c.intensity / double(c.samples) * sum;
+    return finishVisibility(a * a, c.contrast);
+}
+
+double crease(const AoInput& in, const AoConfig& c, uint32_t x, uint32_t y, const dvec3& C, const dvec3& n, double z) {
+    const Grid& d = in.linearDepth;
+    const AoCreaseSettings& k = c.crease;
+    double total = 0;
+    for (int i = 0; i < sh::SFX_AO_CREASE_TAPS; ++i) {
+        const int qx = std::clamp(int(x) + sh::SFX_AO_CREASE_OFFSETS[i].x, 0, int(d.width) - 1);
+        const int qy = std::clamp(int(y) + sh::SFX_AO_CREASE_OFFSETS[i].y, 0, int(d.height) - 1);
+        const dvec3 v = positionAt(in.reconstruction, qx, qy, d.at(uint32_t(qx), uint32_t(qy))) - C;
+        const double dist2 = glm::dot(v, v);
+        if (dist2 < c.epsilon * double(k.range) * double(k.range)) continue;  // clamped onto the centre
+        const double dist = std::sqrt(dist2);
+        const double contrib = saturate((glm::dot(v, n) / dist - double(k.minimumCrease)) * double(k.bias));
+        const double atten = 1.0 - saturate(dist / double(k.range));
+        total += contrib * atten;
+    }
+    const double invFade = std::isinf(k.fadeEnd) ? 0.0 : 1.0 / (double(k.fadeEnd) - double(k.fadeStart));
+    const double fade = 1.0 - saturate((z - double(k.fadeStart)) * invFade);
+    return finishVisibility(c.intensity * total / double(k.averager) * fade, c.contrast);
+}
+
+double gaussian(int k, int radius) {
+    const double sigma = 0.5 * double(radius + 1);
+    return std::exp(-double(k * k) / (2.0 * sigma * sigma));
+}
+
+}  // namespace
+
+glm::dvec3 viewPosition(const AoInput& in, uint32_t x, uint32_t y) {
+    return positionAt(in.reconstruction, int(x), int(y), in.linearDepth.at(x, y));
+}
+
+std::vector<glm::dvec3> normalsFromDepth(const Grid& d, const DepthReconstruction& rec) {
+    std::vector<dvec3> out(size_t(d.width) * d.height, dvec3(0, 0, 1));
+    auto pos = [&](int x, int y) { return positionAt(rec, x, y, d.at(uint32_t(x), uint32_t(y))); };
+    const int w = int(d.width), h = int(d.height);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const double z = d.at(uint32_t(x), uint32_t(y));
+            const dvec3 C = pos(x, y);
+            // On each axis take the neighbour whose depth is closer (ties: the lower index).
+            dvec3 dx(1, 0, 0), dy(0, 1, 0);
+            if (w > 1) {
+                const bool useRight = x == 0 || (x < w - 1 && std::abs(d.at(uint32_t(x + 1), uint32_t(y)) - z) <
+                                                                  std::abs(d.at(uint32_t(x - 1), uint32_t(y)) - z));
+                dx = useRight ? pos(x + 1, y) - C : C - pos(x - 1, y);
+            }
+            if (h > 1) {
+                const bool useNext = y == 0 || (y < h - 1 && std::abs(d.at(uint32_t(x), uint32_t(y + 1)) - z) <
+                                                                 std::abs(d.at(uint32_t(x), uint32_t(y - 1)) - z));
+                dy = useNext ? pos(x, y + 1) - C : C - pos(x, y - 1);
+            }
+            dvec3 n = glm::cross(dx, dy);
+            const double len = glm::length(n);
+            n = len > 0 && std::isfinite(len) ? n / len : dvec3(0, 0, 1);
+            if (glm::dot(n, C) > 0) n = -n;  // face the camera (C is the ray from the eye)
+            out[size_t(y) * d.width + size_t(x)] = n;
+        }
+    }
+    return out;
+}
+
+Grid rawVisibility(const AoInput& in, const AoConfig& c) {
+    const Grid& d = in.linearDepth;
+    const std::vector<dvec3> derived = in.normals.empty() ? normalsFromDepth(d, in.reconstruction) : std::vector<dvec3>{};
+    const std::vector<dvec3>& normals = in.normals.empty() ? derived : in.normals;
+    std::vector<Grid> pyramid;
+    if (c.technique == AoTechnique::Scalable) pyramid = depthPyramid(d, std::max(c.depthMipLevels, 1u));
+    Grid out(d.width, d.height, 1.0);
+    for (uint32_t y = 0; y < d.height; ++y) {
+        for (uint32_t x = 0; x < d.width; ++x) {
+            const double z = d.at(x, y);
+            if (isSky(z, in.reconstruction.maxDepth)) continue;
+            const dvec3 C = viewPosition(in, x, y);
+            const dvec3 n = normals[size_t(y) * d.width + x];
+            double v = 1.0;
+            switch (c.technique) {
+                case AoTechnique::Alchemy: v = alchemy(in, c, x, y, C, n, z); break;
+                case AoTechnique::Scalable: v = scalable(in, pyramid, c, x, y, C, n, z); break;
+                case AoTechnique::Crease: v = crease(in, c, x, y, C, n, z); break;
+            }
+            out.at(x, y) = saturate(v);
+        }
+    }
+    return out;
+}
+
+Grid bilateralBlurPass(const Grid& vis, const Grid& d, double maxDepth, int radius, int dx, int dy) {
+    Grid out(vis.width, vis.height, 1.0);
+    const double tolerance = double(shared::SFX_AO_BLUR_DEPTH_TOLERANCE);
+    for (uint32_t y = 0; y < vis.height; ++y) {
+        for (uint32_t x = 0; x < vis.width; ++x) {
+            const double z0 = d.at(x, y);
+            if (isSky(z0, maxDepth)) {
+                out.at(x, y) = vis.at(x, y);
+                continue;
+            }
+            double acc = 0, wsum = 0;
+            for (int k = -radius; k <= radius; ++k) {
+                const int qx = int(x) + k * dx, qy = int(y) + k * dy;
+                if (qx < 0 || qy < 0 || qx >= int(vis.width) || qy >= int(vis.height)) continue;
+                const double zq = d.at(uint32_t(qx), uint32_t(qy));
+                const double w = gaussian(k, radius) * std::max(0.0, 1.0 - std::abs(zq - z0) / (tolerance * z0));
+                acc += w * vis.at(uint32_t(qx), uint32_t(qy));
+                wsum += w;
+            }
+            out.at(x, y) = acc / wsum;  // the centre's own weight is 1: wsum > 0
+        }
+    }
+    return out;
+}
+
+Grid ambientVisibility(const AoInput& in, const AoConfig& c) {
+    Grid raw = rawVisibility(in, c);
+    if (c.blurRadius == 0) return raw;
+    const int r = int(c.blurRadius);
+    const double maxDepth = in.reconstruction.maxDepth;
+    const Grid& d = in.linearDepth;
+    Grid wide = bilateralBlurPass(bilateralBlurPass(raw, d, maxDepth, r, 1, 0), d, maxDepth, r, 0, 1);
+    if (c.technique != AoTechnique::Crease) return wide;
+    const int rm = std::max(1, r / 2);
+    Grid moderate = bilateralBlurPass(bilateralBlurPass(raw, d, maxDepth, rm, 1, 0), d, maxDepth, rm, 0, 1);
+    Grid out(raw.width, raw.height, 1.0);
+    for (size_t i = 0; i < out.values.size(); ++i) {
+        const double occ = 0.5 * (double(shared::SFX_AO_CREASE_WIDE_GAIN) * (1.0 - wide.values[i]) +
+                                  double(shared::SFX_AO_CREASE_MODERATE_GAIN) * (1.0 - moderate.values[i]));
+        out.values[i] = saturate(1.0 - occ);
+    }
+    return out;
+}
+
+}  // namespace sfx::reference

@@ -1,0 +1,29 @@
+#version 450
+// Alchemy ambient obscurance (McGuire et al. 2011, eq. 10): samples uniform in the projected
+// world-space disk, counted only inside the sphere of radius r. See docs/ao.md.
+#define SFX_AO_PASS 1
+#include "sfx_shared_ao.h"
+
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    ivec2 size = textureSize(uDepth, 0);
+    float z = aoDepth(p);
+    if (!(z < params.maxDepth)) { aoWrite(1.0, z, true); return; }
+    vec3 C = aoPosition(p, z);
+    vec3 n = aoNormal(p, C, z, size);
+    float r = params.radius;
+    float screenRadius = r * params.pixelsPerUnit / z;
+    float phi = aoRotationAngle(p);
+    float sum = 0.0;
+    for (int i = 0; i < SFX_AO_MAX_SAMPLES; ++i) {
+        if (i >= params.samples) break;
+        float rho = sqrt((float(i) + 0.5) / float(params.samples)) * screenRadius;
+        float theta = float(i) * SFX_AO_GOLDEN_ANGLE + phi;
+        ivec2 q = aoTap(p, rho * vec2(cos(theta), sin(theta)), size);
+        vec3 v = aoPosition(q, aoDepth(q)) - C;
+        float vv = dot(v, v);
+        if (!(vv < r * r)) continue;
+        sum += max(0.0, dot(v, n) - z * params.bias) / (vv + params.epsilon * r * r);
+    }
+    aoWrite(aoFinish(2.0 * params.intensity * r / float(params.samples) * sum), z, false);
+}

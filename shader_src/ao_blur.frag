@@ -1,0 +1,73 @@
+#version 450
+// Separable depth-aware bilateral blur of the obscurance (one direction per pass). A neighbour's
+// weight falls to 0 as its depth departs from the centre's by SFX_AO_BLUR_DEPTH_TOLERANCE of it,
+// so occlusion never crosses a depth discontinuity. Crease keeps a second, moderate-width blur
+// in g and the final pass blends both (the article's two-blur look).
+#include "sfx_shared_ao.h"
+
+#ifdef SFX_TIER_HIGH
+layout(set = 0, binding = 0) uniform sampler2D uDepth;  // linear depth (the AO target is RG16F)
+#endif
+layout(set = 0, binding = 1) uniform sampler2D uSource;  // current tier: depth key packed in b, a
+// Mirrors BlurParams in sdk/src/effects/ao.cpp (std140).
+layout(set = 0, binding = 2, std140) uniform BlurParams {
+    ivec2 direction;
+    int radius, moderateRadius;
+    int crease, finalPass, pad0, pad1;
+    float maxDepth, keyNear, keyLog2Range, pad2;
+} params;
+layout(location = 0) out vec4 outAo;
+
+float blurDepth(ivec2 q, vec4 s) {
+#ifdef SFX_TIER_HIGH
+    return texelFetch(uDepth, q, 0).r;
+#else
+    float key = aoUnpackDepthKey(s.ba);
+    return key >= 1.0 ? params.maxDepth : params.keyNear * exp2(key * params.keyLog2Range);
+#endif
+}
+
+float gaussianWeight(int k, int radius) {
+    float sigma = 0.5 * float(radius + 1);
+    return exp(-float(k * k) / (2.0 * sigma * sigma));
+}
+
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    ivec2 size = textureSize(uSource, 0);
+    vec4 c = texelFetch(uSource, p, 0);
+    float z0 = blurDepth(p, c);
+    if (!(z0 < params.maxDepth)) {
+        outAo = params.finalPass != 0 ? vec4(1.0) : c;
+        return;
+    }
+    float accWide = 0.0, wWide = 0.0, accModerate = 0.0, wModerate = 0.0;
+    for (int k = -SFX_AO_MAX_BLUR_RADIUS; k <= SFX_AO_MAX_BLUR_RADIUS; ++k) {
+        if (k < -params.radius || k > params.radius) continue;
+        ivec2 q = p + k * params.direction;
+        if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) continue;
+        vec4 s = texelFetch(uSource, q, 0);
+        float edge = max(0.0, 1.0 - abs(blurDepth(q, s) - z0) / (SFX_AO_BLUR_DEPTH_TOLERANCE * z0));
+        float w = gaussianWeight(k, params.radius) * edge;
+        accWide += w * s.r;
+        wWide += w;
+        if (params.crease != 0 && abs(k) <= params.moderateRadius) {
+            float wm = gaussianWeight(k, params.moderateRadius) * edge;
+            // The first pass blurs the raw result (r) twice; the second blurs each in its channel.
+            accModerate += wm * (params.finalPass != 0 ? s.g : s.r);
+            wModerate += wm;
+        }
+    }
+    float wide = accWide / wWide;
+    float moderate = params.crease != 0 ? accModerate / wModerate : wide;
+    if (params.finalPass == 0) {
+        outAo = vec4(wide, moderate, c.b, c.a);
+        return;
+    }
+    float v = wide;
+    if (params.crease != 0) {
+        float occ = 0.5 * (SFX_AO_CREASE_WIDE_GAIN * (1.0 - wide) + SFX_AO_CREASE_MODERATE_GAIN * (1.0 - moderate));
+        v = clamp(1.0 - occ, 0.0, 1.0);
+    }
+    outAo = vec4(v, v, v, 1.0);
+}

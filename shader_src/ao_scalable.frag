@@ -1,0 +1,47 @@
+#version 450
+// Scalable AO (Bukowski et al. 2012): spiral taps with a linear distance falloff and a biased
+// cosine, squared normalised sum. Current tier: mirrored pairs, radius clamp, full-resolution
+// depth. High tier: 9 spiral taps, each reading the depth MIP level its distance calls for.
+#define SFX_AO_PASS 1
+#include "sfx_shared_ao.h"
+
+float scalableTap(ivec2 p, vec2 offset, int level, ivec2 size, vec3 C, vec3 n) {
+    ivec2 q = aoTap(p, offset, size);
+    ivec2 m = min(q >> level, textureSize(uDepth, level) - 1);
+    vec3 v = aoPosition(q, texelFetch(uDepth, m, level).r) - C;
+    float r = params.radius;
+    float vv = dot(v, v);
+    if (vv < params.epsilon * r * r) return 0.0;
+    float len = sqrt(vv);
+    return max(1.0 - len / r, 0.0) * max(dot(v, n) / len - params.bias, 0.0);
+}
+
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    ivec2 size = textureSize(uDepth, 0);
+    float z = aoDepth(p);
+    if (!(z < params.maxDepth)) { aoWrite(1.0, z, true); return; }
+    vec3 C = aoPosition(p, z);
+    vec3 n = aoNormal(p, C, z, size);
+    float screenRadius = params.radius * params.pixelsPerUnit / z;
+    if (params.maxRadiusPx > 0.0) screenRadius = min(screenRadius, params.maxRadiusPx);
+    float phi = aoRotationAngle(p);
+    int offsets = params.mirrored != 0 ? params.samples / 2 : params.samples;
+    float sum = 0.0;
+    for (int i = 0; i < SFX_AO_MAX_SAMPLES; ++i) {
+        if (i >= offsets) break;
+        float alpha = (float(i) + 0.5) / float(offsets);
+        float h = alpha * screenRadius;
+        float theta = SFX_AO_TWO_PI * alpha * params.spiralTurns + phi;
+        vec2 offset = h * vec2(cos(theta), sin(theta));
+        int level = 0;
+#ifdef SFX_TIER_HIGH
+        if (params.mipLevels > 1 && h >= 1.0)
+            level = clamp(int(floor(log2(h))) - SFX_AO_MIP_LEVEL_OFFSET, 0, params.mipLevels - 1);
+#endif
+        sum += scalableTap(p, offset, level, size, C, n);
+        if (params.mirrored != 0) sum += scalableTap(p, -offset, level, size, C, n);
+    }
+    float a = 2.0 * params.intensity / float(params.samples) * sum;
+    aoWrite(aoFinish(a * a), z, false);
+}

@@ -1,0 +1,166 @@
+// Ambient obscurance constants and sample patterns, shared by the ao_*.frag shaders and the
+// CPU reference (sdk/src/reference/ao_reference.cpp): one definition, so they cannot drift.
+// Same dialect rules as sfx_shared.h (the common subset of GLSL 450 and C++20).
+#ifndef SFX_SHARED_AO_H
+#define SFX_SHARED_AO_H
+
+#include "sfx_shared.h"
+
+#ifdef __cplusplus
+#include <cmath>
+namespace sfx::shared {
+#endif
+
+SFX_CONST(float, SFX_AO_TWO_PI, 6.28318530717958647692)
+
+// ---- Spiral taps (Scalable AO) -----------------------------------------------------------
+// Tap i of N: alpha = (i + 0.5) / N, screen radius alpha * R, angle 2 pi alpha turns + phi.
+// 7 turns for 9 taps is the Scalable Ambient Obscurance reference's choice (a prime: no two
+// taps line up). The current tier uses 2 offsets, each also negated (4 taps): with an integer
+// number of turns both offsets would lie on one line through the centre; 1.5 turns puts them
+// at 135 and 45 degrees, so the 4 taps form an X at two radii.
+SFX_CONST(float, SFX_AO_SPIRAL_TURNS_HIGH, 7.0)
+SFX_CONST(float, SFX_AO_SPIRAL_TURNS_MIRRORED, 1.5)
+// A tap at screen distance h reads depth MIP level clamp(floor(log2(h)) - Q, 0, levels - 1).
+SFX_CONST(int, SFX_AO_MIP_LEVEL_OFFSET, 3)
+
+// ---- Alchemy disk pattern -----------------------------------------------------------------
+// Sample i of s lies at radius sqrt((i + 0.5) / s) * R (uniform density in the projected disk)
+// and angle i * golden angle + phi (a Vogel spiral: no two samples share a direction).
+SFX_CONST(float, SFX_AO_GOLDEN_ANGLE, 2.39996322972865332)
+
+// ---- Crease shading: the 24 taps of the 11x11 stippled diamond ------------------------------
+// The pixels (dx, dy) with |dx| + |dy| in {2, 4}: every other pixel of the diamond of
+// half-width 5 (a checkerboard stipple), the centre excluded. 8 taps on ring 2, 16 on ring 4.
+SFX_CONST(int, SFX_AO_CREASE_TAPS, 24)
+SFX_ARRAY_BEGIN(ivec2, SFX_AO_CREASE_OFFSETS, 24)
+    SFX_IVEC2(2, 0), SFX_IVEC2(1, 1), SFX_IVEC2(0, 2), SFX_IVEC2(-1, 1),
+    SFX_IVEC2(-2, 0), SFX_IVEC2(-1, -1), SFX_IVEC2(0, -2), SFX_IVEC2(1, -1),
+    SFX_IVEC2(4, 0), SFX_IVEC2(3, 1), SFX_IVEC2(2, 2), SFX_IVEC2(1, 3),
+    SFX_IVEC2(0, 4), SFX_IVEC2(-1, 3), SFX_IVEC2(-2, 2), SFX_IVEC2(-3, 1),
+    SFX_IVEC2(-4, 0), SFX_IVEC2(-3, -1), SFX_IVEC2(-2, -2), SFX_IVEC2(-1, -3),
+    SFX_IVEC2(0, -4), SFX_IVEC2(1, -3), SFX_IVEC2(2, -2), SFX_IVEC2(3, -1)
+SFX_ARRAY_END
+// The article's look: two blurs of the raw result, a wide one that lowers intensity and a
+// moderate one (half the width) that raises it, averaged. Gains on occlusion.
+SFX_CONST(float, SFX_AO_CREASE_WIDE_GAIN, 0.6)
+SFX_CONST(float, SFX_AO_CREASE_MODERATE_GAIN, 1.4)
+
+// ---- Bilateral blur ------------------------------------------------------------------------
+// A neighbour's weight falls linearly to 0 as its depth differs from the centre's by this
+// fraction of the centre's depth: occlusion is never carried across a depth discontinuity.
+SFX_CONST(float, SFX_AO_BLUR_DEPTH_TOLERANCE, 0.05)
+SFX_CONST(int, SFX_AO_MAX_BLUR_RADIUS, 8)
+// Most taps a GPU pass takes (the uniform loop bound); the CPU reference has no limit.
+SFX_CONST(int, SFX_AO_MAX_SAMPLES, 64)
+
+// ---- Per-pixel rotation --------------------------------------------------------------------
+// An integer hash of the pixel, so the GPU (32-bit float) and the reference (double) rotate
+// each pixel's pattern by the same angle: phi = (hash & 0xFFFF) * 2 pi / 65536. The low 16 bits
+// are exact in float, only the final multiply rounds.
+#ifdef __cplusplus
+inline constexpr uint32_t aoRotationHash(int x, int y) {
+    uint32_t h = (uint32_t(x) * 73856093u) ^ (uint32_t(y) * 19349663u);
+    h ^= h >> 13;
+    h *= 0x5bd1e995u;
+    h ^= h >> 15;
+    return h;
+}
+inline double aoRotationAngle(int x, int y) { return double(aoRotationHash(x, y) & 0xFFFFu) * (6.28318530717958647692 / 65536.0); }
+#else
+uint aoRotationHash(ivec2 p) {
+    uint h = (uint(p.x) * 73856093u) ^ (uint(p.y) * 19349663u);
+    h ^= h >> 13;
+    h *= 0x5bd1e995u;
+    h ^= h >> 15;
+    return h;
+}
+float aoRotationAngle(ivec2 p) { return float(aoRotationHash(p) & 0xFFFFu) * (SFX_AO_TWO_PI / 65536.0); }
+#endif
+
+// ---- Depth packed in two 8-bit channels (current tier, RGBA8 AO target) --------------------
+// key = log2(z / zNear) / log2(SFX_SKY_DEPTH / zNear) in [0, 1], stored as 16 bits in b (high)
+// and a (low). A log key gives the same relative precision at every distance (~3e-4 of z for
+// zNear = 0.1), far finer than the blur's SFX_AO_BLUR_DEPTH_TOLERANCE.
+#ifndef __cplusplus
+vec2 aoPackDepthKey(float key) {
+    float k = floor(clamp(key, 0.0, 1.0) * 65535.0 + 0.5);
+    float hi = floor(k / 256.0);
+    return vec2(hi, k - hi * 256.0) / 255.0;
+}
+float aoUnpackDepthKey(vec2 ba) {
+    vec2 b = floor(ba * 255.0 + 0.5);
+    return (b.x * 256.0 + b.y) / 65535.0;
+}
+#endif
+
+#ifdef __cplusplus
+}  // namespace sfx::shared
+#endif
+
+// ---- GLSL of the obscurance passes (ao_alchemy/ao_scalable/ao_crease.frag define SFX_AO_PASS) ----
+#if !defined(__cplusplus) && defined(SFX_AO_PASS)
+layout(set = 0, binding = 0) uniform sampler2D uDepth;    // linear depth (+ MIP levels for Scalable, high tier)
+layout(set = 0, binding = 1) uniform sampler2D uNormals;  // host normals; the depth again when derived
+// Mirrors AoParams in sdk/src/effects/ao.cpp (std140).
+layout(set = 0, binding = 2, std140) uniform AoParams {
+    vec4 projInfo;
+    float radius, intensity, contrast, bias;
+    float epsilon, pixelsPerUnit, maxRadiusPx, maxDepth;
+    int samples, mirrored, mipLevels, normalSource;  // normalSource: 0 derived, 1 signed float, 2 unorm8
+    float spiralTurns, keyNear, keyInvLog2Range, packDepth;
+    float creaseRange, creaseBias, creaseAverager, creaseMinimum;
+    float fadeStart, invFadeRange, pad0, pad1;
+} params;
+layout(location = 0) out vec4 outAo;
+
+float aoDepth(ivec2 q) { return texelFetch(uDepth, q, 0).r; }
+vec3 aoPosition(ivec2 q, float z) { return reconstructViewPosition(vec2(q) + 0.5, z, params.projInfo); }
+// The pixel a tap lands on: floor(centre + offset), clamped to the image (as the reference).
+ivec2 aoTap(ivec2 p, vec2 offset, ivec2 size) { return clamp(ivec2(floor(vec2(p) + 0.5 + offset)), ivec2(0), size - 1); }
+
+// Normal from depth: on each axis the neighbour whose depth is closer to the centre's (the only
+// in-bounds one at the border; ties take the lower index), oriented toward the camera.
+vec3 aoDerivedNormal(ivec2 p, vec3 C, float z, ivec2 size) {
+    vec3 dx = vec3(1.0, 0.0, 0.0), dy = vec3(0.0, 1.0, 0.0);
+    if (size.x > 1) {
+        float zl = p.x > 0 ? aoDepth(p - ivec2(1, 0)) : 0.0, zr = p.x < size.x - 1 ? aoDepth(p + ivec2(1, 0)) : 0.0;
+        bool useRight = p.x == 0 || (p.x < size.x - 1 && abs(zr - z) < abs(zl - z));
+        dx = useRight ? aoPosition(p + ivec2(1, 0), zr) - C : C - aoPosition(p - ivec2(1, 0), zl);
+    }
+    if (size.y > 1) {
+        float zd = p.y > 0 ? aoDepth(p - ivec2(0, 1)) : 0.0, zu = p.y < size.y - 1 ? aoDepth(p + ivec2(0, 1)) : 0.0;
+        bool useNext = p.y == 0 || (p.y < size.y - 1 && abs(zu - z) < abs(zd - z));
+        dy = useNext ? aoPosition(p + ivec2(0, 1), zu) - C : C - aoPosition(p - ivec2(0, 1), zd);
+    }
+    vec3 n = cross(dx, dy);
+    float len = length(n);
+    n = len > 0.0 ? n / len : vec3(0.0, 0.0, 1.0);
+    return dot(n, C) > 0.0 ? -n : n;
+}
+
+vec3 aoNormal(ivec2 p, vec3 C, float z, ivec2 size) {
+    if (params.normalSource != 0) {
+        vec3 n = texelFetch(uNormals, p, 0).xyz;
+        if (params.normalSource == 2) n = n * 2.0 - 1.0;
+        float len = length(n);
+        if (len > 1e-3) return n / len;
+    }
+    return aoDerivedNormal(p, C, z, size);
+}
+
+// Visibility out; with packDepth (current tier, blur on) the depth key goes to b and a, and sky
+// gets the key 1 exactly (surfaces stay below it), so the blur can tell sky apart.
+void aoWrite(float visibility, float z, bool sky) {
+    float v = clamp(visibility, 0.0, 1.0);
+    if (params.packDepth != 0.0) {
+        float key = sky ? 1.0 : min(log2(z / params.keyNear) * params.keyInvLog2Range, 65534.0 / 65535.0);
+        outAo = vec4(v, v, aoPackDepthKey(key));
+    } else {
+        outAo = vec4(v, v, v, 1.0);
+    }
+}
+float aoFinish(float occlusion) { return pow(max(0.0, 1.0 - occlusion), params.contrast); }
+#endif
+
+#endif  // SFX_SHARED_AO_H

@@ -1,0 +1,285 @@
+// The AO CPU references against analytic scenes: properties any correct implementation has
+// (open planes unoccluded, monotonic toward creases and contacts, scale invariance, stable
+// under doubled resolution, never NaN or outside [0, 1]), plus settings validation.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "analytic_scenes.hpp"
+#include "sfx/ao.hpp"
+#include "sfx/image_io.hpp"
+#include "sfx/reference/ao_reference.hpp"
+#include "sfx/tiers.hpp"
+#include "sfx_shared_ao.h"
+
+using namespace sfx;
+using reference::Grid;
+
+namespace {
+
+const AoTechnique kTechniques[] = {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease};
+const Tier kTiers[] = {Tier::Current, Tier::High};
+
+AoConfig configFor(AoTechnique t, Tier tier, double scale = 1.0, bool blur = true, double radius = 0.5) {
+    AoSettings s;
+    s.technique = t;
+    s.radius = float(radius * scale);
+    s.blur = blur;
+    // Scalable's squared sum makes faint occlusion fainter; 2 keeps the contact shadow measurable.
+    if (t == AoTechnique::Scalable) s.intensity = 2.0f;
+    s.crease.range = float(1.0 * scale);
+    s.crease.fadeStart = float(50 * scale);
+    s.crease.fadeEnd = float(100 * scale);
+    Result<AoConfig> c = resolveAoConfig(s, tiers::profile(tier), 5);
+    REQUIRE(c.isOk());
+    return c.value();
+}
+
+void requireValid(const Grid& g) {
+    for (double v : g.values) {
+        REQUIRE(std::isfinite(v));
+        REQUIRE(v >= 0.0);
+        REQUIRE(v <= 1.0);
+    }
+}
+
+std::string name(AoTechnique t, Tier tier) { return std::string(toString(t)) + "/" + toString(tier); }
+
+}  // namespace
+
+TEST_CASE("ao settings: out-of-range values are named errors", "[ao][bad-input]") {
+    const TierProfile& high = tiers::profile(Tier::High);
+    const TierProfile& current = tiers::profile(Tier::Current);
+    CHECK(validateAoSettings(AoSettings{}, high).isOk());
+    AoSettings s;
+    s.radius = -1;
+    Status st = validateAoSettings(s, high);
+    CHECK(st.code() == StatusCode::InvalidArgument);
+    CHECK(st.message().find("AoSettings.radius") != std::string::npos);
+    CHECK(st.message().find("(0, 1000]") != std::string::npos);
+    s.radius = std::numeric_limits<float>::quiet_NaN();
+    CHECK(validateAoSettings(s, high).message().find("AoSettings.radius") != std::string::npos);
+    s = {};
+    s.samples = 3;
+    CHECK(validateAoSettings(s, high).isOk());
+    CHECK(validateAoSettings(s, current).message().find("AoSettings.samples") != std::string::npos);
+    s.samples = 65;
+    CHECK(validateAoSettings(s, high).message().find("AoSettings.samples") != std::string::npos);
+    s = {};
+    s.technique = AoTechnique::Crease;
+    s.samples = 12;
+    CHECK(validateAoSettings(s, high).message().find("AoSettings.samples") != std::string::npos);
+    s = {};
+    s.crease.fadeEnd = 10;
+    s.crease.fadeStart = 20;
+    CHECK(validateAoSettings(s, high).message().find("AoSettings.crease.fadeEnd") != std::string::npos);
+    s = {};
+    s.bias = 2;
+    CHECK(validateAoSettings(s, high).message().find("AoSettings.bias") != std::string::npos);
+    s = {};
+    s.blurRadius = 9;
+    CHECK(validateAoSettings(s, high).message().find("AoSettings.blurRadius") != std::string::npos);
+    s = {};
+    s.contrast = 0;
+    CHECK(validateAoSettings(s, high).message().find("AoSettings.contrast") != std::string::npos);
+}
+
+TEST_CASE("ao settings resolve to the tier table", "[ao]") {
+    const AoConfig aHigh = configFor(AoTechnique::Alchemy, Tier::High);
+    CHECK(aHigh.samples == 12);
+    CHECK(aHigh.bias == Approx(1e-4));
+    CHECK(configFor(AoTechnique::Alchemy, Tier::Current).samples == uint32_t(shared::SFX_AO_ALCHEMY_SAMPLES_CURRENT));
+    const AoConfig sHigh = configFor(AoTechnique::Scalable, Tier::High);
+    CHECK(sHigh.samples == 9);
+    CHECK_FALSE(sHigh.mirrored);
+    CHECK(sHigh.maxRadiusPx == 0);
+    CHECK(sHigh.depthMipLevels == 5);
+    CHECK(sHigh.blurRadius == 6);
+    const AoConfig sCur = configFor(AoTechnique::Scalable, Tier::Current);
+    CHECK(sCur.samples == 4);
+    CHECK(sCur.mirrored);
+    CHECK(sCur.maxRadiusPx == Approx(20));
+    CHECK(sCur.depthMipLevels == 1);
+    CHECK(sCur.blurRadius == 2);
+    CHECK(configFor(AoTechnique::Crease, Tier::High, 1.0, false).blurRadius == 0);
+}
+
+TEST_CASE("ao shared patterns: the crease diamond is 24 distinct stippled taps", "[ao]") {
+    for (int i = 0; i < shared::SFX_AO_CREASE_TAPS; ++i) {
+        const auto o = shared::SFX_AO_CREASE_OFFSETS[i];
+        const int m = std::abs(o.x) + std::abs(o.y);
+        CHECK((m == 2 || m == 4));
+        for (int j = 0; j < i; ++j)
+            CHECK_FALSE((shared::SFX_AO_CREASE_OFFSETS[j].x == o.x && shared::SFX_AO_CREASE_OFFSETS[j].y == o.y));
+    }
+    // The rotation hash spreads neighbours over the circle.
+    double sumCos = 0, sumSin = 0;
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x) {
+            sumCos += std::cos(shared::aoRotationAngle(x, y));
+            sumSin += std::sin(shared::aoRotationAngle(x, y));
+        }
+    CHECK(std::abs(sumCos) / 1024 < 0.1);
+    CHECK(std::abs(sumSin) / 1024 < 0.1);
+}
+
+TEST_CASE("ao normals from depth: exact on planes, close on spheres, no differencing across edges", "[ao]") {
+    for (const test::AnalyticScene& s : {test::tiltedPlaneScene(64, 48), test::facingPlaneScene(64, 48)}) {
+        const auto n = reference::normalsFromDepth(s.linearDepth, s.reconstruction);
+        for (size_t i = 0; i < n.size(); ++i) REQUIRE(glm::dot(n[i], s.normals[i]) > 1.0 - 1e-9);
+    }
+    const test::AnalyticScene s = test::sphereOnPlaneScene(128, 96);
+    const auto n = reference::normalsFromDepth(s.linearDepth, s.reconstruction);
+    int bad = 0, edgePixels = 0;
+    for (uint32_t y = 0; y < s.height; ++y)
+        for (uint32_t x = 0; x < s.width; ++x) {
+            const size_t i = size_t(y) * s.width + x;
+            const glm::dvec3 view = -glm::normalize(s.positions[i]);
+            if (glm::dot(s.normals[i], view) < 0.3) continue;  // grazing: finite differences are coarse there
+            const double z = s.linearDepth.at(x, y);
+            const bool atEdge = x > 0 && x + 1 < s.width && std::abs(s.linearDepth.at(x + 1, y) - s.linearDepth.at(x - 1, y)) > 0.2 * z;
+            edgePixels += atEdge;
+            if (glm::dot(n[i], s.normals[i]) < 0.95) ++bad;
+        }
+    CHECK(edgePixels > 10);  // the scene really has depth edges
+    CHECK(bad == 0);
+}
+
+TEST_CASE("ao reference: an open plane is unoccluded", "[ao]") {
+    for (AoTechnique t : kTechniques)
+        for (Tier tier : kTiers)
+            for (bool gbufferNormals : {false, true}) {
+                INFO(name(t, tier) << (gbufferNormals ? " gbuffer normals" : " derived normals"));
+                const test::AnalyticScene facing = test::facingPlaneScene(64, 48);
+                const Grid v = reference::ambientVisibility(facing.aoInput(gbufferNormals), configFor(t, tier));
+                requireValid(v);
+                for (double x : v.values) REQUIRE(x > 1.0 - 1e-9);
+                const test::AnalyticScene tilted = test::tiltedPlaneScene(64, 48);
+                const Grid w = reference::ambientVisibility(tilted.aoInput(gbufferNormals), configFor(t, tier));
+                requireValid(w);
+                for (double x : w.values) REQUIRE(x > 0.999);
+            }
+}
+
+TEST_CASE("ao reference: occlusion grows monotonically toward a crease and a contact point", "[ao]") {
+    const std::vector<double> creaseEdges{0.0, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.6, 0.9};
+    const std::vector<double> contactEdges{0.35, 0.45, 0.55, 0.7, 0.85, 1.0, 1.3, 1.8};
+    for (AoTechnique t : kTechniques)
+        for (Tier tier : kTiers)
+            for (bool blur : {false, true}) {
+                INFO(name(t, tier) << (blur ? " blur" : " no blur"));
+                // Bins average 100+ pixels; unblurred, the few rotated taps still leave ~0.03 of noise.
+                const double tol = blur ? 0.02 : 0.04;
+                const test::AnalyticScene corner = test::cornerScene(160, 120);
+                const Grid vc = reference::ambientVisibility(corner.aoInput(false), configFor(t, tier, 1.0, blur));
+                requireValid(vc);
+                const auto bc = test::occlusionBins(corner, vc, 1.0, creaseEdges, test::onCornerPlaneA, test::distanceToCrease);
+                for (size_t i = 0; i + 1 < bc.size(); ++i) {
+                    INFO("crease bin " << i << ": " << bc[i] << " then " << bc[i + 1]);
+                    REQUIRE(bc[i] >= 0);
+                    CHECK(bc[i] >= bc[i + 1] - tol);
+                }
+                CHECK(bc.front() > bc.back() + 0.01);
+                const test::AnalyticScene contact = test::sphereOnPlaneScene(160, 120);
+                const Grid vs = reference::ambientVisibility(contact.aoInput(false), configFor(t, tier, 1.0, blur, 1.0));
+                requireValid(vs);
+                const auto bs = test::occlusionBins(contact, vs, 1.0, contactEdges, test::onContactFloor, test::distanceToContact);
+                for (size_t i = 0; i + 1 < bs.size(); ++i) {
+                    INFO("contact bin " << i << ": " << bs[i] << " then " << bs[i + 1]);
+                    REQUIRE(bs[i] >= 0);
+                    CHECK(bs[i] >= bs[i + 1] - tol);
+                }
+                CHECK(bs.front() > bs.back() + 0.01);
+            }
+}
+
+TEST_CASE("ao reference: scaling scene and radius together leaves AO unchanged", "[ao]") {
+    for (AoTechnique t : kTechniques)
+        for (Tier tier : kTiers) {
+            INFO(name(t, tier));
+            const Grid a = reference::ambientVisibility(test::cornerScene(96, 64).aoInput(false), configFor(t, tier, 1.0));
+            const Grid b = reference::ambientVisibility(test::cornerScene(96, 64, 10.0).aoInput(false), configFor(t, tier, 10.0));
+            double maxDiff = 0;
+            for (size_t i = 0; i < a.values.size(); ++i) maxDiff = std::max(maxDiff, std::abs(a.values[i] - b.values[i]));
+            CHECK(maxDiff < 1e-6);
+        }
+}
+
+TEST_CASE("ao reference: doubling resolution changes AO only within tolerance", "[ao]") {
+    for (AoTechnique t : kTechniques)
+        for (Tier tier : kTiers) {
+            INFO(name(t, tier));
+            for (auto make : {&test::cornerScene, &test::sphereOnPlaneScene}) {
+                const Grid lo = reference::ambientVisibility(make(96, 64, 1.0).aoInput(false), configFor(t, tier));
+                const Grid hi = test::downsample2x(reference::ambientVisibility(make(192, 128, 1.0).aoInput(false), configFor(t, tier)));
+                double meanAbs = 0, meanLo = 0, meanHi = 0;
+                for (size_t i = 0; i < lo.values.size(); ++i) {
+                    meanAbs += std::abs(lo.values[i] - hi.values[i]);
+                    meanLo += lo.values[i];
+                    meanHi += hi.values[i];
+                }
+                meanAbs /= double(lo.values.size());
+                const double meanShift = std::abs(meanLo - meanHi) / double(lo.values.size());
+                // Crease's kernel is fixed in pixels: at twice the resolution it spans half the
+                // world distance, so it is allowed to change more (docs/ao.md).
+                const double tol = t == AoTechnique::Crease ? 0.05 : 0.03;
+                CHECK(meanAbs < tol);
+                CHECK(meanShift < tol / 2);
+            }
+        }
+}
+
+TEST_CASE("ao reference: sky is unoccluded; tiny and huge radii and far depths stay finite", "[ao]") {
+    const test::AnalyticScene cols = test::columnsScene(96, 64);
+    for (AoTechnique t : kTechniques)
+        for (Tier tier : kTiers)
+            for (float radius : {1e-4f, 0.5f, 50.0f, 1000.0f}) {
+                INFO(name(t, tier) << " radius " << radius);
+                AoSettings s;
+                s.technique = t;
+                s.radius = radius;
+                const AoConfig c = resolveAoConfig(s, tiers::profile(tier), 5).value();
+                const Grid v = reference::ambientVisibility(cols.aoInput(false), c);
+                requireValid(v);
+                for (uint32_t y = 0; y < v.height; ++y)
+                    for (uint32_t x = 0; x < v.width; ++x)
+                        if (cols.linearDepth.at(x, y) >= cols.reconstruction.maxDepth) REQUIRE(v.at(x, y) == 1.0);
+                if (radius == 1e-4f && t != AoTechnique::Crease)
+                    for (double x : v.values) REQUIRE(x > 0.999);  // a radius below a pixel finds no occluder
+            }
+}
+
+TEST_CASE("ao reference: the bilateral blur does not carry occlusion across a depth edge", "[ao]") {
+    Grid vis(16, 4, 1.0), depth(16, 4, 10.0);
+    for (uint32_t y = 0; y < 4; ++y)
+        for (uint32_t x = 0; x < 8; ++x) {
+            vis.at(x, y) = 0.0;
+            depth.at(x, y) = 2.0;
+        }
+    for (int r : {1, 2, 6, 8}) {
+        const Grid h = reference::bilateralBlurPass(vis, depth, 100.0, r, 1, 0);
+        for (uint32_t y = 0; y < 4; ++y)
+            for (uint32_t x = 0; x < 16; ++x) REQUIRE(h.at(x, y) == (x < 8 ? 0.0 : 1.0));
+    }
+}
+
+// Not a check: writes the G-buffer files the `sfx ao` CTest entries read (fixture ao_cli_files).
+TEST_CASE("ao cli fixture: write small G-buffer files", "[.ao-cli-fixture]") {
+    const test::AnalyticScene s = test::cornerScene(64, 48);
+    io::Image depth(s.width, s.height, 1), normals(s.width, s.height, 3);
+    for (uint32_t y = 0; y < s.height; ++y)
+        for (uint32_t x = 0; x < s.width; ++x) {
+            depth.at(x, y) = float(s.linearDepth.at(x, y));
+            const glm::dvec3 n = s.normals[size_t(y) * s.width + x];
+            for (uint32_t c = 0; c < 3; ++c) normals.at(x, y, c) = float(n[int(c)]);
+        }
+    REQUIRE(io::writePfm("ao_cli_depth.pfm", depth).isOk());
+    REQUIRE(io::writePfm("ao_cli_normals.pfm", normals).isOk());
+    REQUIRE(io::writePfm("ao_cli_small.pfm", io::Image(32, 24, 1, 4.0f)).isOk());
+    std::FILE* f = std::fopen("ao_cli_malformed.pfm", "wb");
+    REQUIRE(f);
+    std::fputs("Pf\n64 oops\n-1\n", f);
+    std::fclose(f);
+}
