@@ -11,6 +11,7 @@
 
 #include "scene.hpp"
 #include "sfx/backends.hpp"
+#include "sfx/ao.hpp"
 #include "sfx/depth.hpp"
 #include "sfx/image_io.hpp"
 #include "sfx_shared.h"
@@ -58,6 +59,30 @@ io::Image depthPicture(const io::Image& depth) {
     for (size_t i = 0; i < depth.pixels.size(); ++i) {
         const float z = depth.pixels[i];
         out.pixels[i] = z >= shared::SFX_SKY_DEPTH * 0.5f ? 0.0f : 1.0f - (std::log(z) - llo) / (lhi - llo + 1e-12f);
+    }
+    return out;
+}
+
+Result<std::vector<uint8_t>> readRGBA8(Device& device, TextureHandle texture, uint32_t w, uint32_t h) {
+    std::vector<uint8_t> bytes(size_t(w) * h * 4);
+    SFX_TRY(device.readTexture(texture, 0, bytes.data(), bytes.size()));
+    return bytes;
+}
+
+// A lit composite on the CPU: albedo * (ambient * visibility + key light * n.l). The normals
+// image holds n * 0.5 + 0.5; the key light comes from the upper left, in view space.
+io::Image composite(const std::vector<uint8_t>& albedo, const io::Image& normals, const std::vector<uint8_t>* visibility) {
+    io::Image out(normals.width, normals.height, 3);
+    const float lx = -0.45f, ly = 0.75f, lz = 0.48f;
+    for (size_t i = 0; i < size_t(normals.width) * normals.height; ++i) {
+        if (albedo[i * 4 + 3] == 0) {  // nothing drawn: a sky colour
+            out.pixels[i * 3 + 0] = 0.62f, out.pixels[i * 3 + 1] = 0.7f, out.pixels[i * 3 + 2] = 0.8f;
+            continue;
+        }
+        const float nx = normals.pixels[i * 3] * 2 - 1, ny = normals.pixels[i * 3 + 1] * 2 - 1, nz = normals.pixels[i * 3 + 2] * 2 - 1;
+        const float direct = std::max(0.0f, nx * lx + ny * ly + nz * lz);
+        const float ao = visibility ? (*visibility)[i * 4] / 255.0f : 1.0f;
+        for (int c = 0; c < 3; ++c) out.pixels[i * 3 + c] = albedo[i * 4 + c] / 255.0f * (0.55f * ao + 0.6f * direct);
     }
     return out;
 }
@@ -118,15 +143,35 @@ int main(int argc, char** argv) {
     Result<std::unique_ptr<samples::SceneRenderer>> renderer = samples::SceneRenderer::create(*device, tier->tier);
     if (!renderer) return fail(renderer.status());
 
-    // 2. Only what the scene needs: the depth pyramid exists only on the high tier, where the
-    //    scalable AO reads it.
-    LinearDepthDesc ld{width, height, tier->tier, tier->profile.aoUsesDepthMip ? tier->profile.aoDepthMipLevels : 1u};
-    Result<std::unique_ptr<LinearDepth>> linear = LinearDepth::create(*device, ld);
-    if (!linear) return fail(linear.status());
-    std::cout << "plan:\n" << linear.value()->plan().describe();
-
+    // 2. Ambient obscurance, every technique, at the tier's defaults. Each context owns only
+    //    what it needs: the depth MIP pyramid exists only for the high tier's scalable AO.
     Result<TimerHandle> timer = device->createTimer();
     if (!timer) return fail(timer.status());
+    const AoTechnique techniques[] = {AoTechnique::Scalable, AoTechnique::Alchemy, AoTechnique::Crease};
+    std::vector<std::unique_ptr<AmbientObscurance>> contexts;
+    Plan plan;
+    for (AoTechnique technique : techniques) {
+        AoDesc desc;
+        desc.width = width;
+        desc.height = height;
+        desc.profile = tier->profile;
+        desc.settings.technique = technique;
+        desc.settings.normals = AoNormals::FromTexture;
+        desc.settings.radius = 0.6f;
+        // The seeds' nominal intensity makes scalable AO (a squared sum) and crease shading (a
+        // sum over 10) faint on these scenes; the demo turns them up so the effect shows.
+        desc.settings.intensity = technique == AoTechnique::Scalable ? 3.0f : technique == AoTechnique::Crease ? 3.0f : 1.0f;
+        std::cout << "ao " << toString(technique) << ": radius " << desc.settings.radius << ", intensity "
+                  << desc.settings.intensity << "\n";
+        Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(*device, desc);
+        if (!ao) return fail(ao.status());
+        plan.append(ao.value()->plan());
+        contexts.push_back(std::move(ao.value()));
+    }
+    std::cout << "plan (three AO contexts, each with its own linear depth):\n" << plan.describe();
+    Result<TextureHandle> aoTarget =
+        device->createTexture({width, height, 1, Format::RGBA8, kTextureSampled | kTextureRenderTarget, "demo-ao"});
+    if (!aoTarget) return fail(aoTarget.status());
 
     for (const std::string& name : scenes) {
         Result<samples::Scene> scene = samples::makeScene(name);
@@ -135,27 +180,47 @@ int main(int argc, char** argv) {
         std::cout << "[" << name << "] rendering " << width << "x" << height << "\n";
         Result<samples::GBuffer> g = renderer.value()->render(scene.value(), width, height);
         if (!g) return fail(g.status());
-        if (Status s = device->beginTimer(timer.value()); !s) return fail(s);
-        if (Status s = linear.value()->dispatch({g->depth, DepthKind::Hardware, g->camera}); !s) return fail(s);
-        if (Status s = device->endTimer(timer.value()); !s) return fail(s);
-        if (Status s = device->flush(); !s) return fail(s);
-        Result<TimerReading> t = device->readTimer(timer.value());
-        if (!t) return fail(t.status());
-        std::cout << "[" << name << "] depth passes: " << t->milliseconds << " ms (" << toString(t->source) << ")\n";
-
+        const std::string base = outDir + "/" + name;
         Result<io::Image> normals = readNormals(*device, g->normals, width, height);
         if (!normals) return fail(normals.status());
-        const std::string base = outDir + "/" + name;
+        Result<std::vector<uint8_t>> albedo = readRGBA8(*device, g->albedo, width, height);
+        if (!albedo) return fail(albedo.status());
         if (Status s = io::writePng(base + "_normals.png", normals.value()); !s) return fail(s);
-        for (uint32_t level = 0; level < ld.mipLevels; ++level) {
-            Result<io::Image> depth = readR32F(*device, linear.value()->texture(), level);
-            if (!depth) return fail(depth.status());
-            const std::string file = base + "_linear_depth_mip" + std::to_string(level) + ".png";
-            if (Status s = io::writePng(file, depthPicture(depth.value())); !s) return fail(s);
+        if (Status s = io::writePng(base + "_lit_no_ao.png", composite(albedo.value(), normals.value(), nullptr)); !s) return fail(s);
+
+        for (size_t t = 0; t < contexts.size(); ++t) {
+            AmbientObscurance& ao = *contexts[t];
+            const std::string technique = toString(techniques[t]);
+            // One untimed run first: drivers compile pipelines on first use.
+            if (Status s = ao.dispatch({{g->depth, DepthKind::Hardware, g->camera}, g->normals, aoTarget.value()}); !s) return fail(s);
+            if (Status s = device->beginTimer(timer.value()); !s) return fail(s);
+            if (Status s = ao.dispatch({{g->depth, DepthKind::Hardware, g->camera}, g->normals, aoTarget.value()}); !s) return fail(s);
+            if (Status s = device->endTimer(timer.value()); !s) return fail(s);
+            if (Status s = device->flush(); !s) return fail(s);
+            Result<TimerReading> cost = device->readTimer(timer.value());
+            if (!cost) return fail(cost.status());
+            Result<std::vector<uint8_t>> visibility = readRGBA8(*device, aoTarget.value(), width, height);
+            if (!visibility) return fail(visibility.status());
+            io::Image aoImage(width, height, 1);
+            for (size_t i = 0; i < aoImage.pixels.size(); ++i) aoImage.pixels[i] = visibility.value()[i * 4] / 255.0f;
+            if (Status s = io::writePng(base + "_ao_" + technique + ".png", aoImage); !s) return fail(s);
+            if (Status s = io::writePng(base + "_lit_" + technique + ".png", composite(albedo.value(), normals.value(), &visibility.value())); !s)
+                return fail(s);
+            std::cout << "[" << name << "] ao " << technique << ": " << cost->milliseconds << " ms ("
+                      << toString(cost->source) << ", one run after a warm-up), " << ao.plan().passes.size() << " passes\n";
         }
-        std::cout << "[" << name << "] wrote " << base << "_normals.png and " << ld.mipLevels << " linear depth level(s)\n";
+        // The linear depth the scalable context computed, and its pyramid where the tier has one.
+        const LinearDepth& linear = contexts[0]->linearDepth();
+        for (uint32_t level = 0; level < linear.desc().mipLevels; ++level) {
+            Result<io::Image> depth = readR32F(*device, linear.texture(), level);
+            if (!depth) return fail(depth.status());
+            if (Status s = io::writePng(base + "_linear_depth_mip" + std::to_string(level) + ".png", depthPicture(depth.value())); !s)
+                return fail(s);
+        }
+        std::cout << "[" << name << "] wrote " << base << "_{normals,ao_*,lit_*,linear_depth_mip*}.png\n";
         renderer.value()->destroy(g.value());
     }
+    (void)device->destroyTexture(aoTarget.value());
     (void)device->destroyTimer(timer.value());
     std::cout << "done: " << outDir << "\n";
     return 0;
