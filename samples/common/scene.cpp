@@ -1,0 +1,287 @@
+#include "scene.hpp"
+
+#include <tiny_obj_loader.h>
+
+#include <cmath>
+#include <filesystem>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "sfx_shaders.hpp"
+
+namespace sfx::samples {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+const char* kBunnyPath = "/usr/share/glmark2/models/bunny.obj";
+
+void addQuad(Mesh& m, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
+    const glm::vec3 n = glm::normalize(glm::cross(b - a, d - a));
+    const uint32_t base = uint32_t(m.vertices.size());
+    for (glm::vec3 p : {a, b, c, d}) m.vertices.push_back({p, n});
+    m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+}
+
+// An axis-aligned box from lo to hi, faces outward.
+Mesh box(glm::vec3 lo, glm::vec3 hi) {
+    Mesh m;
+    const glm::vec3 p[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z},
+                            {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
+    addQuad(m, p[4], p[5], p[6], p[7]);  // +z
+    addQuad(m, p[1], p[0], p[3], p[2]);  // -z
+    addQuad(m, p[5], p[1], p[2], p[6]);  // +x
+    addQuad(m, p[0], p[4], p[7], p[3]);  // -x
+    addQuad(m, p[7], p[6], p[2], p[3]);  // +y
+    addQuad(m, p[0], p[1], p[5], p[4]);  // -y
+    return m;
+}
+
+Mesh floorPlane(float halfSize, float y = 0.0f) {
+    Mesh m;
+    addQuad(m, {-halfSize, y, halfSize}, {halfSize, y, halfSize}, {halfSize, y, -halfSize}, {-halfSize, y, -halfSize});
+    return m;
+}
+
+Mesh sphere(glm::vec3 centre, float radius, int slices = 48, int stacks = 24) {
+    Mesh m;
+    for (int i = 0; i <= stacks; ++i) {
+        const double v = double(i) / stacks, phi = v * kPi;
+        for (int j = 0; j <= slices; ++j) {
+            const double u = double(j) / slices, theta = u * 2.0 * kPi;
+            const glm::vec3 n(float(std::sin(phi) * std::cos(theta)), float(std::cos(phi)), float(std::sin(phi) * std::sin(theta)));
+            m.vertices.push_back({centre + radius * n, n});
+        }
+    }
+    for (int i = 0; i < stacks; ++i)
+        for (int j = 0; j < slices; ++j) {
+            const uint32_t a = uint32_t(i * (slices + 1) + j), b = a + uint32_t(slices + 1);
+            m.indices.insert(m.indices.end(), {a, a + 1, b, a + 1, b + 1, b});
+        }
+    return m;
+}
+
+Mesh cylinder(glm::vec3 base, float radius, float height, int slices = 32) {
+    Mesh m;
+    for (int j = 0; j <= slices; ++j) {
+        const double theta = 2.0 * kPi * j / slices;
+        const glm::vec3 n(float(std::cos(theta)), 0.0f, float(std::sin(theta)));
+        m.vertices.push_back({base + radius * n, n});
+        m.vertices.push_back({base + radius * n + glm::vec3(0, height, 0), n});
+    }
+    for (int j = 0; j < slices; ++j) {
+        const uint32_t a = uint32_t(2 * j);
+        m.indices.insert(m.indices.end(), {a, a + 1, a + 2, a + 1, a + 3, a + 2});
+    }
+    return m;
+}
+
+Result<Mesh> loadObj(const std::string& path) {
+    if (!std::filesystem::exists(path))
+        return Status{StatusCode::FileError, path + ": no such file (install Debian's glmark2-data)"};
+    tinyobj::ObjReader reader;
+    if (!reader.ParseFromFile(path)) return Status{StatusCode::FileError, path + ": " + reader.Error()};
+    const auto& attrib = reader.GetAttrib();
+    Mesh m;
+    m.vertices.resize(attrib.vertices.size() / 3);
+    for (size_t i = 0; i < m.vertices.size(); ++i)
+        m.vertices[i] = {{attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]}, glm::vec3(0)};
+    for (const auto& shape : reader.GetShapes())
+        for (const auto& idx : shape.mesh.indices) m.indices.push_back(uint32_t(idx.vertex_index));
+    // The OBJ has no normals: area-weighted smooth vertex normals from the faces.
+    for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+        Vertex &a = m.vertices[m.indices[t]], &b = m.vertices[m.indices[t + 1]], &c = m.vertices[m.indices[t + 2]];
+        const glm::vec3 n = glm::cross(b.position - a.position, c.position - a.position);
+        a.normal += n;
+        b.normal += n;
+        c.normal += n;
+    }
+    for (Vertex& v : m.vertices) v.normal = glm::length(v.normal) > 0 ? glm::normalize(v.normal) : glm::vec3(0, 1, 0);
+    return m;
+}
+
+}  // namespace
+
+glm::dmat4 Scene::view() const { return glm::lookAt(eye, target, glm::dvec3(0, 1, 0)); }
+
+std::vector<std::string> sceneNames() { return {"corner", "steps", "columns", "contact", "bunny"}; }
+
+Result<Scene> makeScene(const std::string& name) {
+    Scene s;
+    s.name = name;
+    if (name == "corner") {
+        // Inside a room corner: floor and two walls meet at 90 degrees, a box in the crease.
+        s.meshes.push_back(floorPlane(4.0f));
+        Mesh back;
+        addQuad(back, {-4, 0, -2}, {4, 0, -2}, {4, 4, -2}, {-4, 4, -2});
+        s.meshes.push_back(back);
+        Mesh side;
+        addQuad(side, {-2, 0, 4}, {-2, 0, -4}, {-2, 4, -4}, {-2, 4, 4});
+        s.meshes.push_back(side);
+        s.meshes.push_back(box({-0.3f, 0, -1.2f}, {0.5f, 0.8f, -0.4f}));
+        s.eye = {1.8, 1.6, 2.6};
+        s.target = {-0.8, 0.6, -1.0};
+    } else if (name == "steps") {
+        s.meshes.push_back(floorPlane(5.0f));
+        for (int i = 0; i < 6; ++i) {
+            const float h = 0.25f * float(i + 1);
+            s.meshes.push_back(box({-1.5f, 0, -0.4f * float(i) - 0.4f}, {1.5f, h, -0.4f * float(i)}));
+        }
+        s.eye = {2.5, 2.2, 2.5};
+        s.target = {0, 0.6, -1.2};
+    } else if (name == "columns") {
+        s.meshes.push_back(floorPlane(6.0f));
+        for (int i = 0; i < 5; ++i) s.meshes.push_back(cylinder({-2.0f + float(i), 0, -1.0f}, 0.22f, 2.5f));
+        s.meshes.push_back(box({-3, 2.5f, -1.4f}, {3, 2.8f, -0.6f}));  // the lintel
+        s.eye = {0.4, 1.4, 3.2};
+        s.target = {0, 1.0, -1.0};
+    } else if (name == "contact") {
+        s.meshes.push_back(floorPlane(4.0f));
+        s.meshes.push_back(sphere({0, 0.6f, 0}, 0.6f));
+        s.meshes.push_back(sphere({1.3f, 0.3f, 0.4f}, 0.3f));
+        s.meshes.push_back(sphere({-1.2f, 0.45f, -0.5f}, 0.45f));
+        s.eye = {0, 1.3, 3.0};
+        s.target = {0, 0.4, 0};
+    } else if (name == "bunny") {
+        Result<Mesh> bunny = loadObj(kBunnyPath);
+        if (!bunny) return bunny.status();
+        // glmark2's bunny spans about [-1, 1]: stand it on the floor.
+        double minY = 1e9;
+        for (const Vertex& v : bunny->vertices) minY = std::min(minY, double(v.position.y));
+        bunny->model = glm::translate(glm::dmat4(1.0), glm::dvec3(0, -minY, 0));
+        s.meshes.push_back(floorPlane(4.0f));
+        s.meshes.push_back(std::move(bunny.value()));
+        s.eye = {1.6, 1.6, 3.2};
+        s.target = {0, 0.8, 0};
+    } else {
+        std::string known;
+        for (const auto& n : sceneNames()) known += (known.empty() ? "" : ", ") + n;
+        return invalidArgument("scene", "'" + name + "'", known);
+    }
+    return s;
+}
+
+// Mirrors RasterParams in shader_src/raster_gbuffer.vert (std140: three mat4).
+struct RasterParams {
+    glm::mat4 modelView, projection, normalMatrix;
+};
+
+Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Device& device, Tier tier) {
+    std::unique_ptr<SceneRenderer> r(new SceneRenderer(device));
+    Result<const CompiledProgram*> program = shaders::find(gen::raster_gbuffer::kName, tier);
+    if (!program) return program.status();
+    Result<ProgramHandle> handle = device.createProgram(*program.value());
+    if (!handle) return handle.status();
+    r->program_ = handle.value();
+    GraphicsPipelineDesc pd;
+    pd.program = r->program_;
+    pd.vertexLayout.stride = sizeof(Vertex);
+    pd.vertexLayout.attributes = {{0, VertexFormat::Float3, 0}, {1, VertexFormat::Float3, 12}};
+    pd.depth = {true, true, CompareOp::Less};
+    pd.colorFormats = {Format::RGBA16F};
+    pd.depthFormat = Format::D32F;
+    pd.debugName = "sample-scene-gbuffer";
+    Result<PipelineHandle> pipeline = device.createGraphicsPipeline(pd);
+    if (!pipeline) return pipeline.status();
+    r->pipeline_ = pipeline.value();
+    return r;
+}
+
+SceneRenderer::~SceneRenderer() {
+    releaseMeshes();
+    if (!pipeline_.isNull()) (void)device_.destroyPipeline(pipeline_);
+    if (!program_.isNull()) (void)device_.destroyProgram(program_);
+}
+
+void SceneRenderer::releaseMeshes() {
+    for (GpuMesh& m : meshes_) {
+        (void)device_.destroyBuffer(m.vertices);
+        (void)device_.destroyBuffer(m.indices);
+        (void)device_.destroyBuffer(m.params);
+    }
+    meshes_.clear();
+    uploaded_ = nullptr;
+}
+
+Status SceneRenderer::upload(const Scene& scene) {
+    if (uploaded_ == &scene) return Status::ok();
+    releaseMeshes();
+    for (const Mesh& mesh : scene.meshes) {
+        GpuMesh g;
+        g.source = &mesh;
+        g.indexCount = uint32_t(mesh.indices.size());
+        Result<BufferHandle> vb = device_.createBuffer({mesh.vertices.size() * sizeof(Vertex), kBufferVertex, "scene-vertices"});
+        if (!vb) return vb.status();
+        g.vertices = vb.value();
+        Result<BufferHandle> ib = device_.createBuffer({mesh.indices.size() * sizeof(uint32_t), kBufferIndex, "scene-indices"});
+        if (!ib) return ib.status();
+        g.indices = ib.value();
+        Result<BufferHandle> pb = device_.createBuffer({sizeof(RasterParams), kBufferUniform, "scene-params"});
+        if (!pb) return pb.status();
+        g.params = pb.value();
+        meshes_.push_back(g);
+        SFX_TRY(device_.writeBuffer(g.vertices, 0, mesh.vertices.data(), mesh.vertices.size() * sizeof(Vertex)));
+        SFX_TRY(device_.writeBuffer(g.indices, 0, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t)));
+    }
+    uploaded_ = &scene;
+    return Status::ok();
+}
+
+Result<GBuffer> SceneRenderer::render(const Scene& scene, uint32_t width, uint32_t height, double time) {
+    SFX_TRY(upload(scene));
+    GBuffer g;
+    g.width = width;
+    g.height = height;
+    PerspectiveDesc pd;
+    pd.fovYRadians = scene.fovYDegrees * kPi / 180.0;
+    pd.aspect = double(width) / double(height);
+    pd.nearPlane = scene.nearPlane;
+    pd.farPlane = scene.farPlane;
+    pd.clipDepth = device_.caps().clipDepth;
+    pd.rowZeroIsTop = true;
+    Result<CameraProjection> camera = makePerspective(pd);
+    if (!camera) return camera.status();
+    g.camera = camera.value();
+
+    Result<TextureHandle> depth = device_.createTexture({width, height, 1, Format::D32F, kTextureSampled | kTextureRenderTarget, "scene-depth"});
+    if (!depth) return depth.status();
+    g.depth = depth.value();
+    Result<TextureHandle> normals =
+        device_.createTexture({width, height, 1, Format::RGBA16F, kTextureSampled | kTextureRenderTarget, "scene-normals"});
+    if (!normals) {
+        (void)device_.destroyTexture(g.depth);
+        return normals.status();
+    }
+    g.normals = normals.value();
+
+    std::vector<DrawDesc> draws;
+    for (const GpuMesh& m : meshes_) {
+        const glm::dmat4 model = glm::translate(glm::dmat4(1.0), m.source->velocity * time) * m.source->model;
+        const glm::dmat4 modelView = scene.view() * model;
+        RasterParams p;
+        p.modelView = glm::mat4(modelView);
+        p.projection = glm::mat4(g.camera.projection);
+        p.normalMatrix = glm::mat4(glm::transpose(glm::inverse(modelView)));
+        SFX_TRY(device_.writeBuffer(m.params, 0, &p, sizeof p));
+        DrawDesc d;
+        d.pipeline = pipeline_;
+        d.vertexBuffer = m.vertices;
+        d.indexBuffer = m.indices;
+        d.count = m.indexCount;
+        d.bindings.uniformBuffers = {BufferBinding{gen::raster_gbuffer::RasterParams, m.params, 0, 0}};
+        draws.push_back(d);
+    }
+    RenderPassDesc pass;
+    pass.colors = {ColorAttachment{g.normals, 0, LoadOp::Clear, {0, 0, 0, 0}}};
+    pass.depth = DepthAttachment{g.depth, LoadOp::Clear, 1.0f};
+    pass.debugName = "scene-gbuffer";
+    SFX_TRY(device_.renderPass(pass, draws));
+    return g;
+}
+
+void SceneRenderer::destroy(GBuffer& g) {
+    if (!g.depth.isNull()) (void)device_.destroyTexture(g.depth);
+    if (!g.normals.isNull()) (void)device_.destroyTexture(g.normals);
+    g.depth = {};
+    g.normals = {};
+}
+
+}  // namespace sfx::samples

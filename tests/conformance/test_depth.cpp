@@ -1,0 +1,245 @@
+// Depth linearisation and the depth MIP pyramid on the device under test, against the CPU
+// reference. Tolerances are documented in docs/conformance.md.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+#include "scene.hpp"
+#include "sfx/depth.hpp"
+#include "sfx/null_device.hpp"
+#include "sfx/reference/depth_reference.hpp"
+#include "sfx_shared.h"
+#include "test_device.hpp"
+
+using namespace sfx;
+
+namespace {
+
+const double kInf = std::numeric_limits<double>::infinity();
+
+struct Convention {
+    const char* name;
+    ClipDepthRange clip;
+    bool reversed;
+    double farPlane;
+};
+const Convention kConventions[] = {
+    {"[0,1] standard", ClipDepthRange::ZeroToOne, false, 100.0},
+    {"[0,1] reversed", ClipDepthRange::ZeroToOne, true, 100.0},
+    {"[0,1] standard infinite", ClipDepthRange::ZeroToOne, false, kInf},
+    {"[0,1] reversed infinite", ClipDepthRange::ZeroToOne, true, kInf},
+    {"[-1,1] standard", ClipDepthRange::MinusOneToOne, false, 100.0},
+    {"[-1,1] standard infinite", ClipDepthRange::MinusOneToOne, false, kInf},
+    {"[-1,1] reversed", ClipDepthRange::MinusOneToOne, true, 100.0},
+};
+
+// The GPU evaluates z = B / (d*s + c) in 32-bit float from the same float d the reference
+// reads. Its relative error is bounded by the conditioning of the denominator:
+//   |dz| / z <= k * eps * (|d*s| + |c|) / |d*s + c|   (k = 8 covers the multiply-add,
+// the divide and the constants' rounding to float), plus the ulp of the result.
+double linearizeTolerance(double stored, const DepthReconstruction& r, double z) {
+    const double eps = std::ldexp(1.0, -23);
+    const double ds = stored * r.ndcScale;
+    const double denom = std::abs(ds + r.denomOffset);
+    const double condition = denom > 0 ? (std::abs(ds) + std::abs(r.denomOffset)) / denom : 1e30;
+    return z * (8.0 * eps * condition + 2.0 * eps);
+}
+
+std::vector<float> readLevel(Device& device, TextureHandle texture, uint32_t w, uint32_t h, uint32_t mip) {
+    std::vector<float> values(size_t(mipExtent(w, mip)) * mipExtent(h, mip));
+    const Status s = device.readTexture(texture, mip, values.data(), values.size() * sizeof(float));
+    INFO(s.toString());
+    REQUIRE(s.isOk());
+    return values;
+}
+
+uint32_t levelsFor(Tier tier) { return tier == Tier::High ? uint32_t(shared::SFX_DEPTH_MIP_MAX_LEVELS) : 1u; }
+
+}  // namespace
+
+TEST_CASE("linear depth matches the reference for every depth convention", "[depth][conformance]") {
+    Device& device = test::device();
+    const uint32_t W = 61, H = 37;  // odd sizes exercise the pyramid's edge texels
+    for (const Convention& c : kConventions) {
+        INFO(test::label() << " " << c.name);
+        PerspectiveDesc pd;
+        pd.nearPlane = 0.1;
+        pd.farPlane = c.farPlane;
+        pd.reversedZ = c.reversed;
+        pd.clipDepth = c.clip;
+        pd.aspect = double(W) / H;
+        CameraProjection cam = makePerspective(pd).value();
+        DepthReconstruction rec = makeDepthReconstruction(cam, W, H).value();
+
+        // Depths spread geometrically from the near plane to past the far plane, plus sky texels.
+        reference::Grid stored(W, H);
+        std::vector<float> storedFloats(size_t(W) * H);
+        for (uint32_t y = 0; y < H; ++y)
+            for (uint32_t x = 0; x < W; ++x) {
+                const double u = double(y * W + x) / double(W * H - 1);
+                double z = 0.1 * std::pow(1000.0, u);  // 0.1 .. 100
+                double d = storedDepthFromLinear(cam, std::min(z, 99.9));
+                if ((x * 7 + y * 3) % 23 == 0) d = c.reversed ? 0.0 : 1.0;  // cleared depth: far / sky
+                storedFloats[size_t(y) * W + x] = float(std::clamp(d, 0.0, 1.0));
+                stored.at(x, y) = double(storedFloats[size_t(y) * W + x]);
+            }
+        reference::Grid expected = reference::linearizeDepth(stored, rec);
+
+        Result<TextureHandle> src = device.createTexture({W, H, 1, Format::R32F, kTextureSampled, "test-stored-depth"});
+        REQUIRE(src.isOk());
+        SFX_REQUIRE_OK(device.writeTexture(src.value(), 0, storedFloats.data(), storedFloats.size() * sizeof(float)));
+        auto linear = LinearDepth::create(device, {W, H, test::tier(), levelsFor(test::tier())});
+        INFO(linear.status().toString());
+        REQUIRE(linear.isOk());
+        SFX_REQUIRE_OK(linear.value()->dispatch({src.value(), DepthKind::Hardware, cam}));
+        std::vector<float> got = readLevel(device, linear.value()->texture(), W, H, 0);
+
+        double worstRatio = 0;
+        for (uint32_t y = 0; y < H; ++y)
+            for (uint32_t x = 0; x < W; ++x) {
+                const double want = expected.at(x, y), have = got[size_t(y) * W + x];
+                REQUIRE(std::isfinite(have));
+                const double tol = linearizeTolerance(stored.at(x, y), rec, want);
+                worstRatio = std::max(worstRatio, std::abs(have - want) / tol);
+                if (std::abs(have - want) > tol) {
+                    INFO("texel (" << x << ", " << y << ") stored " << stored.at(x, y) << " want " << want << " got " << have
+                                   << " tol " << tol);
+                    FAIL();
+                }
+            }
+        // Print how close to the bound the device came, so the tolerance stays honest.
+        WARN(test::label() << " " << c.name << ": worst error / tolerance = " << worstRatio);
+        (void)device.destroyTexture(src.value());
+    }
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("depth pyramid levels are exact rotated-grid subsamples", "[depth][conformance]") {
+    if (test::tier() != Tier::High) {
+        // The current tier has no pyramid; asking for one is a named error.
+        auto refused = LinearDepth::create(test::device(), {64, 64, Tier::Current, 2});
+        CHECK(refused.status().code() == StatusCode::InvalidArgument);
+        CHECK(refused.status().message().find("current tier") != std::string::npos);
+        return;
+    }
+    Device& device = test::device();
+    for (auto [W, H] : {std::pair<uint32_t, uint32_t>{61, 37}, {64, 32}, {17, 90}}) {
+        INFO(test::label() << " " << W << "x" << H);
+        std::vector<float> linear(size_t(W) * H);
+        for (size_t i = 0; i < linear.size(); ++i) linear[i] = 1.0f + float((i * 7919) % 1000) * 0.01f;
+        Result<TextureHandle> src = device.createTexture({W, H, 1, Format::R32F, kTextureSampled});
+        REQUIRE(src.isOk());
+        SFX_REQUIRE_OK(device.writeTexture(src.value(), 0, linear.data(), linear.size() * 4));
+        PerspectiveDesc pd;
+        pd.aspect = double(W) / H;
+        const uint32_t levels = std::min(levelsFor(Tier::High), maxMipLevels(W, H));
+        auto depth = LinearDepth::create(device, {W, H, Tier::High, levels});
+        REQUIRE(depth.isOk());
+        SFX_REQUIRE_OK(depth.value()->dispatch({src.value(), DepthKind::Linear, makePerspective(pd).value()}));
+        // Level 0 is the input (linear input is copied), every further level an exact subsample.
+        std::vector<float> level0 = readLevel(device, depth.value()->texture(), W, H, 0);
+        CHECK(level0 == linear);
+        reference::Grid g0(W, H);
+        for (size_t i = 0; i < linear.size(); ++i) g0.values[i] = level0[i];
+        std::vector<reference::Grid> expected = reference::depthPyramid(g0, levels);
+        for (uint32_t m = 1; m < levels; ++m) {
+            std::vector<float> got = readLevel(device, depth.value()->texture(), W, H, m);
+            REQUIRE(got.size() == expected[m].values.size());
+            for (size_t i = 0; i < got.size(); ++i) REQUIRE(double(got[i]) == expected[m].values[i]);
+        }
+        (void)device.destroyTexture(src.value());
+    }
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("rasterised hardware depth linearises to the scene's distances", "[depth][conformance]") {
+    Device& device = test::device();
+    const uint32_t W = 96, H = 64;
+    auto renderer = samples::SceneRenderer::create(device, test::tier());
+    INFO(renderer.status().toString());
+    REQUIRE(renderer.isOk());
+    samples::Scene scene = samples::makeScene("contact").value();
+    auto g = renderer.value()->render(scene, W, H);
+    INFO(g.status().toString());
+    REQUIRE(g.isOk());
+    auto linear = LinearDepth::create(device, {W, H, test::tier(), 1});
+    REQUIRE(linear.isOk());
+    SFX_REQUIRE_OK(linear.value()->dispatch({g->depth, DepthKind::Hardware, g->camera}));
+
+    std::vector<float> hw(size_t(W) * H);
+    SFX_REQUIRE_OK(device.readTexture(g->depth, 0, hw.data(), hw.size() * 4));
+    reference::Grid stored(W, H);
+    for (size_t i = 0; i < hw.size(); ++i) stored.values[i] = hw[i];
+    const DepthReconstruction rec = makeDepthReconstruction(g->camera, W, H).value();
+    reference::Grid expected = reference::linearizeDepth(stored, rec);
+    std::vector<float> got = readLevel(device, linear.value()->texture(), W, H, 0);
+    size_t covered = 0;
+    for (size_t i = 0; i < got.size(); ++i) {
+        REQUIRE(std::abs(got[i] - expected.values[i]) <= linearizeTolerance(stored.values[i], rec, expected.values[i]));
+        covered += got[i] < rec.maxDepth ? 1 : 0;
+    }
+    // The floor and spheres cover most of the view; the camera is ~3 units away.
+    CHECK(covered > got.size() / 2);
+    const float centre = got[size_t(H / 2) * W + W / 2];
+    CHECK(centre > 1.5f);
+    CHECK(centre < 4.0f);
+    renderer.value()->destroy(g.value());
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("LinearDepth: bad input is a named error", "[depth][bad-input]") {
+    Device& device = test::device();
+    const Tier tier = test::tier();
+    CHECK(LinearDepth::create(device, {0, 16, tier, 1}).status().code() == StatusCode::InvalidArgument);
+    CHECK(LinearDepth::create(device, {16, 16, tier, 0}).status().message().find("LinearDepthDesc.mipLevels") !=
+          std::string::npos);
+    CHECK(LinearDepth::create(device, {16, 16, tier, 99}).status().code() == StatusCode::InvalidArgument);
+    auto depth = LinearDepth::create(device, {16, 16, tier, 1});
+    REQUIRE(depth.isOk());
+    CameraProjection cam = makePerspective({}).value();
+
+    Result<TextureHandle> wrongSize = device.createTexture({8, 8, 1, Format::R32F, kTextureSampled});
+    REQUIRE(wrongSize.isOk());
+    Status s = depth.value()->dispatch({wrongSize.value(), DepthKind::Hardware, cam});
+    CHECK(s.code() == StatusCode::InvalidArgument);
+    CHECK(s.message().find("DepthSource.texture size") != std::string::npos);
+
+    Result<TextureHandle> rgba = device.createTexture({16, 16, 1, Format::RGBA8, kTextureSampled});
+    REQUIRE(rgba.isOk());
+    CHECK(depth.value()->dispatch({rgba.value(), DepthKind::Hardware, cam}).code() == StatusCode::UnsupportedFormat);
+    CHECK(depth.value()->dispatch({rgba.value(), DepthKind::Linear, cam}).code() == StatusCode::UnsupportedFormat);
+
+    Result<TextureHandle> ok = device.createTexture({16, 16, 1, Format::R32F, kTextureSampled});
+    REQUIRE(ok.isOk());
+    CameraProjection identity;  // not a perspective projection
+    CHECK(depth.value()->dispatch({ok.value(), DepthKind::Hardware, identity}).code() == StatusCode::InvalidArgument);
+    CHECK(depth.value()->dispatch({TextureHandle{}, DepthKind::Hardware, cam}).code() == StatusCode::InvalidHandle);
+    (void)device.destroyTexture(ok.value());
+    CHECK(depth.value()->dispatch({ok.value(), DepthKind::Hardware, cam}).code() == StatusCode::StaleHandle);
+    auto other = null::createDevice();
+    TextureHandle foreign = other->createTexture({16, 16, 1, Format::R32F, kTextureSampled}).value();
+    CHECK(depth.value()->dispatch({foreign, DepthKind::Hardware, cam}).code() == StatusCode::ForeignHandle);
+    CHECK(depth.value()->resize(0, 4).code() == StatusCode::InvalidArgument);
+    SFX_REQUIRE_OK(depth.value()->resize(32, 8));
+    CHECK(depth.value()->desc().width == 32);
+    (void)device.destroyTexture(wrongSize.value());
+    (void)device.destroyTexture(rgba.value());
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("LinearDepth plan holds only what the tier needs", "[depth][plan]") {
+    Device& device = test::device();
+    auto flat = LinearDepth::create(device, {64, 64, test::tier(), 1});
+    REQUIRE(flat.isOk());
+    Plan p = flat.value()->plan();
+    CHECK(p.passes.size() == 1);
+    CHECK(p.bytesOf("depth") == 64 * 64 * 4 + 32);
+    if (test::tier() == Tier::High) {
+        auto mip = LinearDepth::create(device, {64, 64, Tier::High, 3});
+        REQUIRE(mip.isOk());
+        Plan pm = mip.value()->plan();
+        CHECK(pm.passes.size() == 3);
+        CHECK(pm.bytesOf("depth") == (64 * 64 + 32 * 32 + 16 * 16) * 4 + 32);
+    }
+}
