@@ -90,8 +90,11 @@ SFX_MB_FN SFX_MB_REAL mbSoftDepth(SFX_MB_REAL za, SFX_MB_REAL zb, SFX_MB_REAL ex
 SFX_MB_FN SFX_MB_REAL mbCone(SFX_MB_REAL dist, SFX_MB_REAL speed) {
     return clamp(1.0 - dist / max(speed, 1.0e-4), 0.0, 1.0);
 }
-// Cylinder: hard overlap test, the seed's "both moving" case.
-SFX_MB_FN SFX_MB_REAL mbCylinder(SFX_MB_REAL dist, SFX_MB_REAL speed) { return speed >= dist ? 1.0 : 0.0; }
+// Cylinder: the seed's "both moving" overlap test (speed >= dist), softened to a 1 px linear
+// ramp centred on speed == dist. A sample whose rounded offset is the velocity itself sits
+// exactly at dist == speed, and a hard step there flips with the last bit of the fp16 velocity
+// (GPUs may round it to nearest or toward zero): the ramp makes the weight continuous.
+SFX_MB_FN SFX_MB_REAL mbCylinder(SFX_MB_REAL dist, SFX_MB_REAL speed) { return clamp(speed - dist + 0.5, 0.0, 1.0); }
 
 // Weight of sample S at distance `dist` from centre C (the seed's three cases, not exclusive):
 //   background estimate  mbSoftDepth(z_C, z_S) * cone(dist, |v_C|)
