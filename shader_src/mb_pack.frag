@@ -1,7 +1,7 @@
 #version 450
 // Motion blur pass 1: the velocity the reconstruction will use, packed with depth.
 // Output RGBA16F: xy = velocity radius in [-k, k] px encoded to [0, 1]; zw = linear depth as an
-// fp16 hi/lo pair (hi = fp16(z), lo = z - hi), so one fetch gives both at ~22 bits of depth.
+// fp16 hi/lo pair (hi = z to 11 significant bits, lo = z - hi), so one fetch gives both at ~22 bits of depth.
 // The velocity is the host's (pixels across the shutter interval) or, in camera-only mode,
 // the reprojection of this pixel's depth by the previous view-projection.
 #include "sfx_shared.h"
@@ -46,6 +46,9 @@ void main() {
     if (len > params.radius) v *= params.radius / len;
     vec2 enc = vec2(mbEncodeVelocity(v.x, params.radius), mbEncodeVelocity(v.y, params.radius));
     float zc = min(z, SFX_MB_MAX_PACKED_DEPTH);
-    float hi = unpackHalf2x16(packHalf2x16(vec2(zc, 0.0))).x;
+    // hi keeps the top 11 significant bits of z, which fp16 stores exactly; lo the rest.
+    // (Computed by hand: packHalf2x16 is missing from GLSL 330, the desktop current tier.)
+    float step = exp2(floor(log2(max(zc, 1.0e-4)))) / 1024.0;
+    float hi = floor(zc / step) * step;
     outPacked = vec4(clamp(enc, 0.0, 1.0), hi, zc - hi);
 }
