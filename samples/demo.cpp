@@ -131,6 +131,7 @@ int main(int argc, char** argv) {
     for (const std::string& name : scenes) {
         Result<samples::Scene> scene = samples::makeScene(name);
         if (!scene) return fail(scene.status());
+        if (Status s = renderer.value()->load(scene.value()); !s) return fail(s);
         std::cout << "[" << name << "] rendering " << width << "x" << height << "\n";
         Result<samples::GBuffer> g = renderer.value()->render(scene.value(), width, height);
         if (!g) return fail(g.status());

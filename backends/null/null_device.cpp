@@ -156,6 +156,7 @@ public:
         for (const DrawDesc& d : draws) {
             SFX_TRY(pipelines_.check(d.pipeline, "DrawDesc.pipeline"));
             SFX_TRY(checkBindings(d.bindings));
+            SFX_TRY(validation::noFeedbackLoop(pass, d));
         }
         return Status::ok();
     }

@@ -100,7 +100,10 @@ Result<Mesh> loadObj(const std::string& path) {
 
 }  // namespace
 
-glm::dmat4 Scene::view() const { return glm::lookAt(eye, target, glm::dvec3(0, 1, 0)); }
+glm::dmat4 Scene::view(double time) const {
+    const glm::dvec3 shift = eyeVelocity * time;
+    return glm::lookAt(eye + shift, target + shift, glm::dvec3(0, 1, 0));
+}
 
 std::vector<std::string> sceneNames() { return {"corner", "steps", "columns", "contact", "bunny"}; }
 
@@ -159,9 +162,10 @@ Result<Scene> makeScene(const std::string& name) {
     return s;
 }
 
-// Mirrors RasterParams in shader_src/raster_gbuffer.vert (std140: three mat4).
+// Mirrors RasterParams in shader_src/raster_gbuffer.vert (std140).
 struct RasterParams {
-    glm::mat4 modelView, projection, normalMatrix;
+    glm::mat4 modelView, projection, normalMatrix, shutterOpenClip, shutterCloseClip;
+    glm::vec4 viewportSize;
 };
 
 Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Device& device, Tier tier) {
@@ -176,7 +180,7 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Device& device, Tie
     pd.vertexLayout.stride = sizeof(Vertex);
     pd.vertexLayout.attributes = {{0, VertexFormat::Float3, 0}, {1, VertexFormat::Float3, 12}};
     pd.depth = {true, true, CompareOp::Less};
-    pd.colorFormats = {Format::RGBA16F};
+    pd.colorFormats = {Format::RGBA16F, Format::RG16F, Format::RGBA8};
     pd.depthFormat = Format::D32F;
     pd.debugName = "sample-scene-gbuffer";
     Result<PipelineHandle> pipeline = device.createGraphicsPipeline(pd);
@@ -198,11 +202,9 @@ void SceneRenderer::releaseMeshes() {
         (void)device_.destroyBuffer(m.params);
     }
     meshes_.clear();
-    uploaded_ = nullptr;
 }
 
-Status SceneRenderer::upload(const Scene& scene) {
-    if (uploaded_ == &scene) return Status::ok();
+Status SceneRenderer::load(const Scene& scene) {
     releaseMeshes();
     for (const Mesh& mesh : scene.meshes) {
         GpuMesh g;
@@ -221,12 +223,12 @@ Status SceneRenderer::upload(const Scene& scene) {
         SFX_TRY(device_.writeBuffer(g.vertices, 0, mesh.vertices.data(), mesh.vertices.size() * sizeof(Vertex)));
         SFX_TRY(device_.writeBuffer(g.indices, 0, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t)));
     }
-    uploaded_ = &scene;
     return Status::ok();
 }
 
 Result<GBuffer> SceneRenderer::render(const Scene& scene, uint32_t width, uint32_t height, double time) {
-    SFX_TRY(upload(scene));
+    if (meshes_.size() != scene.meshes.size())
+        return Status{StatusCode::InvalidArgument, "SceneRenderer::render: scene '" + scene.name + "' is not the loaded one"};
     GBuffer g;
     g.width = width;
     g.height = height;
@@ -251,15 +253,32 @@ Result<GBuffer> SceneRenderer::render(const Scene& scene, uint32_t width, uint32
         return normals.status();
     }
     g.normals = normals.value();
+    Result<TextureHandle> velocity =
+        device_.createTexture({width, height, 1, Format::RG16F, kTextureSampled | kTextureRenderTarget, "scene-velocity"});
+    Result<TextureHandle> albedo =
+        device_.createTexture({width, height, 1, Format::RGBA8, kTextureSampled | kTextureRenderTarget, "scene-albedo"});
+    if (!velocity || !albedo) {
+        if (velocity) (void)device_.destroyTexture(velocity.value());
+        if (albedo) (void)device_.destroyTexture(albedo.value());
+        destroy(g);
+        return velocity ? albedo.status() : velocity.status();
+    }
+    g.velocity = velocity.value();
+    g.albedo = albedo.value();
+    g.shutterOpenViewProjection = g.camera.projection * scene.view(time - 0.5);
+    g.shutterCloseViewProjection = g.camera.projection * scene.view(time + 0.5);
 
     std::vector<DrawDesc> draws;
     for (const GpuMesh& m : meshes_) {
-        const glm::dmat4 model = glm::translate(glm::dmat4(1.0), m.source->velocity * time) * m.source->model;
-        const glm::dmat4 modelView = scene.view() * model;
+        auto modelAt = [&](double t) { return glm::translate(glm::dmat4(1.0), m.source->velocity * t) * m.source->model; };
+        const glm::dmat4 modelView = scene.view(time) * modelAt(time);
         RasterParams p;
         p.modelView = glm::mat4(modelView);
         p.projection = glm::mat4(g.camera.projection);
         p.normalMatrix = glm::mat4(glm::transpose(glm::inverse(modelView)));
+        p.shutterOpenClip = glm::mat4(g.camera.projection * scene.view(time - 0.5) * modelAt(time - 0.5));
+        p.shutterCloseClip = glm::mat4(g.camera.projection * scene.view(time + 0.5) * modelAt(time + 0.5));
+        p.viewportSize = glm::vec4(float(width), float(height), 0, 0);
         SFX_TRY(device_.writeBuffer(m.params, 0, &p, sizeof p));
         DrawDesc d;
         d.pipeline = pipeline_;
@@ -270,7 +289,9 @@ Result<GBuffer> SceneRenderer::render(const Scene& scene, uint32_t width, uint32
         draws.push_back(d);
     }
     RenderPassDesc pass;
-    pass.colors = {ColorAttachment{g.normals, 0, LoadOp::Clear, {0, 0, 0, 0}}};
+    pass.colors = {ColorAttachment{g.normals, 0, LoadOp::Clear, {0, 0, 0, 0}},
+                   ColorAttachment{g.velocity, 0, LoadOp::Clear, {0, 0, 0, 0}},
+                   ColorAttachment{g.albedo, 0, LoadOp::Clear, {0, 0, 0, 0}}};
     pass.depth = DepthAttachment{g.depth, LoadOp::Clear, 1.0f};
     pass.debugName = "scene-gbuffer";
     SFX_TRY(device_.renderPass(pass, draws));
@@ -278,10 +299,10 @@ Result<GBuffer> SceneRenderer::render(const Scene& scene, uint32_t width, uint32
 }
 
 void SceneRenderer::destroy(GBuffer& g) {
-    if (!g.depth.isNull()) (void)device_.destroyTexture(g.depth);
-    if (!g.normals.isNull()) (void)device_.destroyTexture(g.normals);
-    g.depth = {};
-    g.normals = {};
+    for (TextureHandle* t : {&g.depth, &g.normals, &g.velocity, &g.albedo}) {
+        if (!t->isNull()) (void)device_.destroyTexture(*t);
+        *t = {};
+    }
 }
 
 }  // namespace sfx::samples

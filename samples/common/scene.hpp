@@ -30,10 +30,11 @@ struct Scene {
     std::vector<Mesh> meshes;
     glm::dvec3 eye{0, 1.5, 5};
     glm::dvec3 target{0, 0.5, 0};
+    glm::dvec3 eyeVelocity{0.0};  // world units per shutter interval (camera motion blur)
     double fovYDegrees = 60.0;
     double nearPlane = 0.1;
     double farPlane = 100.0;
-    glm::dmat4 view() const;
+    glm::dmat4 view(double time = 0.0) const;  // camera at `time` shutter intervals from t = 0
 };
 
 // "corner", "steps", "columns", "contact", "bunny". FileError when the bunny's OBJ is missing
@@ -41,21 +42,25 @@ struct Scene {
 Result<Scene> makeScene(const std::string& name);
 std::vector<std::string> sceneNames();
 
-// A G-buffer rendered by the device: D32F hardware depth in the device's clip convention,
-// view-space unit normals (x right, y up, camera looking down -z) in RGBA16F (rgb, a = 1;
-// a = 0 where nothing was drawn), row 0 = top of the picture.
+// A G-buffer rendered by the device at mid-shutter, row 0 = top of the picture.
 struct GBuffer {
     uint32_t width = 0, height = 0;
-    TextureHandle depth;    // D32F, sampled
-    TextureHandle normals;  // RGBA16F, sampled
+    TextureHandle depth;     // D32F hardware depth in the device's clip convention
+    TextureHandle normals;   // RGBA16F view-space unit normals (x right, y up, looking down -z); a = 0: nothing drawn
+    TextureHandle velocity;  // RG16F pixels across the shutter interval (sfx/motion_blur.hpp convention)
+    TextureHandle albedo;    // RGBA8 checkered albedo; a = 0: nothing drawn
     CameraProjection camera;
+    glm::dmat4 shutterOpenViewProjection{1.0}, shutterCloseViewProjection{1.0};  // camera only
 };
 
 class SceneRenderer {
 public:
     static Result<std::unique_ptr<SceneRenderer>> create(Device& device, Tier tier);
     ~SceneRenderer();
-    // Renders `scene` with its objects moved by `time` * velocity (time in shutter intervals).
+    // Uploads the scene's meshes (replacing the previous scene's); render() draws them.
+    Status load(const Scene& scene);
+    // Renders the loaded scene with its objects moved by `time` * velocity (time in shutter
+    // intervals); `scene` supplies the camera and must be the one loaded.
     Result<GBuffer> render(const Scene& scene, uint32_t width, uint32_t height, double time = 0.0);
     void destroy(GBuffer& gbuffer);
 
@@ -70,8 +75,6 @@ private:
         uint32_t indexCount = 0;
     };
     std::vector<GpuMesh> meshes_;
-    const Scene* uploaded_ = nullptr;
-    Status upload(const Scene& scene);
     void releaseMeshes();
 };
 

@@ -71,19 +71,13 @@ Status program(const CompiledProgram& p, const DeviceCaps& caps) {
         hasVertex |= s.stage == ShaderStage::Vertex;
         hasFragment |= s.stage == ShaderStage::Fragment;
         hasCompute |= s.stage == ShaderStage::Compute;
-        if (caps.dialect == ShaderDialect::Spirv) {
-            if (s.spirv.size() < 5 || s.spirv[0] != 0x07230203u)
-                return {StatusCode::ShaderError, "program '" + p.name + "' " + toString(s.stage) +
-                                                     " stage has no valid SPIR-V module (bad magic or empty)"};
-        } else if (s.glsl[size_t(caps.dialect)].empty()) {
-            return {StatusCode::ShaderError, "program '" + p.name + "' " + toString(s.stage) + " stage has no " +
-                                                 toString(caps.dialect) + " source"};
-        }
     }
     if (hasCompute && (hasVertex || hasFragment))
         return {StatusCode::ShaderError, "program '" + p.name + "' mixes compute with graphics stages"};
     if (!hasCompute && !(hasVertex && hasFragment))
         return {StatusCode::ShaderError, "program '" + p.name + "' needs a vertex and a fragment stage"};
+    // What the device lacks comes first: under the ceiling a compute or storage program has no
+    // ESSL 300 / GLSL 330 text at all, and "unsupported" is the honest answer, not "bad shader".
     const char* under = caps.ceiling != CapabilityCeiling::None ? " (capability ceiling)" : "";
     if (hasCompute && !caps.computeShaders)
         return {StatusCode::UnsupportedFeature, "program '" + p.name + "' is a compute program; the device has no compute shaders" + under};
@@ -94,6 +88,19 @@ Status program(const CompiledProgram& p, const DeviceCaps& caps) {
         if (r.kind == ResourceKind::StorageImage && !caps.storageImages)
             return {StatusCode::UnsupportedFeature, "program '" + p.name + "' uses storage image '" + r.name +
                                                         "'; the device has no storage images" + under};
+    }
+    for (const StageCode& s : p.stages) {
+        if (caps.dialect == ShaderDialect::Spirv) {
+            if (s.spirv.size() < 5 || s.spirv[0] != 0x07230203u)
+                return {StatusCode::ShaderError, "program '" + p.name + "' " + toString(s.stage) +
+                                                     " stage has no valid SPIR-V module (bad magic or empty)"};
+        } else if (s.glsl[size_t(caps.dialect)].empty()) {
+            if (p.tier == Tier::High && (caps.dialect == ShaderDialect::Essl300 || caps.dialect == ShaderDialect::Glsl330))
+                return {StatusCode::UnsupportedTier, "program '" + p.name + "' is built for the high tier; a device on " +
+                                                         toString(caps.dialect) + " runs only current-tier programs"};
+            return {StatusCode::ShaderError, "program '" + p.name + "' " + toString(s.stage) + " stage has no " +
+                                                 toString(caps.dialect) + " source"};
+        }
     }
     return Status::ok();
 }
@@ -154,6 +161,20 @@ Status dispatchGroups(const DispatchDesc& d, const DeviceCaps& caps) {
     if (d.groupsX == 0 || d.groupsX > kMax) return invalidArgument("DispatchDesc.groupsX", str(d.groupsX), "[1, 65535]");
     if (d.groupsY == 0 || d.groupsY > kMax) return invalidArgument("DispatchDesc.groupsY", str(d.groupsY), "[1, 65535]");
     if (d.groupsZ == 0 || d.groupsZ > kMax) return invalidArgument("DispatchDesc.groupsZ", str(d.groupsZ), "[1, 65535]");
+    return Status::ok();
+}
+
+Status noFeedbackLoop(const RenderPassDesc& pass, const DrawDesc& draw) {
+    for (const TextureBinding& tb : draw.bindings.textures) {
+        auto inRange = [&](uint32_t mip) { return mip >= tb.baseMip && mip - tb.baseMip < tb.mipCount; };
+        const std::string what = "TextureBinding (binding " + str(tb.binding) + ") mips";
+        const std::string got = str(tb.baseMip) + "+" + str(tb.mipCount);
+        for (const ColorAttachment& c : pass.colors)
+            if (c.texture == tb.texture && inRange(c.mip))
+                return invalidArgument(what, got, "a range without mip " + str(c.mip) + ", which the pass renders to");
+        if (!pass.depth.texture.isNull() && pass.depth.texture == tb.texture && inRange(0))
+            return invalidArgument(what, got, "a range without mip 0 of the pass's depth attachment");
+    }
     return Status::ok();
 }
 

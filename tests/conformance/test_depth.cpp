@@ -10,40 +10,26 @@
 #include "sfx/null_device.hpp"
 #include "sfx/reference/depth_reference.hpp"
 #include "sfx_shared.h"
+#include "depth_conventions.hpp"
 #include "test_device.hpp"
 
 using namespace sfx;
 
 namespace {
 
-const double kInf = std::numeric_limits<double>::infinity();
 
-struct Convention {
-    const char* name;
-    ClipDepthRange clip;
-    bool reversed;
-    double farPlane;
-};
-const Convention kConventions[] = {
-    {"[0,1] standard", ClipDepthRange::ZeroToOne, false, 100.0},
-    {"[0,1] reversed", ClipDepthRange::ZeroToOne, true, 100.0},
-    {"[0,1] standard infinite", ClipDepthRange::ZeroToOne, false, kInf},
-    {"[0,1] reversed infinite", ClipDepthRange::ZeroToOne, true, kInf},
-    {"[-1,1] standard", ClipDepthRange::MinusOneToOne, false, 100.0},
-    {"[-1,1] standard infinite", ClipDepthRange::MinusOneToOne, false, kInf},
-    {"[-1,1] reversed", ClipDepthRange::MinusOneToOne, true, 100.0},
-};
 
 // The GPU evaluates z = B / (d*s + c) in 32-bit float from the same float d the reference
 // reads. Its relative error is bounded by the conditioning of the denominator:
-//   |dz| / z <= k * eps * (|d*s| + |c|) / |d*s + c|   (k = 8 covers the multiply-add,
-// the divide and the constants' rounding to float), plus the ulp of the result.
+//   |dz| / z <= eps * (2 * (|d*s| + |c|) / |d*s + c| + 1)
+// (2 half-ulps for the multiply-add, 2 for rounding the constants s and c to float, relative
+// to the operands' size; 1 ulp for the divide and the stored result).
 double linearizeTolerance(double stored, const DepthReconstruction& r, double z) {
     const double eps = std::ldexp(1.0, -23);
     const double ds = stored * r.ndcScale;
     const double denom = std::abs(ds + r.denomOffset);
     const double condition = denom > 0 ? (std::abs(ds) + std::abs(r.denomOffset)) / denom : 1e30;
-    return z * (8.0 * eps * condition + 2.0 * eps);
+    return z * eps * (2.0 * condition + 1.0);
 }
 
 std::vector<float> readLevel(Device& device, TextureHandle texture, uint32_t w, uint32_t h, uint32_t mip) {
@@ -61,7 +47,7 @@ uint32_t levelsFor(Tier tier) { return tier == Tier::High ? uint32_t(shared::SFX
 TEST_CASE("linear depth matches the reference for every depth convention", "[depth][conformance]") {
     Device& device = test::device();
     const uint32_t W = 61, H = 37;  // odd sizes exercise the pyramid's edge texels
-    for (const Convention& c : kConventions) {
+    for (const test::DepthConvention& c : test::kDepthConventions) {
         INFO(test::label() << " " << c.name);
         PerspectiveDesc pd;
         pd.nearPlane = 0.1;
@@ -160,6 +146,7 @@ TEST_CASE("rasterised hardware depth linearises to the scene's distances", "[dep
     INFO(renderer.status().toString());
     REQUIRE(renderer.isOk());
     samples::Scene scene = samples::makeScene("contact").value();
+    SFX_REQUIRE_OK(renderer.value()->load(scene));
     auto g = renderer.value()->render(scene, W, H);
     INFO(g.status().toString());
     REQUIRE(g.isOk());

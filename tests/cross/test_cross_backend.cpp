@@ -103,3 +103,24 @@ TEST_CASE("linear depth and its pyramid agree across backends", "[cross-backend]
         }
     }
 }
+
+TEST_CASE("openBestDevice picks the highest tier and says why", "[cross-backend][selection]") {
+    DeviceOptions options;
+    options.validation = false;
+    Result<DeviceSelection> best = openBestDevice(options);
+    INFO(best.status().toString());
+    REQUIRE(best.isOk());
+    // Every backend here reaches the high tier; the first in preference order wins the tie.
+    CHECK(best->tier.tier == Tier::High);
+    CHECK(toString(best->config) == toString(compiledBackends().front()));
+    CHECK(best->reason.find(toString(best->config)) != std::string::npos);
+    CHECK(best->reason.find("tier 'high'") != std::string::npos);
+    CHECK(best->rejected.size() + 1 == compiledBackends().size());
+
+    // Under the ceiling every device reaches only the current tier, and says what it lacks.
+    options.ceiling = CapabilityCeiling::GLES30;
+    Result<DeviceSelection> capped = openBestDevice(options);
+    REQUIRE(capped.isOk());
+    CHECK(capped->tier.tier == Tier::Current);
+    CHECK(capped->tier.reason.find("compute shaders") != std::string::npos);
+}

@@ -148,3 +148,19 @@ TEST_CASE("embedded shader library has every program for its tiers", "[shaders]"
         }
     }
 }
+
+TEST_CASE("backend names parse, and unknown ones are refused", "[backends][bad-input]") {
+    BackendConfig c;
+    REQUIRE(parseBackendConfig("gl", &c));
+    CHECK(toString(c) == "gl-osmesa");
+    REQUIRE(parseBackendConfig("gles", &c));
+    CHECK(c.backend == BackendKind::GLES);
+    CHECK_FALSE(parseBackendConfig("metal", &c));
+    CHECK_FALSE(parseBackendConfig("", &c));
+    // The null backend opens anywhere; it reaches no tier, and says why.
+    Result<std::unique_ptr<Device>> dev = openDevice({BackendKind::Null, ""});
+    REQUIRE(dev.isOk());
+    Result<tiers::TierChoice> tier = tiers::choose(dev.value()->caps());
+    CHECK(tier.status().code() == StatusCode::UnsupportedTier);
+    CHECK(tier.status().message().find("rasterising device") != std::string::npos);
+}

@@ -7,30 +7,12 @@
 #include "sfx/camera.hpp"
 #include "sfx/reference/depth_reference.hpp"
 #include "sfx_shared.h"
+#include "depth_conventions.hpp"
 
 using namespace sfx;
 
-namespace {
-struct Convention {
-    const char* name;
-    ClipDepthRange clip;
-    bool reversed;
-    double farPlane;
-};
-const double kInf = std::numeric_limits<double>::infinity();
-const Convention kConventions[] = {
-    {"[0,1] standard", ClipDepthRange::ZeroToOne, false, 100.0},
-    {"[0,1] reversed", ClipDepthRange::ZeroToOne, true, 100.0},
-    {"[0,1] standard infinite", ClipDepthRange::ZeroToOne, false, kInf},
-    {"[0,1] reversed infinite", ClipDepthRange::ZeroToOne, true, kInf},
-    {"[-1,1] standard", ClipDepthRange::MinusOneToOne, false, 100.0},
-    {"[-1,1] standard infinite", ClipDepthRange::MinusOneToOne, false, kInf},
-    {"[-1,1] reversed", ClipDepthRange::MinusOneToOne, true, 100.0},
-};
-}  // namespace
-
 TEST_CASE("linearisation inverts the projection for every depth convention", "[depth]") {
-    for (const Convention& c : kConventions) {
+    for (const test::DepthConvention& c : test::kDepthConventions) {
         INFO(c.name);
         PerspectiveDesc pd;
         pd.nearPlane = 0.1;

@@ -16,5 +16,8 @@ Status mipRange(const TextureDesc& desc, uint32_t mip, const char* argument);
 Status textureBytes(const TextureDesc& desc, uint32_t mip, size_t bytes, const char* argument);
 Status bufferRange(const BufferDesc& desc, uint64_t offset, uint64_t bytes, const char* argument);
 Status dispatchGroups(const DispatchDesc& dispatch, const DeviceCaps& caps);
+// A draw may not sample a mip its pass renders to (a feedback loop: undefined on GL, a layout
+// conflict on Vulkan). Handles are compared as values, so call after checking them.
+Status noFeedbackLoop(const RenderPassDesc& pass, const DrawDesc& draw);
 
 }  // namespace sfx::validation

@@ -1,0 +1,303 @@
+// GL backend conformance: exact readback of full-screen passes in every colour class, uploads,
+// uniform blocks bound by name, mip-to-mip rendering, indexed depth-tested draws with depth
+// readback, compute under both tiers, the ceiling's dialect, context switching between two GL
+// devices in one process, and shader errors. Skipped on non-GL backends.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "sfx_shaders.hpp"
+#include "test_device.hpp"
+
+#if __has_include("sfx/gl_device.hpp") && __has_include(<EGL/egl.h>) && __has_include(<GL/osmesa.h>)
+#define SFX_TEST_GL_WRAP 1
+#define EGL_NO_X11 1
+#include <EGL/egl.h>
+#include <GL/osmesa.h>
+
+#include "sfx/gl_device.hpp"
+#endif
+
+namespace sfx {
+namespace {
+
+bool isGl(const Device& d) { return d.caps().backend == BackendKind::GLES || d.caps().backend == BackendKind::GL; }
+
+#define SFX_GL_ONLY()                                       \
+    if (!isGl(test::device())) {                            \
+        SUCCEED("not a GL backend");                        \
+        return;                                             \
+    }
+
+const CompiledProgram& program(const char* name) {
+    Result<const CompiledProgram*> p = shaders::find(name, test::tier());
+    INFO(name << ": " << p.status().toString());
+    REQUIRE(p.isOk());
+    return *p.value();
+}
+
+struct FullScreen {
+    ProgramHandle program;
+    PipelineHandle pipeline;
+};
+
+FullScreen makeFullScreen(Device& dev, const char* name, Format format) {
+    FullScreen fs;
+    Result<ProgramHandle> p = dev.createProgram(program(name));
+    INFO(p.status().toString());
+    REQUIRE(p.isOk());
+    fs.program = p.value();
+    GraphicsPipelineDesc pd;
+    pd.program = fs.program;
+    pd.colorFormats = {format};
+    Result<PipelineHandle> pl = dev.createGraphicsPipeline(pd);
+    INFO(pl.status().toString());
+    REQUIRE(pl.isOk());
+    fs.pipeline = pl.value();
+    return fs;
+}
+
+void destroy(Device& dev, const FullScreen& fs) {
+    SFX_REQUIRE_OK(dev.destroyPipeline(fs.pipeline));
+    SFX_REQUIRE_OK(dev.destroyProgram(fs.program));
+}
+
+Status drawFullScreen(Device& dev, PipelineHandle pipeline, TextureHandle target, uint32_t mip = 0,
+                      BindingSet bindings = {}) {
+    RenderPassDesc pass;
+    pass.colors.push_back({target, mip, LoadOp::Clear, {0, 0, 0, 0}});
+    DrawDesc draw;
+    draw.pipeline = pipeline;
+    draw.bindings = std::move(bindings);
+    return dev.renderPass(pass, std::span<const DrawDesc>(&draw, 1));
+}
+
+// IEEE half to float, for comparing half readbacks.
+float halfToFloat(uint16_t h) {
+    const uint32_t sign = uint32_t(h >> 15) << 31, exp = (h >> 10) & 31u, mant = h & 1023u;
+    float v;
+    if (exp == 0) v = std::ldexp(float(mant), -24);
+    else if (exp == 31) v = mant ? NAN : INFINITY;
+    else v = std::ldexp(float(mant | 1024u), int(exp) - 25);
+    return sign ? -v : v;
+}
+
+// The pattern hal_gltest_pattern writes at texel (x, y).
+std::array<float, 4> pattern(uint32_t x, uint32_t y) {
+    return {float(x) / 256.0f, float(y) / 256.0f, float(x + 2 * y) / 256.0f, 0.5f};
+}
+
+void checkPattern(Device& dev, Format format, uint32_t w, uint32_t h) {
+    INFO("format " << toString(format) << " on " << test::label());
+    const bool isUint = format == Format::R32UI;
+    FullScreen fs = makeFullScreen(dev, isUint ? "hal_gltest_pattern_uint" : "hal_gltest_pattern", format);
+    Result<TextureHandle> tex = dev.createTexture({w, h, 1, format, kTextureRenderTarget | kTextureSampled});
+    INFO(tex.status().toString());
+    REQUIRE(tex.isOk());
+    SFX_REQUIRE_OK(drawFullScreen(dev, fs.pipeline, tex.value()));
+    std::vector<uint8_t> bytes(size_t(w) * h * bytesPerTexel(format));
+    SFX_REQUIRE_OK(dev.readTexture(tex.value(), 0, bytes.data(), bytes.size()));
+    const uint32_t channels = channelCount(format);
+    size_t bad = 0;
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x) {
+            const size_t i = size_t(y) * w + x;
+            const auto want = pattern(x, y);
+            for (uint32_t c = 0; c < channels; ++c) {
+                bool ok = true;
+                if (format == Format::R32UI) {
+                    uint32_t v;
+                    std::memcpy(&v, &bytes[i * 4], 4);
+                    ok = v == x + 1000 * y + 7;
+                } else if (format == Format::RGBA8 || format == Format::R8) {
+                    const int v = bytes[i * channels + c];
+                    ok = std::abs(v - int(std::lround(want[c] * 255.0f))) <= 1;
+                } else if (format == Format::R16F || format == Format::RG16F || format == Format::RGBA16F) {
+                    uint16_t v;
+                    std::memcpy(&v, &bytes[(i * channels + c) * 2], 2);
+                    ok = halfToFloat(v) == want[c];
+                } else {
+                    float v;
+                    std::memcpy(&v, &bytes[(i * channels + c) * 4], 4);
+                    ok = v == want[c];
+                }
+                if (!ok && bad++ < 4) UNSCOPED_INFO("texel (" << x << "," << y << ") channel " << c << " differs");
+            }
+        }
+    CHECK(bad == 0);
+    SFX_REQUIRE_OK(dev.destroyTexture(tex.value()));
+    destroy(dev, fs);
+}
+
+TEST_CASE("gl: full-screen pass writes gl_FragCoord patterns exactly", "[hal][gl]") {
+    SFX_GL_ONLY();
+    Device& dev = test::device();
+    checkPattern(dev, Format::RGBA8, 16, 8);
+    checkPattern(dev, Format::R32UI, 16, 8);
+    if (dev.caps().renderableFormat[size_t(Format::R32F)]) checkPattern(dev, Format::R32F, 16, 8);
+    if (dev.caps().renderableFormat[size_t(Format::RGBA16F)]) checkPattern(dev, Format::RGBA16F, 16, 8);
+    if (dev.caps().renderableFormat[size_t(Format::RG16F)]) checkPattern(dev, Format::RG16F, 13, 5);
+    if (dev.caps().renderableFormat[size_t(Format::RGBA32F)]) checkPattern(dev, Format::RGBA32F, 7, 3);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("gl: depth formats upload and read back", "[hal][gl]") {
+    SFX_GL_ONLY();
+    Device& dev = test::device();
+    const uint32_t w = 5, h = 3;
+    std::vector<float> f(w * h);
+    for (size_t i = 0; i < f.size(); ++i) f[i] = float(i) / 16.0f;
+    TextureHandle d32 = dev.createTexture({w, h, 1, Format::D32F, kTextureSampled | kTextureRenderTarget}).value();
+    SFX_REQUIRE_OK(dev.writeTexture(d32, 0, f.data(), f.size() * 4));
+    std::vector<float> back(f.size());
+    SFX_REQUIRE_OK(dev.readTexture(d32, 0, back.data(), back.size() * 4));
+    CHECK(back == f);
+    std::vector<uint16_t> u16(w * h);
+    for (size_t i = 0; i < u16.size(); ++i) u16[i] = uint16_t(i * 4000);
+    TextureHandle d16 = dev.createTexture({w, h, 1, Format::D16, kTextureSampled | kTextureRenderTarget}).value();
+    SFX_REQUIRE_OK(dev.writeTexture(d16, 0, u16.data(), u16.size() * 2));
+    std::vector<uint16_t> back16(u16.size());
+    SFX_REQUIRE_OK(dev.readTexture(d16, 0, back16.data(), back16.size() * 2));
+    CHECK(back16 == u16);
+    // D24S8: depth in the high 24 bits; GL ES reads depth through a shader, so allow one step.
+    std::vector<uint32_t> u24(w * h);
+    for (size_t i = 0; i < u24.size(); ++i) u24[i] = uint32_t(i * 1000003u % 16777216u) << 8;
+    TextureHandle d24 = dev.createTexture({w, h, 1, Format::D24S8, kTextureSampled | kTextureRenderTarget}).value();
+    SFX_REQUIRE_OK(dev.writeTexture(d24, 0, u24.data(), u24.size() * 4));
+    std::vector<uint32_t> back24(u24.size());
+    SFX_REQUIRE_OK(dev.readTexture(d24, 0, back24.data(), back24.size() * 4));
+    for (size_t i = 0; i < u24.size(); ++i) {
+        INFO("D24S8 texel " << i);
+        CHECK(std::abs(int64_t(back24[i] >> 8) - int64_t(u24[i] >> 8)) <= 1);
+    }
+    SFX_REQUIRE_OK(dev.destroyTexture(d24));
+    SFX_REQUIRE_OK(dev.destroyTexture(d32));
+    SFX_REQUIRE_OK(dev.destroyTexture(d16));
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("gl: caps and the dialect under the ceiling", "[hal][gl]") {
+    SFX_GL_ONLY();
+    const DeviceCaps& c = test::device().caps();
+    const bool es = c.backend == BackendKind::GLES;
+    CHECK(c.platform == test::backendConfig().platform);
+    CHECK(c.clipDepth == ClipDepthRange::MinusOneToOne);
+    CHECK(c.origin == FramebufferOrigin::LowerLeft);
+    CHECK(c.timing == TimingSource::WallClockAfterFinish);
+    CHECK(c.apiName.find(es ? "OpenGL ES" : "OpenGL") != std::string::npos);
+    if (c.ceiling == CapabilityCeiling::GLES30) {
+        CHECK(c.dialect == (es ? ShaderDialect::Essl300 : ShaderDialect::Glsl330));
+        CHECK(!c.storageImages);
+    } else {
+        CHECK(c.dialect == (es ? ShaderDialect::Essl310 : ShaderDialect::Glsl450));
+    }
+    // Timers measure wall time between glFinish calls.
+    Device& dev = test::device();
+    TimerHandle t = dev.createTimer().value();
+    SFX_REQUIRE_OK(dev.beginTimer(t));
+    SFX_REQUIRE_OK(dev.endTimer(t));
+    Result<TimerReading> r = dev.readTimer(t);
+    REQUIRE(r.isOk());
+    CHECK(r->milliseconds >= 0);
+    CHECK(r->source == TimingSource::WallClockAfterFinish);
+    SFX_REQUIRE_OK(dev.destroyTimer(t));
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("gl: two GL devices in one process switch contexts", "[hal][gl]") {
+    SFX_GL_ONLY();
+    Device& a = test::device();
+    // The other platform: EGL GL ES beside OSMesa, OSMesa beside either EGL device.
+    const BackendConfig other = test::backendConfig().platform == "osmesa" ? BackendConfig{BackendKind::GLES, "egl"}
+                                                                          : BackendConfig{BackendKind::GL, "osmesa"};
+    DeviceOptions options;
+    options.ceiling = a.caps().ceiling;
+    Result<std::unique_ptr<Device>> opened = openDevice(other, options);
+    if (!opened) {
+        WARN("second GL device unavailable: " << opened.status().toString());
+        return;
+    }
+    Device& b = *opened.value();
+    FullScreen fa = makeFullScreen(a, "hal_gltest_pattern", Format::RGBA8);
+    FullScreen fb = makeFullScreen(b, "hal_gltest_pattern_uint", Format::R32UI);
+    TextureHandle ta = a.createTexture({12, 6, 1, Format::RGBA8, kTextureRenderTarget}).value();
+    TextureHandle tb = b.createTexture({12, 6, 1, Format::R32UI, kTextureRenderTarget}).value();
+    for (int round = 0; round < 2; ++round) {
+        SFX_REQUIRE_OK(drawFullScreen(a, fa.pipeline, ta));
+        SFX_REQUIRE_OK(drawFullScreen(b, fb.pipeline, tb));
+        std::vector<uint8_t> ra(12 * 6 * 4);
+        std::vector<uint32_t> rb(12 * 6);
+        SFX_REQUIRE_OK(a.readTexture(ta, 0, ra.data(), ra.size()));
+        SFX_REQUIRE_OK(b.readTexture(tb, 0, rb.data(), rb.size() * 4));
+        for (uint32_t y = 0; y < 6; ++y)
+            for (uint32_t x = 0; x < 12; ++x) {
+                INFO("round " << round << " texel " << x << "," << y);
+                REQUIRE(std::abs(int(ra[(y * 12 + x) * 4 + 1]) - int(std::lround(y / 256.0 * 255.0))) <= 1);
+                REQUIRE(rb[y * 12 + x] == x + 1000 * y + 7);
+            }
+    }
+    // Resources of one device are foreign to the other.
+    CHECK(b.destroyTexture(ta).code() == StatusCode::ForeignHandle);
+    SFX_REQUIRE_OK(b.destroyTexture(tb));
+    destroy(b, fb);
+    CHECK(b.takeValidationMessages().empty());
+    opened.value().reset();
+    // The first device still renders after the second is gone.
+    SFX_REQUIRE_OK(drawFullScreen(a, fa.pipeline, ta));
+    std::vector<uint8_t> ra(12 * 6 * 4);
+    SFX_REQUIRE_OK(a.readTexture(ta, 0, ra.data(), ra.size()));
+    CHECK(int(ra[(5 * 12 + 11) * 4]) == int(std::lround(11 / 256.0 * 255.0)));
+    SFX_REQUIRE_OK(a.destroyTexture(ta));
+    destroy(a, fa);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+#ifdef SFX_TEST_GL_WRAP
+TEST_CASE("gl: a host's current context wrapped as a device", "[hal][gl]") {
+    SFX_GL_ONLY();
+    Device& host = test::device();
+    SFX_REQUIRE_OK(host.flush());  // the test device's context is now current: play the host
+    const bool osmesa = test::backendConfig().platform == "osmesa";
+    gl::GetProcAddressFn loader = osmesa ? reinterpret_cast<gl::GetProcAddressFn>(&OSMesaGetProcAddress)
+                                         : reinterpret_cast<gl::GetProcAddressFn>(&eglGetProcAddress);
+    DeviceOptions options;
+    options.ceiling = host.caps().ceiling;
+    options.validation = false;  // KHR_debug's callback belongs to the test device here
+    const gl::Api api = host.caps().backend == BackendKind::GLES ? gl::Api::GLES : gl::Api::DesktopGL;
+    Result<std::unique_ptr<Device>> wrapped = gl::wrapCurrentContext(loader, api, options);
+    INFO(wrapped.status().toString());
+    REQUIRE(wrapped.isOk());
+    Device& dev = *wrapped.value();
+    CHECK(dev.caps().platform == "host");
+    CHECK(dev.caps().dialect == host.caps().dialect);
+    FullScreen fs = makeFullScreen(dev, "hal_gltest_pattern_uint", Format::R32UI);
+    TextureHandle t = dev.createTexture({4, 3, 1, Format::R32UI, kTextureRenderTarget}).value();
+    CHECK(gl::wrapCurrentContext(nullptr, api, options).status().code() == StatusCode::InvalidArgument);
+    SFX_REQUIRE_OK(drawFullScreen(dev, fs.pipeline, t));
+    std::vector<uint32_t> out(12);
+    SFX_REQUIRE_OK(dev.readTexture(t, 0, out.data(), out.size() * 4));
+    CHECK(out[2 * 4 + 3] == 3 + 2000 + 7);
+    SFX_REQUIRE_OK(dev.destroyTexture(t));
+    destroy(dev, fs);
+    wrapped.value().reset();
+    // The host's context survives the wrapper.
+    SFX_REQUIRE_OK(host.flush());
+    checkPattern(host, Format::RGBA8, 4, 4);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("gl: an API the platform lacks is BackendUnavailable", "[hal][gl]") {
+    SFX_GL_ONLY();
+    Result<std::unique_ptr<Device>> es = gl::createDevice(gl::Platform::OSMesa, gl::Api::GLES, {});
+    CHECK(es.status().code() == StatusCode::BackendUnavailable);
+    CHECK(es.status().message().find("OSMesa") != std::string::npos);
+    // The test device still works after the refused open.
+    checkPattern(test::device(), Format::RGBA8, 3, 2);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+#endif
+
+}  // namespace
+}  // namespace sfx

@@ -1,0 +1,249 @@
+// The Vulkan backend on a host engine's objects: wrapping a host-made VkInstance/VkDevice,
+// recording into a host command buffer, and leaving every host object alive and leak-free.
+#include <catch2/catch.hpp>
+
+#include <vulkan/vulkan.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "sfx/vulkan_device.hpp"
+
+using namespace sfx;
+
+namespace {
+
+// Errors the host's own messenger sees: at the end, leaks of SDK objects would show here.
+struct HostMessages {
+    std::vector<std::string> errors;
+};
+
+VKAPI_ATTR VkBool32 VKAPI_CALL hostCallback(VkDebugUtilsMessageSeverityFlagBitsEXT, VkDebugUtilsMessageTypeFlagsEXT,
+                                            const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
+    static_cast<HostMessages*>(user)->errors.push_back(data->pMessage ? data->pMessage : "");
+    return VK_FALSE;
+}
+
+// What a host engine would have made before handing it to the SDK.
+struct Host {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+    VkPhysicalDevice physical = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE;
+    uint32_t family = 0;
+    HostMessages messages;
+    bool validation = false;
+    std::string skipReason;
+
+    bool create() {
+        uint32_t count = 0;
+        vkEnumerateInstanceLayerProperties(&count, nullptr);
+        std::vector<VkLayerProperties> layers(count);
+        vkEnumerateInstanceLayerProperties(&count, layers.data());
+        for (const auto& l : layers) validation |= std::strcmp(l.layerName, "VK_LAYER_KHRONOS_validation") == 0;
+        const char* layer = "VK_LAYER_KHRONOS_validation";
+        const char* ext = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
+        VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+        app.apiVersion = VK_API_VERSION_1_3;
+        VkInstanceCreateInfo ci{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+        ci.pApplicationInfo = &app;
+        ci.enabledLayerCount = validation ? 1 : 0;
+        ci.ppEnabledLayerNames = &layer;
+        ci.enabledExtensionCount = validation ? 1 : 0;
+        ci.ppEnabledExtensionNames = &ext;
+        if (vkCreateInstance(&ci, nullptr, &instance) != VK_SUCCESS) {
+            skipReason = "no Vulkan instance";
+            return false;
+        }
+        if (validation) {
+            auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+                vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
+            VkDebugUtilsMessengerCreateInfoEXT mi{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+            mi.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT;
+            mi.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT;
+            mi.pfnUserCallback = hostCallback;
+            mi.pUserData = &messages;
+            create(instance, &mi, nullptr, &messenger);
+        }
+        count = 0;
+        vkEnumeratePhysicalDevices(instance, &count, nullptr);
+        std::vector<VkPhysicalDevice> gpus(count);
+        vkEnumeratePhysicalDevices(instance, &count, gpus.data());
+        for (VkPhysicalDevice gpu : gpus) {
+            VkPhysicalDeviceProperties p;
+            vkGetPhysicalDeviceProperties(gpu, &p);
+            if (p.apiVersion >= VK_API_VERSION_1_3) {
+                physical = gpu;
+                break;
+            }
+        }
+        if (!physical) {
+            skipReason = "no Vulkan 1.3 device";
+            return false;
+        }
+        uint32_t qCount = 0;
+        vkGetPhysicalDeviceQueueFamilyProperties(physical, &qCount, nullptr);
+        std::vector<VkQueueFamilyProperties> families(qCount);
+        vkGetPhysicalDeviceQueueFamilyProperties(physical, &qCount, families.data());
+        for (uint32_t i = 0; i < qCount; ++i)
+            if ((families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) && (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT)) {
+                family = i;
+                break;
+            }
+        VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+        v13.dynamicRendering = VK_TRUE;
+        const float priority = 1.0f;
+        VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+        qci.queueFamilyIndex = family;
+        qci.queueCount = 1;
+        qci.pQueuePriorities = &priority;
+        VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+        dci.pNext = &v13;
+        dci.queueCreateInfoCount = 1;
+        dci.pQueueCreateInfos = &qci;
+        if (vkCreateDevice(physical, &dci, nullptr, &device) != VK_SUCCESS) {
+            skipReason = "vkCreateDevice failed";
+            return false;
+        }
+        vkGetDeviceQueue(device, family, 0, &queue);
+        return true;
+    }
+
+    ~Host() {
+        if (device) vkDestroyDevice(device, nullptr);
+        if (messenger) {
+            auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+                vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
+            destroy(instance, messenger, nullptr);
+        }
+        if (instance) vkDestroyInstance(instance, nullptr);
+    }
+};
+
+void clearTo(Device& d, TextureHandle t, float value) {
+    RenderPassDesc pass;
+    pass.colors = {{t, 0, LoadOp::Clear, {value, value, value, value}}};
+    REQUIRE(d.renderPass(pass, {}).isOk());
+}
+
+}  // namespace
+
+TEST_CASE("vulkan: wrapped host device, host command buffer, host objects survive the SDK", "[vulkan]") {
+    Host host;
+    if (!host.create()) {
+        WARN("skipped: " << host.skipReason);
+        return;
+    }
+    vulkan::ExternalVulkan ext;
+    ext.instance = host.instance;
+    ext.physicalDevice = host.physical;
+    ext.device = host.device;
+    ext.queue = host.queue;
+    ext.queueFamily = host.family;
+    ext.getInstanceProcAddr = vkGetInstanceProcAddr;
+    ext.debugUtilsEnabled = host.validation;
+
+    VkCommandPool pool = VK_NULL_HANDLE;
+    VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pci.queueFamilyIndex = host.family;
+    REQUIRE(vkCreateCommandPool(host.device, &pci, nullptr, &pool) == VK_SUCCESS);
+    VkCommandBuffer cb = VK_NULL_HANDLE;
+    VkCommandBufferAllocateInfo cai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    cai.commandPool = pool;
+    cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    cai.commandBufferCount = 1;
+    REQUIRE(vkAllocateCommandBuffers(host.device, &cai, &cb) == VK_SUCCESS);
+
+    {
+        DeviceOptions options;
+        options.validation = true;
+        Result<std::unique_ptr<Device>> wrapped = vulkan::wrapDevice(ext, options);
+        INFO(wrapped.status().toString());
+        REQUIRE(wrapped.isOk());
+        Device& d = *wrapped.value();
+        CHECK(d.caps().backend == BackendKind::Vulkan);
+        CHECK(d.caps().dialect == ShaderDialect::Spirv);
+
+        Result<TextureHandle> tex = d.createTexture({4, 4, 1, Format::R32F, kTextureSampled | kTextureRenderTarget});
+        REQUIRE(tex.isOk());
+        std::vector<float> texels(16);
+
+        // The SDK's own command buffers, submitted to the host's queue.
+        clearTo(d, tex.value(), 2.0f);
+        REQUIRE(d.readTexture(tex.value(), 0, texels.data(), 64).isOk());
+        for (float v : texels) REQUIRE(v == 2.0f);
+
+        // Recording into the host's command buffer: reads refuse until the host has submitted.
+        VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+        REQUIRE(vkBeginCommandBuffer(cb, &bi) == VK_SUCCESS);
+        REQUIRE(vulkan::setCommandBuffer(d, cb).isOk());
+        clearTo(d, tex.value(), 5.0f);
+        const float one = 1.0f;
+        Result<BufferHandle> buf = d.createBuffer({16, kBufferUniform});
+        REQUIRE(buf.isOk());
+        REQUIRE(d.writeBuffer(buf.value(), 4, &one, 4).isOk());
+        Status refused = d.readTexture(tex.value(), 0, texels.data(), 64);
+        CHECK(refused.code() == StatusCode::UnsupportedFeature);
+        CHECK(refused.message().find("host command buffer") != std::string::npos);
+        REQUIRE(d.flush().isOk());  // stops recording into the host's buffer
+        REQUIRE(vkEndCommandBuffer(cb) == VK_SUCCESS);
+        VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+        si.commandBufferCount = 1;
+        si.pCommandBuffers = &cb;
+        REQUIRE(vkQueueSubmit(host.queue, 1, &si, VK_NULL_HANDLE) == VK_SUCCESS);
+        REQUIRE(vkQueueWaitIdle(host.queue) == VK_SUCCESS);
+        REQUIRE(d.readTexture(tex.value(), 0, texels.data(), 64).isOk());
+        for (float v : texels) REQUIRE(v == 5.0f);
+        float words[4] = {};
+        REQUIRE(d.readBuffer(buf.value(), 0, words, 16).isOk());
+        CHECK(words[1] == 1.0f);
+
+        // The SDK's messenger on the host's instance reports validation errors.
+        if (host.validation) {
+            CHECK(d.takeValidationMessages().empty());
+            VkSamplerCreateInfo bad{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+            bad.anisotropyEnable = VK_TRUE;  // the host did not enable samplerAnisotropy
+            bad.maxAnisotropy = 4.0f;
+            VkSampler sampler = VK_NULL_HANDLE;
+            vkCreateSampler(host.device, &bad, nullptr, &sampler);
+            if (sampler) vkDestroySampler(host.device, sampler, nullptr);
+            CHECK_FALSE(d.takeValidationMessages().empty());
+            host.messages.errors.clear();
+        }
+        REQUIRE(d.destroyTexture(tex.value()).isOk());
+    }
+
+    // The SDK is gone; every host object still works and nothing of the SDK's leaked.
+    REQUIRE(vkDeviceWaitIdle(host.device) == VK_SUCCESS);
+    REQUIRE(vkResetCommandPool(host.device, pool, 0) == VK_SUCCESS);
+    VkBufferCreateInfo bci{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    bci.size = 64;
+    bci.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    VkBuffer buffer = VK_NULL_HANDLE;
+    REQUIRE(vkCreateBuffer(host.device, &bci, nullptr, &buffer) == VK_SUCCESS);
+    vkDestroyBuffer(host.device, buffer, nullptr);
+    vkDestroyCommandPool(host.device, pool, nullptr);
+    vkDestroyDevice(host.device, nullptr);  // the layer reports any SDK object still alive
+    host.device = VK_NULL_HANDLE;
+    for (const auto& m : host.messages.errors) UNSCOPED_INFO("host validation: " << m);
+    CHECK(host.messages.errors.empty());
+}
+
+TEST_CASE("vulkan: own device opens, and wrapDevice rejects missing host objects", "[vulkan]") {
+    Result<std::unique_ptr<Device>> own = vulkan::createDevice({});
+    if (!own) {
+        CHECK(own.status().code() == StatusCode::BackendUnavailable);
+        WARN("skipped: " << own.status().toString());
+        return;
+    }
+    CHECK(own.value()->caps().platform == "vulkan-loader");
+    CHECK(own.value()->caps().apiName.rfind("Vulkan 1.", 0) == 0);
+    CHECK(own.value()->takeValidationMessages().empty());
+
+    vulkan::ExternalVulkan empty;
+    Result<std::unique_ptr<Device>> bad = vulkan::wrapDevice(empty);
+    CHECK(bad.status().code() == StatusCode::InvalidArgument);
+}
