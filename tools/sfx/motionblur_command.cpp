@@ -1,11 +1,214 @@
+// sfx motionblur: motion blur reconstruction on colour, depth and velocity files.
+#include <cmath>
+#include <cstring>
+#include <iostream>
+
+#include "cli_common.hpp"
 #include "commands.hpp"
+#include "sfx/motion_blur.hpp"
 
 namespace sfx::cli {
-// Placeholder until the motion blur effect lands (issue 4): the subcommand exists and says so.
+namespace {
+
+const char* kVelocityHelp =
+    "velocity file in pixels: EXR with two channels (x, y; more are ignored) or PFM with three (the third "
+    "ignored).\n"
+    "x points toward the right edge of the picture, y toward the BOTTOM of the picture (the file's row "
+    "order as its format defines it, row 0 = top). A velocity is the displacement across the shutter "
+    "interval (exposure 1), for a frame rendered at mid-shutter: the blur reaches half of it either side.";
+
+struct MotionBlurFlags {
+    DeviceFlags device;
+    CameraFlags camera;
+    std::string colorPath, velocityPath, outPath;
+    float maxRadius = 0.0f;
+    uint32_t referenceRows = 720;
+    uint32_t samples = 0;
+    float softDepth = 0.1f;
+    float centreWeight = 1.0f;
+    float exposure = 1.0f;
+};
+
+uint16_t halfBits(float f) {
+    // Round to nearest via the float's top bits; the values are finite colours.
+    uint32_t b;
+    std::memcpy(&b, &f, 4);
+    const uint32_t sign = (b >> 16) & 0x8000u;
+    const float a = std::fabs(f);
+    if (a < 6.103515625e-05f) return uint16_t(sign | uint32_t(std::lround(a * 16777216.0f)));  // subnormal
+    if (a >= 65504.0f) return uint16_t(sign | 0x7bffu);                                        // clamp to max
+    const int exponent = int((b >> 23) & 0xffu) - 127 + 15;
+    uint32_t h = sign | (uint32_t(exponent) << 10) | ((b & 0x7fffffu) >> 13);
+    if ((b & 0x1fffu) > 0x1000u || ((b & 0x1fffu) == 0x1000u && (h & 1u))) ++h;  // ties to even
+    return uint16_t(h);
+}
+float halfToFloat(uint16_t h) {
+    const int exponent = (h >> 10) & 0x1f;
+    const float mantissa = float(h & 0x3ff);
+    const float sign = (h & 0x8000) ? -1.0f : 1.0f;
+    if (exponent == 0) return sign * std::ldexp(mantissa, -24);
+    return sign * std::ldexp(1024.0f + mantissa, exponent - 25);
+}
+
+Status checkFinite(const io::Image& image, const std::string& flag, const std::string& path) {
+    for (uint32_t y = 0; y < image.height; ++y)
+        for (uint32_t x = 0; x < image.width; ++x)
+            for (uint32_t c = 0; c < image.channels; ++c)
+                if (!std::isfinite(image.at(x, y, c)))
+                    return {StatusCode::InvalidArgument, flag + " " + path + ": pixel (" + std::to_string(x) + ", " +
+                                                             std::to_string(y) + ") channel " + std::to_string(c) +
+                                                             " is not finite"};
+    return Status::ok();
+}
+
+std::string extensionOf(const std::string& path) {
+    const size_t dot = path.find_last_of('.');
+    std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
+    for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    return ext;
+}
+
+Status run(const MotionBlurFlags& f) {
+    const std::string outExt = extensionOf(f.outPath);
+    if (outExt != "png" && outExt != "pfm" && outExt != "exr")
+        return invalidArgument("--out", "'" + f.outPath + "'", "a .png, .pfm or .exr file name");
+    const std::string velExt = extensionOf(f.velocityPath);
+    if (velExt != "exr" && velExt != "pfm")
+        return invalidArgument("--velocity", "'" + f.velocityPath + "'", "an .exr or .pfm file (signed pixels)");
+
+    // Every file is read and checked before a device is opened: a malformed input is reported
+    // as such, naming the file, on any machine.
+    Result<io::Image> depthImage = io::readImage(f.camera.depthPath);
+    if (!depthImage) return depthImage.status();
+    const uint32_t w = depthImage->width, h = depthImage->height;
+
+    Result<io::Image> color = loadMatching(f.colorPath, w, h, "--color");
+    if (!color) return color.status();
+    SFX_TRY(checkFinite(color.value(), "--color", f.colorPath));
+    Result<io::Image> velocity = loadMatching(f.velocityPath, w, h, "--velocity");
+    if (!velocity) return velocity.status();
+    const uint32_t needed = velExt == "pfm" ? 3u : 2u;
+    if (velocity->channels < needed)
+        return {StatusCode::InvalidArgument, "--velocity " + f.velocityPath + " has " + std::to_string(velocity->channels) +
+                                                 " channel(s); a velocity " + velExt + " needs " + std::to_string(needed) +
+                                                 (velExt == "pfm" ? " (x, y, ignored)" : " (x, y)")};
+    SFX_TRY(checkFinite(velocity.value(), "--velocity", f.velocityPath));
+
+    Result<OpenedDevice> opened = openDevice(f.device);
+    if (!opened) return opened.status();
+    Device& device = *opened->device;
+    const Tier tier = opened->tier.tier;
+    Result<LoadedDepth> depth = loadDepth(device, f.camera);
+    if (!depth) return depth.status();
+
+    // RGBA32F when the device renders it (exact), else RGBA16F (ES 3.0 with EXT_color_buffer_half_float).
+    const bool full = device.caps().renderableFormat[size_t(Format::RGBA32F)];
+    const Format colorFormat = full ? Format::RGBA32F : Format::RGBA16F;
+    std::vector<float> rgba(size_t(w) * h * 4);
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x) {
+            float* px = &rgba[(size_t(y) * w + x) * 4];
+            const uint32_t ch = color->channels;
+            for (uint32_t c = 0; c < 3; ++c) px[c] = color->at(x, y, ch >= 3 ? c : 0);
+            px[3] = ch == 4 || ch == 2 ? color->at(x, y, ch - 1) : 1.0f;
+        }
+    Result<TextureHandle> colorTex = device.createTexture({w, h, 1, colorFormat, kTextureSampled, "sfx-cli-color"});
+    if (!colorTex) return colorTex.status();
+    if (full) {
+        SFX_TRY(device.writeTexture(colorTex.value(), 0, rgba.data(), rgba.size() * 4));
+    } else {
+        std::vector<uint16_t> halves(rgba.size());
+        for (size_t i = 0; i < rgba.size(); ++i) halves[i] = halfBits(rgba[i]);
+        SFX_TRY(device.writeTexture(colorTex.value(), 0, halves.data(), halves.size() * 2));
+    }
+    std::vector<float> vel(size_t(w) * h * 2);
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x) {
+            // Files and textures both put row 0 at the top: y toward the bottom = increasing row.
+            vel[(size_t(y) * w + x) * 2 + 0] = velocity->at(x, y, 0);
+            vel[(size_t(y) * w + x) * 2 + 1] = velocity->at(x, y, 1);
+        }
+    Result<TextureHandle> velTex = device.createTexture({w, h, 1, Format::RG32F, kTextureSampled, "sfx-cli-velocity"});
+    if (!velTex) return velTex.status();
+    SFX_TRY(device.writeTexture(velTex.value(), 0, vel.data(), vel.size() * 4));
+
+    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(device, {w, h, tier, colorFormat});
+    if (!mb) return mb.status();
+    MotionBlurSettings s;
+    s.maxRadiusPx = f.maxRadius;
+    s.referenceRows = f.referenceRows;
+    s.samples = f.samples;
+    s.softDepthExtent = f.softDepth;
+    s.centreWeight = f.centreWeight;
+    s.exposure = f.exposure;
+    MotionBlurInputs inputs;
+    inputs.color = colorTex.value();
+    inputs.depth = depth->source;
+    inputs.velocity = velTex.value();
+    SFX_TRY(mb.value()->dispatch(inputs, s));
+    SFX_TRY(device.flush());
+
+    io::Image out(w, h, 4);
+    if (full) {
+        SFX_TRY(device.readTexture(mb.value()->output(), 0, out.pixels.data(), out.pixels.size() * 4));
+    } else {
+        std::vector<uint16_t> halves(out.pixels.size());
+        SFX_TRY(device.readTexture(mb.value()->output(), 0, halves.data(), halves.size() * 2));
+        for (size_t i = 0; i < halves.size(); ++i) out.pixels[i] = halfToFloat(halves[i]);
+    }
+    // Keep the input's channel layout: grey stays grey, RGB stays RGB.
+    io::Image written(w, h, color->channels);
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x) {
+            const uint32_t ch = color->channels;
+            if (ch >= 3)
+                for (uint32_t c = 0; c < ch; ++c) written.at(x, y, c) = out.at(x, y, c);
+            else {
+                written.at(x, y, 0) = out.at(x, y, 0);
+                if (ch == 2) written.at(x, y, 1) = out.at(x, y, 3);
+            }
+        }
+    SFX_TRY(io::writeImage(f.outPath, written));
+    const MotionBlurParams p = resolveMotionBlur(tier, s, h).value();
+    std::cout << "sfx motionblur: " << toString(opened->config) << " " << toString(tier) << " tier, " << p.taps << " taps, radius "
+              << p.radiusPx << " px, " << w << "x" << h << " -> " << f.outPath << "\n";
+    (void)device.destroyTexture(colorTex.value());
+    (void)device.destroyTexture(velTex.value());
+    (void)device.destroyTexture(depth->source.texture);
+    return Status::ok();
+}
+
+}  // namespace
+
 Command addMotionBlurCommand(CLI::App& app) {
+    auto flags = std::make_shared<MotionBlurFlags>();
     Command c;
-    c.app = app.add_subcommand("motionblur", "Motion blur on colour, depth and velocity files (not built yet)");
-    c.run = [] { return 1; };
+    c.app = app.add_subcommand("motionblur", "Motion blur reconstruction on colour, depth and velocity files");
+    CLI::App* sub = c.app;
+    sub->add_option("--color", flags->colorPath, "colour file (PNG, PFM or EXR; grey, RGB or RGBA)")->required();
+    flags->camera.add(*sub);
+    sub->add_option("--velocity", flags->velocityPath, kVelocityHelp)->required();
+    sub->add_option("--out", flags->outPath, "output file (.png, .pfm or .exr), the colour's channel layout")->required();
+    flags->device.add(*sub);
+    sub->add_option("--max-radius", flags->maxRadius,
+                    "maximum blur radius in pixels at --reference-rows rows (scaled to the picture's height); 0 = the "
+                    "tier's (10 current, 18 high); (0, 64]")
+        ->capture_default_str();
+    sub->add_option("--reference-rows", flags->referenceRows, "rows --max-radius is defined at; 0 = no scaling")
+        ->capture_default_str();
+    sub->add_option("--samples", flags->samples, "taps including the centre; 0 = the tier's (7 current, 9 high); odd in [3, 31]")
+        ->capture_default_str();
+    sub->add_option("--soft-depth", flags->softDepth, "soft depth comparison extent, in linear depth units; (0, 1e6]")
+        ->capture_default_str();
+    sub->add_option("--centre-weight", flags->centreWeight, "weight of the pixel's own colour; larger = thinner blur; (0, 100]")
+        ->capture_default_str();
+    sub->add_option("--exposure", flags->exposure, "fraction of the velocity's time span the shutter is open; [0, 4]")
+        ->capture_default_str();
+    c.run = [flags] {
+        Status s = run(*flags);
+        return s.isOk() ? 0 : fail("motionblur", s);
+    };
     return c;
 }
+
 }  // namespace sfx::cli

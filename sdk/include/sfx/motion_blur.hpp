@@ -1,0 +1,134 @@
+// Motion blur reconstruction (seed 003): a gather blur along per-pixel velocity that blurs
+// moving objects past their silhouettes and keeps still ones sharp. Same shape as every effect:
+// create / dispatch / resize / destroy (RAII), status returns, a plan of passes and bytes.
+//
+// Velocity convention (inputs.velocity and the CLI's velocity files):
+// - units: pixels of the output; x toward increasing column, y toward increasing memory row
+//   (texel row y, as hal.hpp defines it; for images the SDK writes, row 0 is the top, so y
+//   points toward the bottom of the picture);
+// - time span: the displacement of the surface across the shutter interval (the time the
+//   shutter is open) at exposure 1, with the frame rendered at mid-shutter. The blur therefore
+//   reaches |v| / 2 to either side of a pixel; that half ("blur radius") is what maxRadiusPx
+//   bounds. exposure scales the span (0.5 = the shutter open half as long).
+// - sign: the direction of motion; the blur is symmetric, so the sign only matters to hosts
+//   that also use the buffer for reprojection.
+//
+// Passes: linear depth (sfx::LinearDepth) -> pack (velocity clamped to the radius and encoded
+// [-k, k] -> [0, 1], depth packed alongside, RGBA16F) -> tile max (N x N, N = radius, RG16F)
+// -> neighbour max (3 x 3 tiles, RG16F) -> reconstruction (the host colour's format).
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <memory>
+
+#include "sfx/camera.hpp"
+#include "sfx/depth.hpp"
+#include "sfx/hal.hpp"
+#include "sfx/plan.hpp"
+#include "sfx/tier.hpp"
+
+namespace sfx {
+
+struct MotionBlurSettings {
+    // Maximum blur radius in pixels at referenceRows rows of output; the radius used is
+    // round(maxRadiusPx * height / referenceRows), at least 1, so the look holds at any size.
+    // 0 = the tier's (10 px current, 18 px high); else (0, 64] pixels, and the scaled radius
+    // must stay <= 64 (SFX_MB_MAX_RADIUS_LIMIT_PX).
+    float maxRadiusPx = 0.0f;
+    // Rows at which maxRadiusPx is defined; 0 = no scaling (maxRadiusPx is in output pixels).
+    // [0, 16384]; default 720.
+    uint32_t referenceRows = 720;
+    // Reconstruction taps, centre included. 0 = the tier's (7 current, 9 high); else odd in
+    // [3, 31]: samples come in mirrored pairs around the centre.
+    uint32_t samples = 0;
+    // Depth difference (scene units, as linear depth) over which a sample turns from "level
+    // with the centre" to "in front of / behind it". (0, 1e6]; default 0.1.
+    float softDepthExtent = 0.1f;
+    // The centre's weight against one averaged sample, divided by max(|v_C|, 1 px): larger
+    // keeps more of the pixel's own colour (thinner blur). (0, 100]; default 1.
+    float centreWeight = 1.0f;
+    // Scales the velocity's time span: the fraction of it the shutter is open. [0, 4];
+    // 0 turns the blur off (the output is the input colour). Default 1.
+    float exposure = 1.0f;
+};
+
+// The parameters one dispatch runs with, after tier defaults and resolution scaling.
+// Shared by the effect and the CPU reference so both run the same numbers.
+struct MotionBlurParams {
+    uint32_t taps = 0;          // centre included, odd
+    uint32_t pairs = 0;         // (taps - 1) / 2 mirrored sample pairs
+    uint32_t jitterSize = 0;    // 2 = checkerboard, 4 = 4x4 randomised
+    uint32_t radiusPx = 0;      // k: clamp radius and tile size, output pixels, [1, 64]
+    double softDepthExtent = 0;
+    double centreWeight = 0;
+    double exposure = 0;
+};
+
+// Validates settings (InvalidArgument naming the field and its range; nothing is clamped
+// silently) and resolves them for `tier` at an output of `height` rows.
+Result<MotionBlurParams> resolveMotionBlur(Tier tier, const MotionBlurSettings& settings, uint32_t height);
+
+// Camera-only velocity: the host gives the camera's view-projection matrices (column-major,
+// projection * view) for this frame and the previous one; each pixel's depth is reprojected.
+// currentViewProjection's projection must be the DepthSource's camera projection.
+struct CameraMotion {
+    glm::dmat4 previousViewProjection{1.0};
+    glm::dmat4 currentViewProjection{1.0};
+};
+
+struct MotionBlurInputs {
+    TextureHandle color;     // the desc's colorFormat, output size, sampled
+    DepthSource depth;       // output size
+    // RG16F, RG32F, RGBA16F or RGBA32F (xy read), output size, pixels per shutter interval.
+    // Null: camera-only velocity from depth and `camera`.
+    TextureHandle velocity;
+    CameraMotion camera;     // read only when velocity is null
+};
+
+struct MotionBlurDesc {
+    uint32_t width = 0;   // [1, caps.limits.maxTextureSize]
+    uint32_t height = 0;
+    Tier tier = Tier::Current;
+    // Format of the host colour and of the output: RGBA8, RGBA16F or RGBA32F (renderable).
+    Format colorFormat = Format::RGBA16F;
+};
+
+class MotionBlur {
+public:
+    // UnsupportedFormat when the device cannot render RGBA16F / RG16F (the packed velocity
+    // and tile textures) or colorFormat.
+    static Result<std::unique_ptr<MotionBlur>> create(Device& device, const MotionBlurDesc& desc);
+    ~MotionBlur();
+    MotionBlur(const MotionBlur&) = delete;
+    MotionBlur& operator=(const MotionBlur&) = delete;
+
+    // Records the passes; the result is in output() once the device flushes.
+    Status dispatch(const MotionBlurInputs& inputs, const MotionBlurSettings& settings = {});
+    Status resize(uint32_t width, uint32_t height);
+
+    TextureHandle output() const { return output_; }         // colorFormat, width x height
+    TextureHandle packedVelocity() const { return packed_; }  // RGBA16F, for debugging views
+    TextureHandle neighborMax() const { return neighborMax_; }
+    const MotionBlurDesc& desc() const { return desc_; }
+    // Passes and bytes for the given settings (the tile textures depend on the radius).
+    Plan plan(const MotionBlurSettings& settings = {}) const;
+
+private:
+    MotionBlur(Device& device, const MotionBlurDesc& desc);
+    Status allocate();
+    Status allocateTiles(uint32_t radiusPx);
+    void release();
+    void releaseTiles();
+
+    Device& device_;
+    MotionBlurDesc desc_;
+    std::unique_ptr<LinearDepth> depth_;
+    TextureHandle packed_, tileMax_, neighborMax_, output_;
+    uint32_t tileRadius_ = 0;  // the radius the tile textures were sized for
+    BufferHandle packParams_, tileParams_, reconstructParams_;
+    ProgramHandle packProgram_, tileProgram_, neighborProgram_, reconstructProgram_;
+    PipelineHandle packPipeline_, tilePipeline_, neighborPipeline_, reconstructPipeline_;
+};
+
+}  // namespace sfx

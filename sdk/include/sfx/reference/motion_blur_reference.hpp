@@ -1,0 +1,94 @@
+// CPU reference of motion blur reconstruction, in double precision and written for clarity.
+// It runs the same passes as the shaders with the same jitter, tap layout and weights (all
+// from shader_src/include/sfx_shared_mb.h). Where the GPU stores fp16 (the packed velocity
+// and the tile textures), the reference rounds its encoded velocities to fp16 too, so the
+// two pick the same texels; everything else stays in double.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "sfx/motion_blur.hpp"
+#include "sfx/reference/depth_reference.hpp"
+
+namespace sfx::reference {
+
+// W x H RGBA colours, row 0 first (memory rows).
+struct ColorGrid {
+    uint32_t width = 0, height = 0;
+    std::vector<std::array<double, 4>> values;
+    ColorGrid() = default;
+    ColorGrid(uint32_t w, uint32_t h, std::array<double, 4> fill = {0, 0, 0, 0}) : width(w), height(h), values(size_t(w) * h, fill) {}
+    std::array<double, 4>& at(uint32_t x, uint32_t y) { return values[size_t(y) * width + x]; }
+    const std::array<double, 4>& at(uint32_t x, uint32_t y) const { return values[size_t(y) * width + x]; }
+};
+
+// W x H velocities in pixels (x toward increasing column, y toward increasing row).
+struct VelocityGrid {
+    uint32_t width = 0, height = 0;
+    std::vector<std::array<double, 2>> values;
+    VelocityGrid() = default;
+    VelocityGrid(uint32_t w, uint32_t h, std::array<double, 2> fill = {0, 0}) : width(w), height(h), values(size_t(w) * h, fill) {}
+    std::array<double, 2>& at(uint32_t x, uint32_t y) { return values[size_t(y) * width + x]; }
+    const std::array<double, 2>& at(uint32_t x, uint32_t y) const { return values[size_t(y) * width + x]; }
+};
+
+// Round to the nearest fp16 value (ties to even), as a render target of RGBA16F / RG16F stores.
+double roundToHalf(double value);
+
+struct MotionBlurReferenceResult {
+    ColorGrid color;             // the reconstruction
+    VelocityGrid radiusPx;       // pass 1: the blur radius per pixel after exposure and clamp (decoded)
+    VelocityGrid tileMax;        // pass 2, decoded pixels, one per tile
+    VelocityGrid neighborMax;    // pass 3, decoded pixels
+    // What the reconstruction did, for property tests.
+    double maxSampleOffsetPx = 0;   // longest centre -> sample distance read
+    uint64_t samplesOutside = 0;    // sample positions that needed clamping into the image
+    uint64_t stillPixels = 0;       // pixels returned unchanged by the velocity branch
+};
+
+// linearDepth: positive linear depth (the LinearDepth pass output); velocityPx: the host's
+// velocity, pixels across the shutter interval. Sizes must match (asserted by the caller).
+MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearDepth, const VelocityGrid& velocityPx,
+                                     const MotionBlurParams& params);
+
+// Camera-only velocity (pixels across the shutter, current minus previous position) for
+// linear depth under `projection`, as mb_pack.frag computes it.
+VelocityGrid cameraVelocity(const Grid& linearDepth, const glm::dmat4& projection, const CameraMotion& camera);
+
+// ---- Procedural 2.5D scenes with analytic motion (tests, benchmark, CLI tests) --------------
+// Flat layers at fixed depths sliding at constant velocity across the shutter interval. Any
+// instant can be rendered exactly, so the ground truth of motion blur is the average of many
+// instants, and the SDK's input is the mid-shutter frame with its exact velocity and depth.
+struct SceneLayer {
+    enum class Shape { Plane, Rect, Disc };
+    Shape shape = Shape::Plane;
+    double depth = 10.0;                     // linear depth, scene units (> 0)
+    std::array<double, 2> centre{0, 0};      // pixels, at mid-shutter (t = 0)
+    std::array<double, 2> halfSize{0, 0};    // Rect: half extents; Disc: radius in [0]
+    std::array<double, 2> velocityPx{0, 0};  // displacement across the whole shutter interval
+    // Texture: a checker of `cell` pixels between two colours, moving with the layer; cell 0 = flat colourA.
+    double cell = 0;
+    std::array<double, 4> colorA{1, 1, 1, 1}, colorB{0, 0, 0, 1};
+};
+
+struct SceneFrame {
+    ColorGrid color;
+    Grid depth;              // linear depth
+    VelocityGrid velocity;   // pixels across the shutter interval
+    std::vector<int> layer;  // index of the visible layer per pixel, -1 = none (black, far)
+};
+
+struct Scene {
+    uint32_t width = 0, height = 0;
+    std::vector<SceneLayer> layers;
+    // The picture at shutter time t in [-0.5, 0.5] (0 = mid-shutter), one sample per pixel centre.
+    SceneFrame render(double t) const;
+    // The average of `instants` frames evenly spread over the shutter interval.
+    ColorGrid groundTruth(uint32_t instants) const;
+};
+
+// Pixels within `radius` of a boundary between layers where at least one of them moves.
+std::vector<bool> movingSilhouetteMask(const SceneFrame& frame, const Scene& scene, uint32_t radius);
+
+}  // namespace sfx::reference

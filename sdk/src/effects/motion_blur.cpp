@@ -1,0 +1,345 @@
+#include "sfx/motion_blur.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "sfx_shaders.hpp"
+#include "sfx_shared.h"
+#include "sfx_shared_mb.h"
+
+namespace sfx {
+namespace {
+
+// Mirror the uniform blocks of shader_src/mb_*.frag (std140).
+struct PackParams {
+    float reprojection[16];
+    float clipFromView[4];
+    float target[4];
+    float radius;
+    float velocityScale;
+    float cameraOnly;
+    float pad0;
+};
+static_assert(sizeof(PackParams) == 112);
+
+struct TileParams {
+    int32_t tileSize;
+    int32_t pad[3];
+};
+static_assert(sizeof(TileParams) == 16);
+
+struct ReconstructParams {
+    float radius;
+    float softExtent;
+    float centreWeight;
+    float pad0;
+    int32_t tileSize;
+    int32_t pairs;
+    int32_t jitterSize;
+    int32_t pad1;
+};
+static_assert(sizeof(ReconstructParams) == 32);
+
+Result<ProgramHandle> loadProgram(Device& device, const char* name, Tier tier) {
+    Result<const CompiledProgram*> program = shaders::find(name, tier);
+    if (!program) return program.status();
+    return device.createProgram(*program.value());
+}
+
+bool isColorFormat(Format f) { return f == Format::RGBA8 || f == Format::RGBA16F || f == Format::RGBA32F; }
+bool isVelocityFormat(Format f) {
+    return f == Format::RG16F || f == Format::RG32F || f == Format::RGBA16F || f == Format::RGBA32F;
+}
+
+uint32_t tilesFor(uint32_t size, uint32_t radius) { return (size + radius - 1) / radius; }
+
+std::string rangeText(double lo, double hi, bool openLow) {
+    return std::string(openLow ? "(" : "[") + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+}
+
+}  // namespace
+
+Result<MotionBlurParams> resolveMotionBlur(Tier tier, const MotionBlurSettings& s, uint32_t height) {
+    if (uint32_t(tier) >= kTierCount) return invalidArgument("tier", std::to_string(uint32_t(tier)), "Current or High");
+    const bool high = tier == Tier::High;
+    const double limit = double(shared::SFX_MB_MAX_RADIUS_LIMIT_PX);
+    // Written as !(in range) so NaN is rejected too.
+    if (!(s.maxRadiusPx == 0.0f || (s.maxRadiusPx > 0.0f && s.maxRadiusPx <= limit)))
+        return invalidArgument("MotionBlurSettings.maxRadiusPx", std::to_string(s.maxRadiusPx), "0 (tier default) or (0, 64]");
+    if (s.referenceRows > 16384)
+        return invalidArgument("MotionBlurSettings.referenceRows", std::to_string(s.referenceRows), "[0, 16384]");
+    if (s.samples != 0 && (s.samples < 3 || s.samples > uint32_t(shared::SFX_MB_MAX_TAPS) || s.samples % 2 == 0))
+        return invalidArgument("MotionBlurSettings.samples", std::to_string(s.samples),
+                               "0 (tier default) or odd in [3, 31] (centre + mirrored pairs)");
+    if (!(s.softDepthExtent > 0.0f && s.softDepthExtent <= 1.0e6f))
+        return invalidArgument("MotionBlurSettings.softDepthExtent", std::to_string(s.softDepthExtent), rangeText(0, 1e6, true));
+    if (!(s.centreWeight > 0.0f && s.centreWeight <= 100.0f))
+        return invalidArgument("MotionBlurSettings.centreWeight", std::to_string(s.centreWeight), rangeText(0, 100, true));
+    if (!(s.exposure >= 0.0f && s.exposure <= 4.0f))
+        return invalidArgument("MotionBlurSettings.exposure", std::to_string(s.exposure), rangeText(0, 4, false));
+    if (height == 0) return invalidArgument("height", "0", "[1, maxTextureSize]");
+
+    MotionBlurParams p;
+    p.taps = s.samples != 0 ? s.samples : uint32_t(high ? shared::SFX_MB_TAPS_HIGH : shared::SFX_MB_TAPS_CURRENT);
+    p.pairs = (p.taps - 1) / 2;
+    p.jitterSize = uint32_t(high ? shared::SFX_MB_JITTER_SIZE_HIGH : shared::SFX_MB_JITTER_SIZE_CURRENT);
+    const double base = s.maxRadiusPx != 0.0f ? double(s.maxRadiusPx)
+                                              : double(high ? shared::SFX_MB_MAX_RADIUS_PX_HIGH : shared::SFX_MB_MAX_RADIUS_PX_CURRENT);
+    const double scaled = s.referenceRows == 0 ? base : base * double(height) / double(s.referenceRows);
+    const double radius = std::max(1.0, std::round(scaled));
+    if (radius > limit)
+        return invalidArgument("MotionBlurSettings.maxRadiusPx", std::to_string(s.maxRadiusPx) + " (" + std::to_string(radius) +
+                                   " px at " + std::to_string(height) + " rows)",
+                               "a scaled radius <= 64 px");
+    p.radiusPx = uint32_t(radius);
+    p.softDepthExtent = s.softDepthExtent;
+    p.centreWeight = s.centreWeight;
+    p.exposure = s.exposure;
+    return p;
+}
+
+Result<std::unique_ptr<MotionBlur>> MotionBlur::create(Device& device, const MotionBlurDesc& desc) {
+    if (uint32_t(desc.tier) >= kTierCount) return invalidArgument("MotionBlurDesc.tier", std::to_string(uint32_t(desc.tier)), "Current or High");
+    if (!isColorFormat(desc.colorFormat))
+        return invalidArgument("MotionBlurDesc.colorFormat", toString(desc.colorFormat), "RGBA8, RGBA16F or RGBA32F");
+    const DeviceCaps& caps = device.caps();
+    for (Format f : {Format::RGBA16F, Format::RG16F, desc.colorFormat})
+        if (!caps.renderableFormat[size_t(f)])
+            return Status{StatusCode::UnsupportedFormat,
+                          std::string("motion blur renders ") + toString(f) + ", which this device cannot render to"};
+    std::unique_ptr<MotionBlur> mb(new MotionBlur(device, desc));
+    SFX_TRY(mb->allocate());
+    return mb;
+}
+
+MotionBlur::MotionBlur(Device& device, const MotionBlurDesc& desc) : device_(device), desc_(desc) {}
+
+MotionBlur::~MotionBlur() { release(); }
+
+Status MotionBlur::allocate() {
+    Result<std::unique_ptr<LinearDepth>> depth = LinearDepth::create(device_, {desc_.width, desc_.height, desc_.tier, 1});
+    if (!depth) return depth.status();
+    depth_ = std::move(depth.value());
+
+    const uint32_t rt = kTextureSampled | kTextureRenderTarget;
+    Result<TextureHandle> packed = device_.createTexture({desc_.width, desc_.height, 1, Format::RGBA16F, rt, "sfx-mb-packed"});
+    if (!packed) return packed.status();
+    packed_ = packed.value();
+    Result<TextureHandle> out = device_.createTexture({desc_.width, desc_.height, 1, desc_.colorFormat, rt, "sfx-mb-output"});
+    if (!out) return out.status();
+    output_ = out.value();
+
+    Result<BufferHandle> pp = device_.createBuffer({sizeof(PackParams), kBufferUniform, "sfx-mb-pack-params"});
+    if (!pp) return pp.status();
+    packParams_ = pp.value();
+    Result<BufferHandle> tp = device_.createBuffer({sizeof(TileParams), kBufferUniform, "sfx-mb-tile-params"});
+    if (!tp) return tp.status();
+    tileParams_ = tp.value();
+    Result<BufferHandle> rp = device_.createBuffer({sizeof(ReconstructParams), kBufferUniform, "sfx-mb-reconstruct-params"});
+    if (!rp) return rp.status();
+    reconstructParams_ = rp.value();
+
+    struct Stage {
+        const char* program;
+        Format format;
+        ProgramHandle* programOut;
+        PipelineHandle* pipelineOut;
+    };
+    const Stage stages[] = {
+        {gen::mb_pack::kName, Format::RGBA16F, &packProgram_, &packPipeline_},
+        {gen::mb_tile_max::kName, Format::RG16F, &tileProgram_, &tilePipeline_},
+        {gen::mb_neighbor_max::kName, Format::RG16F, &neighborProgram_, &neighborPipeline_},
+        {gen::mb_reconstruct::kName, desc_.colorFormat, &reconstructProgram_, &reconstructPipeline_},
+    };
+    for (const Stage& st : stages) {
+        Result<ProgramHandle> prog = loadProgram(device_, st.program, desc_.tier);
+        if (!prog) return prog.status();
+        *st.programOut = prog.value();
+        GraphicsPipelineDesc pd;
+        pd.program = prog.value();
+        pd.colorFormats = {st.format};
+        pd.debugName = st.program;
+        Result<PipelineHandle> pipe = device_.createGraphicsPipeline(pd);
+        if (!pipe) return pipe.status();
+        *st.pipelineOut = pipe.value();
+    }
+    return Status::ok();
+}
+
+Status MotionBlur::allocateTiles(uint32_t radiusPx) {
+    if (radiusPx == tileRadius_ && !tileMax_.isNull()) return Status::ok();
+    releaseTiles();
+    const uint32_t rt = kTextureSampled | kTextureRenderTarget;
+    const uint32_t tw = tilesFor(desc_.width, radiusPx), th = tilesFor(desc_.height, radiusPx);
+    Result<TextureHandle> tile = device_.createTexture({tw, th, 1, Format::RG16F, rt, "sfx-mb-tile-max"});
+    if (!tile) return tile.status();
+    tileMax_ = tile.value();
+    Result<TextureHandle> neighbor = device_.createTexture({tw, th, 1, Format::RG16F, rt, "sfx-mb-neighbor-max"});
+    if (!neighbor) return neighbor.status();
+    neighborMax_ = neighbor.value();
+    tileRadius_ = radiusPx;
+    return Status::ok();
+}
+
+void MotionBlur::releaseTiles() {
+    if (!tileMax_.isNull()) (void)device_.destroyTexture(tileMax_);
+    if (!neighborMax_.isNull()) (void)device_.destroyTexture(neighborMax_);
+    tileMax_ = {};
+    neighborMax_ = {};
+    tileRadius_ = 0;
+}
+
+void MotionBlur::release() {
+    // Destroy calls on null handles report InvalidHandle; there is nothing to release then.
+    for (PipelineHandle* p : {&packPipeline_, &tilePipeline_, &neighborPipeline_, &reconstructPipeline_}) {
+        if (!p->isNull()) (void)device_.destroyPipeline(*p);
+        *p = {};
+    }
+    for (ProgramHandle* p : {&packProgram_, &tileProgram_, &neighborProgram_, &reconstructProgram_}) {
+        if (!p->isNull()) (void)device_.destroyProgram(*p);
+        *p = {};
+    }
+    for (BufferHandle* b : {&packParams_, &tileParams_, &reconstructParams_}) {
+        if (!b->isNull()) (void)device_.destroyBuffer(*b);
+        *b = {};
+    }
+    releaseTiles();
+    for (TextureHandle* t : {&packed_, &output_}) {
+        if (!t->isNull()) (void)device_.destroyTexture(*t);
+        *t = {};
+    }
+    depth_.reset();
+}
+
+Status MotionBlur::resize(uint32_t width, uint32_t height) {
+    const uint32_t maxSize = device_.caps().limits.maxTextureSize;
+    if (width == 0 || width > maxSize) return invalidArgument("width", std::to_string(width), "[1, " + std::to_string(maxSize) + "]");
+    if (height == 0 || height > maxSize) return invalidArgument("height", std::to_string(height), "[1, " + std::to_string(maxSize) + "]");
+    if (width == desc_.width && height == desc_.height && !output_.isNull()) return Status::ok();
+    release();
+    desc_.width = width;
+    desc_.height = height;
+    return allocate();
+}
+
+Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings& settings) {
+    if (output_.isNull() || !depth_) return {StatusCode::InvalidHandle, "MotionBlur: resources were not created (failed resize?)"};
+    Result<MotionBlurParams> resolved = resolveMotionBlur(desc_.tier, settings, desc_.height);
+    if (!resolved) return resolved.status();
+    const MotionBlurParams& p = resolved.value();
+    const std::string expectedSize = std::to_string(desc_.width) + "x" + std::to_string(desc_.height) + " (the MotionBlur size)";
+
+    Result<TextureDesc> color = device_.textureDesc(in.color);
+    if (!color) return Status{color.status().code(), "MotionBlurInputs.color: " + color.status().message()};
+    if (color->width != desc_.width || color->height != desc_.height)
+        return invalidArgument("MotionBlurInputs.color size", std::to_string(color->width) + "x" + std::to_string(color->height), expectedSize);
+    if (color->format != desc_.colorFormat)
+        return {StatusCode::UnsupportedFormat, std::string("MotionBlurInputs.color format ") + toString(color->format) +
+                                                   " differs from MotionBlurDesc.colorFormat " + toString(desc_.colorFormat)};
+    if (!(color->usage & kTextureSampled)) return invalidArgument("MotionBlurInputs.color usage", "without kTextureSampled", "a sampled texture");
+
+    const bool cameraOnly = in.velocity.isNull();
+    if (!cameraOnly) {
+        Result<TextureDesc> vel = device_.textureDesc(in.velocity);
+        if (!vel) return Status{vel.status().code(), "MotionBlurInputs.velocity: " + vel.status().message()};
+        if (vel->width != desc_.width || vel->height != desc_.height)
+            return invalidArgument("MotionBlurInputs.velocity size", std::to_string(vel->width) + "x" + std::to_string(vel->height), expectedSize);
+        if (!isVelocityFormat(vel->format))
+            return {StatusCode::UnsupportedFormat, std::string("MotionBlurInputs.velocity format ") + toString(vel->format) +
+                                                       "; allowed RG16F, RG32F, RGBA16F, RGBA32F"};
+        if (!(vel->usage & kTextureSampled))
+            return invalidArgument("MotionBlurInputs.velocity usage", "without kTextureSampled", "a sampled texture");
+    }
+
+    SFX_TRY(depth_->dispatch(in.depth));
+    SFX_TRY(allocateTiles(p.radiusPx));
+
+    PackParams pack{};
+    const glm::dmat4 reprojection = in.camera.previousViewProjection * glm::inverse(in.camera.currentViewProjection);
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) pack.reprojection[c * 4 + r] = float(reprojection[c][r]);
+    if (cameraOnly) {
+        for (int i = 0; i < 16; ++i)
+            if (!std::isfinite(pack.reprojection[i]))
+                return invalidArgument("MotionBlurInputs.camera", "a singular or non-finite view-projection", "invertible finite matrices");
+    }
+    const glm::dmat4& proj = in.depth.camera.projection;
+    pack.clipFromView[0] = float(proj[2][2]);
+    pack.clipFromView[1] = float(proj[3][2]);
+    pack.clipFromView[2] = 2.0f / float(desc_.width);
+    pack.clipFromView[3] = 2.0f / float(desc_.height);
+    pack.target[0] = float(desc_.width);
+    pack.target[1] = float(desc_.height);
+    pack.radius = float(p.radiusPx);
+    pack.velocityScale = float(0.5 * p.exposure);
+    pack.cameraOnly = cameraOnly ? 1.0f : 0.0f;
+    SFX_TRY(device_.writeBuffer(packParams_, 0, &pack, sizeof pack));
+    TileParams tile{};
+    tile.tileSize = int32_t(p.radiusPx);
+    SFX_TRY(device_.writeBuffer(tileParams_, 0, &tile, sizeof tile));
+    ReconstructParams rec{};
+    rec.radius = float(p.radiusPx);
+    rec.softExtent = float(p.softDepthExtent);
+    rec.centreWeight = float(p.centreWeight);
+    rec.tileSize = int32_t(p.radiusPx);
+    rec.pairs = int32_t(p.pairs);
+    rec.jitterSize = int32_t(p.jitterSize);
+    SFX_TRY(device_.writeBuffer(reconstructParams_, 0, &rec, sizeof rec));
+
+    auto run = [&](TextureHandle target, const char* name, PipelineHandle pipeline, BindingSet bindings) -> Status {
+        RenderPassDesc pass;
+        pass.colors = {ColorAttachment{target, 0, LoadOp::DontCare, {}}};
+        pass.debugName = name;
+        DrawDesc draw;
+        draw.pipeline = pipeline;
+        draw.bindings = std::move(bindings);
+        return device_.renderPass(pass, std::span<const DrawDesc>(&draw, 1));
+    };
+
+    BindingSet packBind;
+    // Camera-only mode reads no velocity; the depth texture fills the unused slot.
+    packBind.textures = {TextureBinding{gen::mb_pack::uLinearDepth, depth_->texture(), 0, 1, {}},
+                         TextureBinding{gen::mb_pack::uVelocity, cameraOnly ? depth_->texture() : in.velocity, 0, 1, {}}};
+    packBind.uniformBuffers = {BufferBinding{gen::mb_pack::MbPackParams, packParams_, 0, 0}};
+    SFX_TRY(run(packed_, "sfx-mb-pack", packPipeline_, packBind));
+
+    BindingSet tileBind;
+    tileBind.textures = {TextureBinding{gen::mb_tile_max::uPacked, packed_, 0, 1, {}}};
+    tileBind.uniformBuffers = {BufferBinding{gen::mb_tile_max::MbTileParams, tileParams_, 0, 0}};
+    SFX_TRY(run(tileMax_, "sfx-mb-tile-max", tilePipeline_, tileBind));
+
+    BindingSet neighborBind;
+    neighborBind.textures = {TextureBinding{gen::mb_neighbor_max::uTileMax, tileMax_, 0, 1, {}}};
+    SFX_TRY(run(neighborMax_, "sfx-mb-neighbor-max", neighborPipeline_, neighborBind));
+
+    BindingSet recBind;
+    recBind.textures = {TextureBinding{gen::mb_reconstruct::uColor, in.color, 0, 1, {}},
+                        TextureBinding{gen::mb_reconstruct::uPacked, packed_, 0, 1, {}},
+                        TextureBinding{gen::mb_reconstruct::uNeighborMax, neighborMax_, 0, 1, {}}};
+    recBind.uniformBuffers = {BufferBinding{gen::mb_reconstruct::MbReconstructParams, reconstructParams_, 0, 0}};
+    return run(output_, "sfx-mb-reconstruct", reconstructPipeline_, recBind);
+}
+
+Plan MotionBlur::plan(const MotionBlurSettings& settings) const {
+    Plan plan;
+    if (depth_) plan.append(depth_->plan());
+    Result<MotionBlurParams> resolved = resolveMotionBlur(desc_.tier, settings, std::max(desc_.height, 1u));
+    const uint32_t radius = resolved ? resolved->radiusPx : 1;
+    const uint32_t tw = tilesFor(desc_.width, radius), th = tilesFor(desc_.height, radius);
+    const std::string tile = " (" + std::to_string(radius) + "x" + std::to_string(radius) + " tiles)";
+    plan.passes.push_back({"motion_blur", "pack velocity + depth", desc_.width, desc_.height});
+    plan.passes.push_back({"motion_blur", "tile max" + tile, tw, th});
+    plan.passes.push_back({"motion_blur", "neighbour max 3x3", tw, th});
+    plan.passes.push_back({"motion_blur", "reconstruct " + std::to_string(resolved ? resolved->taps : 0) + " taps", desc_.width,
+                           desc_.height});
+    const uint32_t rt = kTextureSampled | kTextureRenderTarget;
+    plan.resources.push_back(plannedTexture("motion_blur", "packed velocity + depth", {desc_.width, desc_.height, 1, Format::RGBA16F, rt}));
+    plan.resources.push_back(plannedTexture("motion_blur", "tile max", {tw, th, 1, Format::RG16F, rt}));
+    plan.resources.push_back(plannedTexture("motion_blur", "neighbour max", {tw, th, 1, Format::RG16F, rt}));
+    plan.resources.push_back(plannedTexture("motion_blur", "output", {desc_.width, desc_.height, 1, desc_.colorFormat, rt}));
+    plan.resources.push_back({"motion_blur", "uniforms", Format::Undefined, 0, 0, 1,
+                              sizeof(PackParams) + sizeof(TileParams) + sizeof(ReconstructParams)});
+    return plan;
+}
+
+}  // namespace sfx

@@ -1,0 +1,236 @@
+#include "sfx/reference/motion_blur_reference.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sfx_shared.h"
+#include "sfx_shared_mb.h"
+
+namespace sfx::reference {
+namespace {
+
+using shared::mbCentreWeight;
+using shared::mbDecodeVelocity;
+using shared::mbEncodeVelocity;
+using shared::mbJitter;
+using shared::mbPairUsesCentre;
+using shared::mbSampleT;
+using shared::mbSampleWeight;
+
+double length2(const std::array<double, 2>& v) { return v[0] * v[0] + v[1] * v[1]; }
+double roundAway(double x) { return x < 0 ? -std::floor(-x + 0.5) : std::floor(x + 0.5); }
+
+// Largest by magnitude over a set of texels; strict '>' so the first in scan order wins ties.
+struct MaxTracker {
+    std::array<double, 2> best{0, 0};
+    double bestLen2 = -1;
+    void offer(const std::array<double, 2>& v) {
+        const double l = length2(v);
+        if (l > bestLen2) {
+            bestLen2 = l;
+            best = v;
+        }
+    }
+};
+
+}  // namespace
+
+double roundToHalf(double value) {
+    if (!std::isfinite(value) || value == 0.0) return value;
+    int exponent = 0;
+    std::frexp(value, &exponent);  // value = m * 2^exponent, |m| in [0.5, 1)
+    // fp16 keeps 11 significant bits for normals; subnormals (below 2^-14) keep a fixed step 2^-24.
+    const int step = std::max(exponent - 11, -24);
+    const double scaled = std::ldexp(value, -step);
+    const double rounded = std::nearbyint(scaled);  // default rounding: to nearest, ties to even
+    const double out = std::ldexp(rounded, step);
+    return std::fabs(out) > 65504.0 ? std::copysign(INFINITY, value) : out;
+}
+
+MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearDepth, const VelocityGrid& velocityPx,
+                                     const MotionBlurParams& p) {
+    const uint32_t w = color.width, h = color.height;
+    const double k = double(p.radiusPx);
+    MotionBlurReferenceResult r;
+
+    // Pass 1: scale to a radius, clamp the magnitude to k, encode to fp16 as the RGBA16F target
+    // stores it, then decode (the later passes only ever see the decoded fp16 value).
+    r.radiusPx = VelocityGrid(w, h);
+    Grid depth(w, h);
+    for (uint32_t y = 0; y < h; ++y) {
+        for (uint32_t x = 0; x < w; ++x) {
+            std::array<double, 2> v = velocityPx.at(x, y);
+            v[0] *= 0.5 * p.exposure;
+            v[1] *= 0.5 * p.exposure;
+            double len = std::sqrt(length2(v));
+            if (!std::isfinite(len)) v = {0, 0}, len = 0;
+            if (len > k) v = {v[0] * k / len, v[1] * k / len};
+            for (int c = 0; c < 2; ++c) {
+                const double e = std::clamp(roundToHalf(mbEncodeVelocity(v[c], k)), 0.0, 1.0);
+                r.radiusPx.at(x, y)[c] = mbDecodeVelocity(e, k);
+            }
+            depth.at(x, y) = std::min(linearDepth.at(x, y), double(shared::SFX_MB_MAX_PACKED_DEPTH));
+        }
+    }
+
+    // Pass 2: tile max over N x N, N = k.
+    const uint32_t n = p.radiusPx;
+    const uint32_t tw = (w + n - 1) / n, th = (h + n - 1) / n;
+    r.tileMax = VelocityGrid(tw, th);
+    for (uint32_t ty = 0; ty < th; ++ty) {
+        for (uint32_t tx = 0; tx < tw; ++tx) {
+            MaxTracker m;
+            for (uint32_t y = ty * n; y < std::min(h, (ty + 1) * n); ++y)
+                for (uint32_t x = tx * n; x < std::min(w, (tx + 1) * n); ++x) m.offer(r.radiusPx.at(x, y));
+            r.tileMax.at(tx, ty) = m.best;
+        }
+    }
+
+    // Pass 3: neighbour max over 3 x 3 tiles (clipped at the grid's edge).
+    r.neighborMax = VelocityGrid(tw, th);
+    for (int ty = 0; ty < int(th); ++ty) {
+        for (int tx = 0; tx < int(tw); ++tx) {
+            MaxTracker m;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int qx = tx + dx, qy = ty + dy;
+                    if (qx < 0 || qy < 0 || qx >= int(tw) || qy >= int(th)) continue;
+                    m.offer(r.tileMax.at(uint32_t(qx), uint32_t(qy)));
+                }
+            r.neighborMax.at(uint32_t(tx), uint32_t(ty)) = m.best;
+        }
+    }
+
+    // Pass 4: reconstruction.
+    r.color = ColorGrid(w, h);
+    const double perSample = shared::mbSampleScale(int(p.pairs));
+    for (int y = 0; y < int(h); ++y) {
+        for (int x = 0; x < int(w); ++x) {
+            const std::array<double, 4>& colorC = color.at(uint32_t(x), uint32_t(y));
+            const std::array<double, 2> vN = r.neighborMax.at(uint32_t(x) / n, uint32_t(y) / n);
+            if (std::sqrt(length2(vN)) < double(shared::SFX_MB_STILL_PX)) {
+                r.color.at(uint32_t(x), uint32_t(y)) = colorC;
+                ++r.stillPixels;
+                continue;
+            }
+            const std::array<double, 2> vC = r.radiusPx.at(uint32_t(x), uint32_t(y));
+            const double zC = depth.at(uint32_t(x), uint32_t(y));
+            const double speedC = std::sqrt(length2(vC));
+            const double jitter = mbJitter(x, y, int(p.jitterSize));
+            const double wC = mbCentreWeight(p.centreWeight, speedC);
+            std::array<double, 4> sum{};
+            for (int c = 0; c < 4; ++c) sum[c] = colorC[c] * wC;
+            double total = wC;
+            for (int i = 0; i < int(p.pairs); ++i) {
+                const std::array<double, 2> v = mbPairUsesCentre(i, speedC) ? vC : vN;
+                for (double side : {1.0, -1.0}) {
+                    const double t = mbSampleT(i, int(p.pairs), jitter, side);
+                    const int ox = int(roundAway(t * v[0])), oy = int(roundAway(t * v[1]));
+                    const int qx = std::clamp(x + ox, 0, int(w) - 1), qy = std::clamp(y + oy, 0, int(h) - 1);
+                    if (qx != x + ox || qy != y + oy) ++r.samplesOutside;
+                    const double dist = std::hypot(double(qx - x), double(qy - y));
+                    r.maxSampleOffsetPx = std::max(r.maxSampleOffsetPx, dist);
+                    const double speedS = std::sqrt(length2(r.radiusPx.at(uint32_t(qx), uint32_t(qy))));
+                    const double zS = depth.at(uint32_t(qx), uint32_t(qy));
+                    const double wS = mbSampleWeight(zC, zS, speedC, speedS, dist, p.softDepthExtent) * perSample;
+                    const std::array<double, 4>& colorS = color.at(uint32_t(qx), uint32_t(qy));
+                    for (int c = 0; c < 4; ++c) sum[c] += colorS[c] * wS;
+                    total += wS;
+                }
+            }
+            std::array<double, 4>& out = r.color.at(uint32_t(x), uint32_t(y));
+            for (int c = 0; c < 4; ++c) out[c] = sum[c] / total;
+        }
+    }
+    return r;
+}
+
+VelocityGrid cameraVelocity(const Grid& linearDepth, const glm::dmat4& projection, const CameraMotion& camera) {
+    const uint32_t w = linearDepth.width, h = linearDepth.height;
+    const glm::dmat4 reprojection = camera.previousViewProjection * glm::inverse(camera.currentViewProjection);
+    VelocityGrid out(w, h);
+    for (uint32_t y = 0; y < h; ++y) {
+        for (uint32_t x = 0; x < w; ++x) {
+            const double z = linearDepth.at(x, y);
+            // Pixel centre -> NDC with memory row 0 at NDC y = -1 (hal.hpp).
+            const glm::dvec2 ndc{(x + 0.5) * 2.0 / w - 1.0, (y + 0.5) * 2.0 / h - 1.0};
+            const glm::dvec4 clip{ndc.x * z, ndc.y * z, projection[2][2] * -z + projection[3][2], z};
+            const glm::dvec4 prev = reprojection * clip;
+            if (!(prev.w > 1e-6)) continue;
+            out.at(x, y) = {(ndc.x - prev.x / prev.w) * 0.5 * w, (ndc.y - prev.y / prev.w) * 0.5 * h};
+        }
+    }
+    return out;
+}
+
+SceneFrame Scene::render(double t) const {
+    SceneFrame f;
+    f.color = ColorGrid(width, height, {0, 0, 0, 1});
+    f.depth = Grid(width, height, double(shared::SFX_SKY_DEPTH));
+    f.velocity = VelocityGrid(width, height);
+    f.layer.assign(size_t(width) * height, -1);
+    for (uint32_t y = 0; y < height; ++y) {
+        for (uint32_t x = 0; x < width; ++x) {
+            for (size_t i = 0; i < layers.size(); ++i) {
+                const SceneLayer& L = layers[i];
+                if (L.depth >= f.depth.at(x, y)) continue;
+                // Layer-local coordinates of this pixel centre at time t.
+                const double lx = x + 0.5 - (L.centre[0] + L.velocityPx[0] * t);
+                const double ly = y + 0.5 - (L.centre[1] + L.velocityPx[1] * t);
+                bool inside = true;
+                if (L.shape == SceneLayer::Shape::Rect) inside = std::fabs(lx) < L.halfSize[0] && std::fabs(ly) < L.halfSize[1];
+                if (L.shape == SceneLayer::Shape::Disc) inside = lx * lx + ly * ly < L.halfSize[0] * L.halfSize[0];
+                if (!inside) continue;
+                bool useB = false;
+                if (L.cell > 0) {
+                    const long cx = long(std::floor(lx / L.cell)), cy = long(std::floor(ly / L.cell));
+                    useB = ((cx + cy) & 1) != 0;
+                }
+                f.color.at(x, y) = useB ? L.colorB : L.colorA;
+                f.depth.at(x, y) = L.depth;
+                f.velocity.at(x, y) = L.velocityPx;
+                f.layer[size_t(y) * width + x] = int(i);
+            }
+        }
+    }
+    return f;
+}
+
+ColorGrid Scene::groundTruth(uint32_t instants) const {
+    ColorGrid sum(width, height);
+    for (uint32_t i = 0; i < instants; ++i) {
+        const SceneFrame f = render((i + 0.5) / instants - 0.5);
+        for (size_t p = 0; p < sum.values.size(); ++p)
+            for (int c = 0; c < 4; ++c) sum.values[p][c] += f.color.values[p][c] / instants;
+    }
+    return sum;
+}
+
+std::vector<bool> movingSilhouetteMask(const SceneFrame& frame, const Scene& scene, uint32_t radius) {
+    const uint32_t w = scene.width, h = scene.height;
+    auto moving = [&](int layer) {
+        return layer >= 0 && (scene.layers[size_t(layer)].velocityPx[0] != 0 || scene.layers[size_t(layer)].velocityPx[1] != 0);
+    };
+    std::vector<bool> edge(size_t(w) * h, false), mask(size_t(w) * h, false);
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x) {
+            const int a = frame.layer[size_t(y) * w + x];
+            const int right = x + 1 < w ? frame.layer[size_t(y) * w + x + 1] : a;
+            const int down = y + 1 < h ? frame.layer[size_t(y + 1) * w + x] : a;
+            if ((a != right && (moving(a) || moving(right))) || (a != down && (moving(a) || moving(down))))
+                edge[size_t(y) * w + x] = true;
+        }
+    const int r = int(radius);
+    for (int y = 0; y < int(h); ++y)
+        for (int x = 0; x < int(w); ++x) {
+            if (!edge[size_t(y) * w + size_t(x)]) continue;
+            for (int dy = -r; dy <= r; ++dy)
+                for (int dx = -r; dx <= r; ++dx) {
+                    const int qx = x + dx, qy = y + dy;
+                    if (qx >= 0 && qy >= 0 && qx < int(w) && qy < int(h)) mask[size_t(qy) * w + size_t(qx)] = true;
+                }
+        }
+    return mask;
+}
+
+}  // namespace sfx::reference

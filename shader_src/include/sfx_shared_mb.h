@@ -1,0 +1,128 @@
+// Motion blur pieces shared by the mb_*.frag shaders and the C++ CPU reference
+// (sfx/reference/motion_blur_reference.hpp): the velocity encoding, the jitter patterns, where
+// samples go and how they are weighted. Both sides include this one file so they cannot drift.
+//
+// Scalar code only, in the common subset of GLSL 450 and C++20. In C++ the functions take
+// double (SFX_MB_REAL); in GLSL float. Include sfx_shared.h first: its macros are used here.
+//
+// Conventions (docs/motion_blur.md says the same at length):
+// - Velocities are in pixels; x toward increasing column, y toward increasing memory row.
+// - Inside the effect a velocity is the blur *radius* vector: half the displacement across the
+//   shutter interval (the scene is rendered at mid-shutter, so a point smears v/2 either way).
+// - Linear depth z is positive and grows away from the camera. A sample S is "in front of" the
+//   centre C when z_S < z_C.
+#ifndef SFX_SHARED_MB_H
+#define SFX_SHARED_MB_H
+
+#include "sfx_shared.h"
+
+#ifdef __cplusplus
+#include <algorithm>
+#include <cmath>
+namespace sfx::shared {
+using std::clamp;
+using std::max;
+using std::min;
+#define SFX_MB_FN inline
+#define SFX_MB_REAL double
+#else
+#define SFX_MB_FN
+#define SFX_MB_REAL float
+#endif
+
+// A neighbourhood velocity shorter than this (pixels) means nothing moves near the pixel: the
+// reconstruction returns the input colour unchanged (the seed's "branch on velocity").
+SFX_CONST(float, SFX_MB_STILL_PX, 0.5)
+// Packed depth is stored as an fp16 hi/lo pair; fp16 ends at 65504, so depth is clamped here.
+// Anything this far is "very far" for the soft comparisons; sky (SFX_SKY_DEPTH) lands here too.
+SFX_CONST(float, SFX_MB_MAX_PACKED_DEPTH, 65000.0)
+// Reference resolution of the tier radii: SFX_MB_MAX_RADIUS_PX_* are pixels at 720 rows.
+SFX_CONST(float, SFX_MB_REFERENCE_ROWS, 720.0)
+// Largest radius (output pixels, after resolution scaling) the shaders loop over: tile max
+// reads N x N texels with N = radius, so this bounds its cost.
+SFX_CONST(int, SFX_MB_MAX_RADIUS_LIMIT_PX, 64)
+// Largest tap count (centre included) the reconstruction loop allows.
+SFX_CONST(int, SFX_MB_MAX_TAPS, 31)
+
+// 4x4 randomised jitter (high tier): the 16 stratified offsets (k + 0.5) / 16 - 0.5 in a fixed
+// shuffled order, indexed by (y & 3) * 4 + (x & 3). Every 4x4 block uses each offset once.
+SFX_ARRAY_BEGIN(float, SFX_MB_JITTER_4X4, 16)
+    0.15625, -0.40625, 0.28125, -0.03125,
+    -0.21875, 0.40625, -0.46875, 0.09375,
+    0.46875, -0.09375, 0.21875, -0.34375,
+    -0.28125, 0.03125, -0.15625, 0.34375
+SFX_ARRAY_END
+
+// Jitter of the sample positions at pixel (x, y), in [-0.5, 0.5): size 2 is the current tier's
+// checkerboard (+-0.25 alternating), size 4 the table above.
+SFX_MB_FN SFX_MB_REAL mbJitter(int x, int y, int size) {
+    if (size == 2) return ((x + y) & 1) == 0 ? -0.25 : 0.25;
+    return SFX_MB_REAL(SFX_MB_JITTER_4X4[(y & 3) * 4 + (x & 3)]);
+}
+
+// Velocity component in [-k, k] pixels <-> [0, 1] (the seed's rescale to fit two channels).
+SFX_MB_FN SFX_MB_REAL mbEncodeVelocity(SFX_MB_REAL v, SFX_MB_REAL k) { return v / (2.0 * k) + 0.5; }
+SFX_MB_FN SFX_MB_REAL mbDecodeVelocity(SFX_MB_REAL e, SFX_MB_REAL k) { return (e - 0.5) * (2.0 * k); }
+
+// Samples come in pairs along one velocity: pair i of `pairs` sits at +t and -t' with
+//   t = (i + 0.5 + jitter) / pairs,   t' = (i + 0.5 - jitter) / pairs,   both in (0, 1].
+// That is the stratified symmetric pattern shifted by jitter / pairs along the velocity, so the
+// two checkerboard jitters (+-0.25) are mirror images and the kernel is symmetric on average.
+// (Mirroring t itself would make both checkerboard pixels read texels of one parity whenever
+// the sample spacing is an even number of texels: a visible bias.) `side` is +1 or -1; the
+// offset is side * t times the chosen velocity, rounded half away from zero to a texel.
+SFX_MB_FN SFX_MB_REAL mbSampleT(int i, int pairs, SFX_MB_REAL jitter, SFX_MB_REAL side) {
+    return side * (SFX_MB_REAL(i) + 0.5 + side * jitter) / SFX_MB_REAL(pairs);
+}
+// Even pairs follow the neighbourhood velocity v_N, odd pairs the centre velocity v_C (the
+// seed's alternation, hiding tile edges); a still centre gives its pairs to v_N as well.
+SFX_MB_FN bool mbPairUsesCentre(int i, SFX_MB_REAL centreSpeed) {
+    return (i & 1) == 1 && centreSpeed >= SFX_MB_REAL(SFX_MB_STILL_PX);
+}
+
+// Soft depth step: 1 when za <= zb, falling to 0 when za - zb reaches `extent`.
+//   background weight of S: mbSoftDepth(z_C, z_S)   (1 when S is behind C or level with it)
+//   foreground weight of S: mbSoftDepth(z_S, z_C)   (1 when S is in front of C or level)
+SFX_MB_FN SFX_MB_REAL mbSoftDepth(SFX_MB_REAL za, SFX_MB_REAL zb, SFX_MB_REAL extent) {
+    return clamp(1.0 - (za - zb) / extent, 0.0, 1.0);
+}
+// Cone: a pixel moving at `speed` covers points up to `speed` away, fading linearly.
+SFX_MB_FN SFX_MB_REAL mbCone(SFX_MB_REAL dist, SFX_MB_REAL speed) {
+    return clamp(1.0 - dist / max(speed, 1.0e-4), 0.0, 1.0);
+}
+// Cylinder: the seed's "both moving" overlap test (speed >= dist), softened to a 1 px linear
+// ramp centred on speed == dist. A sample whose rounded offset is the velocity itself sits
+// exactly at dist == speed, and a hard step there flips with the last bit of the fp16 velocity
+// (GPUs may round it to nearest or toward zero): the ramp makes the weight continuous.
+SFX_MB_FN SFX_MB_REAL mbCylinder(SFX_MB_REAL dist, SFX_MB_REAL speed) { return clamp(speed - dist + 0.5, 0.0, 1.0); }
+
+// Weight of sample S at distance `dist` from centre C (the seed's three cases, not exclusive):
+//   background estimate  mbSoftDepth(z_C, z_S) * cone(dist, |v_C|)
+//   foreground over C    mbSoftDepth(z_S, z_C) * cone(dist, |v_S|)
+//   both moving          cylinder(dist, |v_S|) * cylinder(dist, |v_C|)
+SFX_MB_FN SFX_MB_REAL mbSampleWeight(SFX_MB_REAL zC, SFX_MB_REAL zS, SFX_MB_REAL speedC, SFX_MB_REAL speedS,
+                                     SFX_MB_REAL dist, SFX_MB_REAL softExtent) {
+    SFX_MB_REAL background = mbSoftDepth(zC, zS, softExtent) * mbCone(dist, speedC);
+    SFX_MB_REAL foreground = mbSoftDepth(zS, zC, softExtent) * mbCone(dist, speedS);
+    return background + foreground + mbCylinder(dist, speedS) * mbCylinder(dist, speedC);
+}
+
+// Sample weights are summed as if there were SFX_MB_WEIGHT_SAMPLES samples (each scaled by
+// SFX_MB_WEIGHT_SAMPLES / samples), so more taps refine the blur without thickening it; 6 is
+// the current tier's count, where the scale is 1.
+SFX_CONST(float, SFX_MB_WEIGHT_SAMPLES, 6.0)
+SFX_MB_FN SFX_MB_REAL mbSampleScale(int pairs) { return SFX_MB_REAL(SFX_MB_WEIGHT_SAMPLES) / SFX_MB_REAL(2 * pairs); }
+
+// Centre weight against those summed sample weights: centreWeight / max(|v_C|, 1 px). A fast
+// centre gives way to its neighbours (a uniformly moving area reads as a box-like blur over
+// about 2|v_C| + 1 texels); a still one keeps its colour against samples that blur over it,
+// so a moving edge covers a still background by about the right fraction.
+SFX_MB_FN SFX_MB_REAL mbCentreWeight(SFX_MB_REAL centreWeight, SFX_MB_REAL centreSpeed) {
+    return centreWeight / max(centreSpeed, 1.0);
+}
+
+#ifdef __cplusplus
+}  // namespace sfx::shared
+#endif
+
+#endif  // SFX_SHARED_MB_H

@@ -1,0 +1,54 @@
+#version 450
+// Motion blur pass 1: the velocity the reconstruction will use, packed with depth.
+// Output RGBA16F: xy = velocity radius in [-k, k] px encoded to [0, 1]; zw = linear depth as an
+// fp16 hi/lo pair (hi = z to 11 significant bits, lo = z - hi), so one fetch gives both at ~22 bits of depth.
+// The velocity is the host's (pixels across the shutter interval) or, in camera-only mode,
+// the reprojection of this pixel's depth by the previous view-projection.
+#include "sfx_shared.h"
+#include "sfx_shared_mb.h"
+
+layout(set = 0, binding = 0) uniform sampler2D uLinearDepth;
+layout(set = 0, binding = 1) uniform sampler2D uVelocity;  // unused in camera-only mode
+layout(set = 0, binding = 2, std140) uniform MbPackParams {
+    mat4 reprojection;     // previous view-projection * inverse(current view-projection)
+    vec4 clipFromView;     // x = P[2][2], y = P[3][2]: clip z of view depth -z; zw = 2/W, 2/H
+    vec4 target;           // x = W, y = H
+    float radius;          // k: maximum blur radius in pixels at this size
+    float velocityScale;   // 0.5 * exposure: displacement across the shutter -> blur radius
+    float cameraOnly;      // 1: velocity from depth and the camera motion
+    float pad0;
+} params;
+
+layout(location = 0) out vec4 outPacked;
+
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    float z = texelFetch(uLinearDepth, p, 0).r;
+    vec2 v;
+    if (params.cameraOnly != 0.0) {
+        // Clip position of this pixel now: w = linear depth for a perspective looking down -z.
+        vec2 ndc = gl_FragCoord.xy * params.clipFromView.zw - 1.0;
+        vec4 clip = vec4(ndc * z, params.clipFromView.x * (-z) + params.clipFromView.y, z);
+        vec4 prev = params.reprojection * clip;
+        // A point behind the previous camera has no previous pixel: leave it unblurred.
+        v = prev.w > 1.0e-6 ? (ndc - prev.xy / prev.w) * 0.5 * params.target.xy : vec2(0.0);
+    } else {
+        v = texelFetch(uVelocity, p, 0).xy;
+    }
+    v *= params.velocityScale;
+    float len = length(v);
+    // Non-finite velocity is treated as still rather than poisoning the neighbourhood.
+    if (isnan(len) || isinf(len)) {
+        v = vec2(0.0);
+        len = 0.0;
+    }
+    // Clamp the magnitude, keeping the direction (seed: "clamp to max blur").
+    if (len > params.radius) v *= params.radius / len;
+    vec2 enc = vec2(mbEncodeVelocity(v.x, params.radius), mbEncodeVelocity(v.y, params.radius));
+    float zc = min(z, SFX_MB_MAX_PACKED_DEPTH);
+    // hi keeps the top 11 significant bits of z, which fp16 stores exactly; lo the rest.
+    // (Computed by hand: packHalf2x16 is missing from GLSL 330, the desktop current tier.)
+    float step = exp2(floor(log2(max(zc, 1.0e-4)))) / 1024.0;
+    float hi = floor(zc / step) * step;
+    outPacked = vec4(clamp(enc, 0.0, 1.0), hi, zc - hi);
+}

@@ -1,0 +1,68 @@
+#version 450
+// Motion blur pass 4: gather reconstruction (seed 003). Samples in mirrored pairs along the
+// neighbourhood velocity v_N and, for odd pairs, the centre velocity v_C; each sample weighted
+// by the soft depth comparison, the background / foreground cones and the both-moving test of
+// sfx_shared_mb.h; weights summed and normalised. Pixels with nothing moving near them return
+// their colour untouched.
+#include "sfx_shared.h"
+#include "sfx_shared_mb.h"
+
+layout(set = 0, binding = 0) uniform sampler2D uColor;
+layout(set = 0, binding = 1) uniform sampler2D uPacked;
+layout(set = 0, binding = 2) uniform sampler2D uNeighborMax;
+layout(set = 0, binding = 3, std140) uniform MbReconstructParams {
+    float radius;        // k, pixels: decodes the [0,1] velocities
+    float softExtent;    // soft depth comparison extent, scene units
+    float centreWeight;  // MotionBlurSettings.centreWeight
+    float pad0;
+    int tileSize;        // N: pixel -> tile of the neighbour-max texture
+    int pairs;           // sample pairs: (taps - 1) / 2
+    int jitterSize;      // 2 = checkerboard, 4 = 4x4 randomised
+    int pad1;
+} params;
+
+layout(location = 0) out vec4 outColor;
+
+vec2 decodeVelocity(vec2 e) {
+    return vec2(mbDecodeVelocity(e.x, params.radius), mbDecodeVelocity(e.y, params.radius));
+}
+
+// Round half away from zero: the same on both sides of the centre, as the reference does.
+vec2 roundAway(vec2 x) { return sign(x) * floor(abs(x) + 0.5); }
+
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    vec4 colorC = texelFetch(uColor, p, 0);
+    vec2 vN = decodeVelocity(texelFetch(uNeighborMax, p / params.tileSize, 0).xy);
+    if (length(vN) < SFX_MB_STILL_PX) {
+        outColor = colorC;
+        return;
+    }
+    ivec2 size = textureSize(uColor, 0);
+    vec4 packedC = texelFetch(uPacked, p, 0);
+    vec2 vC = decodeVelocity(packedC.xy);
+    float zC = packedC.z + packedC.w;
+    float speedC = length(vC);
+    float jitter = mbJitter(p.x, p.y, params.jitterSize);
+
+    float wC = mbCentreWeight(params.centreWeight, speedC);
+    vec4 sum = colorC * wC;
+    float total = wC;
+    float perSample = mbSampleScale(params.pairs);
+    for (int i = 0; i < params.pairs; ++i) {
+        vec2 v = mbPairUsesCentre(i, speedC) ? vC : vN;
+        for (int s = 0; s < 2; ++s) {
+            vec2 off = roundAway(mbSampleT(i, params.pairs, jitter, s == 0 ? 1.0 : -1.0) * v);
+            // Clamped to the image: a sample never leaves it, however large the velocity.
+            ivec2 q = clamp(p + ivec2(off), ivec2(0), size - 1);
+            float dist = length(vec2(q - p));
+            vec4 packedS = texelFetch(uPacked, q, 0);
+            float speedS = length(decodeVelocity(packedS.xy));
+            float zS = packedS.z + packedS.w;
+            float w = mbSampleWeight(zC, zS, speedC, speedS, dist, params.softExtent) * perSample;
+            sum += texelFetch(uColor, q, 0) * w;
+            total += w;
+        }
+    }
+    outColor = sum / total;
+}

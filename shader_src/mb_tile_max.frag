@@ -1,0 +1,37 @@
+#version 450
+// Motion blur pass 2: per N x N tile (N = the maximum radius), the velocity of largest
+// magnitude. Magnitudes are compared on the decoded (centred) value, never on the [0,1] code.
+// Ties keep the first in row-major scan order, as the CPU reference does.
+#include "sfx_shared.h"
+#include "sfx_shared_mb.h"
+
+layout(set = 0, binding = 0) uniform sampler2D uPacked;
+layout(set = 0, binding = 1, std140) uniform MbTileParams {
+    int tileSize;  // N, [1, SFX_MB_MAX_RADIUS_LIMIT_PX]
+    int pad0, pad1, pad2;
+} params;
+
+layout(location = 0) out vec2 outTileMax;
+
+void main() {
+    ivec2 size = textureSize(uPacked, 0);
+    ivec2 origin = ivec2(gl_FragCoord.xy) * params.tileSize;
+    vec2 best = vec2(0.5);
+    float bestLen2 = -1.0;
+    for (int j = 0; j < params.tileSize; ++j) {
+        int y = origin.y + j;
+        if (y >= size.y) break;
+        for (int i = 0; i < params.tileSize; ++i) {
+            int x = origin.x + i;
+            if (x >= size.x) break;
+            vec2 e = texelFetch(uPacked, ivec2(x, y), 0).xy;
+            vec2 d = e - 0.5;
+            float len2 = dot(d, d);
+            if (len2 > bestLen2) {
+                bestLen2 = len2;
+                best = e;
+            }
+        }
+    }
+    outTileMax = best;
+}

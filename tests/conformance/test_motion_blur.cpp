@@ -1,0 +1,333 @@
+// Motion blur on the device under test: against the CPU reference, and the properties any
+// correct motion blur has (the unit tests check the same properties on the reference).
+// Tolerances are explained in docs/motion_blur.md ("Conformance tolerances").
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+
+#include "sfx/motion_blur.hpp"
+#include "sfx/reference/motion_blur_reference.hpp"
+#include "test_device.hpp"
+
+using namespace sfx;
+using namespace sfx::reference;
+
+namespace {
+
+// fp16 <-> float for RGBA16F uploads and readbacks (values well inside the normal range).
+uint16_t halfBits(double v) {
+    const float f = float(roundToHalf(v));
+    uint32_t b;
+    std::memcpy(&b, &f, 4);
+    const uint32_t sign = (b >> 16) & 0x8000u;
+    const int exponent = int((b >> 23) & 0xffu) - 127 + 15;
+    const uint32_t mantissa = b & 0x7fffffu;
+    if (f == 0.0f) return uint16_t(sign);
+    if (exponent <= 0) return uint16_t(sign | uint32_t(std::lround(std::fabs(f) * 16777216.0)));  // subnormal
+    return uint16_t(sign | (uint32_t(exponent) << 10) | (mantissa >> 13));
+}
+double fromHalf(uint16_t h) {
+    const int exponent = (h >> 10) & 0x1f;
+    const double mantissa = h & 0x3ff;
+    const double sign = (h & 0x8000) ? -1.0 : 1.0;
+    if (exponent == 0) return sign * std::ldexp(mantissa, -24);
+    if (exponent == 31) return mantissa == 0 ? sign * INFINITY : NAN;
+    return sign * std::ldexp(1024.0 + mantissa, exponent - 25);
+}
+
+// The colour as the GPU sees it (rounded to fp16), so the reference starts from the same input.
+ColorGrid toHalfGrid(const ColorGrid& c) {
+    ColorGrid out = c;
+    for (auto& px : out.values)
+        for (double& ch : px) ch = roundToHalf(ch);
+    return out;
+}
+
+struct GpuInputs {
+    TextureHandle color, depth, velocity;
+    ~GpuInputs() {
+        Device& d = test::device();
+        for (TextureHandle t : {color, depth, velocity})
+            if (!t.isNull()) (void)d.destroyTexture(t);
+    }
+};
+
+void upload(GpuInputs& in, const ColorGrid& color, const Grid& depth, const VelocityGrid* velocity) {
+    Device& d = test::device();
+    const uint32_t w = color.width, h = color.height;
+    in.color = d.createTexture({w, h, 1, Format::RGBA16F, kTextureSampled, "mb-test-color"}).value();
+    std::vector<uint16_t> c;
+    for (const auto& px : color.values)
+        for (double ch : px) c.push_back(halfBits(ch));
+    SFX_REQUIRE_OK(d.writeTexture(in.color, 0, c.data(), c.size() * 2));
+    in.depth = d.createTexture({w, h, 1, Format::R32F, kTextureSampled, "mb-test-depth"}).value();
+    std::vector<float> z(depth.values.begin(), depth.values.end());
+    SFX_REQUIRE_OK(d.writeTexture(in.depth, 0, z.data(), z.size() * 4));
+    if (velocity) {
+        in.velocity = d.createTexture({w, h, 1, Format::RG32F, kTextureSampled, "mb-test-velocity"}).value();
+        std::vector<float> v;
+        for (const auto& e : velocity->values) v.push_back(float(e[0])), v.push_back(float(e[1]));
+        SFX_REQUIRE_OK(d.writeTexture(in.velocity, 0, v.data(), v.size() * 4));
+    }
+}
+
+CameraProjection testCamera(uint32_t w, uint32_t h) {
+    PerspectiveDesc pd;
+    pd.aspect = double(w) / h;
+    return makePerspective(pd).value();
+}
+
+// Runs the effect and reads the output back as doubles.
+ColorGrid runGpu(const ColorGrid& color, const Grid& depth, const VelocityGrid* velocity, const MotionBlurSettings& s,
+                 const CameraMotion& camera = {}) {
+    Device& d = test::device();
+    const uint32_t w = color.width, h = color.height;
+    GpuInputs in;
+    upload(in, color, depth, velocity);
+    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {w, h, test::tier(), Format::RGBA16F});
+    INFO(mb.status().toString());
+    REQUIRE(mb.isOk());
+    MotionBlurInputs inputs;
+    inputs.color = in.color;
+    inputs.depth = {in.depth, DepthKind::Linear, testCamera(w, h)};
+    inputs.velocity = in.velocity;
+    inputs.camera = camera;
+    SFX_REQUIRE_OK(mb.value()->dispatch(inputs, s));
+    SFX_REQUIRE_OK(d.flush());
+    std::vector<uint16_t> out(size_t(w) * h * 4);
+    SFX_REQUIRE_OK(d.readTexture(mb.value()->output(), 0, out.data(), out.size() * 2));
+    ColorGrid result(w, h);
+    for (size_t i = 0; i < result.values.size(); ++i)
+        for (int c = 0; c < 4; ++c) result.values[i][c] = fromHalf(out[i * 4 + size_t(c)]);
+    return result;
+}
+
+MotionBlurSettings pixelSettings(float radius) {
+    MotionBlurSettings s;
+    s.maxRadiusPx = radius;
+    s.referenceRows = 0;
+    return s;
+}
+MotionBlurParams resolved(const MotionBlurSettings& s, uint32_t h) { return resolveMotionBlur(test::tier(), s, h).value(); }
+
+ColorGrid noise(uint32_t w, uint32_t h, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    ColorGrid c(w, h);
+    for (auto& v : c.values) v = {u(rng), u(rng), u(rng), 1.0};
+    return toHalfGrid(c);
+}
+
+// GPU vs reference: fp16 output rounding (<= 2^-11 relative), the fp16 velocity's last bit
+// (the GPU may round toward zero where the reference rounds to nearest: up to 2^-11 * 2k px)
+// and float-vs-double weights keep ordinary pixels within 2e-3. A few pixels may take a
+// different discrete decision (an offset t*v rounding at exactly .5, the still threshold) when
+// the fp16 velocity lands on the boundary, so up to 3% may differ more (1.5% measured on
+// lavapipe, which rounds fp16 toward zero); the RMSE stays small (0.003 measured).
+void compareWithReference(const ColorGrid& gpu, const ColorGrid& ref, const char* what) {
+    size_t far = 0;
+    double sq = 0, worst = 0;
+    for (size_t i = 0; i < gpu.values.size(); ++i)
+        for (int c = 0; c < 4; ++c) {
+            REQUIRE(std::isfinite(gpu.values[i][c]));
+            const double e = std::fabs(gpu.values[i][c] - ref.values[i][c]);
+            sq += e * e;
+            worst = std::max(worst, e);
+            if (e > 2e-3) ++far;
+        }
+    const double n = double(gpu.values.size() * 4);
+    const double rmse = std::sqrt(sq / n);
+    INFO(test::label() << " " << what << ": rmse " << rmse << ", worst " << worst << ", beyond 2e-3: " << far);
+    CHECK(double(far) <= 0.03 * n);
+    CHECK(rmse <= 5e-3);
+}
+
+}  // namespace
+
+TEST_CASE("motion blur: zero velocity returns the input exactly", "[motion_blur][conformance]") {
+    const ColorGrid c = noise(45, 31, 1);
+    const Grid z(45, 31, 4.0);
+    const VelocityGrid v(45, 31);
+    const ColorGrid out = runGpu(c, z, &v, {});
+    for (size_t i = 0; i < c.values.size(); ++i) REQUIRE(out.values[i] == c.values[i]);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("motion blur: matches the reference on a scene with moving and still layers", "[motion_blur][conformance]") {
+    Scene scene{96, 54, {}};
+    SceneLayer bg;
+    bg.depth = 30, bg.cell = 6, bg.colorA = {0.25, 0.3, 0.35, 1}, bg.colorB = {0.6, 0.55, 0.5, 1}, bg.velocityPx = {-6, 2};
+    SceneLayer disc;
+    disc.shape = SceneLayer::Shape::Disc, disc.depth = 8, disc.centre = {40, 26}, disc.halfSize = {12, 0};
+    disc.cell = 3, disc.colorA = {1, 0.8, 0.2, 1}, disc.colorB = {0.9, 0.1, 0.1, 1}, disc.velocityPx = {22, 6};
+    SceneLayer post;  // still, in front of everything
+    post.shape = SceneLayer::Shape::Rect, post.depth = 3, post.centre = {70, 27}, post.halfSize = {4, 30};
+    post.colorA = {0.1, 0.9, 0.3, 1};
+    scene.layers = {bg, disc, post};
+    const SceneFrame f = scene.render(0);
+    const ColorGrid c = toHalfGrid(f.color);
+    for (float radius : {0.0f, 7.0f}) {
+        const MotionBlurSettings s = pixelSettings(radius);
+        const ColorGrid gpu = runGpu(c, f.depth, &f.velocity, s);
+        const ColorGrid ref = motionBlur(c, f.depth, f.velocity, resolved(s, scene.height)).color;
+        compareWithReference(gpu, ref, radius == 0 ? "tier radius" : "radius 7");
+    }
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("motion blur: camera-only velocity matches the reference", "[motion_blur][conformance]") {
+    const uint32_t w = 64, h = 40;
+    const CameraProjection cam = testCamera(w, h);
+    Grid z(w, h);
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x) z.at(x, y) = 2.0 + 0.2 * x + ((x / 8 + y / 8) % 2) * 3.0;
+    glm::dmat4 prevView(1.0);
+    prevView[3][0] = 0.15;  // the camera slid sideways
+    prevView[3][1] = -0.05;
+    const CameraMotion motion{cam.projection * prevView, cam.projection};
+    const ColorGrid c = noise(w, h, 5);
+    const MotionBlurSettings s = pixelSettings(6);
+    const ColorGrid gpu = runGpu(c, z, nullptr, s, motion);
+    const VelocityGrid v = cameraVelocity(z, cam.projection, motion);
+    const ColorGrid ref = motionBlur(c, z, v, resolved(s, h)).color;
+    compareWithReference(gpu, ref, "camera-only");
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("motion blur: uniform horizontal motion blurs only along rows", "[motion_blur][conformance]") {
+    const uint32_t w = 128, h = 16;
+    const Grid z(w, h, 5.0);
+    const VelocityGrid v(w, h, {12.0, 0.0});
+    const MotionBlurSettings s = pixelSettings(8);
+    ColorGrid stripes(w, h);
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x) stripes.at(x, y) = {double(y % 3) / 2.0, double(y % 2), 0.25, 1.0};
+    const ColorGrid s1 = runGpu(stripes, z, &v, s);
+    for (size_t i = 0; i < s1.values.size(); ++i)
+        for (int c = 0; c < 4; ++c) REQUIRE(s1.values[i][c] == Approx(stripes.values[i][c]).margin(1e-3));
+
+    const ColorGrid c = noise(w, h, 2);
+    const ColorGrid out = runGpu(c, z, &v, s);
+    for (uint32_t y = 0; y < h; ++y) {
+        double inMean = 0, outMean = 0;
+        for (uint32_t x = 16; x < w - 16; ++x) inMean += c.at(x, y)[1], outMean += out.at(x, y)[1];
+        INFO("row " << y);
+        CHECK(std::fabs(inMean - outMean) / (w - 32) < 0.02);  // as the reference test, plus fp16
+    }
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("motion blur: moving object blurs past its silhouette, still ones stay sharp", "[motion_blur][conformance]") {
+    SceneLayer bg;
+    bg.depth = 20, bg.cell = 4, bg.colorA = {0.2, 0.2, 0.2, 1}, bg.colorB = {0.4, 0.4, 0.4, 1};
+    SceneLayer box;
+    box.shape = SceneLayer::Shape::Rect, box.depth = 5, box.centre = {32, 16}, box.halfSize = {6, 6};
+    box.velocityPx = {16, 0}, box.colorA = {1, 0.9, 0.1, 1};
+    const MotionBlurSettings s = pixelSettings(10);
+
+    Scene moving{64, 32, {bg, box}};
+    SceneFrame f = moving.render(0);
+    f.color = toHalfGrid(f.color);
+    ColorGrid out = runGpu(f.color, f.depth, &f.velocity, s);
+    CHECK(out.at(40, 16)[0] > f.color.at(40, 16)[0] + 0.05);
+    CHECK(out.at(2, 2) == f.color.at(2, 2));
+    for (uint32_t x = 26; x < 38; ++x)
+        for (int ch = 0; ch < 4; ++ch) CHECK(out.at(x, 8)[ch] == Approx(f.color.at(x, 8)[ch]).margin(1e-3));
+
+    SceneLayer mbg = bg;
+    mbg.velocityPx = {16, 0};
+    SceneLayer still = box;
+    still.velocityPx = {0, 0}, still.cell = 2;
+    Scene s2{64, 32, {mbg, still}};
+    f = s2.render(0);
+    f.color = toHalfGrid(f.color);
+    out = runGpu(f.color, f.depth, &f.velocity, s);
+    for (uint32_t y = 10; y < 22; ++y)
+        for (uint32_t x = 26; x < 38; ++x)
+            for (int c = 0; c < 4; ++c) REQUIRE(out.at(x, y)[c] == Approx(f.color.at(x, y)[c]).margin(1e-3));
+
+    // Depth sign: moving behind a still occluder does not bleed over it; in front, it does.
+    SceneLayer occluder = still;
+    occluder.halfSize = {4, 12};
+    SceneLayer behind = box;
+    behind.depth = 10, behind.centre = {24, 16};
+    Scene s3{64, 32, {bg, behind, occluder}};
+    f = s3.render(0);
+    f.color = toHalfGrid(f.color);
+    out = runGpu(f.color, f.depth, &f.velocity, s);
+    for (uint32_t y = 5; y < 27; ++y)
+        for (uint32_t x = 29; x < 35; ++x)
+            for (int c = 0; c < 4; ++c) REQUIRE(out.at(x, y)[c] == Approx(f.color.at(x, y)[c]).margin(1e-3));
+    s3.layers[1].depth = 2;
+    f = s3.render(0);
+    f.color = toHalfGrid(f.color);
+    out = runGpu(f.color, f.depth, &f.velocity, s);
+    CHECK(std::fabs(out.at(30, 16)[2] - f.color.at(30, 16)[2]) > 0.02);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("motion blur: velocities at and beyond the maximum are clamped; no NaN", "[motion_blur][conformance]") {
+    const uint32_t w = 48, h = 24;
+    const ColorGrid c = noise(w, h, 3);
+    const Grid z(w, h, 3.0);
+    const MotionBlurSettings s = pixelSettings(6);
+    const VelocityGrid atMax(w, h, {12.0, 0.0}), beyond(w, h, {600.0, 0.0});
+    const ColorGrid a = runGpu(c, z, &atMax, s), b = runGpu(c, z, &beyond, s);
+    for (size_t i = 0; i < a.values.size(); ++i) REQUIRE(a.values[i] == b.values[i]);
+
+    // A bright column in a flat field, huge velocity toward the image edges: only columns within
+    // the radius change, and edge pixels (whose samples were clamped into the image) stay finite.
+    ColorGrid flat(w, h, {0.5, 0.5, 0.5, 1});
+    for (uint32_t y = 0; y < h; ++y) flat.at(24, y) = {1, 1, 1, 1};
+    const VelocityGrid huge(w, h, {-1000.0, 3.0});
+    const ColorGrid out = runGpu(flat, z, &huge, s);
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x) {
+            for (int ch = 0; ch < 4; ++ch) REQUIRE(std::isfinite(out.at(x, y)[ch]));
+            if (x + 7 < 24 || x > 24 + 7) REQUIRE(out.at(x, y) == flat.at(x, y));
+        }
+
+    // Random velocities with NaN and infinities, sky depth: every output finite.
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> u(-50.0, 50.0);
+    VelocityGrid wild(w, h);
+    for (auto& e : wild.values) e = {u(rng), u(rng)};
+    wild.at(3, 3) = {NAN, 1.0};
+    wild.at(20, 10) = {INFINITY, -INFINITY};
+    Grid zz(w, h);
+    for (auto& d : zz.values) d = 0.2 + std::fabs(u(rng));
+    zz.at(5, 5) = 1e8;
+    const ColorGrid wildOut = runGpu(c, zz, &wild, {});
+    for (const auto& px : wildOut.values)
+        for (double ch : px) REQUIRE(std::isfinite(ch));
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("motion blur: bad inputs are named errors", "[motion_blur][conformance]") {
+    Device& d = test::device();
+    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {32, 16, test::tier(), Format::RGBA16F});
+    REQUIRE(mb.isOk());
+    GpuInputs in;
+    upload(in, ColorGrid(32, 16), Grid(32, 16, 1.0), nullptr);
+    MotionBlurInputs inputs{in.color, {in.depth, DepthKind::Linear, testCamera(32, 16)}, {}, {}};
+    MotionBlurSettings s;
+    s.samples = 4;
+    Status st = mb.value()->dispatch(inputs, s);
+    CHECK(st.code() == StatusCode::InvalidArgument);
+    CHECK(st.message().find("samples") != std::string::npos);
+    inputs.velocity = in.depth;  // R32F: not a velocity format
+    st = mb.value()->dispatch(inputs, {});
+    CHECK(st.code() == StatusCode::UnsupportedFormat);
+    CHECK(st.message().find("velocity") != std::string::npos);
+    SFX_REQUIRE_OK(mb.value()->resize(40, 20));
+    inputs.velocity = {};
+    st = mb.value()->dispatch(inputs, {});  // colour still 32x16
+    CHECK(st.code() == StatusCode::InvalidArgument);
+    CHECK(st.message().find("color size") != std::string::npos);
+    const Plan plan = mb.value()->plan();
+    CHECK(plan.passes.size() == 5);  // linearize + 4 motion blur passes
+    CHECK(plan.bytesOf("motion_blur") > 0);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}

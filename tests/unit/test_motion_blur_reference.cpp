@@ -1,0 +1,276 @@
+// Properties any correct motion blur must have, checked on the CPU reference (the GPU is held
+// to the same properties and to this reference in tests/conformance/test_motion_blur.cpp).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "sfx/motion_blur.hpp"
+#include "sfx/null_device.hpp"
+#include "sfx/reference/motion_blur_reference.hpp"
+#include "sfx_shared_mb.h"
+
+using namespace sfx;
+using namespace sfx::reference;
+
+namespace {
+
+MotionBlurParams params(Tier tier, float radiusPx) {
+    MotionBlurSettings s;
+    s.maxRadiusPx = radiusPx;
+    s.referenceRows = 0;  // radius in output pixels
+    Result<MotionBlurParams> p = resolveMotionBlur(tier, s, 64);
+    REQUIRE(p.isOk());
+    return p.value();
+}
+
+// A noisy RGBA texture: detail in both directions, so any blur across rows would show.
+ColorGrid noise(uint32_t w, uint32_t h, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    ColorGrid c(w, h);
+    for (auto& v : c.values) v = {u(rng), u(rng), u(rng), 1.0};
+    return c;
+}
+
+double maxAbsDiff(const ColorGrid& a, const ColorGrid& b) {
+    double m = 0;
+    for (size_t i = 0; i < a.values.size(); ++i)
+        for (int c = 0; c < 4; ++c) m = std::max(m, std::fabs(a.values[i][c] - b.values[i][c]));
+    return m;
+}
+
+const Tier kTiers[] = {Tier::Current, Tier::High};
+
+}  // namespace
+
+TEST_CASE("motion blur reference: zero velocity returns the input exactly", "[motion_blur]") {
+    for (Tier tier : kTiers) {
+        ColorGrid c = noise(40, 30, 1);
+        Grid z(40, 30, 5.0);
+        MotionBlurReferenceResult r = motionBlur(c, z, VelocityGrid(40, 30), params(tier, 0));
+        CHECK(r.stillPixels == 40u * 30u);
+        CHECK(maxAbsDiff(r.color, c) == 0.0);
+    }
+}
+
+TEST_CASE("motion blur reference: uniform horizontal motion blurs only along rows", "[motion_blur]") {
+    for (Tier tier : kTiers) {
+        const uint32_t w = 256, h = 24;
+        const MotionBlurParams p = params(tier, 8);
+        const VelocityGrid v(w, h, {12.0, 0.0});  // radius 6 px
+        const Grid z(w, h, 5.0);
+
+        // Detail perpendicular to the motion (horizontal stripes) is untouched.
+        ColorGrid stripes(w, h);
+        for (uint32_t y = 0; y < h; ++y)
+            for (uint32_t x = 0; x < w; ++x) stripes.at(x, y) = {double(y % 3) / 2.0, double(y % 2), 0.25, 1.0};
+        CHECK(maxAbsDiff(motionBlur(stripes, z, v, p).color, stripes) < 1e-12);
+
+        // Noise: each row keeps its mean (away from the image edges), and gets smoother.
+        const ColorGrid c = noise(w, h, 2);
+        const ColorGrid out = motionBlur(c, z, v, p).color;
+        for (uint32_t y = 0; y < h; ++y) {
+            double inMean = 0, outMean = 0, inVar = 0, outVar = 0;
+            const uint32_t x0 = 16, x1 = w - 16;
+            for (uint32_t x = x0; x < x1; ++x) inMean += c.at(x, y)[0], outMean += out.at(x, y)[0];
+            inMean /= (x1 - x0), outMean /= (x1 - x0);
+            for (uint32_t x = x0; x < x1; ++x) {
+                inVar += std::pow(c.at(x, y)[0] - inMean, 2);
+                outVar += std::pow(out.at(x, y)[0] - outMean, 2);
+            }
+            INFO("tier " << toString(tier) << " row " << y);
+            // Per-pixel jitter makes the kernel vary from pixel to pixel, and the window's ends
+            // exchange texels with the outside, so means agree to ~2% of the range, not exactly.
+            CHECK(std::fabs(inMean - outMean) < 0.02);
+            CHECK(outVar < 0.5 * inVar);
+        }
+        // Rows are independent: changing one input row changes only that output row.
+        ColorGrid c2 = c;
+        for (uint32_t x = 0; x < w; ++x) c2.at(x, 10) = {0, 0, 0, 1};
+        const ColorGrid out2 = motionBlur(c2, z, v, p).color;
+        for (uint32_t y = 0; y < h; ++y)
+            for (uint32_t x = 0; x < w; ++x)
+                if (y != 10) REQUIRE(out2.at(x, y) == out.at(x, y));
+    }
+}
+
+TEST_CASE("motion blur reference: moving object blurs past its silhouette; still objects stay sharp", "[motion_blur]") {
+    for (Tier tier : kTiers) {
+        const MotionBlurParams p = params(tier, 10);
+        Scene scene{64, 32, {}};
+        SceneLayer bg;  // still checker background, far
+        bg.depth = 20, bg.cell = 4, bg.colorA = {0.2, 0.2, 0.2, 1}, bg.colorB = {0.4, 0.4, 0.4, 1};
+        SceneLayer box;  // a bright box in front, moving right 16 px across the shutter
+        box.shape = SceneLayer::Shape::Rect, box.depth = 5, box.centre = {32, 16}, box.halfSize = {6, 6};
+        box.velocityPx = {16, 0}, box.colorA = {1, 0.9, 0.1, 1};
+        scene.layers = {bg, box};
+        SceneFrame f = scene.render(0);
+        MotionBlurReferenceResult r = motionBlur(f.color, f.depth, f.velocity, p);
+        // Background right of the box, within the blur radius (8 px), picks up its colour.
+        CHECK(r.color.at(40, 16)[2] < f.color.at(40, 16)[2] - 0.02);
+        CHECK(r.color.at(40, 16)[0] > f.color.at(40, 16)[0] + 0.05);
+        // Far from the box (beyond radius and neighbour tiles) nothing changes.
+        CHECK(r.color.at(2, 2) == f.color.at(2, 2));
+        // Above the box, across the motion: untouched.
+        for (uint32_t x = 26; x < 38; ++x)
+            for (int ch = 0; ch < 4; ++ch) CHECK(r.color.at(x, 8)[ch] == Approx(f.color.at(x, 8)[ch]).margin(1e-12));
+
+        // Still object in front of a moving background: the object stays exactly sharp.
+        Scene s2{64, 32, {}};
+        SceneLayer mbg = bg;
+        mbg.velocityPx = {16, 0};
+        SceneLayer still = box;
+        still.velocityPx = {0, 0}, still.cell = 2;
+        s2.layers = {mbg, still};
+        SceneFrame f2 = s2.render(0);
+        MotionBlurReferenceResult r2 = motionBlur(f2.color, f2.depth, f2.velocity, p);
+        // (A sample landing on the centre itself adds the centre's own colour: exact up to rounding.)
+        for (uint32_t y = 10; y < 22; ++y)
+            for (uint32_t x = 26; x < 38; ++x)
+                for (int ch = 0; ch < 4; ++ch) REQUIRE(r2.color.at(x, y)[ch] == Approx(f2.color.at(x, y)[ch]).margin(1e-12));
+        // ...while the background around it blurs.
+        CHECK(maxAbsDiff(r2.color, f2.color) > 0.05);
+
+        // Depth sign: a moving object *behind* a still occluder does not bleed over it.
+        Scene s3{64, 32, {}};
+        SceneLayer occluder = still;
+        occluder.depth = 5, occluder.halfSize = {4, 12};
+        SceneLayer behind = box;
+        behind.depth = 10, behind.centre = {24, 16};
+        s3.layers = {bg, behind, occluder};
+        SceneFrame f3 = s3.render(0);
+        MotionBlurReferenceResult r3 = motionBlur(f3.color, f3.depth, f3.velocity, p);
+        for (uint32_t y = 5; y < 27; ++y)
+            for (uint32_t x = 29; x < 35; ++x)
+                for (int ch = 0; ch < 4; ++ch) REQUIRE(r3.color.at(x, y)[ch] == Approx(f3.color.at(x, y)[ch]).margin(1e-12));
+        // The same object *in front of* the occluder blurs over it.
+        s3.layers[1].depth = 2;
+        f3 = s3.render(0);
+        r3 = motionBlur(f3.color, f3.depth, f3.velocity, p);
+        CHECK(std::fabs(r3.color.at(30, 16)[2] - f3.color.at(30, 16)[2]) > 0.02);
+    }
+}
+
+TEST_CASE("motion blur reference: velocities at and beyond the maximum are clamped, samples stay in the image", "[motion_blur]") {
+    for (Tier tier : kTiers) {
+        const MotionBlurParams p = params(tier, 6);
+        const uint32_t w = 48, h = 20;
+        const ColorGrid c = noise(w, h, 3);
+        const Grid z(w, h, 3.0);
+        // Displacement 2k = radius k exactly, versus 50x beyond it: identical output.
+        const MotionBlurReferenceResult atMax = motionBlur(c, z, VelocityGrid(w, h, {12.0, 0.0}), p);
+        const MotionBlurReferenceResult beyond = motionBlur(c, z, VelocityGrid(w, h, {600.0, 0.0}), p);
+        CHECK(maxAbsDiff(atMax.color, beyond.color) == 0.0);
+        for (const auto& v : beyond.radiusPx.values) CHECK(std::hypot(v[0], v[1]) <= 6.0 + 1e-9);
+        // Diagonal huge velocity: the longest read offset stays within the radius (+ rounding).
+        const MotionBlurReferenceResult diag = motionBlur(c, z, VelocityGrid(w, h, {-900.0, 700.0}), p);
+        CHECK(diag.maxSampleOffsetPx <= 6.0 + 1.0);
+        // Samples that would leave the image were clamped into it (and so were counted).
+        CHECK(diag.samplesOutside > 0);
+        // A single bright column in a flat field with huge velocity changes only columns within k.
+        ColorGrid flat(w, h, {0.5, 0.5, 0.5, 1});
+        for (uint32_t y = 0; y < h; ++y) flat.at(24, y) = {1, 1, 1, 1};
+        const ColorGrid out = motionBlur(flat, z, VelocityGrid(w, h, {1000.0, 0.0}), p).color;
+        for (uint32_t y = 0; y < h; ++y)
+            for (uint32_t x = 0; x < w; ++x)
+                if (x + 7 < 24 || x > 24 + 7) REQUIRE(out.at(x, y) == flat.at(x, y));
+    }
+}
+
+TEST_CASE("motion blur reference: no output is NaN, even for NaN or infinite velocity", "[motion_blur]") {
+    for (Tier tier : kTiers) {
+        const uint32_t w = 40, h = 40;
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<double> u(-40.0, 40.0);
+        VelocityGrid v(w, h);
+        for (auto& e : v.values) e = {u(rng), u(rng)};
+        v.at(3, 3) = {NAN, 1.0};
+        v.at(20, 20) = {INFINITY, -INFINITY};
+        Grid z(w, h);
+        for (auto& d : z.values) d = 0.1 + std::fabs(u(rng));
+        z.at(5, 5) = 1e8;  // sky
+        const MotionBlurReferenceResult r = motionBlur(noise(w, h, 4), z, v, params(tier, 0));
+        for (const auto& px : r.color.values)
+            for (double ch : px) REQUIRE(std::isfinite(ch));
+    }
+}
+
+TEST_CASE("motion blur reference: the jitter patterns and velocity encoding", "[motion_blur]") {
+    // Checkerboard alternates +-0.25; the 4x4 table uses each stratum once per block.
+    CHECK(shared::mbJitter(0, 0, 2) == -0.25);
+    CHECK(shared::mbJitter(1, 0, 2) == 0.25);
+    std::vector<double> seen;
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) seen.push_back(shared::mbJitter(x + 8, y + 4, 4));
+    std::sort(seen.begin(), seen.end());
+    for (int i = 0; i < 16; ++i) CHECK(seen[size_t(i)] == Approx((i + 0.5) / 16 - 0.5));
+    // [-k, k] <-> [0, 1], both ways.
+    CHECK(shared::mbEncodeVelocity(-10, 10) == 0.0);
+    CHECK(shared::mbEncodeVelocity(10, 10) == 1.0);
+    CHECK(shared::mbDecodeVelocity(shared::mbEncodeVelocity(3.5, 10), 10) == Approx(3.5));
+    CHECK(roundToHalf(1.0 / 3.0) == Approx(0.333251953125));
+    CHECK(roundToHalf(65000.0) == 64992.0);  // fp16 steps by 32 there
+}
+
+TEST_CASE("motion blur: settings out of range are named errors; tiers and scaling resolve", "[motion_blur]") {
+    MotionBlurSettings s;
+    Result<MotionBlurParams> cur = resolveMotionBlur(Tier::Current, s, 720);
+    REQUIRE(cur.isOk());
+    CHECK(cur->taps == 7);
+    CHECK(cur->pairs == 3);
+    CHECK(cur->jitterSize == 2);
+    CHECK(cur->radiusPx == 10);
+    Result<MotionBlurParams> high = resolveMotionBlur(Tier::High, s, 1080);
+    REQUIRE(high.isOk());
+    CHECK(high->taps == 9);
+    CHECK(high->jitterSize == 4);
+    CHECK(high->radiusPx == 27);  // 18 px at 720 rows, scaled to 1080
+    CHECK(resolveMotionBlur(Tier::Current, s, 180)->radiusPx == 3);  // 2.5 rounds to 3
+
+    auto bad = [](MotionBlurSettings st, const char* field) {
+        Result<MotionBlurParams> r = resolveMotionBlur(Tier::High, st, 720);
+        REQUIRE_FALSE(r.isOk());
+        CHECK(r.status().code() == StatusCode::InvalidArgument);
+        CHECK(r.status().message().find(field) != std::string::npos);
+    };
+    MotionBlurSettings t;
+    t.maxRadiusPx = -1;
+    bad(t, "maxRadiusPx");
+    t.maxRadiusPx = 65;
+    bad(t, "maxRadiusPx");
+    t.maxRadiusPx = 40;  // 40 px at 720 rows is fine, at 2160 it is 120 px: refused
+    CHECK(resolveMotionBlur(Tier::High, t, 720).isOk());
+    CHECK_FALSE(resolveMotionBlur(Tier::High, t, 2160).isOk());
+    t = {};
+    t.samples = 8;
+    bad(t, "samples");
+    t.samples = 33;
+    bad(t, "samples");
+    t = {};
+    t.softDepthExtent = 0;
+    bad(t, "softDepthExtent");
+    t = {};
+    t.centreWeight = NAN;
+    bad(t, "centreWeight");
+    t = {};
+    t.exposure = 5;
+    bad(t, "exposure");
+}
+
+TEST_CASE("motion blur reference: camera-only velocity of a pure translation", "[motion_blur]") {
+    // A camera sliding sideways by dx: a point at depth z moves by dx * P00 * W / (2 z) pixels.
+    PerspectiveDesc pd;
+    pd.aspect = 2.0;
+    pd.rowZeroIsTop = true;
+    CameraProjection cam = makePerspective(pd).value();
+    const glm::dmat4 viewNow(1.0);
+    glm::dmat4 viewPrev(1.0);
+    viewPrev[3][0] = 0.1;  // previous camera 0.1 units to the left: the world sat 0.1 further right
+    CameraMotion motion{cam.projection * viewPrev, cam.projection * viewNow};
+    Grid z(32, 16, 4.0);
+    VelocityGrid v = cameraVelocity(z, cam.projection, motion);
+    const double expected = -0.1 * cam.projection[0][0] * 32 / (2 * 4.0);
+    CHECK(v.at(5, 5)[0] == Approx(expected));
+    CHECK(v.at(5, 5)[1] == Approx(0.0).margin(1e-9));
+}
