@@ -230,3 +230,76 @@ TEST_CASE("LinearDepth plan holds only what the tier needs", "[depth][plan]") {
         CHECK(pm.bytesOf("depth") == (64 * 64 + 32 * 32 + 16 * 16) * 4 + 32);
     }
 }
+
+TEST_CASE("depth passes stay finite and within bounds at the extremes", "[depth][conformance][extremes]") {
+    Device& device = test::device();
+    // Extreme depth ranges: a 1e-4 near plane with a 1e6 far plane, and an infinite far plane
+    // with reversed-Z; depths spanning ten orders of magnitude.
+    struct Range {
+        double nearPlane, farPlane;
+        bool reversed;
+        ClipDepthRange clip;
+    };
+    const Range ranges[] = {{1e-4, 1e6, false, ClipDepthRange::ZeroToOne},
+                            {1e-4, test::kInfiniteFar, true, ClipDepthRange::ZeroToOne},
+                            {1e-3, 1e5, false, ClipDepthRange::MinusOneToOne},
+                            {10.0, 10.5, false, ClipDepthRange::ZeroToOne}};  // a thin slab far away
+    const uint32_t W = 33, H = 9;
+    for (const Range& r : ranges) {
+        INFO(test::label() << " near " << r.nearPlane << " far " << r.farPlane << (r.reversed ? " reversed" : ""));
+        PerspectiveDesc pd;
+        pd.nearPlane = r.nearPlane;
+        pd.farPlane = r.farPlane;
+        pd.reversedZ = r.reversed;
+        pd.clipDepth = r.clip;
+        pd.aspect = double(W) / H;
+        CameraProjection cam = makePerspective(pd).value();
+        DepthReconstruction rec = makeDepthReconstruction(cam, W, H).value();
+        const double zFar = std::isinf(r.farPlane) ? 1e6 : r.farPlane;
+        std::vector<float> stored(size_t(W) * H);
+        reference::Grid storedGrid(W, H);
+        for (size_t i = 0; i < stored.size(); ++i) {
+            const double z = r.nearPlane * std::pow(zFar / r.nearPlane, double(i) / double(stored.size() - 1));
+            stored[i] = float(std::clamp(storedDepthFromLinear(cam, z), 0.0, 1.0));
+            storedGrid.values[i] = stored[i];
+        }
+        reference::Grid expected = reference::linearizeDepth(storedGrid, rec);
+        TextureHandle src = device.createTexture({W, H, 1, Format::R32F, kTextureSampled}).value();
+        SFX_REQUIRE_OK(device.writeTexture(src, 0, stored.data(), stored.size() * 4));
+        auto linear = LinearDepth::create(device, {W, H, test::tier(), test::tier() == Tier::High ? 3u : 1u});
+        REQUIRE(linear.isOk());
+        SFX_REQUIRE_OK(linear.value()->dispatch({src, DepthKind::Hardware, cam}));
+        std::vector<float> got = readLevel(device, linear.value()->texture(), W, H, 0);
+        for (size_t i = 0; i < got.size(); ++i) {
+            INFO("texel " << i << " stored " << stored[i] << " want " << expected.values[i] << " got " << got[i]);
+            REQUIRE(std::isfinite(got[i]));
+            REQUIRE(got[i] > 0.0f);
+            REQUIRE(got[i] <= float(rec.maxDepth));
+            REQUIRE(std::abs(got[i] - expected.values[i]) <= linearizeTolerance(storedGrid.values[i], rec, expected.values[i]));
+        }
+        (void)device.destroyTexture(src);
+    }
+    // Extreme sizes: one texel, and one texel thin; the pyramid only where the size allows.
+    for (auto [w, h] : {std::pair<uint32_t, uint32_t>{1, 1}, {1, 129}, {257, 1}}) {
+        INFO(test::label() << " " << w << "x" << h);
+        const uint32_t levels = test::tier() == Tier::High ? std::min(3u, maxMipLevels(w, h)) : 1u;
+        auto linear = LinearDepth::create(device, {w, h, test::tier(), levels});
+        REQUIRE(linear.isOk());
+        std::vector<float> depths(size_t(w) * h, 5.0f);
+        TextureHandle src = device.createTexture({w, h, 1, Format::R32F, kTextureSampled}).value();
+        SFX_REQUIRE_OK(device.writeTexture(src, 0, depths.data(), depths.size() * 4));
+        SFX_REQUIRE_OK(linear.value()->dispatch({src, DepthKind::Linear, makePerspective({}).value()}));
+        for (uint32_t m = 0; m < levels; ++m)
+            for (float v : readLevel(device, linear.value()->texture(), w, h, m)) REQUIRE(v == 5.0f);
+        (void)device.destroyTexture(src);
+    }
+    if (test::tier() == Tier::High) {
+        // A pyramid deeper than a 1x1 target allows is a named error, not a silent clamp.
+        auto tooDeep = LinearDepth::create(device, {1, 1, Tier::High, 2});
+        CHECK(tooDeep.status().code() == StatusCode::InvalidArgument);
+        CHECK(tooDeep.status().message().find("for 1x1") != std::string::npos);
+    }
+    const uint32_t tooWide = device.caps().limits.maxTextureSize + 1;
+    CHECK(LinearDepth::create(device, {tooWide, 4, test::tier(), 1}).status().code() == StatusCode::InvalidArgument);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
