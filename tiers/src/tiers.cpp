@@ -21,8 +21,13 @@ const std::vector<Requirement> kCurrentRules = {
          default: return false;
          }
      }},
-    {"R32F render targets (EXT_color_buffer_float on GL ES)",
-     [](const DeviceCaps& c) { return c.renderableFormat[size_t(Format::R32F)]; }},
+    // Linear depth (R32F), motion blur's packed velocity and tiles (RGBA16F, RG16F). On GL ES
+    // one extension, EXT_color_buffer_float, makes all of them renderable.
+    {"R32F, RGBA16F and RG16F render targets (EXT_color_buffer_float on GL ES)",
+     [](const DeviceCaps& c) {
+         return c.renderableFormat[size_t(Format::R32F)] && c.renderableFormat[size_t(Format::RGBA16F)] &&
+                c.renderableFormat[size_t(Format::RG16F)];
+     }},
     {"RGBA8 render targets", [](const DeviceCaps& c) { return c.renderableFormat[size_t(Format::RGBA8)]; }},
     {"sampling D32F or D24S8 depth", [](const DeviceCaps& c) {
          return c.sampledFormat[size_t(Format::D32F)] || c.sampledFormat[size_t(Format::D24S8)];
@@ -43,9 +48,6 @@ const std::vector<Requirement> kHighRules = [] {
     rules.push_back({"compute shaders", [](const DeviceCaps& c) { return c.computeShaders; }});
     rules.push_back({"storage buffers", [](const DeviceCaps& c) { return c.storageBuffers; }});
     rules.push_back({"atomics on storage buffers", [](const DeviceCaps& c) { return c.atomics; }});
-    rules.push_back({"RGBA16F and RG16F render targets", [](const DeviceCaps& c) {
-                         return c.renderableFormat[size_t(Format::RGBA16F)] && c.renderableFormat[size_t(Format::RG16F)];
-                     }});
     rules.push_back({"R32UI render targets", [](const DeviceCaps& c) { return c.renderableFormat[size_t(Format::R32UI)]; }});
     return rules;
 }();
