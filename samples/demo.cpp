@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "scene.hpp"
+#include "sfx/half.hpp"
 #include "sfx/backends.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/depth.hpp"
@@ -30,15 +31,6 @@ Result<io::Image> readR32F(Device& device, TextureHandle texture, uint32_t mip) 
     return image;
 }
 
-// Half floats back to float, for the RGBA16F normal buffer.
-float halfToFloat(uint16_t h) {
-    const uint32_t sign = (h >> 15) & 1, exponent = (h >> 10) & 31, mantissa = h & 1023;
-    float v;
-    if (exponent == 0) v = std::ldexp(float(mantissa), -24);
-    else if (exponent == 31) v = mantissa ? NAN : INFINITY;
-    else v = std::ldexp(float(mantissa | 1024), int(exponent) - 25);
-    return sign ? -v : v;
-}
 
 Result<io::Image> readNormals(Device& device, TextureHandle texture, uint32_t w, uint32_t h) {
     std::vector<uint16_t> halves(size_t(w) * h * 4);

@@ -14,6 +14,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "sfx/half.hpp"
 #include "sfx/gl_device.hpp"
 #include "sfx/hal_validation.hpp"
 
@@ -53,28 +54,6 @@ GlFormat glFormat(Format f) {
 bool isHalfFormat(Format f) { return f == Format::R16F || f == Format::RG16F || f == Format::RGBA16F; }
 bool isFloat32Format(Format f) { return f == Format::R32F || f == Format::RG32F || f == Format::RGBA32F; }
 
-// IEEE binary16 from binary32, rounding to nearest even (exact for values a half target wrote).
-uint16_t floatToHalf(float value) {
-    uint32_t x;
-    std::memcpy(&x, &value, 4);
-    const uint32_t sign = (x >> 16) & 0x8000u;
-    const uint32_t absx = x & 0x7fffffffu;
-    if (absx >= 0x7f800000u) return uint16_t(sign | 0x7c00u | (absx > 0x7f800000u ? 0x200u : 0u));  // inf / nan
-    if (absx >= 0x477ff000u) return uint16_t(sign | 0x7c00u);  // rounds past the largest half
-    if (absx < 0x38800000u) {  // half subnormal or zero
-        if (absx < 0x33000000u) return uint16_t(sign);
-        const uint32_t mant = (absx & 0x7fffffu) | 0x800000u;
-        const uint32_t shift = 126u - (absx >> 23);  // 14..24
-        uint32_t h = mant >> shift;
-        const uint32_t rem = mant & ((1u << shift) - 1u), half = 1u << (shift - 1u);
-        if (rem > half || (rem == half && (h & 1u))) ++h;
-        return uint16_t(sign | h);
-    }
-    uint32_t h = ((absx >> 13) - (112u << 10));
-    const uint32_t rem = absx & 0x1fffu;
-    if (rem > 0x1000u || (rem == 0x1000u && (h & 1u))) ++h;
-    return uint16_t(sign | h);
-}
 
 const char* glErrorName(GLenum e) {
     switch (e) {

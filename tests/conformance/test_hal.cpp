@@ -7,6 +7,7 @@
 #include <functional>
 #include <vector>
 
+#include "sfx/half.hpp"
 #include "sfx/null_device.hpp"
 #include "sfx_shaders.hpp"
 #include "test_device.hpp"
@@ -78,14 +79,6 @@ PipelineHandle fullscreenPipeline(Cleanup& c, const char* programName, Format co
 
 bool renderable(Format f) { return dev().caps().renderableFormat[size_t(f)]; }
 
-float halfToFloat(uint16_t h) {
-    const uint32_t sign = (h >> 15) & 1, exponent = (h >> 10) & 0x1f, mantissa = h & 0x3ff;
-    float v;
-    if (exponent == 0) v = std::ldexp(float(mantissa), -24);
-    else if (exponent == 31) v = mantissa ? NAN : INFINITY;
-    else v = std::ldexp(float(mantissa | 0x400), int(exponent) - 25);
-    return sign ? -v : v;
-}
 
 template <class T>
 std::vector<T> readLevel(TextureHandle t, uint32_t mip = 0) {

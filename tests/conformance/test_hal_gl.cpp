@@ -17,6 +17,7 @@
 #include <EGL/egl.h>
 #include <GL/osmesa.h>
 
+#include "sfx/half.hpp"
 #include "sfx/gl_device.hpp"
 #endif
 
@@ -74,15 +75,6 @@ Status drawFullScreen(Device& dev, PipelineHandle pipeline, TextureHandle target
     return dev.renderPass(pass, std::span<const DrawDesc>(&draw, 1));
 }
 
-// IEEE half to float, for comparing half readbacks.
-float halfToFloat(uint16_t h) {
-    const uint32_t sign = uint32_t(h >> 15) << 31, exp = (h >> 10) & 31u, mant = h & 1023u;
-    float v;
-    if (exp == 0) v = std::ldexp(float(mant), -24);
-    else if (exp == 31) v = mant ? NAN : INFINITY;
-    else v = std::ldexp(float(mant | 1024u), int(exp) - 25);
-    return sign ? -v : v;
-}
 
 // The pattern hal_gltest_pattern writes at texel (x, y).
 std::array<float, 4> pattern(uint32_t x, uint32_t y) {

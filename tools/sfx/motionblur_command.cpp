@@ -5,6 +5,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "sfx/half.hpp"
 #include "sfx/motion_blur.hpp"
 
 namespace sfx::cli {
@@ -29,35 +30,20 @@ struct MotionBlurFlags {
     float exposure = 1.0f;
 };
 
-uint16_t halfBits(float f) {
-    // Round to nearest via the float's top bits; the values are finite colours.
-    uint32_t b;
-    std::memcpy(&b, &f, 4);
-    const uint32_t sign = (b >> 16) & 0x8000u;
-    const float a = std::fabs(f);
-    if (a < 6.103515625e-05f) return uint16_t(sign | uint32_t(std::lround(a * 16777216.0f)));  // subnormal
-    if (a >= 65504.0f) return uint16_t(sign | 0x7bffu);                                        // clamp to max
-    const int exponent = int((b >> 23) & 0xffu) - 127 + 15;
-    uint32_t h = sign | (uint32_t(exponent) << 10) | ((b & 0x7fffffu) >> 13);
-    if ((b & 0x1fffu) > 0x1000u || ((b & 0x1fffu) == 0x1000u && (h & 1u))) ++h;  // ties to even
-    return uint16_t(h);
-}
-float halfToFloat(uint16_t h) {
-    const int exponent = (h >> 10) & 0x1f;
-    const float mantissa = float(h & 0x3ff);
-    const float sign = (h & 0x8000) ? -1.0f : 1.0f;
-    if (exponent == 0) return sign * std::ldexp(mantissa, -24);
-    return sign * std::ldexp(1024.0f + mantissa, exponent - 25);
-}
+// The colour and velocity travel as 16-bit floats: values past the half range would become
+// infinities, so they are refused by name instead of clamped.
+constexpr float kLargestHalf = 65504.0f;
 
 Status checkFinite(const io::Image& image, const std::string& flag, const std::string& path) {
     for (uint32_t y = 0; y < image.height; ++y)
         for (uint32_t x = 0; x < image.width; ++x)
-            for (uint32_t c = 0; c < image.channels; ++c)
-                if (!std::isfinite(image.at(x, y, c)))
+            for (uint32_t c = 0; c < image.channels; ++c) {
+                const float v = image.at(x, y, c);
+                if (!std::isfinite(v) || std::fabs(v) > kLargestHalf)
                     return {StatusCode::InvalidArgument, flag + " " + path + ": pixel (" + std::to_string(x) + ", " +
                                                              std::to_string(y) + ") channel " + std::to_string(c) +
-                                                             " is not finite"};
+                                                             " is " + std::to_string(v) + "; allowed finite values in [-65504, 65504]"};
+            }
     return Status::ok();
 }
 
@@ -118,7 +104,7 @@ Status run(const MotionBlurFlags& f) {
         SFX_TRY(device.writeTexture(colorTex.value(), 0, rgba.data(), rgba.size() * 4));
     } else {
         std::vector<uint16_t> halves(rgba.size());
-        for (size_t i = 0; i < rgba.size(); ++i) halves[i] = halfBits(rgba[i]);
+        for (size_t i = 0; i < rgba.size(); ++i) halves[i] = floatToHalf(rgba[i]);
         SFX_TRY(device.writeTexture(colorTex.value(), 0, halves.data(), halves.size() * 2));
     }
     std::vector<float> vel(size_t(w) * h * 2);
