@@ -92,15 +92,15 @@ int main(int argc, char** argv) {
         return 2;
     }
     std::filesystem::create_directories(o.outDir + "/images");
-    const std::vector<test::AnalyticScene> scenes{test::cornerScene(o.width, o.height), test::sphereOnPlaneScene(o.width, o.height),
-                                                   test::columnsScene(o.width, o.height)};
+    const std::vector<samples::AnalyticScene> scenes{samples::cornerScene(o.width, o.height), samples::sphereOnPlaneScene(o.width, o.height),
+                                                   samples::columnsScene(o.width, o.height)};
     const AoTechnique techniques[] = {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease};
 
     // Converged CPU references: many samples, no blur, no MIP, no clamp.
     std::cout << "bench_ao: converged CPU references (" << o.width << "x" << o.height << ")..." << std::endl;
     std::vector<std::vector<reference::Grid>> converged(3);
     for (int t = 0; t < 3; ++t)
-        for (const test::AnalyticScene& s : scenes) {
+        for (const samples::AnalyticScene& s : scenes) {
             AoSettings st;
             st.technique = techniques[t];
             st.blur = false;
@@ -152,7 +152,7 @@ int main(int argc, char** argv) {
             const double copyMs = copyTime ? copyTime->first : 0.0;
 
             for (size_t si = 0; si < scenes.size(); ++si) {
-                const test::AnalyticScene& s = scenes[si];
+                const samples::AnalyticScene& s = scenes[si];
                 std::vector<float> depth(s.linearDepth.values.begin(), s.linearDepth.values.end());
                 TextureHandle depthTex = d.createTexture({o.width, o.height, 1, Format::R32F, kTextureSampled}).value();
                 (void)d.writeTexture(depthTex, 0, depth.data(), depth.size() * sizeof(float));
