@@ -1,19 +1,27 @@
-// bench_ao: the measured trade of the AO techniques. For each technique x tier x backend on the
-// analytic scenes: GPU cost (median of runs; Vulkan GPU timestamps, GL wall clock after glFinish,
-// labelled), error against the converged CPU reference of the same technique (256 samples, no
-// blur, no MIP, no radius clamp), cost relative to a full-screen copy pass, and cost at several
-// radii. Writes ao_bench.csv, ao_bench_table.md and PNG images. A program, not a test.
-//   bench_ao [--width 320 --height 180 --runs 7 --out-dir docs --backends vulkan,gles]
+// bench_ao: the measured trade of the AO techniques. For each backend x tier x technique on the
+// sample scenes (samples/common/scene.*, rasterised through the HAL, bunny included):
+//   - cost of the whole effect (median of runs, profiling off), labelled GPU timestamps (Vulkan)
+//     or wall clock after glFinish (GL);
+//   - cost of each planned pass (linearize, depth_mip levels, obscurance, blur h, blur v) from
+//     the effect's own profiling, as median ms and as a ratio to one full-screen copy pass of
+//     the same size on the same backend;
+//   - error (RMSE, max) against the converged CPU reference of the same technique (256 samples,
+//     no blur, no MIP, no radius clamp) run on the G-buffer read back from the device;
+//   - on one scene, the cost at several radii (the high tier's depth MIP should keep it flat).
+// Writes ao_bench.csv, ao_bench_table.md and PNG images. A program, not a test.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
+#include <map>
 #include <sstream>
 
-#include "analytic_scenes.hpp"
+#include "scene.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/backends.hpp"
 #include "sfx/image_io.hpp"
@@ -25,42 +33,187 @@ using namespace sfx;
 
 namespace {
 
+const char* kUsage =
+    "usage: bench_ao [--width 320] [--height 180] [--runs 9] [--out-dir docs]\n"
+    "                [--backends vulkan,gles] [--scenes bunny,corner,steps,columns,contact]\n"
+    "                [--radii 0.25,0.5,1,2,4] [--sweep-scene corner] [--image-scenes bunny,corner]\n"
+    "                [--reference-samples 256]\n";
+
 struct Options {
-    uint32_t width = 320, height = 180, runs = 7;
+    uint32_t width = 320, height = 180, runs = 9, referenceSamples = 256;
     std::string outDir = "docs";
     std::vector<std::string> backends{"vulkan", "gles"};
+    std::vector<std::string> scenes{"bunny", "corner", "steps", "columns", "contact"};
+    std::vector<double> radii{0.25, 0.5, 1.0, 2.0, 4.0};
+    std::string sweepScene = "corner";
+    std::vector<std::string> imageScenes{"bunny", "corner"};
 };
+constexpr double kErrorRadius = 0.5;  // the radius the error columns and images use
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> out;
+    std::stringstream ss(text);
+    for (std::string item; std::getline(ss, item, ',');)
+        if (!item.empty()) out.push_back(item);
+    return out;
 }
 
-// Times `record` (which records passes) `runs` times; returns the median in ms and the source.
-template <class Fn>
-Result<std::pair<double, TimingSource>> timeIt(Device& dev, uint32_t runs, Fn record) {
+bool parseOptions(int argc, char** argv, Options* o) {
+    for (int i = 1; i < argc; i += 2) {
+        const std::string k = argv[i];
+        if (k == "--help" || i + 1 >= argc) return false;
+        const std::string v = argv[i + 1];
+        if (k == "--width") o->width = uint32_t(std::stoul(v));
+        else if (k == "--height") o->height = uint32_t(std::stoul(v));
+        else if (k == "--runs") o->runs = std::max(1u, uint32_t(std::stoul(v)));
+        else if (k == "--reference-samples") o->referenceSamples = uint32_t(std::stoul(v));
+        else if (k == "--out-dir") o->outDir = v;
+        else if (k == "--backends") o->backends = splitList(v);
+        else if (k == "--scenes") o->scenes = splitList(v);
+        else if (k == "--image-scenes") o->imageScenes = splitList(v);
+        else if (k == "--sweep-scene") o->sweepScene = v;
+        else if (k == "--radii") {
+            o->radii.clear();
+            for (const std::string& r : splitList(v)) o->radii.push_back(std::stod(r));
+        } else {
+            std::cerr << "bench_ao: unknown flag " << k << "\n";
+            return false;
+        }
+    }
+    return true;
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+bool contains(const std::vector<std::string>& list, const std::string& item) {
+    return std::find(list.begin(), list.end(), item) != list.end();
+}
+
+// Median of `runs` timed recordings (after one warm-up run that compiles pipelines and warms
+// caches), each flushed on its own so a reading covers exactly one recording.
+Result<TimerReading> timeMedian(Device& dev, uint32_t runs, const std::function<Status()>& record) {
     Result<TimerHandle> timer = dev.createTimer();
     if (!timer) return timer.status();
     std::vector<double> ms;
-    TimingSource source = dev.caps().timing;
-    for (uint32_t i = 0; i < runs + 1; ++i) {  // the first run warms caches and compiles pipelines
-        SFX_TRY(dev.beginTimer(timer.value()));
-        SFX_TRY(record());
-        SFX_TRY(dev.endTimer(timer.value()));
-        SFX_TRY(dev.flush());
+    TimerReading last;
+    Status status = Status::ok();
+    for (uint32_t i = 0; i < runs + 1 && status; ++i) {
+        status = dev.beginTimer(timer.value());
+        if (status) status = record();
+        if (status) status = dev.endTimer(timer.value());
+        if (status) status = dev.flush();
+        if (!status) break;
         Result<TimerReading> r = dev.readTimer(timer.value());
-        if (!r) return r.status();
-        source = r->source;
-        if (i > 0) ms.push_back(r->milliseconds);
+        if (!r) status = r.status();
+        else if (i > 0) ms.push_back(r->milliseconds), last = r.value();
     }
     (void)dev.destroyTimer(timer.value());
-    return std::make_pair(median(ms), source);
+    if (!status) return status;
+    last.milliseconds = median(ms);
+    return last;
 }
 
-struct Row {
-    std::string backend, tier, technique, scene, timing;
-    double radius = 0, ms = 0, copyMs = 0, rmse = 0, maxErr = 0;
+// One median per planned pass, from the effect's own profiling (plan() order).
+struct PassCost {
+    std::string name;
+    double ms = 0;
 };
+
+Result<std::vector<PassCost>> profilePasses(Device& dev, AmbientObscurance& ao, const AoInputs& in, uint32_t runs) {
+    SFX_TRY(ao.setProfiling(true));
+    std::vector<std::vector<double>> samples;
+    std::vector<std::string> names;
+    for (uint32_t i = 0; i < runs + 1; ++i) {
+        SFX_TRY(ao.dispatch(in));
+        SFX_TRY(dev.flush());
+        Result<std::vector<PassTiming>> timings = ao.passTimings();
+        if (!timings) return timings.status();
+        if (i == 0) {  // warm-up
+            samples.assign(timings->size(), {});
+            for (const PassTiming& t : timings.value()) names.push_back(t.name);
+            continue;
+        }
+        for (size_t p = 0; p < timings->size(); ++p) samples[p].push_back(timings.value()[p].reading.milliseconds);
+    }
+    SFX_TRY(ao.setProfiling(false));
+    std::vector<PassCost> out;
+    for (size_t p = 0; p < names.size(); ++p) out.push_back({names[p], median(samples[p])});
+    return out;
+}
+
+float halfToFloat(uint16_t h) {
+    const uint32_t sign = (h >> 15) & 1, exponent = (h >> 10) & 31, mantissa = h & 1023;
+    float v;
+    if (exponent == 0) v = std::ldexp(float(mantissa), -24);
+    else if (exponent == 31) v = mantissa ? NAN : INFINITY;
+    else v = std::ldexp(float(mantissa | 1024), int(exponent) - 25);
+    return sign ? -v : v;
+}
+
+// The reference's input from what the device rendered: D32F depth linearised on the CPU by
+// the reference's own formula, normals exactly as the GPU reads them (half floats).
+Result<reference::AoInput> readGBuffer(Device& dev, const samples::GBuffer& g) {
+    const size_t n = size_t(g.width) * g.height;
+    std::vector<float> stored(n);
+    SFX_TRY(dev.readTexture(g.depth, 0, stored.data(), n * sizeof(float)));
+    std::vector<uint16_t> halves(n * 4);
+    SFX_TRY(dev.readTexture(g.normals, 0, halves.data(), halves.size() * sizeof(uint16_t)));
+    Result<DepthReconstruction> rec = makeDepthReconstruction(g.camera, g.width, g.height);
+    if (!rec) return rec.status();
+    reference::AoInput in;
+    in.reconstruction = rec.value();
+    reference::Grid storedGrid(g.width, g.height);
+    for (size_t i = 0; i < n; ++i) storedGrid.values[i] = stored[i];
+    in.linearDepth = reference::linearizeDepth(storedGrid, in.reconstruction);
+    in.normals.resize(n);
+    for (size_t i = 0; i < n; ++i)
+        in.normals[i] = glm::dvec3(halfToFloat(halves[i * 4]), halfToFloat(halves[i * 4 + 1]), halfToFloat(halves[i * 4 + 2]));
+    return in;
+}
+
+// A cheap fingerprint of a G-buffer read-back, so identical renders (the same backend on both
+// tiers) share one converged reference instead of recomputing it.
+uint64_t fingerprint(const reference::AoInput& in) {
+    uint64_t h = 1469598103934665603ull;
+    auto mix = [&](double v) {
+        uint64_t bits;
+        std::memcpy(&bits, &v, sizeof bits);
+        h = (h ^ bits) * 1099511628211ull;
+    };
+    for (double v : in.linearDepth.values) mix(v);
+    for (const glm::dvec3& n : in.normals) mix(n.x), mix(n.y), mix(n.z);
+    return h;
+}
+
+// The same technique, converged: many samples, no blur, no MIP, no radius clamp.
+AoConfig convergedConfig(const AoSettings& settings, uint32_t samples) {
+    AoSettings s = settings;
+    s.blur = false;
+    AoConfig c = resolveAoConfig(s, tiers::profile(Tier::High), 1).value();
+    if (c.technique != AoTechnique::Crease) c.samples = samples;  // Crease's 24-tap pattern is fixed
+    c.depthMipLevels = 1;
+    c.maxRadiusPx = 0;
+    return c;
+}
+
+Result<reference::Grid> readVisibility(Device& dev, TextureHandle texture, Format format, uint32_t w, uint32_t h) {
+    const size_t n = size_t(w) * h;
+    reference::Grid out(w, h);
+    if (format == Format::R32F) {
+        std::vector<float> px(n);
+        SFX_TRY(dev.readTexture(texture, 0, px.data(), px.size() * sizeof(float)));
+        for (size_t i = 0; i < n; ++i) out.values[i] = px[i];
+    } else {
+        std::vector<uint8_t> px(n * 4);
+        SFX_TRY(dev.readTexture(texture, 0, px.data(), px.size()));
+        for (size_t i = 0; i < n; ++i) out.values[i] = px[i * 4] / 255.0;
+    }
+    return out;
+}
 
 io::Image toImage(const reference::Grid& g) {
     io::Image im(g.width, g.height, 1);
@@ -68,175 +221,317 @@ io::Image toImage(const reference::Grid& g) {
     return im;
 }
 
+struct Row {
+    std::string backend, tier, technique, scene, timing;
+    double radius = 0;
+    double totalMs = 0;            // whole effect, profiling off
+    std::vector<PassCost> passes;  // per pass, profiling on
+    double copyMs = 0;
+    bool hasError = false;
+    double rmse = 0, maxErr = 0;
+};
+
+double ratio(double ms, double copyMs) { return copyMs > 0 ? ms / copyMs : 0.0; }
+
+// The copy baseline: one full-screen pass reading a texture of the AO output's format.
+struct CopyPass {
+    explicit CopyPass(Device& device) : dev(device) {}
+    CopyPass(const CopyPass&) = delete;
+    CopyPass& operator=(const CopyPass&) = delete;
+    Device& dev;
+    TextureHandle src, dst;
+    ProgramHandle program;
+    PipelineHandle pipeline;
+    Status record() {
+        RenderPassDesc rp;
+        rp.colors = {ColorAttachment{dst, 0, LoadOp::DontCare, {}}};
+        rp.debugName = "bench-copy";
+        DrawDesc dr;
+        dr.pipeline = pipeline;
+        dr.bindings.textures = {TextureBinding{gen::copy::uSource, src, 0, 1, {}}};
+        return dev.renderPass(rp, std::span<const DrawDesc>(&dr, 1));
+    }
+    ~CopyPass() {
+        if (!pipeline.isNull()) (void)dev.destroyPipeline(pipeline);
+        if (!program.isNull()) (void)dev.destroyProgram(program);
+        for (TextureHandle t : {src, dst})
+            if (!t.isNull()) (void)dev.destroyTexture(t);
+    }
+};
+
+Result<std::unique_ptr<CopyPass>> makeCopyPass(Device& dev, Tier tier, uint32_t w, uint32_t h, Format format) {
+    auto copy = std::make_unique<CopyPass>(dev);
+    Result<TextureHandle> src = dev.createTexture({w, h, 1, format, kTextureSampled | kTextureRenderTarget, "bench-copy-src"});
+    if (!src) return src.status();
+    copy->src = src.value();
+    Result<TextureHandle> dst = dev.createTexture({w, h, 1, format, kTextureSampled | kTextureRenderTarget, "bench-copy-dst"});
+    if (!dst) return dst.status();
+    copy->dst = dst.value();
+    Result<const CompiledProgram*> compiled = shaders::find(gen::copy::kName, tier);
+    if (!compiled) return compiled.status();
+    Result<ProgramHandle> program = dev.createProgram(*compiled.value());
+    if (!program) return program.status();
+    copy->program = program.value();
+    GraphicsPipelineDesc pd;
+    pd.program = copy->program;
+    pd.colorFormats = {format};
+    Result<PipelineHandle> pipeline = dev.createGraphicsPipeline(pd);
+    if (!pipeline) return pipeline.status();
+    copy->pipeline = pipeline.value();
+    return copy;
+}
+
+void printRow(const Row& r) {
+    std::printf("  %-6s %-7s %-8s %-7s r=%-4.2f  %7.3f ms = x%-6.1f", r.backend.c_str(), r.tier.c_str(), r.technique.c_str(),
+                r.scene.c_str(), r.radius, r.totalMs, ratio(r.totalMs, r.copyMs));
+    if (r.hasError) std::printf("  rmse %.4f max %.3f", r.rmse, r.maxErr);
+    std::printf("  |");
+    for (const PassCost& p : r.passes) std::printf(" %s %.2f", p.name.c_str(), p.ms);
+    std::printf("\n");
+    std::fflush(stdout);
+}
+
+// Table cell "ms (x copy)".
+std::string cell(double ms, double copyMs) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.2f (%.1f)", ms, ratio(ms, copyMs));
+    return buf;
+}
+
+double passMs(const Row& r, const std::string& prefix) {
+    double sum = 0;
+    for (const PassCost& p : r.passes)
+        if (p.name.rfind(prefix, 0) == 0) sum += p.ms;
+    return sum;
+}
+
+void writeOutputs(const Options& o, const std::vector<Row>& rows, const std::string& machine) {
+    std::ofstream csv(o.outDir + "/ao_bench.csv");
+    // Long format: one line for the whole effect (pass "total", profiling off) and one per
+    // planned pass (profiling on) of every configuration.
+    csv << "backend,tier,technique,scene,radius,timing,pass,ms,copy_ms,ratio_to_copy,rmse,max_error\n";
+    for (const Row& r : rows) {
+        auto line = [&](const std::string& pass, double ms, bool error) {
+            csv << r.backend << "," << r.tier << "," << r.technique << "," << r.scene << "," << r.radius << "," << r.timing << ","
+                << pass << "," << ms << "," << r.copyMs << "," << ratio(ms, r.copyMs) << ",";
+            if (error) csv << r.rmse << "," << r.maxErr;
+            else csv << ",";
+            csv << "\n";
+        };
+        line("total", r.totalMs, r.hasError);
+        for (const PassCost& p : r.passes) line(p.name, p.ms, false);
+    }
+
+    std::ofstream md(o.outDir + "/ao_bench_table.md");
+    md << "Machine: " << machine << "; " << o.width << "x" << o.height << ", median of " << o.runs << " runs.\n\n";
+    md << "Whole effect (profiling off) and error against the converged reference, radius " << kErrorRadius << ":\n\n";
+    md << "| backend | tier | technique | scene | timing | ms (x copy) | RMSE | max err |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    for (const Row& r : rows) {
+        if (!r.hasError) continue;
+        char line[512];
+        std::snprintf(line, sizeof line, "| %s | %s | %s | %s | %s | %s | %.4f | %.3f |\n", r.backend.c_str(), r.tier.c_str(),
+                      r.technique.c_str(), r.scene.c_str(), r.timing.c_str(), cell(r.totalMs, r.copyMs).c_str(), r.rmse, r.maxErr);
+        md << line;
+    }
+    const std::string passScene = contains(o.scenes, "bunny") ? "bunny" : o.scenes.front();
+    md << "\nPer pass (profiling on), scene " << passScene << ", radius " << kErrorRadius
+       << "; ms (x copy); depth_mip is the sum of its levels (each in the CSV):\n\n";
+    md << "| backend | tier | technique | copy ms | linearize | depth_mip | obscurance | blur h | blur v | sum of passes | whole effect |\n";
+    md << "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    for (const Row& r : rows) {
+        if (!r.hasError || r.scene != passScene) continue;
+        double sum = 0;
+        for (const PassCost& p : r.passes) sum += p.ms;
+        const double mip = passMs(r, "depth_mip");
+        char line[768];
+        std::snprintf(line, sizeof line, "| %s | %s | %s | %.3f | %s | %s | %s | %s | %s | %s | %s |\n", r.backend.c_str(), r.tier.c_str(),
+                      r.technique.c_str(), r.copyMs, cell(passMs(r, "linearize"), r.copyMs).c_str(),
+                      mip > 0 ? cell(mip, r.copyMs).c_str() : "-", cell(passMs(r, "obscurance"), r.copyMs).c_str(),
+                      cell(passMs(r, "bilateral blur h"), r.copyMs).c_str(), cell(passMs(r, "bilateral blur v"), r.copyMs).c_str(),
+                      cell(sum, r.copyMs).c_str(), cell(r.totalMs, r.copyMs).c_str());
+        md << line;
+    }
+    md << "\nRadius sweep, scene " << o.sweepScene << ": obscurance pass ms (x copy) / whole effect ms:\n\n| backend | tier | technique |";
+    for (double radius : o.radii) md << " r = " << radius << " |";
+    md << "\n| --- | --- | --- |";
+    for (size_t i = 0; i < o.radii.size(); ++i) md << " --- |";
+    md << "\n";
+    std::map<std::string, std::map<double, const Row*>> sweep;  // "backend|tier|technique" -> radius -> row
+    std::vector<std::string> order;
+    for (const Row& r : rows) {
+        if (r.scene != o.sweepScene) continue;
+        const std::string key = r.backend + " | " + r.tier + " | " + r.technique;
+        if (!sweep.count(key)) order.push_back(key);
+        sweep[key][r.radius] = &r;
+    }
+    for (const std::string& key : order) {
+        md << "| " << key << " |";
+        for (double radius : o.radii) {
+            const auto it = sweep[key].find(radius);
+            if (it == sweep[key].end()) {
+                md << " - |";
+                continue;
+            }
+            char buf[96];
+            std::snprintf(buf, sizeof buf, " %s / %.2f |", cell(passMs(*it->second, "obscurance"), it->second->copyMs).c_str(),
+                          it->second->totalMs);
+            md << buf;
+        }
+        md << "\n";
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     Options o;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string k = argv[i], v = argv[i + 1];
-        if (k == "--width") o.width = uint32_t(std::stoul(v));
-        else if (k == "--height") o.height = uint32_t(std::stoul(v));
-        else if (k == "--runs") o.runs = uint32_t(std::stoul(v));
-        else if (k == "--out-dir") o.outDir = v;
-        else if (k == "--backends") {
-            o.backends.clear();
-            std::stringstream ss(v);
-            for (std::string b; std::getline(ss, b, ',');) o.backends.push_back(b);
-        } else {
-            std::cerr << "bench_ao: unknown flag " << k << "\n";
-            return 2;
-        }
-    }
-    if (argc % 2 == 0) {
-        std::cerr << "usage: bench_ao [--width N --height N --runs N --out-dir DIR --backends vulkan,gles]\n";
+    if (!parseOptions(argc, argv, &o) || o.scenes.empty()) {
+        std::cerr << kUsage;
         return 2;
     }
+    const auto started = std::chrono::steady_clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
     std::filesystem::create_directories(o.outDir + "/images");
-    const std::vector<test::AnalyticScene> scenes{test::cornerScene(o.width, o.height), test::sphereOnPlaneScene(o.width, o.height),
-                                                   test::columnsScene(o.width, o.height)};
-    const AoTechnique techniques[] = {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease};
-
-    // Converged CPU references: many samples, no blur, no MIP, no clamp.
-    std::cout << "bench_ao: converged CPU references (" << o.width << "x" << o.height << ")..." << std::endl;
-    std::vector<std::vector<reference::Grid>> converged(3);
-    for (int t = 0; t < 3; ++t)
-        for (const test::AnalyticScene& s : scenes) {
-            AoSettings st;
-            st.technique = techniques[t];
-            st.blur = false;
-            AoConfig c = resolveAoConfig(st, tiers::profile(Tier::High), 1).value();
-            if (c.technique != AoTechnique::Crease) c.samples = 256;
-            c.depthMipLevels = 1;
-            c.maxRadiusPx = 0;
-            converged[size_t(t)].push_back(reference::ambientVisibility(s.aoInput(false), c));
-            std::cout << "  " << toString(techniques[t]) << " / " << s.name << std::endl;
+    std::vector<samples::Scene> scenes;
+    for (const std::string& name : o.scenes) {
+        Result<samples::Scene> scene = samples::makeScene(name);
+        if (!scene) {
+            std::cerr << "bench_ao: scene " << name << ": " << scene.status().toString() << "\n";
+            return 1;
         }
+        scenes.push_back(std::move(scene.value()));
+    }
+    const AoTechnique techniques[] = {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease};
+    std::cout << "bench_ao: " << o.width << "x" << o.height << ", " << o.runs << " runs, scenes";
+    for (const std::string& s : o.scenes) std::cout << " " << s;
+    std::cout << "; backends";
+    for (const std::string& b : o.backends) std::cout << " " << b;
+    std::cout << std::endl;
 
+    std::map<std::pair<uint64_t, int>, reference::Grid> converged;  // (G-buffer fingerprint, technique)
     std::vector<Row> rows;
+    std::string machine;
     for (const std::string& backendName : o.backends)
         for (Tier tier : {Tier::High, Tier::Current}) {
             BackendConfig bc;
-            if (!parseBackendConfig(backendName, &bc)) continue;
-            DeviceOptions dopt;
-            dopt.validation = false;
-            dopt.ceiling = tier == Tier::Current ? CapabilityCeiling::GLES30 : CapabilityCeiling::None;
-            Result<std::unique_ptr<Device>> dev = openDevice(bc, dopt);
-            if (!dev) {
-                std::cout << "bench_ao: skipping " << backendName << ": " << dev.status().toString() << std::endl;
+            if (!parseBackendConfig(backendName, &bc)) {
+                std::cout << "bench_ao: unknown backend " << backendName << std::endl;
                 continue;
             }
-            Device& d = *dev.value();
-            Result<tiers::TierChoice> choice = tiers::choose(d.caps(), tier);
+            DeviceOptions dopt;
+            dopt.validation = false;  // validation would be timed too
+            dopt.ceiling = tier == Tier::Current ? CapabilityCeiling::GLES30 : CapabilityCeiling::None;
+            Result<std::unique_ptr<Device>> opened = openDevice(bc, dopt);
+            if (!opened) {
+                std::cout << "bench_ao: skipping " << backendName << ": " << opened.status().toString() << std::endl;
+                continue;
+            }
+            Device& dev = *opened.value();
+            Result<tiers::TierChoice> choice = tiers::choose(dev.caps(), tier);
             if (!choice) {
                 std::cout << "bench_ao: skipping " << backendName << "/" << toString(tier) << ": " << choice.status().toString() << std::endl;
                 continue;
             }
-            const Format outFormat = d.caps().renderableFormat[size_t(Format::R32F)] ? Format::R32F : Format::RGBA8;
-            // The copy baseline: one full-screen pass reading a texture of the output's format.
-            TextureHandle copySrc = d.createTexture({o.width, o.height, 1, outFormat, kTextureSampled | kTextureRenderTarget}).value();
-            TextureHandle copyDst = d.createTexture({o.width, o.height, 1, outFormat, kTextureSampled | kTextureRenderTarget}).value();
-            ProgramHandle copyProgram = d.createProgram(*shaders::find(gen::copy::kName, tier).value()).value();
-            GraphicsPipelineDesc pd;
-            pd.program = copyProgram;
-            pd.colorFormats = {outFormat};
-            PipelineHandle copyPipeline = d.createGraphicsPipeline(pd).value();
-            auto copyPass = [&]() -> Status {
-                RenderPassDesc rp;
-                rp.colors = {ColorAttachment{copyDst, 0, LoadOp::DontCare, {}}};
-                DrawDesc dr;
-                dr.pipeline = copyPipeline;
-                dr.bindings.textures = {TextureBinding{gen::copy::uSource, copySrc, 0, 1, {}}};
-                return d.renderPass(rp, std::span<const DrawDesc>(&dr, 1));
-            };
-            auto copyTime = timeIt(d, o.runs, copyPass);
-            const double copyMs = copyTime ? copyTime->first : 0.0;
+            if (machine.empty()) machine = dev.caps().deviceName;
+            std::cout << "[" << elapsed() << " s] " << dev.caps().summary() << std::endl;
+            Result<std::unique_ptr<samples::SceneRenderer>> renderer = samples::SceneRenderer::create(dev, tier);
+            if (!renderer) {
+                std::cout << "bench_ao: scene renderer: " << renderer.status().toString() << std::endl;
+                continue;
+            }
+            const Format outFormat = dev.caps().renderableFormat[size_t(Format::R32F)] ? Format::R32F : Format::RGBA8;
+            Result<std::unique_ptr<CopyPass>> copy = makeCopyPass(dev, tier, o.width, o.height, outFormat);
+            if (!copy) {
+                std::cout << "bench_ao: copy pass: " << copy.status().toString() << std::endl;
+                continue;
+            }
+            // The copy is every ratio's denominator and costs little: give it more runs.
+            Result<TimerReading> copyTime = timeMedian(dev, 4 * o.runs, [&] { return copy.value()->record(); });
+            const double copyMs = copyTime ? copyTime->milliseconds : 0.0;
+            std::cout << "  copy pass " << copyMs << " ms (" << toString(dev.caps().timing) << ")" << std::endl;
+            Result<TextureHandle> outTex = dev.createTexture({o.width, o.height, 1, outFormat, kTextureSampled | kTextureRenderTarget, "bench-ao-out"});
+            if (!outTex) {
+                std::cout << "bench_ao: output: " << outTex.status().toString() << std::endl;
+                continue;
+            }
 
-            for (size_t si = 0; si < scenes.size(); ++si) {
-                const test::AnalyticScene& s = scenes[si];
-                std::vector<float> depth(s.linearDepth.values.begin(), s.linearDepth.values.end());
-                TextureHandle depthTex = d.createTexture({o.width, o.height, 1, Format::R32F, kTextureSampled}).value();
-                (void)d.writeTexture(depthTex, 0, depth.data(), depth.size() * sizeof(float));
-                TextureHandle outTex = d.createTexture({o.width, o.height, 1, outFormat, kTextureSampled | kTextureRenderTarget}).value();
+            for (const samples::Scene& scene : scenes) {
+                Status loaded = renderer.value()->load(scene);
+                Result<samples::GBuffer> g = loaded ? renderer.value()->render(scene, o.width, o.height) : Result<samples::GBuffer>(loaded);
+                if (!g) {
+                    std::cout << "  " << scene.name << ": " << g.status().toString() << std::endl;
+                    continue;
+                }
+                Result<reference::AoInput> refInput = readGBuffer(dev, g.value());
+                if (!refInput) {
+                    std::cout << "  " << scene.name << ": G-buffer read-back: " << refInput.status().toString() << std::endl;
+                    renderer.value()->destroy(g.value());
+                    continue;
+                }
+                const uint64_t print = fingerprint(refInput.value());
                 for (int t = 0; t < 3; ++t) {
-                    const std::vector<double> radii = si == 0 ? std::vector<double>{0.25, 0.5, 1.0, 2.0} : std::vector<double>{0.5};
+                    AoSettings settings;
+                    settings.technique = techniques[t];
+                    settings.normals = AoNormals::FromTexture;  // the G-buffer's normals, as a deferred renderer would
+                    const bool sweep = scene.name == o.sweepScene;
+                    std::vector<double> radii{kErrorRadius};
+                    if (sweep)
+                        for (double r : o.radii)
+                            if (r != kErrorRadius) radii.push_back(r);
+                    std::sort(radii.begin(), radii.end());
                     for (double radius : radii) {
-                        AoSettings st;
-                        st.technique = techniques[t];
-                        st.radius = float(radius);
-                        auto ao = AmbientObscurance::create(d, {o.width, o.height, choice->profile, st});
+                        settings.radius = float(radius);
+                        Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev, {o.width, o.height, choice->profile, settings});
                         if (!ao) {
                             std::cout << "  error: " << ao.status().toString() << std::endl;
                             continue;
                         }
-                        AoInputs in;
-                        in.depth = DepthSource{depthTex, DepthKind::Linear, s.camera};
-                        in.output = outTex;
-                        auto time = timeIt(d, o.runs, [&] { return ao.value()->dispatch(in); });
-                        if (!time) {
-                            std::cout << "  error: " << time.status().toString() << std::endl;
+                        const AoInputs in{DepthSource{g->depth, DepthKind::Hardware, g->camera}, g->normals, outTex.value()};
+                        Result<TimerReading> total = timeMedian(dev, o.runs, [&] { return ao.value()->dispatch(in); });
+                        Result<std::vector<PassCost>> passes = total ? profilePasses(dev, *ao.value(), in, o.runs)
+                                                                     : Result<std::vector<PassCost>>(total.status());
+                        if (!passes) {
+                            std::cout << "  error: " << passes.status().toString() << std::endl;
                             continue;
                         }
-                        Row r{backendName, toString(tier), toString(techniques[t]), s.name, toString(time->second), radius, time->first, copyMs};
-                        if (radius == 0.5) {
-                            reference::Grid gpu(o.width, o.height);
-                            const size_t n = size_t(o.width) * o.height;
-                            if (outFormat == Format::R32F) {
-                                std::vector<float> px(n);
-                                (void)d.readTexture(outTex, 0, px.data(), px.size() * 4);
-                                for (size_t i = 0; i < n; ++i) gpu.values[i] = px[i];
-                            } else {
-                                std::vector<uint8_t> px(n * 4);
-                                (void)d.readTexture(outTex, 0, px.data(), px.size());
-                                for (size_t i = 0; i < n; ++i) gpu.values[i] = px[i * 4] / 255.0;
+                        Row r{backendName, toString(tier), toString(techniques[t]), scene.name, toString(total->source), radius,
+                              total->milliseconds, passes.value(), copyMs};
+                        if (radius == kErrorRadius) {
+                            // The last profiled dispatch left its output: identical to an unprofiled one (conformance).
+                            Result<reference::Grid> gpu = readVisibility(dev, outTex.value(), outFormat, o.width, o.height);
+                            if (!gpu) {
+                                std::cout << "  error: " << gpu.status().toString() << std::endl;
+                                continue;
                             }
-                            const reference::Grid& ref = converged[size_t(t)][si];
+                            const auto key = std::make_pair(print, t);
+                            if (!converged.count(key))
+                                converged[key] = reference::ambientVisibility(refInput.value(), convergedConfig(settings, o.referenceSamples));
+                            const reference::Grid& ref = converged[key];
                             double sq = 0;
-                            for (size_t i = 0; i < n; ++i) {
-                                const double e = std::abs(gpu.values[i] - ref.values[i]);
+                            for (size_t i = 0; i < ref.values.size(); ++i) {
+                                const double e = std::abs(gpu->values[i] - ref.values[i]);
                                 sq += e * e;
                                 r.maxErr = std::max(r.maxErr, e);
                             }
-                            r.rmse = std::sqrt(sq / double(n));
-                            const std::string img = o.outDir + "/images/ao_" + r.technique + "_" + r.tier + "_" + s.name + ".png";
-                            if (backendName == o.backends.front()) (void)io::writePng(img, toImage(gpu));
+                            r.rmse = std::sqrt(sq / double(ref.values.size()));
+                            r.hasError = true;
+                            // Images from the first backend only: the backends agree (cross-backend tests).
+                            if (backendName == o.backends.front() && contains(o.imageScenes, scene.name)) {
+                                const std::string base = o.outDir + "/images/ao_" + r.technique + "_";
+                                (void)io::writePng(base + r.tier + "_" + scene.name + ".png", toImage(gpu.value()));
+                                if (tier == Tier::High) (void)io::writePng(base + "reference_" + scene.name + ".png", toImage(ref));
+                            }
                         }
-                        std::printf("  %-7s %-8s %-9s %-8s r=%-5.2f %8.3f ms (%s)  copy %.3f ms  x%.1f  rmse %.4f max %.3f\n",
-                                    r.backend.c_str(), r.tier.c_str(), r.technique.c_str(), r.scene.c_str(), radius, r.ms,
-                                    r.timing.c_str(), copyMs, copyMs > 0 ? r.ms / copyMs : 0.0, r.rmse, r.maxErr);
-                        std::fflush(stdout);
-                        rows.push_back(r);
+                        printRow(r);
+                        rows.push_back(std::move(r));
                     }
                 }
-                (void)d.destroyTexture(depthTex);
-                (void)d.destroyTexture(outTex);
+                renderer.value()->destroy(g.value());
             }
-            (void)d.destroyPipeline(copyPipeline);
-            (void)d.destroyProgram(copyProgram);
-            (void)d.destroyTexture(copySrc);
-            (void)d.destroyTexture(copyDst);
+            (void)dev.destroyTexture(outTex.value());
         }
-    for (int t = 0; t < 3; ++t)
-        for (size_t si = 0; si < scenes.size(); ++si)
-            (void)io::writePng(o.outDir + "/images/ao_" + std::string(toString(techniques[t])) + "_reference_" + scenes[si].name + ".png",
-                               toImage(converged[size_t(t)][si]));
-
-    std::ofstream csv(o.outDir + "/ao_bench.csv");
-    csv << "backend,tier,technique,scene,radius,ms,timing,copy_ms,ratio_to_copy,rmse,max_error\n";
-    std::ofstream md(o.outDir + "/ao_bench_table.md");
-    md << "| backend | tier | technique | scene | radius | ms (median) | timing | x copy | RMSE | max err |\n";
-    md << "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
-    for (const Row& r : rows) {
-        const double ratio = r.copyMs > 0 ? r.ms / r.copyMs : 0.0;
-        csv << r.backend << "," << r.tier << "," << r.technique << "," << r.scene << "," << r.radius << "," << r.ms << "," << r.timing
-            << "," << r.copyMs << "," << ratio << "," << (r.radius == 0.5 ? std::to_string(r.rmse) : "") << ","
-            << (r.radius == 0.5 ? std::to_string(r.maxErr) : "") << "\n";
-        char line[512];
-        std::snprintf(line, sizeof line, "| %s | %s | %s | %s | %.2f | %.3f | %s | %.1f | %s | %s |\n", r.backend.c_str(), r.tier.c_str(),
-                      r.technique.c_str(), r.scene.c_str(), r.radius, r.ms, r.timing.c_str(), ratio,
-                      r.radius == 0.5 ? std::to_string(r.rmse).substr(0, 6).c_str() : "-",
-                      r.radius == 0.5 ? std::to_string(r.maxErr).substr(0, 5).c_str() : "-");
-        md << line;
-    }
-    std::cout << "bench_ao: wrote " << o.outDir << "/ao_bench.csv, ao_bench_table.md and images/ao_*.png (" << rows.size() << " rows)\n";
-    return 0;
+    writeOutputs(o, rows, machine.empty() ? "unknown" : machine);
+    std::cout << "bench_ao: wrote " << o.outDir << "/ao_bench.csv, ao_bench_table.md and images/ao_*.png (" << rows.size()
+              << " configurations) in " << elapsed() << " s" << std::endl;
+    return rows.empty() ? 1 : 0;
 }

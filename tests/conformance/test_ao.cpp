@@ -31,7 +31,7 @@ Format pickFormat(std::initializer_list<Format> wanted, bool renderable) {
     return Format::RGBA8;
 }
 
-GpuAo runAo(const test::AnalyticScene& scene, const AoSettings& settings) {
+GpuAo runAo(const samples::AnalyticScene& scene, const AoSettings& settings) {
     Device& dev = test::device();
     AoDesc desc{scene.width, scene.height, test::tierProfile(), settings};
     Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev, desc);
@@ -116,8 +116,8 @@ TEST_CASE("ao: each technique matches its CPU reference", "[ao]") {
     for (AoTechnique t : kTechniques)
         for (bool blur : {false, true})
             for (bool gbuffer : {false, true})
-                for (auto make : {&test::cornerScene, &test::sphereOnPlaneScene, &test::columnsScene}) {
-                    const test::AnalyticScene scene = make(96, 64, 1.0);
+                for (auto make : {&samples::cornerScene, &samples::sphereOnPlaneScene, &samples::columnsScene}) {
+                    const samples::AnalyticScene scene = make(96, 64, 1.0);
                     AoSettings s = settingsFor(t);
                     s.blur = blur;
                     s.normals = gbuffer ? AoNormals::FromTexture : AoNormals::FromDepth;
@@ -151,14 +151,14 @@ TEST_CASE("ao: analytic properties hold on the GPU", "[ao]") {
     const std::vector<double> creaseEdges{0.0, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.6, 0.9};
     for (AoTechnique t : kTechniques) {
         INFO(test::label() << " " << toString(t));
-        const GpuAo plane = runAo(test::facingPlaneScene(96, 64), settingsFor(t));
+        const GpuAo plane = runAo(samples::facingPlaneScene(96, 64), settingsFor(t));
         for (double v : plane.visibility.values) REQUIRE(v > 0.99);
-        const GpuAo corner = runAo(test::cornerScene(160, 120), settingsFor(t));
-        const auto bins = test::occlusionBins(test::cornerScene(160, 120), corner.visibility, 1.0, creaseEdges,
-                                              test::onCornerPlaneA, test::distanceToCrease);
+        const GpuAo corner = runAo(samples::cornerScene(160, 120), settingsFor(t));
+        const auto bins = samples::occlusionBins(samples::cornerScene(160, 120), corner.visibility, 1.0, creaseEdges,
+                                              samples::onCornerPlaneA, samples::distanceToCrease);
         for (size_t i = 0; i + 1 < bins.size(); ++i) CHECK(bins[i] >= bins[i + 1] - 0.025);
         CHECK(bins.front() > bins.back() + 0.01);
-        const GpuAo scaled = runAo(test::cornerScene(160, 120, 10.0), settingsFor(t, 10.0));
+        const GpuAo scaled = runAo(samples::cornerScene(160, 120, 10.0), settingsFor(t, 10.0));
         double meanAbs = 0;
         for (size_t i = 0; i < scaled.visibility.values.size(); ++i)
             meanAbs += std::abs(scaled.visibility.values[i] - corner.visibility.values[i]);
@@ -185,6 +185,69 @@ TEST_CASE("ao: plan holds a depth MIP only for high-tier Scalable, blur targets 
             CHECK(blurPass == blur);
             CHECK(plan.bytesOf("ao") > 0);
         }
+}
+
+TEST_CASE("ao: profiling times exactly the planned passes and leaves the output unchanged", "[ao][profiling]") {
+    Device& dev = test::device();
+    const samples::AnalyticScene scene = samples::sphereOnPlaneScene(64, 48);
+    std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
+    TextureHandle depthTex = dev.createTexture({scene.width, scene.height, 1, Format::R32F, kTextureSampled, "ao-profile-depth"}).value();
+    SFX_REQUIRE_OK(dev.writeTexture(depthTex, 0, depth.data(), depth.size() * sizeof(float)));
+    // RGBA8 is renderable everywhere; the comparison is bitwise, so any format would do.
+    TextureHandle outTex =
+        dev.createTexture({scene.width, scene.height, 1, Format::RGBA8, kTextureSampled | kTextureRenderTarget, "ao-profile-out"}).value();
+    AoInputs in;
+    in.depth = DepthSource{depthTex, DepthKind::Linear, scene.camera};
+    in.output = outTex;
+    auto runOnce = [&](AmbientObscurance& ao) {
+        SFX_REQUIRE_OK(ao.dispatch(in));
+        SFX_REQUIRE_OK(dev.flush());
+        std::vector<uint8_t> px(size_t(scene.width) * scene.height * 4);
+        SFX_REQUIRE_OK(dev.readTexture(outTex, 0, px.data(), px.size()));
+        return px;
+    };
+    for (AoTechnique t : kTechniques)
+        for (bool blur : {false, true}) {
+            INFO(test::label() << " " << toString(t) << (blur ? " blur" : ""));
+            AoSettings s = settingsFor(t);
+            s.blur = blur;
+            auto created = AmbientObscurance::create(dev, {scene.width, scene.height, test::tierProfile(), s});
+            REQUIRE(created.isOk());
+            AmbientObscurance& ao = *created.value();
+            CHECK_FALSE(ao.profiling());
+            CHECK(ao.passTimings().status().code() == StatusCode::InvalidArgument);
+            const std::vector<uint8_t> plain = runOnce(ao);
+
+            SFX_REQUIRE_OK(ao.setProfiling(true));
+            CHECK(ao.passTimings().status().code() == StatusCode::InvalidArgument);  // nothing flushed yet
+            const std::vector<uint8_t> profiled = runOnce(ao);
+            CHECK(profiled == plain);
+            Result<std::vector<PassTiming>> timings = ao.passTimings();
+            INFO(timings.status().toString());
+            REQUIRE(timings.isOk());
+            const Plan plan = ao.plan();
+            REQUIRE(timings->size() == plan.passes.size());
+            for (size_t i = 0; i < plan.passes.size(); ++i) {
+                CHECK(timings.value()[i].effect == plan.passes[i].effect);
+                CHECK(timings.value()[i].name == plan.passes[i].name);
+                CHECK(timings.value()[i].reading.milliseconds >= 0.0);
+                CHECK(timings.value()[i].reading.source == dev.caps().timing);
+            }
+
+            // Timers follow the pass list when settings change what runs, and go with profiling off.
+            AoSettings other = s;
+            other.blur = !blur;
+            SFX_REQUIRE_OK(ao.setSettings(other));
+            CHECK(ao.profiling());
+            (void)runOnce(ao);
+            timings = ao.passTimings();
+            REQUIRE(timings.isOk());
+            CHECK(timings->size() == ao.plan().passes.size());
+            SFX_REQUIRE_OK(ao.setProfiling(false));
+            CHECK(ao.passTimings().status().code() == StatusCode::InvalidArgument);
+        }
+    for (TextureHandle t : {depthTex, outTex}) SFX_REQUIRE_OK(dev.destroyTexture(t));
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
 TEST_CASE("ao: bad inputs are named errors", "[ao][bad-input]") {

@@ -126,11 +126,11 @@ TEST_CASE("ao shared patterns: the crease diamond is 24 distinct stippled taps",
 }
 
 TEST_CASE("ao normals from depth: exact on planes, close on spheres, no differencing across edges", "[ao]") {
-    for (const test::AnalyticScene& s : {test::tiltedPlaneScene(64, 48), test::facingPlaneScene(64, 48)}) {
+    for (const samples::AnalyticScene& s : {samples::tiltedPlaneScene(64, 48), samples::facingPlaneScene(64, 48)}) {
         const auto n = reference::normalsFromDepth(s.linearDepth, s.reconstruction);
         for (size_t i = 0; i < n.size(); ++i) REQUIRE(glm::dot(n[i], s.normals[i]) > 1.0 - 1e-9);
     }
-    const test::AnalyticScene s = test::sphereOnPlaneScene(128, 96);
+    const samples::AnalyticScene s = samples::sphereOnPlaneScene(128, 96);
     const auto n = reference::normalsFromDepth(s.linearDepth, s.reconstruction);
     int bad = 0, edgePixels = 0;
     for (uint32_t y = 0; y < s.height; ++y)
@@ -152,11 +152,11 @@ TEST_CASE("ao reference: an open plane is unoccluded", "[ao]") {
         for (Tier tier : kTiers)
             for (bool gbufferNormals : {false, true}) {
                 INFO(name(t, tier) << (gbufferNormals ? " gbuffer normals" : " derived normals"));
-                const test::AnalyticScene facing = test::facingPlaneScene(64, 48);
+                const samples::AnalyticScene facing = samples::facingPlaneScene(64, 48);
                 const Grid v = reference::ambientVisibility(facing.aoInput(gbufferNormals), configFor(t, tier));
                 requireValid(v);
                 for (double x : v.values) REQUIRE(x > 1.0 - 1e-9);
-                const test::AnalyticScene tilted = test::tiltedPlaneScene(64, 48);
+                const samples::AnalyticScene tilted = samples::tiltedPlaneScene(64, 48);
                 const Grid w = reference::ambientVisibility(tilted.aoInput(gbufferNormals), configFor(t, tier));
                 requireValid(w);
                 for (double x : w.values) REQUIRE(x > 0.999);
@@ -172,20 +172,20 @@ TEST_CASE("ao reference: occlusion grows monotonically toward a crease and a con
                 INFO(name(t, tier) << (blur ? " blur" : " no blur"));
                 // Bins average 100+ pixels; unblurred, the few rotated taps still leave ~0.03 of noise.
                 const double tol = blur ? 0.02 : 0.04;
-                const test::AnalyticScene corner = test::cornerScene(160, 120);
+                const samples::AnalyticScene corner = samples::cornerScene(160, 120);
                 const Grid vc = reference::ambientVisibility(corner.aoInput(false), configFor(t, tier, 1.0, blur));
                 requireValid(vc);
-                const auto bc = test::occlusionBins(corner, vc, 1.0, creaseEdges, test::onCornerPlaneA, test::distanceToCrease);
+                const auto bc = samples::occlusionBins(corner, vc, 1.0, creaseEdges, samples::onCornerPlaneA, samples::distanceToCrease);
                 for (size_t i = 0; i + 1 < bc.size(); ++i) {
                     INFO("crease bin " << i << ": " << bc[i] << " then " << bc[i + 1]);
                     REQUIRE(bc[i] >= 0);
                     CHECK(bc[i] >= bc[i + 1] - tol);
                 }
                 CHECK(bc.front() > bc.back() + 0.01);
-                const test::AnalyticScene contact = test::sphereOnPlaneScene(160, 120);
+                const samples::AnalyticScene contact = samples::sphereOnPlaneScene(160, 120);
                 const Grid vs = reference::ambientVisibility(contact.aoInput(false), configFor(t, tier, 1.0, blur, 1.0));
                 requireValid(vs);
-                const auto bs = test::occlusionBins(contact, vs, 1.0, contactEdges, test::onContactFloor, test::distanceToContact);
+                const auto bs = samples::occlusionBins(contact, vs, 1.0, contactEdges, samples::onContactFloor, samples::distanceToContact);
                 for (size_t i = 0; i + 1 < bs.size(); ++i) {
                     INFO("contact bin " << i << ": " << bs[i] << " then " << bs[i + 1]);
                     REQUIRE(bs[i] >= 0);
@@ -199,8 +199,8 @@ TEST_CASE("ao reference: scaling scene and radius together leaves AO unchanged",
     for (AoTechnique t : kTechniques)
         for (Tier tier : kTiers) {
             INFO(name(t, tier));
-            const Grid a = reference::ambientVisibility(test::cornerScene(96, 64).aoInput(false), configFor(t, tier, 1.0));
-            const Grid b = reference::ambientVisibility(test::cornerScene(96, 64, 10.0).aoInput(false), configFor(t, tier, 10.0));
+            const Grid a = reference::ambientVisibility(samples::cornerScene(96, 64).aoInput(false), configFor(t, tier, 1.0));
+            const Grid b = reference::ambientVisibility(samples::cornerScene(96, 64, 10.0).aoInput(false), configFor(t, tier, 10.0));
             double maxDiff = 0;
             for (size_t i = 0; i < a.values.size(); ++i) maxDiff = std::max(maxDiff, std::abs(a.values[i] - b.values[i]));
             CHECK(maxDiff < 1e-6);
@@ -211,9 +211,9 @@ TEST_CASE("ao reference: doubling resolution changes AO only within tolerance", 
     for (AoTechnique t : kTechniques)
         for (Tier tier : kTiers) {
             INFO(name(t, tier));
-            for (auto make : {&test::cornerScene, &test::sphereOnPlaneScene}) {
+            for (auto make : {&samples::cornerScene, &samples::sphereOnPlaneScene}) {
                 const Grid lo = reference::ambientVisibility(make(96, 64, 1.0).aoInput(false), configFor(t, tier));
-                const Grid hi = test::downsample2x(reference::ambientVisibility(make(192, 128, 1.0).aoInput(false), configFor(t, tier)));
+                const Grid hi = samples::downsample2x(reference::ambientVisibility(make(192, 128, 1.0).aoInput(false), configFor(t, tier)));
                 double meanAbs = 0, meanLo = 0, meanHi = 0;
                 for (size_t i = 0; i < lo.values.size(); ++i) {
                     meanAbs += std::abs(lo.values[i] - hi.values[i]);
@@ -232,7 +232,7 @@ TEST_CASE("ao reference: doubling resolution changes AO only within tolerance", 
 }
 
 TEST_CASE("ao reference: sky is unoccluded; tiny and huge radii and far depths stay finite", "[ao]") {
-    const test::AnalyticScene cols = test::columnsScene(96, 64);
+    const samples::AnalyticScene cols = samples::columnsScene(96, 64);
     for (AoTechnique t : kTechniques)
         for (Tier tier : kTiers)
             for (float radius : {1e-4f, 0.5f, 50.0f, 1000.0f}) {
@@ -267,7 +267,7 @@ TEST_CASE("ao reference: the bilateral blur does not carry occlusion across a de
 
 // Not a check: writes the G-buffer files the `sfx ao` CTest entries read (fixture ao_cli_files).
 TEST_CASE("ao cli fixture: write small G-buffer files", "[.ao-cli-fixture]") {
-    const test::AnalyticScene s = test::cornerScene(64, 48);
+    const samples::AnalyticScene s = samples::cornerScene(64, 48);
     io::Image depth(s.width, s.height, 1), normals(s.width, s.height, 3);
     for (uint32_t y = 0; y < s.height; ++y)
         for (uint32_t x = 0; x < s.width; ++x) {

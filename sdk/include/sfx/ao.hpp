@@ -112,6 +112,17 @@ public:
     // Validates, then reallocates only what the new settings need (MIP levels, blur targets).
     Status setSettings(const AoSettings& settings);
 
+    // Per-pass profiling, off by default: then dispatch creates and records no timers. On, each
+    // pass of plan() (linearize, depth_mip levels, obscurance, blur h, blur v) is bracketed by
+    // its own HAL timer, created here and kept across resize/setSettings until turned off.
+    // On GL each timer waits for the GPU (glFinish) at both ends, so a profiled frame is
+    // slower than an unprofiled one; Vulkan timestamps do not stall.
+    Status setProfiling(bool enabled);
+    bool profiling() const { return profiling_; }
+    // The last profiled dispatch, read after the host's Device::flush(): one entry per plan()
+    // pass, in its order. InvalidArgument when profiling is off or nothing was flushed yet.
+    Result<std::vector<PassTiming>> passTimings();
+
     const AoDesc& desc() const { return desc_; }
     const AoConfig& config() const { return config_; }
     const LinearDepth& linearDepth() const { return *depth_; }
@@ -122,6 +133,8 @@ private:
     Status allocate();
     void release();
     Result<PipelineHandle> pipelineFor(uint32_t programIndex, Format format);
+    Status createPassTimers();
+    void destroyPassTimers();
 
     Device& device_;
     AoDesc desc_;
@@ -137,6 +150,8 @@ private:
         PipelineHandle pipeline;
     };
     std::vector<CachedPipeline> pipelines_;
+    bool profiling_ = false;
+    std::vector<TimerHandle> passTimers_;  // one per plan() pass while profiling, else empty
 };
 
 }  // namespace sfx

@@ -42,8 +42,9 @@ public:
     LinearDepth& operator=(const LinearDepth&) = delete;
 
     // Records linearisation (or a copy for linear input) and the pyramid levels.
-    // The source must match the size given at creation.
-    Status dispatch(const DepthSource& source);
+    // The source must match the size given at creation. passTimers: empty (no timing), or one
+    // timer per plan() pass, each begun just before and ended just after its pass (profiling).
+    Status dispatch(const DepthSource& source, std::span<const TimerHandle> passTimers = {});
     Status resize(uint32_t width, uint32_t height);
 
     TextureHandle texture() const { return texture_; }  // R32F, mipLevels levels

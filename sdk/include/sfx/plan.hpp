@@ -17,6 +17,14 @@ struct PlannedPass {
     uint32_t width = 0, height = 0;
 };
 
+// What one planned pass cost on the device, from an effect's optional profiling
+// (AmbientObscurance::setProfiling): the host's answer to "what did I pay for what".
+struct PassTiming {
+    std::string effect;  // as in the PlannedPass
+    std::string name;
+    TimerReading reading;  // its source says GPU timestamps or wall clock after glFinish
+};
+
 struct PlannedResource {
     std::string effect;
     std::string name;

@@ -112,7 +112,56 @@ Status AmbientObscurance::allocate() {
         if (!blur) return blur.status();
         blurProgram_ = blur.value();
     }
+    // The pass count follows the settings (MIP levels, blur), so timers follow each allocation.
+    if (profiling_) SFX_TRY(createPassTimers());
     return Status::ok();
+}
+
+Status AmbientObscurance::createPassTimers() {
+    destroyPassTimers();
+    const size_t passes = plan().passes.size();
+    for (size_t i = 0; i < passes; ++i) {
+        Result<TimerHandle> timer = device_.createTimer();
+        if (!timer) {
+            destroyPassTimers();
+            return timer.status();
+        }
+        passTimers_.push_back(timer.value());
+    }
+    return Status::ok();
+}
+
+void AmbientObscurance::destroyPassTimers() {
+    for (TimerHandle t : passTimers_) (void)device_.destroyTimer(t);
+    passTimers_.clear();
+}
+
+Status AmbientObscurance::setProfiling(bool enabled) {
+    if (enabled == profiling_) return Status::ok();
+    profiling_ = enabled;
+    if (!enabled) {
+        destroyPassTimers();
+        return Status::ok();
+    }
+    Status s = depth_ ? createPassTimers() : Status::ok();  // without resources, allocate() creates them
+    if (!s) profiling_ = false;
+    return s;
+}
+
+Result<std::vector<PassTiming>> AmbientObscurance::passTimings() {
+    if (!profiling_ || passTimers_.empty())
+        return Status{StatusCode::InvalidArgument, "AmbientObscurance::passTimings: profiling is off (call setProfiling(true) before dispatch)"};
+    const Plan p = plan();
+    std::vector<PassTiming> out;
+    out.reserve(passTimers_.size());
+    for (size_t i = 0; i < passTimers_.size(); ++i) {
+        Result<TimerReading> reading = device_.readTimer(passTimers_[i]);
+        if (!reading)
+            return Status{reading.status().code(), "AmbientObscurance::passTimings: pass '" + p.passes[i].name + "' (dispatch, then flush, first): " +
+                                                       reading.status().message()};
+        out.push_back({p.passes[i].effect, p.passes[i].name, reading.value()});
+    }
+    return out;
 }
 
 void AmbientObscurance::release() {
@@ -132,6 +181,7 @@ void AmbientObscurance::release() {
         *t = {};
     }
     targetFormat_ = Format::Undefined;
+    destroyPassTimers();
     depth_.reset();
 }
 
@@ -192,7 +242,17 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
                                                         "; allowed RGBA16F/RGBA32F (signed xyz) or RGBA8 (xyz * 0.5 + 0.5)"};
     }
 
-    SFX_TRY(depth_->dispatch(in.depth));
+    // Profiling: plan() order is the depth passes (linearize + one per MIP level past 0), the
+    // obscurance pass, then blur h and v. timed() records a pass bare when profiling is off.
+    const size_t depthPasses = depth_->desc().mipLevels;
+    const std::span<const TimerHandle> timers(passTimers_);
+    auto timed = [&](size_t passIndex, auto record) -> Status {
+        if (timers.empty()) return record();
+        SFX_TRY(device_.beginTimer(timers[passIndex]));
+        SFX_TRY(record());
+        return device_.endTimer(timers[passIndex]);
+    };
+    SFX_TRY(depth_->dispatch(in.depth, timers.empty() ? timers : timers.first(depthPasses)));
     const DepthReconstruction& rec = depth_->reconstruction();
     const bool blur = config_.blurRadius > 0;
     const double keyNear = std::max(rec.nearDepth, 1e-6);
@@ -239,7 +299,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
     draw.bindings.textures = {TextureBinding{gen::ao_scalable::uDepth, depth_->texture(), 0, config_.depthMipLevels, {}},
                               TextureBinding{gen::ao_scalable::uNormals, normals, 0, 1, {}}};
     draw.bindings.uniformBuffers = {BufferBinding{gen::ao_scalable::AoParams, aoParams_, 0, 0}};
-    SFX_TRY(device_.renderPass(pass, std::span<const DrawDesc>(&draw, 1)));
+    SFX_TRY(timed(depthPasses, [&] { return device_.renderPass(pass, std::span<const DrawDesc>(&draw, 1)); }));
     if (!blur) return Status::ok();
 
     const int radius = int(config_.blurRadius);
@@ -269,7 +329,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
         if (desc_.profile.tier == Tier::High)
             bdraw.bindings.textures.push_back(TextureBinding{gen::ao_blur::uDepth, depth_->texture(), 0, 1, {}});
         bdraw.bindings.uniformBuffers = {BufferBinding{gen::ao_blur::BlurParams, buffer, 0, 0}};
-        SFX_TRY(device_.renderPass(bpass, std::span<const DrawDesc>(&bdraw, 1)));
+        SFX_TRY(timed(depthPasses + 1 + size_t(passIndex), [&] { return device_.renderPass(bpass, std::span<const DrawDesc>(&bdraw, 1)); }));
     }
     return Status::ok();
 }

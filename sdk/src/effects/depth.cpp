@@ -114,8 +114,12 @@ Status LinearDepth::resize(uint32_t width, uint32_t height) {
     return allocate();
 }
 
-Status LinearDepth::dispatch(const DepthSource& source) {
+Status LinearDepth::dispatch(const DepthSource& source, std::span<const TimerHandle> passTimers) {
     if (texture_.isNull()) return {StatusCode::InvalidHandle, "LinearDepth: resources were not created (failed resize?)"};
+    // One timer per planned pass: linearize, then one per MIP level past 0.
+    if (!passTimers.empty() && passTimers.size() != desc_.mipLevels)
+        return invalidArgument("LinearDepth::dispatch passTimers", std::to_string(passTimers.size()) + " timers",
+                               "none or " + std::to_string(desc_.mipLevels) + " (one per planned pass)");
     Result<TextureDesc> src = device_.textureDesc(source.texture);
     if (!src) return Status{src.status().code(), "DepthSource.texture: " + src.status().message()};
     if (src->width != desc_.width || src->height != desc_.height)
@@ -149,7 +153,9 @@ Status LinearDepth::dispatch(const DepthSource& source) {
     draw.pipeline = linearizePipeline_;
     draw.bindings.textures = {TextureBinding{gen::linearize_depth::uHardwareDepth, source.texture, 0, 1, {}}};
     draw.bindings.uniformBuffers = {BufferBinding{gen::linearize_depth::LinearizeParams, params_, 0, 0}};
+    if (!passTimers.empty()) SFX_TRY(device_.beginTimer(passTimers[0]));
     SFX_TRY(device_.renderPass(pass, std::span<const DrawDesc>(&draw, 1)));
+    if (!passTimers.empty()) SFX_TRY(device_.endTimer(passTimers[0]));
 
     for (uint32_t level = 1; level < desc_.mipLevels; ++level) {
         RenderPassDesc mipPass;
@@ -158,7 +164,9 @@ Status LinearDepth::dispatch(const DepthSource& source) {
         DrawDesc mipDraw;
         mipDraw.pipeline = mipPipeline_;
         mipDraw.bindings.textures = {TextureBinding{gen::depth_mip::uPreviousLevel, texture_, level - 1, 1, {}}};
+        if (!passTimers.empty()) SFX_TRY(device_.beginTimer(passTimers[level]));
         SFX_TRY(device_.renderPass(mipPass, std::span<const DrawDesc>(&mipDraw, 1)));
+        if (!passTimers.empty()) SFX_TRY(device_.endTimer(passTimers[level]));
     }
     return Status::ok();
 }

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-namespace sfx::test {
+namespace sfx::samples {
 
 const glm::dvec3 kSphereContactPoint{0.9, -1.0, -4.0};
 const glm::dvec3 kContactFloorNormal{0.0, 1.0, 0.0};
@@ -109,9 +109,9 @@ AnalyticScene columnsScene(uint32_t w, uint32_t h, double scale) {
     return castScene("columns", w, h, shapes, scale, cam);
 }
 
-}  // namespace sfx::test
+}  // namespace sfx::samples
 
-namespace sfx::test {
+namespace sfx::samples {
 reference::Grid downsample2x(const reference::Grid& g) {
     reference::Grid out(g.width / 2, g.height / 2);
     for (uint32_t y = 0; y < out.height; ++y)
@@ -119,4 +119,4 @@ reference::Grid downsample2x(const reference::Grid& g) {
             out.at(x, y) = 0.25 * (g.at(2 * x, 2 * y) + g.at(2 * x + 1, 2 * y) + g.at(2 * x, 2 * y + 1) + g.at(2 * x + 1, 2 * y + 1));
     return out;
 }
-}  // namespace sfx::test
+}  // namespace sfx::samples

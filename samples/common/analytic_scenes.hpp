@@ -12,7 +12,7 @@
 #include "sfx/camera.hpp"
 #include "sfx/reference/ao_reference.hpp"
 
-namespace sfx::test {
+namespace sfx::samples {
 
 struct AnalyticShape {
     enum Kind { Plane, Sphere } kind = Plane;
@@ -63,9 +63,9 @@ extern const double kContactSphereRadius;
 // shadows, depth discontinuities at silhouettes, and sky.
 AnalyticScene columnsScene(uint32_t w, uint32_t h, double scale = 1.0);
 
-}  // namespace sfx::test
+}  // namespace sfx::samples
 
-namespace sfx::test {
+namespace sfx::samples {
 
 // Mean occlusion (1 - visibility) of the pixels of one surface in distance bins
 // [edges[i], edges[i+1]); -1 for an empty bin. Positions are divided by `scale` first.
@@ -105,4 +105,4 @@ inline double distanceToContact(const glm::dvec3& p) { return glm::length(p - kS
 // The 2x2 box average of a grid (for comparing a doubled resolution with the base one).
 reference::Grid downsample2x(const reference::Grid& g);
 
-}  // namespace sfx::test
+}  // namespace sfx::samples
