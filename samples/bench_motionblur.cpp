@@ -227,7 +227,8 @@ Result<samples::Scene> makeMovingScene(const std::string& name) {
         s->meshes[2].velocity = {-0.12, 0.0, 0.12};
         s->meshes[3].velocity = {0.05, 0.15, 0.0};
     } else if (name == "columns") {
-        // A camera pan across a still scene: sideways, perpendicular to the view direction.
+        // A camera pan across a still scene: sideways (x), nearly perpendicular to the view
+        // direction, so each pixel's screen motion is nearly linear in time.
         s->eyeVelocity = {0.2, 0.0, 0.0};
     }
     return s;
@@ -424,10 +425,11 @@ Status runSceneCases(Device& device, const std::string& backend, Tier tier, cons
                 // CameraMotion wants the frame's own view-projection as current (each pixel's
                 // depth is unprojected with it) and, as previous, the one a whole shutter interval
                 // earlier, so that current - previous spans the interval as the velocity buffer's
-                // does. The G-buffer's shutter open / close pair spans it too, but centred on the
-                // frame: given as {previous, current} it would unproject with the closing camera
-                // and give half the displacement. For a pan along a line the two spans move each
-                // pixel equally.
+                // does. The G-buffer's shutter open / close pair is centred on the frame: as
+                // {previous, current} it would unproject this frame's depth with the closing
+                // camera (the velocity of a point half a displacement away, wrong at depth edges);
+                // {open, this frame's} would give half the displacement. The two spans differ
+                // only by the curvature of each pixel's screen path, small for this pan.
                 CameraMotion motion;
                 motion.currentViewProjection = g->camera.projection * scene->view(0.0);
                 motion.previousViewProjection = g->camera.projection * scene->view(-1.0);
