@@ -283,3 +283,11 @@ TEST_CASE("ao cli fixture: write small G-buffer files", "[.ao-cli-fixture]") {
     std::fputs("Pf\n64 oops\n-1\n", f);
     std::fclose(f);
 }
+
+TEST_CASE("ao: an empty tier profile is a named error, not black output", "[ao][bad-input]") {
+    TierProfile empty;  // value-initialised: every count 0
+    Status s = validateAoSettings(AoSettings{}, empty);
+    CHECK(s.code() == StatusCode::InvalidArgument);
+    CHECK(s.message().find("AoDesc.profile") != std::string::npos);
+    CHECK(resolveAoConfig(AoSettings{}, empty, 4).status().code() == StatusCode::InvalidArgument);
+}

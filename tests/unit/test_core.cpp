@@ -164,3 +164,17 @@ TEST_CASE("backend names parse, and unknown ones are refused", "[backends][bad-i
     CHECK(tier.status().code() == StatusCode::UnsupportedTier);
     CHECK(tier.status().message().find("rasterising device") != std::string::npos);
 }
+
+TEST_CASE("handles: a slot whose generation runs out is retired, never reused", "[handles]") {
+    HandlePool<TextureTag, int> pool(7, "texture");
+    TextureHandle first = pool.insert(1);
+    TextureHandle h = first;
+    for (int i = 0; i < 70000; ++i) {
+        pool.remove(h);
+        h = pool.insert(i);
+        REQUIRE(pool.check(first, "first").code() == StatusCode::StaleHandle);
+    }
+    // The first slot was retired after 65535 reuses; the pool moved on to a new one.
+    CHECK(h.bits != first.bits);
+    CHECK(pool.aliveCount() == 1);
+}

@@ -93,6 +93,16 @@ Result<Image> readPfm(const std::string& path) {
     if (scale == 0 || !std::isfinite(scale)) return fileError(path, "PFM scale must be a non-zero number");
     in.get();  // the single whitespace character after the scale
     const uint32_t channels = magic == "PF" ? 3 : 1;
+    // Check the data is really there before allocating what the header claims.
+    const std::streamoff dataStart = in.tellg();
+    in.seekg(0, std::ios::end);
+    const std::streamoff available = in.tellg() - dataStart;
+    in.seekg(dataStart);
+    const long long needed = w * h * channels * 4;
+    if (dataStart < 0 || available < needed)
+        return fileError(path, "PFM header says " + std::to_string(w) + "x" + std::to_string(h) + "x" +
+                                   std::to_string(channels) + " floats (" + std::to_string(needed) + " bytes) but the file holds " +
+                                   std::to_string(std::max<long long>(available, 0)) + " bytes of data");
     Image image(uint32_t(w), uint32_t(h), channels);
     const size_t rowValues = size_t(w) * channels;
     std::vector<uint8_t> row(rowValues * 4);

@@ -82,6 +82,12 @@ public:
         T object = std::move(slot.object);
         slot.object = T{};
         slot.alive = false;
+        // A slot whose generation would wrap is retired for good: reusing it would let a
+        // handle from 65536 generations ago name the new object instead of being stale.
+        if (slot.generation == 0xffffu) {
+            ++retired_;
+            return object;
+        }
         slot.generation = uint16_t(slot.generation + 1);
         freeList_.push_back(index);
         return object;
@@ -92,7 +98,7 @@ public:
         for (Slot& s : slots_)
             if (s.alive) f(s.object);
     }
-    size_t aliveCount() const { return slots_.size() - freeList_.size(); }
+    size_t aliveCount() const { return slots_.size() - freeList_.size() - retired_; }
 
 private:
     struct Slot {
@@ -104,6 +110,7 @@ private:
     const char* kind_;
     std::vector<Slot> slots_;
     std::vector<uint32_t> freeList_;
+    size_t retired_ = 0;  // slots whose generations ran out
 };
 
 }  // namespace sfx

@@ -43,6 +43,12 @@ bool parseAoTechnique(const std::string& text, AoTechnique* out) {
 }
 
 Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
+    // A value-initialised TierProfile has every count at 0 and would divide by zero in the
+    // shaders; it must come from tiers::profile() or tiers::choose().
+    if (uint32_t(profile.tier) >= kTierCount || profile.aoScalableTaps == 0 || profile.aoAlchemySamples == 0 ||
+        profile.aoBlurRadiusPx == 0 || profile.aoDepthMipLevels == 0)
+        return invalidArgument("AoDesc.profile", "an empty or unknown tier profile (tap counts 0)",
+                               "tiers::profile(tier) or tiers::choose(caps)->profile");
     if (uint32_t(s.technique) > 2) return invalidArgument("AoSettings.technique", std::to_string(uint32_t(s.technique)), "Alchemy, Scalable or Crease");
     SFX_TRY(checkRange("AoSettings.radius", s.radius, 0, true, 1000, false, "(0, 1000]"));
     SFX_TRY(checkRange("AoSettings.intensity", s.intensity, 0, false, 100, false, "[0, 100]"));
