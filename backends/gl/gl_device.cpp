@@ -1045,24 +1045,19 @@ private:
             return invalidArgument("DrawDesc.pipeline depthFormat", toString(pd.depthFormat),
                                    std::string(toString(passDepth)) + ", the pass's depth attachment");
         SFX_TRY(checkBindingsMatch(programs_.get(p.program), d.bindings, "DrawDesc.bindings"));
-        if (d.instanceCount == 0) return invalidArgument("DrawDesc.instanceCount", "0", ">= 1");
+        const BufferDesc* vertexBuffer = nullptr;
+        const BufferDesc* indexBuffer = nullptr;
         if (!pd.vertexLayout.attributes.empty()) {
             SFX_TRY(buffers_.check(d.vertexBuffer, "DrawDesc.vertexBuffer"));
-            if (!(buffers_.get(d.vertexBuffer).desc.usage & kBufferVertex))
-                return invalidArgument("DrawDesc.vertexBuffer usage", str(buffers_.get(d.vertexBuffer).desc.usage),
-                                       "with kBufferVertex");
+            vertexBuffer = &buffers_.get(d.vertexBuffer).desc;
         } else if (!d.vertexBuffer.isNull()) {
             return invalidArgument("DrawDesc.vertexBuffer", "set", "null for a pipeline without vertex attributes");
         }
         if (!d.indexBuffer.isNull()) {
             SFX_TRY(buffers_.check(d.indexBuffer, "DrawDesc.indexBuffer"));
-            const BufferDesc& ib = buffers_.get(d.indexBuffer).desc;
-            if (!(ib.usage & kBufferIndex)) return invalidArgument("DrawDesc.indexBuffer usage", str(ib.usage), "with kBufferIndex");
-            if (uint64_t(d.count) * 4 > ib.size)
-                return invalidArgument("DrawDesc.count", str(d.count),
-                                       "at most " + str(ib.size / 4) + " indices in the index buffer");
+            indexBuffer = &buffers_.get(d.indexBuffer).desc;
         }
-        return Status::ok();
+        return validation::drawRange(d, pd.vertexLayout, vertexBuffer, indexBuffer);
     }
 
     Status draw(const DrawDesc& d) {

@@ -306,6 +306,7 @@ struct VulkanPipeline {
     std::vector<Format> colorFormats;
     Format depthFormat = Format::Undefined;
     bool usesVertexBuffer = false;
+    VertexLayout vertexLayout;  // bounds the draws' vertex reads (validation::drawRange)
 };
 
 struct VulkanTimer {
@@ -633,6 +634,9 @@ Status VulkanDevice::initOwn(const DeviceOptions& options) {
     enabled.vertexPipelineStoresAndAtomics = supported.vertexPipelineStoresAndAtomics;
     enabled.shaderStorageImageWriteWithoutFormat = supported.shaderStorageImageWriteWithoutFormat;
     enabled.shaderStorageImageReadWithoutFormat = supported.shaderStorageImageReadWithoutFormat;
+    // Index values are not checked on the host (the index buffer lives on the device); with
+    // robust access an out-of-range index reads zeros instead of memory past the vertex buffer.
+    enabled.robustBufferAccess = supported.robustBufferAccess;
     VkPhysicalDeviceDynamicRenderingFeatures dynamic{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES};
     dynamic.dynamicRendering = VK_TRUE;
     const float priority = 1.0f;
@@ -1330,9 +1334,6 @@ Result<PipelineHandle> VulkanDevice::createGraphicsPipeline(const GraphicsPipeli
         if (desc.blend.enable && isIntegerFormat(f))
             return invalidArgument("GraphicsPipelineDesc.blend.enable", "true",
                                    std::string("false with the integer colour format ") + toString(f));
-    for (const VertexAttribute& a : desc.vertexLayout.attributes)
-        if (uint32_t(a.format) > uint32_t(VertexFormat::Float4))
-            return invalidArgument("VertexAttribute.format", std::to_string(uint32_t(a.format)), "Float2, Float3 or Float4");
 
     VulkanPipeline p;
     p.compute = false;
@@ -1341,6 +1342,7 @@ Result<PipelineHandle> VulkanDevice::createGraphicsPipeline(const GraphicsPipeli
     p.colorFormats = desc.colorFormats;
     p.depthFormat = desc.depthFormat;
     p.usesVertexBuffer = desc.vertexLayout.stride > 0;
+    p.vertexLayout = desc.vertexLayout;
     Status s = createLayouts(prog.resources, false, p);
     if (!s) {
         retire(p);
@@ -1712,22 +1714,17 @@ Status VulkanDevice::renderPass(const RenderPassDesc& pass, std::span<const Draw
                                    "a pipeline whose colorFormats and depthFormat match the pass's attachments");
         SFX_TRY(resolveBindings(d.bindings, pl, "DrawDesc.bindings", uses, resolved[i]));
         SFX_TRY(validation::noFeedbackLoop(pass, d));
-        if (pl.usesVertexBuffer) {
+        const BufferDesc* vertexBuffer = nullptr;
+        const BufferDesc* indexBuffer = nullptr;
+        if (pl.usesVertexBuffer || !d.vertexBuffer.isNull()) {
             SFX_TRY(buffers_.check(d.vertexBuffer, "DrawDesc.vertexBuffer"));
-            if (!(buffers_.get(d.vertexBuffer).desc.usage & kBufferVertex))
-                return invalidArgument("DrawDesc.vertexBuffer", "a buffer without kBufferVertex", "a vertex buffer");
-        } else if (!d.vertexBuffer.isNull()) {
-            SFX_TRY(buffers_.check(d.vertexBuffer, "DrawDesc.vertexBuffer"));
+            vertexBuffer = &buffers_.get(d.vertexBuffer).desc;
         }
         if (!d.indexBuffer.isNull()) {
             SFX_TRY(buffers_.check(d.indexBuffer, "DrawDesc.indexBuffer"));
-            const BufferDesc& ib = buffers_.get(d.indexBuffer).desc;
-            if (!(ib.usage & kBufferIndex))
-                return invalidArgument("DrawDesc.indexBuffer", "a buffer without kBufferIndex", "an index buffer");
-            if (uint64_t(d.count) * 4 > ib.size)
-                return invalidArgument("DrawDesc.count", std::to_string(d.count),
-                                       "at most the " + std::to_string(ib.size / 4) + " indices of the index buffer");
+            indexBuffer = &buffers_.get(d.indexBuffer).desc;
         }
+        SFX_TRY(validation::drawRange(d, pl.vertexLayout, vertexBuffer, indexBuffer));
     }
     {
         std::vector<VkImage> images;

@@ -526,6 +526,84 @@ TEST_CASE("hal: timers measure a flushed pass", "[hal]") {
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
+// The status names the field and the allowed range, the same words on every backend.
+static void checkNamed(const Status& s, StatusCode code, const char* field) {
+    INFO(s.toString());
+    CHECK(s.code() == code);
+    CHECK(s.message().find(field) != std::string::npos);
+}
+
+TEST_CASE("hal: vertex layouts and draws that would read past their buffers are named errors", "[hal]") {
+    Cleanup c;
+    const ProgramHandle mesh = makeProgram(c, program("hal_test_mesh"));
+    auto tryPipeline = [&](GraphicsPipelineDesc d) {
+        d.program = mesh;
+        Result<PipelineHandle> p = dev().createGraphicsPipeline(d);
+        if (p.isOk()) (void)dev().destroyPipeline(p.value());
+        return p.status();
+    };
+    {
+        // 0xFFFFFFFC + 16 wraps to 12 in 32 bits; the check must not.
+        GraphicsPipelineDesc d = meshPipelineDesc(Format::RGBA8, Format::Undefined);
+        d.vertexLayout.attributes[1].offset = 0xFFFFFFFCu;
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "vertexLayout.attributes[1].offset");
+    }
+    {
+        GraphicsPipelineDesc d = meshPipelineDesc(Format::RGBA8, Format::Undefined);
+        d.vertexLayout.attributes[1].offset = 13;  // 13 + 16 > 28
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "vertexLayout.attributes[1].offset");
+    }
+    {
+        GraphicsPipelineDesc d = meshPipelineDesc(Format::RGBA8, Format::Undefined);
+        d.vertexLayout.attributes[0].location = 16;
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "vertexLayout.attributes[0].location");
+        d.vertexLayout.attributes[0].location = 0xFFFFFFFFu;
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "vertexLayout.attributes[0].location");
+        d.vertexLayout.attributes[0].location = 1;  // twice
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "vertexLayout.attributes[1].location");
+    }
+    {
+        GraphicsPipelineDesc d = meshPipelineDesc(Format::RGBA8, Format::Undefined);
+        d.vertexLayout.attributes[0].format = VertexFormat(7);
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "vertexLayout.attributes[0].format");
+    }
+
+    // Three vertices exactly fill the buffer; a fourth would be read past its end.
+    TextureHandle color = makeTexture(c, 8, 8, Format::RGBA8, kTextureSampled | kTextureRenderTarget);
+    PipelineHandle pipeline = makePipeline(c, meshPipelineDesc(Format::RGBA8, Format::Undefined), "hal_test_mesh");
+    const MeshVertex vertices[] = {
+        {-1, -1, 0.5f, 1, 0, 0, 1}, {3, -1, 0.5f, 1, 0, 0, 1}, {-1, 3, 0.5f, 1, 0, 0, 1}};
+    BufferHandle vb = makeBuffer(c, sizeof(vertices), kBufferVertex, vertices);
+    const uint32_t indices[] = {0, 1, 2};
+    BufferHandle ib = makeBuffer(c, sizeof(indices), kBufferIndex, indices);
+    RenderPassDesc pass;
+    pass.colors = {{color, 0, LoadOp::Clear, {0, 0, 0, 0}}};
+    DrawDesc draw;
+    draw.pipeline = pipeline;
+    draw.vertexBuffer = vb;
+    draw.count = 3;
+    SFX_REQUIRE_OK(dev().renderPass(pass, {&draw, 1}));
+    draw.count = 4;
+    checkNamed(dev().renderPass(pass, {&draw, 1}), StatusCode::InvalidArgument, "DrawDesc.count");
+    draw.count = 0xFFFFFFFFu;  // (count - 1) * stride overflows 32 bits
+    checkNamed(dev().renderPass(pass, {&draw, 1}), StatusCode::InvalidArgument, "DrawDesc.count");
+    draw.count = 3;
+    draw.instanceCount = 0;
+    checkNamed(dev().renderPass(pass, {&draw, 1}), StatusCode::InvalidArgument, "DrawDesc.instanceCount");
+    draw.instanceCount = 1;
+    draw.vertexBuffer = ib;  // an index buffer as vertices
+    checkNamed(dev().renderPass(pass, {&draw, 1}), StatusCode::InvalidArgument, "DrawDesc.vertexBuffer");
+    draw.vertexBuffer = vb;
+    draw.indexBuffer = ib;
+    SFX_REQUIRE_OK(dev().renderPass(pass, {&draw, 1}));
+    draw.count = 4;  // 16 bytes of indices in a 12-byte buffer
+    checkNamed(dev().renderPass(pass, {&draw, 1}), StatusCode::InvalidArgument, "DrawDesc.count");
+    // The refused draws left the target as the last good pass made it.
+    std::vector<uint8_t> rgba = readLevel<uint8_t>(color);
+    for (size_t i = 0; i < rgba.size(); i += 4) REQUIRE(rgba[i] == 255);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
 TEST_CASE("hal: bad input is a named error on every call", "[hal]") {
     Cleanup c;
     const DeviceCaps& caps = dev().caps();
