@@ -124,6 +124,7 @@ public:
         if (programs_.get(desc.program).compute)
             return Status{StatusCode::InvalidArgument, "GraphicsPipelineDesc.program is a compute program"};
         SFX_TRY(validation::graphicsPipelineShape(desc, caps_));
+        SFX_TRY(validation::graphicsPipelineState(desc, caps_));
         return pipelines_.insert(NullPipeline{false, desc.vertexLayout});
     }
     Result<PipelineHandle> createComputePipeline(const ComputePipelineDesc& desc) override {
@@ -199,10 +200,7 @@ private:
     Status checkBindings(const BindingSet& b) {
         for (const auto& t : b.textures) {
             SFX_TRY(textures_.check(t.texture, "TextureBinding.texture"));
-            const TextureDesc& d = textures_.get(t.texture).desc;
-            if (t.mipCount == 0 || t.baseMip + t.mipCount > d.mipLevels)
-                return invalidArgument("TextureBinding mips", std::to_string(t.baseMip) + "+" + std::to_string(t.mipCount),
-                                       "a non-empty range inside the texture's " + std::to_string(d.mipLevels) + " levels");
+            SFX_TRY(validation::textureBinding(textures_.get(t.texture).desc, t));
             if (!t.sampler.isNull()) SFX_TRY(samplers_.check(t.sampler, "TextureBinding.sampler"));
         }
         for (const auto& u : b.uniformBuffers) SFX_TRY(buffers_.check(u.buffer, "BufferBinding.buffer"));

@@ -1323,17 +1323,7 @@ Result<PipelineHandle> VulkanDevice::createGraphicsPipeline(const GraphicsPipeli
     const VulkanProgram& prog = programs_.get(desc.program);
     if (prog.compute) return Status{StatusCode::InvalidArgument, "GraphicsPipelineDesc.program is a compute program"};
     SFX_TRY(validation::graphicsPipelineShape(desc, caps_));
-    if (uint32_t(desc.cull) > uint32_t(CullMode::Front))
-        return invalidArgument("GraphicsPipelineDesc.cull", std::to_string(uint32_t(desc.cull)), "None, Back or Front");
-    if (uint32_t(desc.depth.compare) > uint32_t(CompareOp::Always))
-        return invalidArgument("GraphicsPipelineDesc.depth.compare", std::to_string(uint32_t(desc.depth.compare)), "a CompareOp");
-    if (uint32_t(desc.blend.src) > uint32_t(BlendFactor::OneMinusDstAlpha) ||
-        uint32_t(desc.blend.dst) > uint32_t(BlendFactor::OneMinusDstAlpha))
-        return invalidArgument("GraphicsPipelineDesc.blend", "an unknown BlendFactor", "a BlendFactor");
-    for (Format f : desc.colorFormats)
-        if (desc.blend.enable && isIntegerFormat(f))
-            return invalidArgument("GraphicsPipelineDesc.blend.enable", "true",
-                                   std::string("false with the integer colour format ") + toString(f));
+    SFX_TRY(validation::graphicsPipelineState(desc, caps_));
 
     VulkanPipeline p;
     p.compute = false;
@@ -1571,9 +1561,7 @@ Status VulkanDevice::resolveBindings(const BindingSet& set, const VulkanPipeline
     for (const TextureBinding& tb : set.textures) {
         SFX_TRY(textures_.check(tb.texture, "TextureBinding.texture"));
         VulkanTexture& t = textures_.get(tb.texture);
-        if (tb.mipCount == 0 || tb.baseMip >= t.desc.mipLevels || tb.mipCount > t.desc.mipLevels - tb.baseMip)
-            return invalidArgument("TextureBinding mips", std::to_string(tb.baseMip) + "+" + std::to_string(tb.mipCount),
-                                   "a non-empty range inside the texture's " + std::to_string(t.desc.mipLevels) + " levels");
+        SFX_TRY(validation::textureBinding(t.desc, tb));
         VkSampler sampler = defaultSampler_;
         if (!tb.sampler.isNull()) {
             SFX_TRY(samplers_.check(tb.sampler, "TextureBinding.sampler"));
@@ -1581,8 +1569,6 @@ Status VulkanDevice::resolveBindings(const BindingSet& set, const VulkanPipeline
         }
         Result<const ShaderResource*> r = resource(tb.binding, ResourceKind::SampledTexture, "TextureBinding");
         if (!r) return r.status();
-        if (!(t.desc.usage & kTextureSampled))
-            return invalidArgument("TextureBinding.texture", "a texture without kTextureSampled", "a sampled texture");
         Result<VkImageView> view = sampledView(t, tb.baseMip, tb.mipCount);
         if (!view) return view.status();
         out.images.push_back({sampler, view.value(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});

@@ -150,6 +150,39 @@ Status graphicsPipelineShape(const GraphicsPipelineDesc& d, const DeviceCaps& ca
     return Status::ok();
 }
 
+Status graphicsPipelineState(const GraphicsPipelineDesc& d, const DeviceCaps&) {
+    if (uint32_t(d.cull) > uint32_t(CullMode::Front))
+        return invalidArgument("GraphicsPipelineDesc.cull", str(uint32_t(d.cull)), "None, Back or Front");
+    if (uint32_t(d.depth.compare) > uint32_t(CompareOp::Always))
+        return invalidArgument("GraphicsPipelineDesc.depth.compare", str(uint32_t(d.depth.compare)),
+                               "a CompareOp, [0, " + str(uint32_t(CompareOp::Always)) + "]");
+    const std::string factors = "a BlendFactor, [0, " + str(uint32_t(BlendFactor::OneMinusDstAlpha)) + "]";
+    if (uint32_t(d.blend.src) > uint32_t(BlendFactor::OneMinusDstAlpha))
+        return invalidArgument("GraphicsPipelineDesc.blend.src", str(uint32_t(d.blend.src)), factors);
+    if (uint32_t(d.blend.dst) > uint32_t(BlendFactor::OneMinusDstAlpha))
+        return invalidArgument("GraphicsPipelineDesc.blend.dst", str(uint32_t(d.blend.dst)), factors);
+    // Integer attachments do not blend: Vulkan's validation refuses it, GL ignores it silently.
+    if (d.blend.enable)
+        for (size_t i = 0; i < d.colorFormats.size(); ++i)
+            if (uint32_t(d.colorFormats[i]) < uint32_t(Format::Count) && isIntegerFormat(d.colorFormats[i]))
+                return invalidArgument("GraphicsPipelineDesc.blend.enable", "true",
+                                       "false with the integer colour format " + std::string(toString(d.colorFormats[i])) +
+                                           " (colorFormats[" + str(i) + "])");
+    return Status::ok();
+}
+
+Status textureBinding(const TextureDesc& t, const TextureBinding& b) {
+    // baseMip + mipCount in 32 bits wraps (1 + 0xFFFFFFFF = 0); compare without adding.
+    if (b.mipCount == 0 || b.baseMip >= t.mipLevels || b.mipCount > t.mipLevels - b.baseMip)
+        return invalidArgument("TextureBinding (binding " + str(b.binding) + ") baseMip+mipCount",
+                               str(b.baseMip) + "+" + str(b.mipCount),
+                               "a non-empty range inside the texture's " + str(t.mipLevels) + " levels");
+    if (!(t.usage & kTextureSampled))
+        return invalidArgument("TextureBinding (binding " + str(b.binding) + ").texture", "a texture without kTextureSampled",
+                               "a texture with kTextureSampled");
+    return Status::ok();
+}
+
 uint32_t vertexFormatBytes(VertexFormat f) {
     switch (f) {
     case VertexFormat::Float2: return 8;

@@ -604,6 +604,59 @@ TEST_CASE("hal: vertex layouts and draws that would read past their buffers are 
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
+TEST_CASE("hal: unknown pipeline state and bad texture bindings are refused alike on every backend", "[hal]") {
+    Cleanup c;
+    const ProgramHandle pattern = makeProgram(c, program("hal_test_pattern"));
+    auto tryPipeline = [&](GraphicsPipelineDesc d) {
+        d.program = pattern;
+        if (d.colorFormats.empty()) d.colorFormats = {Format::RGBA8};
+        Result<PipelineHandle> p = dev().createGraphicsPipeline(d);
+        if (p.isOk()) (void)dev().destroyPipeline(p.value());
+        return p.status();
+    };
+    {
+        GraphicsPipelineDesc d;
+        d.depth.compare = CompareOp(99);
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "GraphicsPipelineDesc.depth.compare");
+    }
+    {
+        GraphicsPipelineDesc d;
+        d.cull = CullMode(3);
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "GraphicsPipelineDesc.cull");
+    }
+    {
+        GraphicsPipelineDesc d;
+        d.blend = {true, BlendFactor(6), BlendFactor::Zero};
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "GraphicsPipelineDesc.blend.src");
+        d.blend = {true, BlendFactor::One, BlendFactor(0x80000000u)};
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "GraphicsPipelineDesc.blend.dst");
+    }
+    {
+        GraphicsPipelineDesc d;
+        d.colorFormats = {Format::R32UI};
+        d.blend = {true, BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha};
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "GraphicsPipelineDesc.blend.enable");
+    }
+
+    // baseMip + mipCount wraps to 0 in 32 bits; the range is still refused.
+    PipelineHandle copy = fullscreenPipeline(c, "copy", Format::RGBA8);
+    TextureHandle target = makeTexture(c, 8, 8, Format::RGBA8, kTextureSampled | kTextureRenderTarget);
+    TextureHandle source = makeTexture(c, 8, 8, Format::RGBA8, kTextureSampled, 2);
+    TextureHandle notSampled = makeTexture(c, 8, 8, Format::RGBA8, kTextureRenderTarget);
+    RenderPassDesc pass;
+    pass.colors = {{target, 0}};
+    DrawDesc draw;
+    draw.pipeline = copy;
+    for (auto [base, count] : {std::pair<uint32_t, uint32_t>{1, 0xFFFFFFFFu}, {0xFFFFFFFFu, 1}, {2, 1}, {0, 0}, {1, 2}}) {
+        INFO("mips " << base << "+" << count);
+        draw.bindings.textures = {{gen::copy::uSource, source, base, count}};
+        checkNamed(dev().renderPass(pass, {&draw, 1}), StatusCode::InvalidArgument, "baseMip+mipCount");
+    }
+    draw.bindings.textures = {{gen::copy::uSource, notSampled}};
+    checkNamed(dev().renderPass(pass, {&draw, 1}), StatusCode::InvalidArgument, "kTextureSampled");
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
 TEST_CASE("hal: bad input is a named error on every call", "[hal]") {
     Cleanup c;
     const DeviceCaps& caps = dev().caps();

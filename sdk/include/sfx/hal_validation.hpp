@@ -31,6 +31,13 @@ uint64_t vertexAttributeEnd(const VertexLayout& layout);
 // the draw has none; call after checking the handles.
 Status drawRange(const DrawDesc& draw, const VertexLayout& layout, const BufferDesc* vertexBuffer,
                  const BufferDesc* indexBuffer);
+// The fixed-function state: cull, depth compare, blend factors known enumerators, and no blending
+// into an integer colour format. Every backend calls it at pipeline creation, so an unknown value
+// is refused the same way everywhere instead of mapping to a default on one API.
+Status graphicsPipelineState(const GraphicsPipelineDesc& desc, const DeviceCaps& caps);
+// A texture binding's mips, baseMip and mipCount, make a non-empty range inside the texture's
+// levels (checked without the 32-bit sum, which wraps), and the texture has kTextureSampled.
+Status textureBinding(const TextureDesc& texture, const TextureBinding& binding);
 Status mipRange(const TextureDesc& desc, uint32_t mip, const char* argument);
 Status textureBytes(const TextureDesc& desc, uint32_t mip, size_t bytes, const char* argument);
 Status bufferRange(const BufferDesc& desc, uint64_t offset, uint64_t bytes, const char* argument);
