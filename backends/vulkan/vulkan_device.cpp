@@ -217,6 +217,26 @@ VkImageAspectFlags fullAspect(Format f) {
     if (isDepthFormat(f)) return VK_IMAGE_ASPECT_DEPTH_BIT;
     return VK_IMAGE_ASPECT_COLOR_BIT;
 }
+// D24S8 texels between the HAL layout (depth in the high 24 bits, stencil in the low 8; see
+// hal.hpp) and what a copy of Vulkan's depth aspect moves (X8_D24: depth in the low 24 bits,
+// the high 8 undefined). Stencil is not copied: it is dropped on upload and reads as 0.
+void d24s8ToVulkan(const void* hal, void* vk, size_t bytes) {
+    for (size_t i = 0; i + 4 <= bytes; i += 4) {
+        uint32_t v;
+        std::memcpy(&v, static_cast<const uint8_t*>(hal) + i, 4);
+        v >>= 8;
+        std::memcpy(static_cast<uint8_t*>(vk) + i, &v, 4);
+    }
+}
+void d24s8FromVulkan(const void* vk, void* hal, size_t bytes) {
+    for (size_t i = 0; i + 4 <= bytes; i += 4) {
+        uint32_t v;
+        std::memcpy(&v, static_cast<const uint8_t*>(vk) + i, 4);
+        v = (v & 0x00FFFFFFu) << 8;
+        std::memcpy(static_cast<uint8_t*>(hal) + i, &v, 4);
+    }
+}
+
 // What shaders sample, copies move and views see: depth only for depth formats.
 VkImageAspectFlags dataAspect(Format f) {
     return isDepthFormat(f) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
@@ -1096,7 +1116,11 @@ Status VulkanDevice::writeTexture(TextureHandle h, uint32_t mip, const void* dat
     if (!data) return invalidArgument("data", "null", "a pointer to the level's bytes");
     Result<VulkanBuffer> staging = makeBuffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "sfx staging (writeTexture)");
     if (!staging) return staging.status();
-    std::memcpy(staging->alloc.mapped, data, bytes);
+    // The HAL's D24S8 bytes put depth high; Vulkan's depth-aspect copy wants it low.
+    if (t.desc.format == Format::D24S8)
+        d24s8ToVulkan(data, staging->alloc.mapped, bytes);
+    else
+        std::memcpy(staging->alloc.mapped, data, bytes);
     Result<VkCommandBuffer> cb = recording();
     if (!cb) {
         retire(staging.value(), pending_);
@@ -1137,7 +1161,10 @@ Status VulkanDevice::readTexture(TextureHandle h, uint32_t mip, void* out, size_
     vk_.vkCmdPipelineBarrier(cb.value(), VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0,
                              nullptr, 0, nullptr);
     Status s = submitAndWait();
-    if (s) std::memcpy(out, readback.alloc.mapped, bytes);
+    if (s && t.desc.format == Format::D24S8)
+        d24s8FromVulkan(readback.alloc.mapped, out, bytes);
+    else if (s)
+        std::memcpy(out, readback.alloc.mapped, bytes);
     retire(readback, pending_);
     releaseGarbage(pending_);
     return s;
