@@ -497,6 +497,7 @@ public:
         if (programs_.get(desc.program).compute)
             return Status{StatusCode::InvalidArgument, "GraphicsPipelineDesc.program is a compute program"};
         SFX_TRY(validation::graphicsPipelineShape(desc, caps_));
+        SFX_TRY(validation::graphicsPipelineState(desc, caps_));
         SFX_TRY(enter());
         GlPipeline p;
         p.program = desc.program;
@@ -586,10 +587,11 @@ public:
         if (!p.compute) return {StatusCode::InvalidArgument, "DispatchDesc.pipeline is a graphics pipeline"};
         SFX_TRY(programs_.check(p.program, "DispatchDesc.pipeline's program"));
         const GlProgram& program = programs_.get(p.program);
-        SFX_TRY(enter());
         SFX_TRY(checkBindingsMatch(program, d.bindings, "DispatchDesc.bindings"));
+        SFX_TRY(checkResources(d.bindings, &program));
+        SFX_TRY(enter());
         GL(glUseProgram, program.name);
-        SFX_TRY(takeDeviceError(bindResources(d.bindings, nullptr)));
+        bindResources(d.bindings);
         // Earlier passes' writes visible to the dispatch, and its writes to what follows.
         GL(glMemoryBarrier, GL_ALL_BARRIER_BITS);
         GL(glDispatchCompute, d.groupsX, d.groupsY, d.groupsZ);
@@ -813,11 +815,16 @@ private:
         return Status::ok();
     }
 
-    Status bindBufferRange(GLenum target, const BufferBinding& bb, uint32_t alignment, uint32_t minSize,
-                           const ShaderResource* resource) {
+    // The range a buffer binding covers: its size, or the rest of the buffer when size is 0.
+    static uint64_t boundSize(const BufferBinding& bb, const BufferDesc& d) {
+        return bb.size ? bb.size : (bb.offset < d.size ? d.size - bb.offset : 0);
+    }
+
+    Status checkBufferRange(GLenum target, const BufferBinding& bb, uint32_t alignment, uint32_t minSize,
+                            const ShaderResource* resource) {
         SFX_TRY(buffers_.check(bb.buffer, "BufferBinding.buffer"));
         const GlBuffer& buf = buffers_.get(bb.buffer);
-        const uint64_t size = bb.size ? bb.size : (bb.offset < buf.desc.size ? buf.desc.size - bb.offset : 0);
+        const uint64_t size = boundSize(bb, buf.desc);
         SFX_TRY(validation::bufferRange(buf.desc, bb.offset, size, "BufferBinding range"));
         if (bb.offset % alignment)
             return invalidArgument("BufferBinding.offset", str(bb.offset), "a multiple of " + str(alignment));
@@ -828,7 +835,6 @@ private:
         if (size < minSize)
             return invalidArgument("BufferBinding size", str(size),
                                    ">= " + str(minSize) + " bytes of block '" + (resource ? resource->name : "") + "'");
-        GL(glBindBufferRange, target, bb.binding, buf.name, GLintptr(bb.offset), GLsizeiptr(size));
         return Status::ok();
     }
 
@@ -839,42 +845,26 @@ private:
         return nullptr;
     }
 
-    // Binds a draw's or dispatch's resources. Textures show the shader only the binding's mips
-    // (BASE_LEVEL/MAX_LEVEL), which also makes rendering into a mip outside them legal.
-    Status bindResources(const BindingSet& b, const GlProgram* program) {
+    // Every check of a draw's or dispatch's resources, made before the command does any GL work,
+    // so a refused command leaves the targets (and the GL state) as they were.
+    Status checkResources(const BindingSet& b, const GlProgram* program) {
         for (const TextureBinding& tb : b.textures) {
             SFX_TRY(textures_.check(tb.texture, "TextureBinding.texture"));
-            const GlTexture& t = textures_.get(tb.texture);
-            if (tb.mipCount == 0 || tb.baseMip >= t.desc.mipLevels || tb.mipCount > t.desc.mipLevels - tb.baseMip)
-                return invalidArgument("TextureBinding mips", str(tb.baseMip) + "+" + str(tb.mipCount),
-                                       "a non-empty range inside the texture's " + str(t.desc.mipLevels) + " levels");
-            if (!(t.desc.usage & kTextureSampled))
-                return invalidArgument("TextureBinding.texture usage", str(t.desc.usage), "with kTextureSampled");
+            SFX_TRY(validation::textureBinding(textures_.get(tb.texture).desc, tb));
             if (tb.binding >= caps_.limits.maxTextureBindings)
                 return invalidArgument("TextureBinding.binding", str(tb.binding),
                                        "[0, " + str(caps_.limits.maxTextureBindings - 1) + "]");
-            GLuint sampler = nearestSampler_;
-            if (!tb.sampler.isNull()) {
-                SFX_TRY(samplers_.check(tb.sampler, "TextureBinding.sampler"));
-                // Unfilterable formats would make the texture incomplete under a linear sampler.
-                if (filterable(t.desc.format)) sampler = samplers_.get(tb.sampler).name;
-            }
-            GL(glActiveTexture, GL_TEXTURE0 + tb.binding);
-            GL(glBindTexture, GL_TEXTURE_2D, t.name);
-            GL(glTexParameteri, GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, GLint(tb.baseMip));
-            GL(glTexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, GLint(tb.baseMip + tb.mipCount - 1));
-            GL(glBindSampler, tb.binding, sampler);
+            if (!tb.sampler.isNull()) SFX_TRY(samplers_.check(tb.sampler, "TextureBinding.sampler"));
         }
-        GL(glActiveTexture, GL_TEXTURE0);
         for (const BufferBinding& bb : b.uniformBuffers) {
             const ShaderResource* r = findResource(program, ResourceKind::UniformBuffer, bb.binding);
-            SFX_TRY(bindBufferRange(GL_UNIFORM_BUFFER, bb, uniformOffsetAlignment_, r ? r->blockSize : 0, r));
+            SFX_TRY(checkBufferRange(GL_UNIFORM_BUFFER, bb, uniformOffsetAlignment_, r ? r->blockSize : 0, r));
         }
         for (const BufferBinding& bb : b.storageBuffers) {
             if (!caps_.storageBuffers)
                 return {StatusCode::UnsupportedFeature, "BindingSet.storageBuffers: the device has no storage buffers"};
             const ShaderResource* r = findResource(program, ResourceKind::StorageBuffer, bb.binding);
-            SFX_TRY(bindBufferRange(GL_SHADER_STORAGE_BUFFER, bb, storageOffsetAlignment_, r ? r->blockSize : 0, r));
+            SFX_TRY(checkBufferRange(GL_SHADER_STORAGE_BUFFER, bb, storageOffsetAlignment_, r ? r->blockSize : 0, r));
         }
         for (const StorageImageBinding& ib : b.storageImages) {
             if (!caps_.storageImages)
@@ -884,10 +874,36 @@ private:
             SFX_TRY(validation::mipRange(t.desc, ib.mip, "StorageImageBinding.mip"));
             if (!(t.desc.usage & kTextureStorage))
                 return invalidArgument("StorageImageBinding.texture usage", str(t.desc.usage), "with kTextureStorage");
+        }
+        return Status::ok();
+    }
+
+    // Binds resources checkResources accepted. Textures show the shader only the binding's mips
+    // (BASE_LEVEL/MAX_LEVEL), which also makes rendering into a mip outside them legal.
+    void bindResources(const BindingSet& b) {
+        for (const TextureBinding& tb : b.textures) {
+            const GlTexture& t = textures_.get(tb.texture);
+            GLuint sampler = nearestSampler_;
+            // Unfilterable formats would make the texture incomplete under a linear sampler.
+            if (!tb.sampler.isNull() && filterable(t.desc.format)) sampler = samplers_.get(tb.sampler).name;
+            GL(glActiveTexture, GL_TEXTURE0 + tb.binding);
+            GL(glBindTexture, GL_TEXTURE_2D, t.name);
+            GL(glTexParameteri, GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, GLint(tb.baseMip));
+            GL(glTexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, GLint(tb.baseMip + tb.mipCount - 1));
+            GL(glBindSampler, tb.binding, sampler);
+        }
+        GL(glActiveTexture, GL_TEXTURE0);
+        auto bindRange = [&](GLenum target, const BufferBinding& bb) {
+            const GlBuffer& buf = buffers_.get(bb.buffer);
+            GL(glBindBufferRange, target, bb.binding, buf.name, GLintptr(bb.offset), GLsizeiptr(boundSize(bb, buf.desc)));
+        };
+        for (const BufferBinding& bb : b.uniformBuffers) bindRange(GL_UNIFORM_BUFFER, bb);
+        for (const BufferBinding& bb : b.storageBuffers) bindRange(GL_SHADER_STORAGE_BUFFER, bb);
+        for (const StorageImageBinding& ib : b.storageImages) {
+            const GlTexture& t = textures_.get(ib.texture);
             GL(glBindImageTexture, ib.binding, t.name, GLint(ib.mip), GL_FALSE, 0, GL_READ_WRITE,
                glFormat(t.desc.format).internalFormat);
         }
-        return Status::ok();
     }
 
     GLenum depthAttachmentPoint(Format f) const {
@@ -1045,24 +1061,20 @@ private:
             return invalidArgument("DrawDesc.pipeline depthFormat", toString(pd.depthFormat),
                                    std::string(toString(passDepth)) + ", the pass's depth attachment");
         SFX_TRY(checkBindingsMatch(programs_.get(p.program), d.bindings, "DrawDesc.bindings"));
-        if (d.instanceCount == 0) return invalidArgument("DrawDesc.instanceCount", "0", ">= 1");
+        SFX_TRY(checkResources(d.bindings, &programs_.get(p.program)));
+        const BufferDesc* vertexBuffer = nullptr;
+        const BufferDesc* indexBuffer = nullptr;
         if (!pd.vertexLayout.attributes.empty()) {
             SFX_TRY(buffers_.check(d.vertexBuffer, "DrawDesc.vertexBuffer"));
-            if (!(buffers_.get(d.vertexBuffer).desc.usage & kBufferVertex))
-                return invalidArgument("DrawDesc.vertexBuffer usage", str(buffers_.get(d.vertexBuffer).desc.usage),
-                                       "with kBufferVertex");
+            vertexBuffer = &buffers_.get(d.vertexBuffer).desc;
         } else if (!d.vertexBuffer.isNull()) {
             return invalidArgument("DrawDesc.vertexBuffer", "set", "null for a pipeline without vertex attributes");
         }
         if (!d.indexBuffer.isNull()) {
             SFX_TRY(buffers_.check(d.indexBuffer, "DrawDesc.indexBuffer"));
-            const BufferDesc& ib = buffers_.get(d.indexBuffer).desc;
-            if (!(ib.usage & kBufferIndex)) return invalidArgument("DrawDesc.indexBuffer usage", str(ib.usage), "with kBufferIndex");
-            if (uint64_t(d.count) * 4 > ib.size)
-                return invalidArgument("DrawDesc.count", str(d.count),
-                                       "at most " + str(ib.size / 4) + " indices in the index buffer");
+            indexBuffer = &buffers_.get(d.indexBuffer).desc;
         }
-        return Status::ok();
+        return validation::drawRange(d, pd.vertexLayout, vertexBuffer, indexBuffer);
     }
 
     Status draw(const DrawDesc& d) {
@@ -1070,7 +1082,7 @@ private:
         const GlProgram& program = programs_.get(p.program);
         const GraphicsPipelineDesc& pd = p.desc;
         GL(glUseProgram, program.name);
-        SFX_TRY(bindResources(d.bindings, &program));
+        bindResources(d.bindings);
 
         if (pd.depth.test || pd.depth.write) {
             // GL skips depth writes with the test off; ALWAYS keeps a write-only pipeline writing.

@@ -21,6 +21,7 @@ struct NullProgram {
 };
 struct NullPipeline {
     bool compute = false;
+    VertexLayout vertexLayout;  // bounds the draws' vertex reads
 };
 struct NullTimer {
     bool begun = false, ended = false;
@@ -123,13 +124,14 @@ public:
         if (programs_.get(desc.program).compute)
             return Status{StatusCode::InvalidArgument, "GraphicsPipelineDesc.program is a compute program"};
         SFX_TRY(validation::graphicsPipelineShape(desc, caps_));
-        return pipelines_.insert(NullPipeline{false});
+        SFX_TRY(validation::graphicsPipelineState(desc, caps_));
+        return pipelines_.insert(NullPipeline{false, desc.vertexLayout});
     }
     Result<PipelineHandle> createComputePipeline(const ComputePipelineDesc& desc) override {
         SFX_TRY(programs_.check(desc.program, "ComputePipelineDesc.program"));
         if (!programs_.get(desc.program).compute)
             return Status{StatusCode::InvalidArgument, "ComputePipelineDesc.program is not a compute program"};
-        return pipelines_.insert(NullPipeline{true});
+        return pipelines_.insert(NullPipeline{true, {}});
     }
     Status destroyPipeline(PipelineHandle h) override {
         SFX_TRY(pipelines_.check(h, "pipeline"));
@@ -157,6 +159,17 @@ public:
             SFX_TRY(pipelines_.check(d.pipeline, "DrawDesc.pipeline"));
             SFX_TRY(checkBindings(d.bindings));
             SFX_TRY(validation::noFeedbackLoop(pass, d));
+            const BufferDesc* vertexBuffer = nullptr;
+            const BufferDesc* indexBuffer = nullptr;
+            if (!pipelines_.get(d.pipeline).vertexLayout.attributes.empty() || !d.vertexBuffer.isNull()) {
+                SFX_TRY(buffers_.check(d.vertexBuffer, "DrawDesc.vertexBuffer"));
+                vertexBuffer = &buffers_.get(d.vertexBuffer).desc;
+            }
+            if (!d.indexBuffer.isNull()) {
+                SFX_TRY(buffers_.check(d.indexBuffer, "DrawDesc.indexBuffer"));
+                indexBuffer = &buffers_.get(d.indexBuffer).desc;
+            }
+            SFX_TRY(validation::drawRange(d, pipelines_.get(d.pipeline).vertexLayout, vertexBuffer, indexBuffer));
         }
         return Status::ok();
     }
@@ -187,10 +200,7 @@ private:
     Status checkBindings(const BindingSet& b) {
         for (const auto& t : b.textures) {
             SFX_TRY(textures_.check(t.texture, "TextureBinding.texture"));
-            const TextureDesc& d = textures_.get(t.texture).desc;
-            if (t.mipCount == 0 || t.baseMip + t.mipCount > d.mipLevels)
-                return invalidArgument("TextureBinding mips", std::to_string(t.baseMip) + "+" + std::to_string(t.mipCount),
-                                       "a non-empty range inside the texture's " + std::to_string(d.mipLevels) + " levels");
+            SFX_TRY(validation::textureBinding(textures_.get(t.texture).desc, t));
             if (!t.sampler.isNull()) SFX_TRY(samplers_.check(t.sampler, "TextureBinding.sampler"));
         }
         for (const auto& u : b.uniformBuffers) SFX_TRY(buffers_.check(u.buffer, "BufferBinding.buffer"));

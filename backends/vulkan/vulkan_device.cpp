@@ -217,6 +217,26 @@ VkImageAspectFlags fullAspect(Format f) {
     if (isDepthFormat(f)) return VK_IMAGE_ASPECT_DEPTH_BIT;
     return VK_IMAGE_ASPECT_COLOR_BIT;
 }
+// D24S8 texels between the HAL layout (depth in the high 24 bits, stencil in the low 8; see
+// hal.hpp) and what a copy of Vulkan's depth aspect moves (X8_D24: depth in the low 24 bits,
+// the high 8 undefined). Stencil is not copied: it is dropped on upload and reads as 0.
+void d24s8ToVulkan(const void* hal, void* vk, size_t bytes) {
+    for (size_t i = 0; i + 4 <= bytes; i += 4) {
+        uint32_t v;
+        std::memcpy(&v, static_cast<const uint8_t*>(hal) + i, 4);
+        v >>= 8;
+        std::memcpy(static_cast<uint8_t*>(vk) + i, &v, 4);
+    }
+}
+void d24s8FromVulkan(const void* vk, void* hal, size_t bytes) {
+    for (size_t i = 0; i + 4 <= bytes; i += 4) {
+        uint32_t v;
+        std::memcpy(&v, static_cast<const uint8_t*>(vk) + i, 4);
+        v = (v & 0x00FFFFFFu) << 8;
+        std::memcpy(static_cast<uint8_t*>(hal) + i, &v, 4);
+    }
+}
+
 // What shaders sample, copies move and views see: depth only for depth formats.
 VkImageAspectFlags dataAspect(Format f) {
     return isDepthFormat(f) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
@@ -306,6 +326,7 @@ struct VulkanPipeline {
     std::vector<Format> colorFormats;
     Format depthFormat = Format::Undefined;
     bool usesVertexBuffer = false;
+    VertexLayout vertexLayout;  // bounds the draws' vertex reads (validation::drawRange)
 };
 
 struct VulkanTimer {
@@ -633,6 +654,9 @@ Status VulkanDevice::initOwn(const DeviceOptions& options) {
     enabled.vertexPipelineStoresAndAtomics = supported.vertexPipelineStoresAndAtomics;
     enabled.shaderStorageImageWriteWithoutFormat = supported.shaderStorageImageWriteWithoutFormat;
     enabled.shaderStorageImageReadWithoutFormat = supported.shaderStorageImageReadWithoutFormat;
+    // Index values are not checked on the host (the index buffer lives on the device); with
+    // robust access an out-of-range index reads zeros instead of memory past the vertex buffer.
+    enabled.robustBufferAccess = supported.robustBufferAccess;
     VkPhysicalDeviceDynamicRenderingFeatures dynamic{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES};
     dynamic.dynamicRendering = VK_TRUE;
     const float priority = 1.0f;
@@ -1092,7 +1116,11 @@ Status VulkanDevice::writeTexture(TextureHandle h, uint32_t mip, const void* dat
     if (!data) return invalidArgument("data", "null", "a pointer to the level's bytes");
     Result<VulkanBuffer> staging = makeBuffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "sfx staging (writeTexture)");
     if (!staging) return staging.status();
-    std::memcpy(staging->alloc.mapped, data, bytes);
+    // The HAL's D24S8 bytes put depth high; Vulkan's depth-aspect copy wants it low.
+    if (t.desc.format == Format::D24S8)
+        d24s8ToVulkan(data, staging->alloc.mapped, bytes);
+    else
+        std::memcpy(staging->alloc.mapped, data, bytes);
     Result<VkCommandBuffer> cb = recording();
     if (!cb) {
         retire(staging.value(), pending_);
@@ -1133,7 +1161,10 @@ Status VulkanDevice::readTexture(TextureHandle h, uint32_t mip, void* out, size_
     vk_.vkCmdPipelineBarrier(cb.value(), VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0,
                              nullptr, 0, nullptr);
     Status s = submitAndWait();
-    if (s) std::memcpy(out, readback.alloc.mapped, bytes);
+    if (s && t.desc.format == Format::D24S8)
+        d24s8FromVulkan(readback.alloc.mapped, out, bytes);
+    else if (s)
+        std::memcpy(out, readback.alloc.mapped, bytes);
     retire(readback, pending_);
     releaseGarbage(pending_);
     return s;
@@ -1319,20 +1350,7 @@ Result<PipelineHandle> VulkanDevice::createGraphicsPipeline(const GraphicsPipeli
     const VulkanProgram& prog = programs_.get(desc.program);
     if (prog.compute) return Status{StatusCode::InvalidArgument, "GraphicsPipelineDesc.program is a compute program"};
     SFX_TRY(validation::graphicsPipelineShape(desc, caps_));
-    if (uint32_t(desc.cull) > uint32_t(CullMode::Front))
-        return invalidArgument("GraphicsPipelineDesc.cull", std::to_string(uint32_t(desc.cull)), "None, Back or Front");
-    if (uint32_t(desc.depth.compare) > uint32_t(CompareOp::Always))
-        return invalidArgument("GraphicsPipelineDesc.depth.compare", std::to_string(uint32_t(desc.depth.compare)), "a CompareOp");
-    if (uint32_t(desc.blend.src) > uint32_t(BlendFactor::OneMinusDstAlpha) ||
-        uint32_t(desc.blend.dst) > uint32_t(BlendFactor::OneMinusDstAlpha))
-        return invalidArgument("GraphicsPipelineDesc.blend", "an unknown BlendFactor", "a BlendFactor");
-    for (Format f : desc.colorFormats)
-        if (desc.blend.enable && isIntegerFormat(f))
-            return invalidArgument("GraphicsPipelineDesc.blend.enable", "true",
-                                   std::string("false with the integer colour format ") + toString(f));
-    for (const VertexAttribute& a : desc.vertexLayout.attributes)
-        if (uint32_t(a.format) > uint32_t(VertexFormat::Float4))
-            return invalidArgument("VertexAttribute.format", std::to_string(uint32_t(a.format)), "Float2, Float3 or Float4");
+    SFX_TRY(validation::graphicsPipelineState(desc, caps_));
 
     VulkanPipeline p;
     p.compute = false;
@@ -1341,6 +1359,7 @@ Result<PipelineHandle> VulkanDevice::createGraphicsPipeline(const GraphicsPipeli
     p.colorFormats = desc.colorFormats;
     p.depthFormat = desc.depthFormat;
     p.usesVertexBuffer = desc.vertexLayout.stride > 0;
+    p.vertexLayout = desc.vertexLayout;
     Status s = createLayouts(prog.resources, false, p);
     if (!s) {
         retire(p);
@@ -1569,9 +1588,7 @@ Status VulkanDevice::resolveBindings(const BindingSet& set, const VulkanPipeline
     for (const TextureBinding& tb : set.textures) {
         SFX_TRY(textures_.check(tb.texture, "TextureBinding.texture"));
         VulkanTexture& t = textures_.get(tb.texture);
-        if (tb.mipCount == 0 || tb.baseMip >= t.desc.mipLevels || tb.mipCount > t.desc.mipLevels - tb.baseMip)
-            return invalidArgument("TextureBinding mips", std::to_string(tb.baseMip) + "+" + std::to_string(tb.mipCount),
-                                   "a non-empty range inside the texture's " + std::to_string(t.desc.mipLevels) + " levels");
+        SFX_TRY(validation::textureBinding(t.desc, tb));
         VkSampler sampler = defaultSampler_;
         if (!tb.sampler.isNull()) {
             SFX_TRY(samplers_.check(tb.sampler, "TextureBinding.sampler"));
@@ -1579,8 +1596,6 @@ Status VulkanDevice::resolveBindings(const BindingSet& set, const VulkanPipeline
         }
         Result<const ShaderResource*> r = resource(tb.binding, ResourceKind::SampledTexture, "TextureBinding");
         if (!r) return r.status();
-        if (!(t.desc.usage & kTextureSampled))
-            return invalidArgument("TextureBinding.texture", "a texture without kTextureSampled", "a sampled texture");
         Result<VkImageView> view = sampledView(t, tb.baseMip, tb.mipCount);
         if (!view) return view.status();
         out.images.push_back({sampler, view.value(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
@@ -1712,22 +1727,17 @@ Status VulkanDevice::renderPass(const RenderPassDesc& pass, std::span<const Draw
                                    "a pipeline whose colorFormats and depthFormat match the pass's attachments");
         SFX_TRY(resolveBindings(d.bindings, pl, "DrawDesc.bindings", uses, resolved[i]));
         SFX_TRY(validation::noFeedbackLoop(pass, d));
-        if (pl.usesVertexBuffer) {
+        const BufferDesc* vertexBuffer = nullptr;
+        const BufferDesc* indexBuffer = nullptr;
+        if (pl.usesVertexBuffer || !d.vertexBuffer.isNull()) {
             SFX_TRY(buffers_.check(d.vertexBuffer, "DrawDesc.vertexBuffer"));
-            if (!(buffers_.get(d.vertexBuffer).desc.usage & kBufferVertex))
-                return invalidArgument("DrawDesc.vertexBuffer", "a buffer without kBufferVertex", "a vertex buffer");
-        } else if (!d.vertexBuffer.isNull()) {
-            SFX_TRY(buffers_.check(d.vertexBuffer, "DrawDesc.vertexBuffer"));
+            vertexBuffer = &buffers_.get(d.vertexBuffer).desc;
         }
         if (!d.indexBuffer.isNull()) {
             SFX_TRY(buffers_.check(d.indexBuffer, "DrawDesc.indexBuffer"));
-            const BufferDesc& ib = buffers_.get(d.indexBuffer).desc;
-            if (!(ib.usage & kBufferIndex))
-                return invalidArgument("DrawDesc.indexBuffer", "a buffer without kBufferIndex", "an index buffer");
-            if (uint64_t(d.count) * 4 > ib.size)
-                return invalidArgument("DrawDesc.count", std::to_string(d.count),
-                                       "at most the " + std::to_string(ib.size / 4) + " indices of the index buffer");
+            indexBuffer = &buffers_.get(d.indexBuffer).desc;
         }
+        SFX_TRY(validation::drawRange(d, pl.vertexLayout, vertexBuffer, indexBuffer));
     }
     {
         std::vector<VkImage> images;

@@ -1,5 +1,6 @@
 #include "sfx/hal_validation.hpp"
 
+#include <algorithm>
 #include <string>
 
 namespace sfx::validation {
@@ -122,14 +123,111 @@ Status graphicsPipelineShape(const GraphicsPipelineDesc& d, const DeviceCaps& ca
         return {StatusCode::UnsupportedFormat, "GraphicsPipelineDesc.depthFormat is not a depth format"};
     if (d.colorFormats.empty() && d.depthFormat == Format::Undefined)
         return invalidArgument("GraphicsPipelineDesc", "without attachments", "at least one colour or depth format");
-    if ((d.vertexLayout.stride == 0) != d.vertexLayout.attributes.empty())
-        return invalidArgument("GraphicsPipelineDesc.vertexLayout.stride", str(d.vertexLayout.stride),
+    const VertexLayout& layout = d.vertexLayout;
+    if ((layout.stride == 0) != layout.attributes.empty())
+        return invalidArgument("GraphicsPipelineDesc.vertexLayout.stride", str(layout.stride),
                                "> 0 exactly when attributes are given");
-    for (const VertexAttribute& a : d.vertexLayout.attributes) {
-        uint32_t size = a.format == VertexFormat::Float2 ? 8 : a.format == VertexFormat::Float3 ? 12 : 16;
-        if (a.offset + size > d.vertexLayout.stride)
-            return invalidArgument("VertexAttribute.offset", str(a.offset),
-                                   "offset + size <= stride (" + str(d.vertexLayout.stride) + ")");
+    if (layout.stride > kMaxVertexStride)
+        return invalidArgument("GraphicsPipelineDesc.vertexLayout.stride", str(layout.stride),
+                               "[0, " + str(kMaxVertexStride) + "]");
+    for (size_t i = 0; i < layout.attributes.size(); ++i) {
+        const VertexAttribute& a = layout.attributes[i];
+        const std::string field = "GraphicsPipelineDesc.vertexLayout.attributes[" + str(i) + "]";
+        const uint32_t size = vertexFormatBytes(a.format);
+        if (size == 0) return invalidArgument(field + ".format", str(uint32_t(a.format)), "Float2, Float3 or Float4");
+        if (a.location >= kMaxVertexAttributes)
+            return invalidArgument(field + ".location", str(a.location), "[0, " + str(kMaxVertexAttributes - 1) + "]");
+        for (size_t j = 0; j < i; ++j)
+            if (layout.attributes[j].location == a.location)
+                return invalidArgument(field + ".location", str(a.location),
+                                       "a location no other attribute uses (attributes[" + str(j) + "] has it)");
+        // 64-bit: offset 0xFFFFFFFC + 16 must not wrap to 12 and pass.
+        if (uint64_t(a.offset) + size > layout.stride)
+            return invalidArgument(field + ".offset", str(a.offset),
+                                   "[0, " + str(layout.stride >= size ? layout.stride - size : 0) + "] so that its " +
+                                       str(size) + " bytes end within the stride (" + str(layout.stride) + ")");
+    }
+    return Status::ok();
+}
+
+Status graphicsPipelineState(const GraphicsPipelineDesc& d, const DeviceCaps&) {
+    if (uint32_t(d.cull) > uint32_t(CullMode::Front))
+        return invalidArgument("GraphicsPipelineDesc.cull", str(uint32_t(d.cull)), "None, Back or Front");
+    if (uint32_t(d.depth.compare) > uint32_t(CompareOp::Always))
+        return invalidArgument("GraphicsPipelineDesc.depth.compare", str(uint32_t(d.depth.compare)),
+                               "a CompareOp, [0, " + str(uint32_t(CompareOp::Always)) + "]");
+    const std::string factors = "a BlendFactor, [0, " + str(uint32_t(BlendFactor::OneMinusDstAlpha)) + "]";
+    if (uint32_t(d.blend.src) > uint32_t(BlendFactor::OneMinusDstAlpha))
+        return invalidArgument("GraphicsPipelineDesc.blend.src", str(uint32_t(d.blend.src)), factors);
+    if (uint32_t(d.blend.dst) > uint32_t(BlendFactor::OneMinusDstAlpha))
+        return invalidArgument("GraphicsPipelineDesc.blend.dst", str(uint32_t(d.blend.dst)), factors);
+    // Integer attachments do not blend: Vulkan's validation refuses it, GL ignores it silently.
+    if (d.blend.enable)
+        for (size_t i = 0; i < d.colorFormats.size(); ++i)
+            if (uint32_t(d.colorFormats[i]) < uint32_t(Format::Count) && isIntegerFormat(d.colorFormats[i]))
+                return invalidArgument("GraphicsPipelineDesc.blend.enable", "true",
+                                       "false with the integer colour format " + std::string(toString(d.colorFormats[i])) +
+                                           " (colorFormats[" + str(i) + "])");
+    return Status::ok();
+}
+
+Status textureBinding(const TextureDesc& t, const TextureBinding& b) {
+    // baseMip + mipCount in 32 bits wraps (1 + 0xFFFFFFFF = 0); compare without adding.
+    if (b.mipCount == 0 || b.baseMip >= t.mipLevels || b.mipCount > t.mipLevels - b.baseMip)
+        return invalidArgument("TextureBinding (binding " + str(b.binding) + ") baseMip+mipCount",
+                               str(b.baseMip) + "+" + str(b.mipCount),
+                               "a non-empty range inside the texture's " + str(t.mipLevels) + " levels");
+    if (!(t.usage & kTextureSampled))
+        return invalidArgument("TextureBinding (binding " + str(b.binding) + ").texture", "a texture without kTextureSampled",
+                               "a texture with kTextureSampled");
+    return Status::ok();
+}
+
+uint32_t vertexFormatBytes(VertexFormat f) {
+    switch (f) {
+    case VertexFormat::Float2: return 8;
+    case VertexFormat::Float3: return 12;
+    case VertexFormat::Float4: return 16;
+    }
+    return 0;
+}
+
+uint64_t vertexAttributeEnd(const VertexLayout& layout) {
+    uint64_t end = 0;
+    for (const VertexAttribute& a : layout.attributes)
+        end = std::max(end, uint64_t(a.offset) + vertexFormatBytes(a.format));
+    return end;
+}
+
+Status drawRange(const DrawDesc& draw, const VertexLayout& layout, const BufferDesc* vertexBuffer,
+                 const BufferDesc* indexBuffer) {
+    if (draw.instanceCount == 0) return invalidArgument("DrawDesc.instanceCount", "0", "[1, 4294967295]");
+    if (!layout.attributes.empty()) {
+        if (!vertexBuffer)
+            return invalidArgument("DrawDesc.vertexBuffer", "null", "a vertex buffer for a pipeline with vertex attributes");
+        if (!(vertexBuffer->usage & kBufferVertex))
+            return invalidArgument("DrawDesc.vertexBuffer", "a buffer without kBufferVertex", "a buffer with kBufferVertex");
+    }
+    if (indexBuffer) {
+        if (!(indexBuffer->usage & kBufferIndex))
+            return invalidArgument("DrawDesc.indexBuffer", "a buffer without kBufferIndex", "a buffer with kBufferIndex");
+        // count < 2^32, so count * 4 fits in 64 bits.
+        if (uint64_t(draw.count) * 4 > indexBuffer->size)
+            return invalidArgument("DrawDesc.count", str(draw.count),
+                                   "[0, " + str(indexBuffer->size / 4) + "], the 32-bit indices in DrawDesc.indexBuffer (" +
+                                       str(indexBuffer->size) + " bytes)");
+        return Status::ok();
+    }
+    if (layout.attributes.empty() || draw.count == 0) return Status::ok();
+    // stride <= kMaxVertexStride and count < 2^32: the product stays far below 2^64.
+    const uint64_t end = uint64_t(draw.count - 1) * layout.stride + vertexAttributeEnd(layout);
+    if (end > vertexBuffer->size) {
+        const uint64_t fit = vertexBuffer->size < vertexAttributeEnd(layout)
+                                 ? 0
+                                 : (vertexBuffer->size - vertexAttributeEnd(layout)) / layout.stride + 1;
+        return invalidArgument("DrawDesc.count", str(draw.count),
+                               "[0, " + str(fit) + "], the vertices of stride " + str(layout.stride) +
+                                   " in DrawDesc.vertexBuffer (" + str(vertexBuffer->size) + " bytes)");
     }
     return Status::ok();
 }

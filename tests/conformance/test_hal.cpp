@@ -502,6 +502,40 @@ TEST_CASE("hal: compute writes a storage image mip, then it is sampled (high tie
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
+TEST_CASE("hal: depth formats upload and read back in the HAL's byte layout", "[hal]") {
+    Cleanup c;
+    const uint32_t w = 5, h = 3;
+    std::vector<float> f(w * h);
+    for (size_t i = 0; i < f.size(); ++i) f[i] = float(i) / 16.0f;
+    TextureHandle d32 = makeTexture(c, w, h, Format::D32F, kTextureSampled | kTextureRenderTarget);
+    SFX_REQUIRE_OK(dev().writeTexture(d32, 0, f.data(), f.size() * 4));
+    CHECK(readLevel<float>(d32) == f);
+    std::vector<uint16_t> u16(w * h);
+    for (size_t i = 0; i < u16.size(); ++i) u16[i] = uint16_t(i * 4000);
+    TextureHandle d16 = makeTexture(c, w, h, Format::D16, kTextureSampled | kTextureRenderTarget);
+    SFX_REQUIRE_OK(dev().writeTexture(d16, 0, u16.data(), u16.size() * 2));
+    CHECK(readLevel<uint16_t>(d16) == u16);
+    // D24S8: depth in the high 24 bits, stencil in the low 8, which the upload may drop and the
+    // readback gives as 0 (the SDK never writes stencil). GL ES reads depth through a shader as a
+    // float, so one step of the 24 bits is allowed.
+    std::vector<uint32_t> u24(w * h);
+    for (size_t i = 0; i < u24.size(); ++i) u24[i] = (uint32_t(i * 1000003u % 16777216u) << 8) | 0x5Au;
+    TextureHandle d24 = makeTexture(c, w, h, Format::D24S8, kTextureSampled | kTextureRenderTarget);
+    SFX_REQUIRE_OK(dev().writeTexture(d24, 0, u24.data(), u24.size() * 4));
+    std::vector<uint32_t> back24 = readLevel<uint32_t>(d24);
+    for (size_t i = 0; i < u24.size(); ++i) {
+        INFO("D24S8 texel " << i << ": wrote 0x" << std::hex << u24[i] << ", read 0x" << back24[i]);
+        CHECK(std::abs(int64_t(back24[i] >> 8) - int64_t(u24[i] >> 8)) <= 1);
+        CHECK(((back24[i] & 0xFFu) == 0 || (back24[i] & 0xFFu) == 0x5Au));
+    }
+    // A cleared D24S8 attachment reads back as depth 1.0: 0xFFFFFF in the high bits.
+    RenderPassDesc pass;
+    pass.depth = {d24, LoadOp::Clear, 1.0f};
+    SFX_REQUIRE_OK(dev().renderPass(pass, {}));
+    for (uint32_t v : readLevel<uint32_t>(d24)) REQUIRE((v >> 8) == 0xFFFFFFu);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
 TEST_CASE("hal: timers measure a flushed pass", "[hal]") {
     Cleanup c;
     TextureHandle target = makeTexture(c, 256, 256, Format::RGBA8, kTextureSampled | kTextureRenderTarget);
@@ -523,6 +557,137 @@ TEST_CASE("hal: timers measure a flushed pass", "[hal]") {
     CHECK(reading->milliseconds > 0.0);
     CHECK(reading->milliseconds < 10000.0);
     CHECK(reading->source == dev().caps().timing);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+// The status names the field and the allowed range, the same words on every backend.
+static void checkNamed(const Status& s, StatusCode code, const char* field) {
+    INFO(s.toString());
+    CHECK(s.code() == code);
+    CHECK(s.message().find(field) != std::string::npos);
+}
+
+TEST_CASE("hal: vertex layouts and draws that would read past their buffers are named errors", "[hal]") {
+    Cleanup c;
+    const ProgramHandle mesh = makeProgram(c, program("hal_test_mesh"));
+    auto tryPipeline = [&](GraphicsPipelineDesc d) {
+        d.program = mesh;
+        Result<PipelineHandle> p = dev().createGraphicsPipeline(d);
+        if (p.isOk()) (void)dev().destroyPipeline(p.value());
+        return p.status();
+    };
+    {
+        // 0xFFFFFFFC + 16 wraps to 12 in 32 bits; the check must not.
+        GraphicsPipelineDesc d = meshPipelineDesc(Format::RGBA8, Format::Undefined);
+        d.vertexLayout.attributes[1].offset = 0xFFFFFFFCu;
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "vertexLayout.attributes[1].offset");
+    }
+    {
+        GraphicsPipelineDesc d = meshPipelineDesc(Format::RGBA8, Format::Undefined);
+        d.vertexLayout.attributes[1].offset = 13;  // 13 + 16 > 28
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "vertexLayout.attributes[1].offset");
+    }
+    {
+        GraphicsPipelineDesc d = meshPipelineDesc(Format::RGBA8, Format::Undefined);
+        d.vertexLayout.attributes[0].location = 16;
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "vertexLayout.attributes[0].location");
+        d.vertexLayout.attributes[0].location = 0xFFFFFFFFu;
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "vertexLayout.attributes[0].location");
+        d.vertexLayout.attributes[0].location = 1;  // twice
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "vertexLayout.attributes[1].location");
+    }
+    {
+        GraphicsPipelineDesc d = meshPipelineDesc(Format::RGBA8, Format::Undefined);
+        d.vertexLayout.attributes[0].format = VertexFormat(7);
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "vertexLayout.attributes[0].format");
+    }
+
+    // Three vertices exactly fill the buffer; a fourth would be read past its end.
+    TextureHandle color = makeTexture(c, 8, 8, Format::RGBA8, kTextureSampled | kTextureRenderTarget);
+    PipelineHandle pipeline = makePipeline(c, meshPipelineDesc(Format::RGBA8, Format::Undefined), "hal_test_mesh");
+    const MeshVertex vertices[] = {
+        {-1, -1, 0.5f, 1, 0, 0, 1}, {3, -1, 0.5f, 1, 0, 0, 1}, {-1, 3, 0.5f, 1, 0, 0, 1}};
+    BufferHandle vb = makeBuffer(c, sizeof(vertices), kBufferVertex, vertices);
+    const uint32_t indices[] = {0, 1, 2};
+    BufferHandle ib = makeBuffer(c, sizeof(indices), kBufferIndex, indices);
+    RenderPassDesc pass;
+    pass.colors = {{color, 0, LoadOp::Clear, {0, 0, 0, 0}}};
+    DrawDesc draw;
+    draw.pipeline = pipeline;
+    draw.vertexBuffer = vb;
+    draw.count = 3;
+    SFX_REQUIRE_OK(dev().renderPass(pass, {&draw, 1}));
+    draw.count = 4;
+    checkNamed(dev().renderPass(pass, {&draw, 1}), StatusCode::InvalidArgument, "DrawDesc.count");
+    draw.count = 0xFFFFFFFFu;  // (count - 1) * stride overflows 32 bits
+    checkNamed(dev().renderPass(pass, {&draw, 1}), StatusCode::InvalidArgument, "DrawDesc.count");
+    draw.count = 3;
+    draw.instanceCount = 0;
+    checkNamed(dev().renderPass(pass, {&draw, 1}), StatusCode::InvalidArgument, "DrawDesc.instanceCount");
+    draw.instanceCount = 1;
+    draw.vertexBuffer = ib;  // an index buffer as vertices
+    checkNamed(dev().renderPass(pass, {&draw, 1}), StatusCode::InvalidArgument, "DrawDesc.vertexBuffer");
+    draw.vertexBuffer = vb;
+    draw.indexBuffer = ib;
+    SFX_REQUIRE_OK(dev().renderPass(pass, {&draw, 1}));
+    draw.count = 4;  // 16 bytes of indices in a 12-byte buffer
+    checkNamed(dev().renderPass(pass, {&draw, 1}), StatusCode::InvalidArgument, "DrawDesc.count");
+    // The refused draws left the target as the last good pass made it.
+    std::vector<uint8_t> rgba = readLevel<uint8_t>(color);
+    for (size_t i = 0; i < rgba.size(); i += 4) REQUIRE(rgba[i] == 255);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("hal: unknown pipeline state and bad texture bindings are refused alike on every backend", "[hal]") {
+    Cleanup c;
+    const ProgramHandle pattern = makeProgram(c, program("hal_test_pattern"));
+    auto tryPipeline = [&](GraphicsPipelineDesc d) {
+        d.program = pattern;
+        if (d.colorFormats.empty()) d.colorFormats = {Format::RGBA8};
+        Result<PipelineHandle> p = dev().createGraphicsPipeline(d);
+        if (p.isOk()) (void)dev().destroyPipeline(p.value());
+        return p.status();
+    };
+    {
+        GraphicsPipelineDesc d;
+        d.depth.compare = CompareOp(99);
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "GraphicsPipelineDesc.depth.compare");
+    }
+    {
+        GraphicsPipelineDesc d;
+        d.cull = CullMode(3);
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "GraphicsPipelineDesc.cull");
+    }
+    {
+        GraphicsPipelineDesc d;
+        d.blend = {true, BlendFactor(6), BlendFactor::Zero};
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "GraphicsPipelineDesc.blend.src");
+        d.blend = {true, BlendFactor::One, BlendFactor(0x80000000u)};
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "GraphicsPipelineDesc.blend.dst");
+    }
+    {
+        GraphicsPipelineDesc d;
+        d.colorFormats = {Format::R32UI};
+        d.blend = {true, BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha};
+        checkNamed(tryPipeline(d), StatusCode::InvalidArgument, "GraphicsPipelineDesc.blend.enable");
+    }
+
+    // baseMip + mipCount wraps to 0 in 32 bits; the range is still refused.
+    PipelineHandle copy = fullscreenPipeline(c, "copy", Format::RGBA8);
+    TextureHandle target = makeTexture(c, 8, 8, Format::RGBA8, kTextureSampled | kTextureRenderTarget);
+    TextureHandle source = makeTexture(c, 8, 8, Format::RGBA8, kTextureSampled, 2);
+    TextureHandle notSampled = makeTexture(c, 8, 8, Format::RGBA8, kTextureRenderTarget);
+    RenderPassDesc pass;
+    pass.colors = {{target, 0}};
+    DrawDesc draw;
+    draw.pipeline = copy;
+    for (auto [base, count] : {std::pair<uint32_t, uint32_t>{1, 0xFFFFFFFFu}, {0xFFFFFFFFu, 1}, {2, 1}, {0, 0}, {1, 2}}) {
+        INFO("mips " << base << "+" << count);
+        draw.bindings.textures = {{gen::copy::uSource, source, base, count}};
+        checkNamed(dev().renderPass(pass, {&draw, 1}), StatusCode::InvalidArgument, "baseMip+mipCount");
+    }
+    draw.bindings.textures = {{gen::copy::uSource, notSampled}};
+    checkNamed(dev().renderPass(pass, {&draw, 1}), StatusCode::InvalidArgument, "kTextureSampled");
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
 

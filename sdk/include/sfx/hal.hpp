@@ -40,7 +40,9 @@ enum class Format : uint32_t {
     RGBA32F,
     R32UI,
     D16,       // depth, unorm
-    D24S8,     // depth unorm 24 + stencil 8
+    D24S8,     // depth unorm 24 + stencil 8; bytes: one uint32 per texel, depth in the high 24 bits
+               // (depth * 0xFFFFFF << 8), stencil in the low 8. Where the API cannot copy stencil
+               // (Vulkan's depth-aspect copies, GL ES) stencil reads as 0 and is ignored on write.
     D32F,      // depth, float
     Count
 };
@@ -269,6 +271,7 @@ public:
     virtual Status destroyTexture(TextureHandle texture) = 0;
     virtual Result<TextureDesc> textureDesc(TextureHandle texture) const = 0;
     // Whole mip level, tightly packed rows, row 0 first. bytes must equal the level's size.
+    // Depth formats in the layout their Format comment gives (D24S8: depth in the high 24 bits).
     virtual Status writeTexture(TextureHandle texture, uint32_t mip, const void* data, size_t bytes) = 0;
     virtual Status readTexture(TextureHandle texture, uint32_t mip, void* out, size_t bytes) = 0;
 
