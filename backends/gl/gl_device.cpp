@@ -11,6 +11,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <vector>
 
@@ -298,7 +299,9 @@ public:
                                c.renderableFormat[size_t(Format::RGBA16F)];
         c.float32Filterable = float32Filterable_;
 
-        if (options_.validation && haveDebug) {
+        // A host's context keeps its own debug callback: the SDK does not replace it (nor
+        // disable debug output when it goes away); it relies on its per-call checks there.
+        if (options_.validation && haveDebug && !hostContext()) {
             gl_.glEnable(GL_DEBUG_OUTPUT);
             gl_.glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
             gl_.glDebugMessageCallback(&GlDevice::debugCallback, this);
@@ -596,6 +599,7 @@ public:
         GL(glMemoryBarrier, GL_ALL_BARRIER_BITS);
         GL(glDispatchCompute, d.groupsX, d.groupsY, d.groupsZ);
         GL(glMemoryBarrier, GL_ALL_BARRIER_BITS);
+        unbindResources(d.bindings);
         GL(glUseProgram, 0);
         return takeDeviceError(Status::ok());
     }
@@ -628,8 +632,15 @@ private:
         if (!makeCurrent())
             return {StatusCode::DeviceError, std::string("GL: cannot make the ") + platform_->name() + " context current"};
         pendingError_.clear();
+        // Errors the host's own calls left pending are not this call's failure: clear them so
+        // the per-call checks see only what the SDK did.
+        if (options_.validation && hostContext())
+            while (gl_.glGetError() != GL_NO_ERROR) {
+            }
         return Status::ok();
     }
+
+    bool hostContext() const { return std::string_view(platform_->name()) == "host"; }
 
     // A call's result once GL has had its say: the first GL error caught since enter() wins.
     Status takeDeviceError(Status s) {
@@ -876,6 +887,17 @@ private:
                 return invalidArgument("StorageImageBinding.texture usage", str(t.desc.usage), "with kTextureStorage");
         }
         return Status::ok();
+    }
+
+    // Leaves no SDK sampler or texture bound on the units a draw used: a sampler object left
+    // bound would silently override the filtering of whatever the host binds there next.
+    void unbindResources(const BindingSet& b) {
+        for (const TextureBinding& tb : b.textures) {
+            GL(glBindSampler, tb.binding, 0);
+            GL(glActiveTexture, GL_TEXTURE0 + tb.binding);
+            GL(glBindTexture, GL_TEXTURE_2D, 0);
+        }
+        GL(glActiveTexture, GL_TEXTURE0);
     }
 
     // Binds resources checkResources accepted. Textures show the shader only the binding's mips
@@ -1125,6 +1147,7 @@ private:
         } else {
             GL(glDrawArraysInstanced, GL_TRIANGLES, 0, GLsizei(d.count), GLsizei(d.instanceCount));
         }
+        unbindResources(d.bindings);
         return Status::ok();
     }
 
@@ -1232,6 +1255,8 @@ private:
             GL(glBindSampler, 0, nearestSampler_);
             GL(glBindVertexArray, emptyVao_);
             GL(glDrawArraysInstanced, GL_TRIANGLES, 0, 3, 1);
+            GL(glBindSampler, 0, 0);
+            GL(glBindTexture, GL_TEXTURE_2D, 0);
             GL(glBindVertexArray, 0);
             GL(glUseProgram, 0);
             std::vector<float> rgba(size_t(w) * h * 4);

@@ -221,7 +221,20 @@ TEST_CASE("gl: a host's current context wrapped as a device", "[hal][gl]") {
                                          : reinterpret_cast<gl::GetProcAddressFn>(&eglGetProcAddress);
     DeviceOptions options;
     options.ceiling = host.caps().ceiling;
-    options.validation = false;  // KHR_debug's callback belongs to the test device here
+    options.validation = true;  // per-call checks on; the host's debug callback must survive
+    using GetPointerv = void (*)(GLenum, void**);
+    using GetError = GLenum (*)();
+    using Enable = void (*)(GLenum);
+    auto getPointerv = reinterpret_cast<GetPointerv>(loader("glGetPointerv"));
+    auto getError = reinterpret_cast<GetError>(loader("glGetError"));
+    auto enable = reinterpret_cast<Enable>(loader("glEnable"));
+    REQUIRE(getPointerv);
+    REQUIRE(getError);
+    REQUIRE(enable);
+    void* hostCallback = nullptr;
+    void* hostUserParam = nullptr;
+    getPointerv(0x8244 /* GL_DEBUG_CALLBACK_FUNCTION */, &hostCallback);
+    getPointerv(0x8245 /* GL_DEBUG_CALLBACK_USER_PARAM */, &hostUserParam);
     const gl::Api api = host.caps().backend == BackendKind::GLES ? gl::Api::GLES : gl::Api::DesktopGL;
     Result<std::unique_ptr<Device>> wrapped = gl::wrapCurrentContext(loader, api, options);
     INFO(wrapped.status().toString());
@@ -232,13 +245,25 @@ TEST_CASE("gl: a host's current context wrapped as a device", "[hal][gl]") {
     FullScreen fs = makeFullScreen(dev, "hal_gltest_pattern_uint", Format::R32UI);
     TextureHandle t = dev.createTexture({4, 3, 1, Format::R32UI, kTextureRenderTarget}).value();
     CHECK(gl::wrapCurrentContext(nullptr, api, options).status().code() == StatusCode::InvalidArgument);
+    // An error the host's own call left pending is not the SDK call's failure.
+    enable(0xFFFFu);  // GL_INVALID_ENUM, on the host's account
     SFX_REQUIRE_OK(drawFullScreen(dev, fs.pipeline, t));
+    CHECK(dev.takeValidationMessages().empty());
     std::vector<uint32_t> out(12);
     SFX_REQUIRE_OK(dev.readTexture(t, 0, out.data(), out.size() * 4));
     CHECK(out[2 * 4 + 3] == 3 + 2000 + 7);
     SFX_REQUIRE_OK(dev.destroyTexture(t));
     destroy(dev, fs);
     wrapped.value().reset();
+    // The host's debug callback was neither replaced nor removed by the wrapper.
+    void* callbackAfter = nullptr;
+    void* userParamAfter = nullptr;
+    getPointerv(0x8244, &callbackAfter);
+    getPointerv(0x8245, &userParamAfter);
+    CHECK(callbackAfter == hostCallback);
+    CHECK(userParamAfter == hostUserParam);
+    // The host's invalid glEnable reached the host's own debug callback, not the SDK's list.
+    (void)test::takeValidationMessages();
     // The host's context survives the wrapper.
     SFX_REQUIRE_OK(host.flush());
     checkPattern(host, Format::RGBA8, 4, 4);
