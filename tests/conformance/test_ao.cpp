@@ -230,7 +230,7 @@ TEST_CASE("ao: profiling times exactly the planned passes and leaves the output 
             for (size_t i = 0; i < plan.passes.size(); ++i) {
                 CHECK(timings.value()[i].effect == plan.passes[i].effect);
                 CHECK(timings.value()[i].name == plan.passes[i].name);
-                CHECK(timings.value()[i].reading.milliseconds >= 0.0);
+                CHECK(timings.value()[i].reading.milliseconds > 0.0);  // every pass does real work
                 CHECK(timings.value()[i].reading.source == dev.caps().timing);
             }
 

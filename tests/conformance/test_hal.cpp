@@ -2,6 +2,8 @@
 // and tier the run opened. Backend-agnostic: only the HAL and the embedded test programs.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -557,6 +559,26 @@ TEST_CASE("hal: timers measure a flushed pass", "[hal]") {
     CHECK(reading->milliseconds > 0.0);
     CHECK(reading->milliseconds < 10000.0);
     CHECK(reading->source == dev().caps().timing);
+
+    // A timer measures the work between its ends: 48 passes over a 512x512 target take longer
+    // than one (median of three tries each, so a busy machine does not decide it).
+    TextureHandle big = makeTexture(c, 512, 512, Format::RGBA8, kTextureSampled | kTextureRenderTarget);
+    auto measure = [&](int passes) {
+        std::vector<double> ms;
+        for (int attempt = 0; attempt < 3; ++attempt) {
+            REQUIRE(dev().beginTimer(timer.value()).isOk());
+            for (int i = 0; i < passes; ++i)
+                fullscreenPass(big, pipeline, {.uniformBuffers = {{gen::hal_test_pattern::PatternParams, params}}});
+            REQUIRE(dev().endTimer(timer.value()).isOk());
+            REQUIRE(dev().flush().isOk());
+            ms.push_back(dev().readTimer(timer.value())->milliseconds);
+        }
+        std::sort(ms.begin(), ms.end());
+        return ms[1];
+    };
+    const double light = measure(1), heavy = measure(48);
+    INFO(test::label() << ": 1 pass " << light << " ms, 48 passes " << heavy << " ms");
+    CHECK(heavy > light);
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
 

@@ -150,16 +150,9 @@ TEST_CASE("gl: caps and the dialect under the ceiling", "[hal][gl]") {
     } else {
         CHECK(c.dialect == (es ? ShaderDialect::Essl310 : ShaderDialect::Glsl450));
     }
-    // Timers measure wall time between glFinish calls.
-    Device& dev = test::device();
-    TimerHandle t = dev.createTimer().value();
-    SFX_REQUIRE_OK(dev.beginTimer(t));
-    SFX_REQUIRE_OK(dev.endTimer(t));
-    Result<TimerReading> r = dev.readTimer(t);
-    REQUIRE(r.isOk());
-    CHECK(r->milliseconds >= 0);
-    CHECK(r->source == TimingSource::WallClockAfterFinish);
-    SFX_REQUIRE_OK(dev.destroyTimer(t));
+    // GL timers are the wall clock between glFinish calls (timer queries under-report on
+    // llvmpipe); what they measure is checked in the shared "timers" test.
+    CHECK(c.timing == TimingSource::WallClockAfterFinish);
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
