@@ -16,7 +16,8 @@ void main() {
         ivec2 q = clamp(p + SFX_AO_CREASE_OFFSETS[i], ivec2(0), size - 1);
         vec3 v = aoPosition(q, aoDepth(q)) - C;
         float dist2 = dot(v, v);
-        if (dist2 < params.epsilon * params.creaseRange * params.creaseRange) continue;
+        // Written so that NaN and a zero guard (the centre pixel itself) both contribute nothing.
+        if (!(dist2 > params.epsilon * params.creaseRange * params.creaseRange)) continue;
         float dist = sqrt(dist2);
         float contrib = clamp((dot(v, n) / dist - params.creaseMinimum) * params.creaseBias, 0.0, 1.0);
         float atten = 1.0 - clamp(dist / params.creaseRange, 0.0, 1.0);

@@ -11,7 +11,8 @@ float scalableTap(ivec2 p, vec2 offset, int level, ivec2 size, vec3 C, vec3 n) {
     vec3 v = aoPosition(q, texelFetch(uDepth, m, level).r) - C;
     float r = params.radius;
     float vv = dot(v, v);
-    if (vv < params.epsilon * r * r) return 0.0;
+    // Written so that NaN and a zero guard (the centre pixel itself) both contribute nothing.
+    if (!(vv > params.epsilon * r * r)) return 0.0;
     float len = sqrt(vv);
     return max(1.0 - len / r, 0.0) * max(dot(v, n) / len - params.bias, 0.0);
 }

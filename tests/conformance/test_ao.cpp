@@ -143,6 +143,35 @@ TEST_CASE("ao: each technique matches its CPU reference", "[ao]") {
                 }
 }
 
+TEST_CASE("ao: at the smallest radius and epsilon the GPU matches the reference, no NaN", "[ao][bad-input]") {
+    if (drawsNothing()) {
+        WARN("null backend draws nothing: GPU results are not compared on " << test::label());
+        return;
+    }
+    // Nearly every tap lands on the centre pixel: the guard !(|v|^2 > epsilon r^2) must drop it
+    // on the GPU (float) exactly as in the reference (double), never dividing 0 by 0.
+    for (AoTechnique t : kTechniques)
+        for (bool blur : {false, true}) {
+            const samples::AnalyticScene scene = samples::cornerScene(64, 48, 1.0);
+            AoSettings s = settingsFor(t);
+            s.radius = kAoMinRadius;
+            s.crease.range = kAoMinRadius;
+            s.epsilon = 1e-8f;
+            s.blur = blur;
+            INFO(test::label() << " " << toString(t) << (blur ? " blur" : ""));
+            const GpuAo gpu = runAo(scene, s);
+            const Grid ref = reference::ambientVisibility(scene.aoInput(false), gpu.config);
+            double maxErr = 0;
+            for (size_t i = 0; i < ref.values.size(); ++i) {
+                REQUIRE(std::isfinite(gpu.visibility.values[i]));
+                REQUIRE(std::isfinite(ref.values[i]));
+                maxErr = std::max(maxErr, std::abs(gpu.visibility.values[i] - ref.values[i]));
+            }
+            INFO("max error " << maxErr);
+            CHECK(maxErr < 0.01);  // a radius far below a pixel finds no occluder on either side
+        }
+}
+
 TEST_CASE("ao: analytic properties hold on the GPU", "[ao]") {
     if (drawsNothing()) {
         WARN("null backend draws nothing: analytic checks skipped on " << test::label());

@@ -58,7 +58,25 @@ TEST_CASE("ao settings: out-of-range values are named errors", "[ao][bad-input]"
     Status st = validateAoSettings(s, high);
     CHECK(st.code() == StatusCode::InvalidArgument);
     CHECK(st.message().find("AoSettings.radius") != std::string::npos);
-    CHECK(st.message().find("(0, 1000]") != std::string::npos);
+    CHECK(st.message().find("[1e-4, 1000]") != std::string::npos);
+    // The minimum keeps epsilon * r^2 a normal float (the centre-tap guard); below it is refused.
+    s.radius = kAoMinRadius;
+    CHECK(validateAoSettings(s, high).isOk());
+    for (float tiny : {9e-5f, 1e-21f, 1e-40f /* denormal */}) {
+        s.radius = tiny;
+        st = validateAoSettings(s, high);
+        CHECK(st.code() == StatusCode::InvalidArgument);
+        CHECK(st.message().find("AoSettings.radius") != std::string::npos);
+    }
+    s = {};
+    s.crease.range = kAoMinRadius;
+    CHECK(validateAoSettings(s, high).isOk());
+    for (float tiny : {9e-5f, 1e-21f, 1e-40f}) {
+        s.crease.range = tiny;
+        st = validateAoSettings(s, high);
+        CHECK(st.code() == StatusCode::InvalidArgument);
+        CHECK(st.message().find("AoSettings.crease.range") != std::string::npos);
+    }
     s.radius = std::numeric_limits<float>::quiet_NaN();
     CHECK(validateAoSettings(s, high).message().find("AoSettings.radius") != std::string::npos);
     s = {};

@@ -250,6 +250,13 @@ TEST_CASE("motion blur: settings out of range are named errors; tiers and scalin
     t = {};
     t.softDepthExtent = 0;
     bad(t, "softDepthExtent");
+    // Denormals (flushed to 0 by GPUs, then divided by) and anything below 1e-6 are refused.
+    t.softDepthExtent = 1e-40f;
+    bad(t, "softDepthExtent");
+    t.softDepthExtent = 9e-7f;
+    bad(t, "softDepthExtent");
+    t.softDepthExtent = kMbMinSoftDepthExtent;
+    CHECK(resolveMotionBlur(Tier::High, t, 720).isOk());
     t = {};
     t.centreWeight = NAN;
     bad(t, "centreWeight");

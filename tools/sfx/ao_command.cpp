@@ -117,7 +117,7 @@ Command addAoCommand(CLI::App& app) {
     c.app->add_option("--technique", flags->technique, "alchemy | scalable | crease")->capture_default_str();
     c.app->add_option("--normals", flags->normalsPath,
                       "view-space normals file (x right, y up, camera looking down -z; signed float xyz in PFM/EXR)");
-    c.app->add_option("--radius", flags->radius, "world-space radius, (0, 1000]")->capture_default_str();
+    c.app->add_option("--radius", flags->radius, "world-space radius, [1e-4, 1000]")->capture_default_str();
     c.app->add_option("--intensity", flags->intensity, "occlusion scale, [0, 100]")->capture_default_str();
     c.app->add_option("--contrast", flags->contrast, "visibility exponent, [0.1, 10]")->capture_default_str();
     c.app->add_option("--bias", flags->bias, "[0, 1]; -1 = the technique's default")->capture_default_str();

@@ -184,7 +184,7 @@ Command addMotionBlurCommand(CLI::App& app) {
         ->capture_default_str();
     sub->add_option("--samples", flags->samples, "taps including the centre; 0 = the tier's (7 current, 9 high); odd in [3, 31]")
         ->capture_default_str();
-    sub->add_option("--soft-depth", flags->softDepth, "soft depth comparison extent, in linear depth units; (0, 1e6]")
+    sub->add_option("--soft-depth", flags->softDepth, "soft depth comparison extent, in linear depth units; [1e-6, 1e6]")
         ->capture_default_str();
     sub->add_option("--centre-weight", flags->centreWeight, "weight of the pixel's own colour; larger = thinner blur; (0, 100]")
         ->capture_default_str();

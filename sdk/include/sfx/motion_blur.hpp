@@ -30,6 +30,9 @@
 
 namespace sfx {
 
+// Smallest MotionBlurSettings.softDepthExtent: well above FLT_MIN, so no GPU flushes it to 0.
+inline constexpr float kMbMinSoftDepthExtent = 1e-6f;
+
 struct MotionBlurSettings {
     // Maximum blur radius in pixels at referenceRows rows of output; the radius used is
     // round(maxRadiusPx * height / referenceRows), at least 1, so the look holds at any size.
@@ -43,7 +46,8 @@ struct MotionBlurSettings {
     // [3, 31]: samples come in mirrored pairs around the centre.
     uint32_t samples = 0;
     // Depth difference (scene units, as linear depth) over which a sample turns from "level
-    // with the centre" to "in front of / behind it". (0, 1e6]; default 0.1.
+    // with the centre" to "in front of / behind it". [1e-6, 1e6] (kMbMinSoftDepthExtent: a
+    // normal float, which GPUs do not flush to 0 before dividing by it); default 0.1.
     float softDepthExtent = 0.1f;
     // The centre's weight against one averaged sample, divided by max(|v_C|, 1 px): larger
     // keeps more of the pixel's own colour (thinner blur). (0, 100]; default 1.

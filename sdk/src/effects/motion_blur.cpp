@@ -1,5 +1,6 @@
 #include "sfx/motion_blur.hpp"
 
+#include <cstdio>
 #include <cmath>
 #include <string>
 
@@ -51,6 +52,12 @@ bool isVelocityFormat(Format f) {
     return f == Format::RG16F || f == Format::RG32F || f == Format::RGBA16F || f == Format::RGBA32F;
 }
 
+std::string num(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
 uint32_t tilesFor(uint32_t size, uint32_t radius) { return (size + radius - 1) / radius; }
 
 std::string rangeText(double lo, double hi, bool openLow) {
@@ -71,8 +78,10 @@ Result<MotionBlurParams> resolveMotionBlur(Tier tier, const MotionBlurSettings& 
     if (s.samples != 0 && (s.samples < 3 || s.samples > uint32_t(shared::SFX_MB_MAX_TAPS) || s.samples % 2 == 0))
         return invalidArgument("MotionBlurSettings.samples", std::to_string(s.samples),
                                "0 (tier default) or odd in [3, 31] (centre + mirrored pairs)");
-    if (!(s.softDepthExtent > 0.0f && s.softDepthExtent <= 1.0e6f))
-        return invalidArgument("MotionBlurSettings.softDepthExtent", std::to_string(s.softDepthExtent), rangeText(0, 1e6, true));
+    // The lower bound is a normal float: GPUs flush denormals to 0, and the soft depth test
+    // divides by the extent (0 / 0 for a sample level with the centre).
+    if (!(s.softDepthExtent >= kMbMinSoftDepthExtent && s.softDepthExtent <= 1.0e6f))
+        return invalidArgument("MotionBlurSettings.softDepthExtent", num(s.softDepthExtent), "[1e-6, 1e6]");
     if (!(s.centreWeight > 0.0f && s.centreWeight <= 100.0f))
         return invalidArgument("MotionBlurSettings.centreWeight", std::to_string(s.centreWeight), rangeText(0, 100, true));
     if (!(s.exposure >= 0.0f && s.exposure <= 4.0f))

@@ -77,7 +77,7 @@ double scalable(const AoInput& in, const std::vector<Grid>& pyramid, const AoCon
             // The tap's depth may come from a coarse level; its position is the tap's own pixel.
             const dvec3 v = positionAt(in.reconstruction, qx, qy, g.at(mx, my)) - C;
             const double vv = glm::dot(v, v);
-            if (vv < c.epsilon * r * r) continue;  // the centre itself: no direction
+            if (!(vv > c.epsilon * r * r)) continue;  // the centre itself: no direction (as the shader)
             const double len = std::sqrt(vv);
             sum += std::max(1.0 - len / r, 0.0) * std::max(glm::dot(v, n) / len - c.bias, 0.0);
         }
@@ -95,7 +95,7 @@ double crease(const AoInput& in, const AoConfig& c, uint32_t x, uint32_t y, cons
         const int qy = std::clamp(int(y) + sh::SFX_AO_CREASE_OFFSETS[i].y, 0, int(d.height) - 1);
         const dvec3 v = positionAt(in.reconstruction, qx, qy, d.at(uint32_t(qx), uint32_t(qy))) - C;
         const double dist2 = glm::dot(v, v);
-        if (dist2 < c.epsilon * double(k.range) * double(k.range)) continue;  // clamped onto the centre
+        if (!(dist2 > c.epsilon * double(k.range) * double(k.range))) continue;  // clamped onto the centre (as the shader)
         const double dist = std::sqrt(dist2);
         const double contrib = saturate((glm::dot(v, n) / dist - double(k.minimumCrease)) * double(k.bias));
         const double atten = 1.0 - saturate(dist / double(k.range));
