@@ -69,6 +69,9 @@ TEST_CASE("ao settings: out-of-range values are named errors", "[ao][bad-input]"
         CHECK(st.message().find("AoSettings.radius") != std::string::npos);
     }
     s = {};
+    s.epsilon = 1e-8f;  // the documented minimum, as a float
+    CHECK(validateAoSettings(s, high).isOk());
+    s = {};
     s.crease.range = kAoMinRadius;
     CHECK(validateAoSettings(s, high).isOk());
     for (float tiny : {9e-5f, 1e-21f, 1e-40f}) {

@@ -56,7 +56,8 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
     SFX_TRY(checkRange("AoSettings.intensity", s.intensity, 0, false, 100, false, "[0, 100]"));
     SFX_TRY(checkRange("AoSettings.contrast", s.contrast, 0.1, false, 10, false, "[0.1, 10]"));
     if (s.bias != -1.0f) SFX_TRY(checkRange("AoSettings.bias", s.bias, 0, false, 1, false, "[0, 1], or -1 for the technique's default"));
-    SFX_TRY(checkRange("AoSettings.epsilon", s.epsilon, 1e-8, false, 1, false, "[1e-8, 1]"));
+    // The bound is the float nearest 1e-8 (just below it): the documented minimum must be settable.
+    SFX_TRY(checkRange("AoSettings.epsilon", s.epsilon, double(1e-8f), false, 1, false, "[1e-8, 1]"));
     const uint32_t maxSamples = uint32_t(shared::SFX_AO_MAX_SAMPLES);
     if (s.technique == AoTechnique::Crease) {
         if (s.samples != 0 && s.samples != uint32_t(shared::SFX_AO_CREASE_TAPS))
