@@ -86,7 +86,7 @@ ColorGrid runGpu(const ColorGrid& color, const Grid& depth, const VelocityGrid* 
     const uint32_t w = color.width, h = color.height;
     GpuInputs in;
     upload(in, color, depth, velocity);
-    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {w, h, test::tier(), Format::RGBA16F});
+    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {w, h, test::tierProfile(), Format::RGBA16F});
     INFO(mb.status().toString());
     REQUIRE(mb.isOk());
     MotionBlurInputs inputs;
@@ -110,7 +110,7 @@ MotionBlurSettings pixelSettings(float radius) {
     s.referenceRows = 0;
     return s;
 }
-MotionBlurParams resolved(const MotionBlurSettings& s, uint32_t h) { return resolveMotionBlur(test::tier(), s, h).value(); }
+MotionBlurParams resolved(const MotionBlurSettings& s, uint32_t h) { return resolveMotionBlur(test::tierProfile(), s, h).value(); }
 
 ColorGrid noise(uint32_t w, uint32_t h, uint32_t seed) {
     std::mt19937 rng(seed);
@@ -307,7 +307,7 @@ TEST_CASE("motion blur: velocities at and beyond the maximum are clamped; no NaN
 
 TEST_CASE("motion blur: bad inputs are named errors", "[motion_blur][conformance]") {
     Device& d = test::device();
-    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {32, 16, test::tier(), Format::RGBA16F});
+    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {32, 16, test::tierProfile(), Format::RGBA16F});
     REQUIRE(mb.isOk());
     GpuInputs in;
     upload(in, ColorGrid(32, 16), Grid(32, 16, 1.0), nullptr);

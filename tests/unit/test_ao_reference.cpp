@@ -108,6 +108,9 @@ TEST_CASE("ao settings: out-of-range values are named errors", "[ao][bad-input]"
 }
 
 TEST_CASE("ao settings resolve to the tier table", "[ao]") {
+    // The blur's depth source is a profile field, matching ao_blur.frag's tier variants.
+    CHECK(tiers::profile(Tier::Current).aoPackedDepthTarget);
+    CHECK_FALSE(tiers::profile(Tier::High).aoPackedDepthTarget);
     const AoConfig aHigh = configFor(AoTechnique::Alchemy, Tier::High);
     CHECK(aHigh.samples == 12);
     CHECK(aHigh.bias == Approx(1e-4));

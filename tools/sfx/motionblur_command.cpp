@@ -83,7 +83,7 @@ Status run(const MotionBlurFlags& f) {
     Result<OpenedDevice> opened = openDevice(f.device);
     if (!opened) return opened.status();
     Device& device = *opened->device;
-    const Tier tier = opened->tier.tier;
+    const TierProfile& profile = opened->tier.profile;
     Result<LoadedDepth> depth = loadDepth(device, f.camera);
     if (!depth) return depth.status();
 
@@ -118,7 +118,7 @@ Status run(const MotionBlurFlags& f) {
     if (!velTex) return velTex.status();
     SFX_TRY(device.writeTexture(velTex.value(), 0, vel.data(), vel.size() * 4));
 
-    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(device, {w, h, tier, colorFormat});
+    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(device, {w, h, profile, colorFormat});
     if (!mb) return mb.status();
     MotionBlurSettings s;
     s.maxRadiusPx = f.maxRadius;
@@ -155,8 +155,8 @@ Status run(const MotionBlurFlags& f) {
             }
         }
     SFX_TRY(io::writeImage(f.outPath, written));
-    const MotionBlurParams p = resolveMotionBlur(tier, s, h).value();
-    std::cout << "sfx motionblur: " << toString(opened->config) << " " << toString(tier) << " tier, " << p.taps << " taps, radius "
+    const MotionBlurParams p = resolveMotionBlur(profile, s, h).value();
+    std::cout << "sfx motionblur: " << toString(opened->config) << " " << toString(profile.tier) << " tier, " << p.taps << " taps, radius "
               << p.radiusPx << " px, " << w << "x" << h << " -> " << f.outPath << "\n";
     (void)device.destroyTexture(colorTex.value());
     (void)device.destroyTexture(velTex.value());

@@ -58,6 +58,17 @@ std::string num(double v) {
     return buf;
 }
 
+// A value-initialised TierProfile has every count at 0 (no taps, radius 0); it must come from
+// tiers::profile() or tiers::choose(), whose values the shaders' loops and tables accept.
+Status checkProfile(const TierProfile& p) {
+    if (uint32_t(p.tier) >= kTierCount || p.mbTaps < 3 || p.mbTaps > uint32_t(shared::SFX_MB_MAX_TAPS) || p.mbTaps % 2 == 0 ||
+        !(p.mbMaxRadiusPx > 0.0f && p.mbMaxRadiusPx <= float(shared::SFX_MB_MAX_RADIUS_LIMIT_PX)) ||
+        (p.mbJitterSize != 2 && p.mbJitterSize != 4))
+        return invalidArgument("MotionBlurDesc.profile", "an empty or unknown tier profile (mbTaps " + std::to_string(p.mbTaps) + ")",
+                               "tiers::profile(tier) or tiers::choose(caps)->profile");
+    return Status::ok();
+}
+
 uint32_t tilesFor(uint32_t size, uint32_t radius) { return (size + radius - 1) / radius; }
 
 std::string rangeText(double lo, double hi, bool openLow) {
@@ -66,9 +77,8 @@ std::string rangeText(double lo, double hi, bool openLow) {
 
 }  // namespace
 
-Result<MotionBlurParams> resolveMotionBlur(Tier tier, const MotionBlurSettings& s, uint32_t height) {
-    if (uint32_t(tier) >= kTierCount) return invalidArgument("tier", std::to_string(uint32_t(tier)), "Current or High");
-    const bool high = tier == Tier::High;
+Result<MotionBlurParams> resolveMotionBlur(const TierProfile& profile, const MotionBlurSettings& s, uint32_t height) {
+    SFX_TRY(checkProfile(profile));
     const double limit = double(shared::SFX_MB_MAX_RADIUS_LIMIT_PX);
     // Written as !(in range) so NaN is rejected too.
     if (!(s.maxRadiusPx == 0.0f || (s.maxRadiusPx > 0.0f && s.maxRadiusPx <= limit)))
@@ -89,11 +99,10 @@ Result<MotionBlurParams> resolveMotionBlur(Tier tier, const MotionBlurSettings& 
     if (height == 0) return invalidArgument("height", "0", "[1, maxTextureSize]");
 
     MotionBlurParams p;
-    p.taps = s.samples != 0 ? s.samples : uint32_t(high ? shared::SFX_MB_TAPS_HIGH : shared::SFX_MB_TAPS_CURRENT);
+    p.taps = s.samples != 0 ? s.samples : profile.mbTaps;
     p.pairs = (p.taps - 1) / 2;
-    p.jitterSize = uint32_t(high ? shared::SFX_MB_JITTER_SIZE_HIGH : shared::SFX_MB_JITTER_SIZE_CURRENT);
-    const double base = s.maxRadiusPx != 0.0f ? double(s.maxRadiusPx)
-                                              : double(high ? shared::SFX_MB_MAX_RADIUS_PX_HIGH : shared::SFX_MB_MAX_RADIUS_PX_CURRENT);
+    p.jitterSize = profile.mbJitterSize;
+    const double base = s.maxRadiusPx != 0.0f ? double(s.maxRadiusPx) : double(profile.mbMaxRadiusPx);
     const double scaled = s.referenceRows == 0 ? base : base * double(height) / double(s.referenceRows);
     const double radius = std::max(1.0, std::round(scaled));
     if (radius > limit)
@@ -108,7 +117,7 @@ Result<MotionBlurParams> resolveMotionBlur(Tier tier, const MotionBlurSettings& 
 }
 
 Result<std::unique_ptr<MotionBlur>> MotionBlur::create(Device& device, const MotionBlurDesc& desc) {
-    if (uint32_t(desc.tier) >= kTierCount) return invalidArgument("MotionBlurDesc.tier", std::to_string(uint32_t(desc.tier)), "Current or High");
+    SFX_TRY(checkProfile(desc.profile));
     if (!isColorFormat(desc.colorFormat))
         return invalidArgument("MotionBlurDesc.colorFormat", toString(desc.colorFormat), "RGBA8, RGBA16F or RGBA32F");
     const DeviceCaps& caps = device.caps();
@@ -126,7 +135,7 @@ MotionBlur::MotionBlur(Device& device, const MotionBlurDesc& desc) : device_(dev
 MotionBlur::~MotionBlur() { release(); }
 
 Status MotionBlur::allocate() {
-    Result<std::unique_ptr<LinearDepth>> depth = LinearDepth::create(device_, {desc_.width, desc_.height, desc_.tier, 1});
+    Result<std::unique_ptr<LinearDepth>> depth = LinearDepth::create(device_, {desc_.width, desc_.height, desc_.profile.tier, 1});
     if (!depth) return depth.status();
     depth_ = std::move(depth.value());
 
@@ -161,7 +170,7 @@ Status MotionBlur::allocate() {
         {gen::mb_reconstruct::kName, desc_.colorFormat, &reconstructProgram_, &reconstructPipeline_},
     };
     for (const Stage& st : stages) {
-        Result<ProgramHandle> prog = loadProgram(device_, st.program, desc_.tier);
+        Result<ProgramHandle> prog = loadProgram(device_, st.program, desc_.profile.tier);
         if (!prog) return prog.status();
         *st.programOut = prog.value();
         GraphicsPipelineDesc pd;
@@ -233,7 +242,7 @@ Status MotionBlur::resize(uint32_t width, uint32_t height) {
 
 Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings& settings) {
     if (output_.isNull() || !depth_) return {StatusCode::InvalidHandle, "MotionBlur: resources were not created (failed resize?)"};
-    Result<MotionBlurParams> resolved = resolveMotionBlur(desc_.tier, settings, desc_.height);
+    Result<MotionBlurParams> resolved = resolveMotionBlur(desc_.profile, settings, desc_.height);
     if (!resolved) return resolved.status();
     const MotionBlurParams& p = resolved.value();
     const std::string expectedSize = std::to_string(desc_.width) + "x" + std::to_string(desc_.height) + " (the MotionBlur size)";
@@ -332,7 +341,7 @@ Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings
 Plan MotionBlur::plan(const MotionBlurSettings& settings) const {
     Plan plan;
     if (depth_) plan.append(depth_->plan());
-    Result<MotionBlurParams> resolved = resolveMotionBlur(desc_.tier, settings, std::max(desc_.height, 1u));
+    Result<MotionBlurParams> resolved = resolveMotionBlur(desc_.profile, settings, std::max(desc_.height, 1u));
     const uint32_t radius = resolved ? resolved->radiusPx : 1;
     const uint32_t tw = tilesFor(desc_.width, radius), th = tilesFor(desc_.height, radius);
     const std::string tile = " (" + std::to_string(radius) + "x" + std::to_string(radius) + " tiles)";
