@@ -141,7 +141,7 @@ Result<TextureHandle> uploadColor(Device& device, const ColorGrid& color, const 
 // caches) and reads the last output back. Shared by the 2.5D and the 3D cases so both are
 // timed the same way.
 Result<Run> timeEffect(Device& device, Tier tier, uint32_t w, uint32_t h, const MotionBlurInputs& in, uint32_t runs) {
-    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(device, {w, h, tiers::profile(tier), Format::RGBA32F});
+    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(device, {w, h, tiers::profile(tier), Format::RGBA32F, in.depth.kind});
     if (!mb) return mb.status();
     Result<TimerHandle> timer = device.createTimer();
     if (!timer) return timer.status();

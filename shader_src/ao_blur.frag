@@ -20,7 +20,8 @@ layout(location = 0) out vec4 outAo;
 
 float blurDepth(ivec2 q, vec4 s) {
 #ifdef SFX_TIER_HIGH
-    return texelFetch(uDepth, q, 0).r;
+    // uDepth may be the host's linear depth itself (LinearDepth passing through): clamp on fetch.
+    return sfxLinearDepthOrFar(texelFetch(uDepth, q, 0).r, params.maxDepth);
 #else
     float key = aoUnpackDepthKey(s.ba);
     return key >= 1.0 ? params.maxDepth : params.keyNear * exp2(key * params.keyLog2Range);

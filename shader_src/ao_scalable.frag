@@ -8,7 +8,7 @@
 float scalableTap(ivec2 p, vec2 offset, int level, ivec2 size, vec3 C, vec3 n) {
     ivec2 q = aoTap(p, offset, size);
     ivec2 m = min(q >> level, textureSize(uDepth, level) - 1);
-    vec3 v = aoPosition(q, texelFetch(uDepth, m, level).r) - C;
+    vec3 v = aoPosition(q, aoDepthAt(m, level)) - C;
     float r = params.radius;
     float vv = dot(v, v);
     // Written so that NaN and a zero guard (the centre pixel itself) both contribute nothing.

@@ -25,6 +25,5 @@ void main() {
         z = params.numerator / denom;
     }
     // A non-positive or overflowing quotient is a point at or beyond the far plane.
-    bool beyond = !(z > 0.0) || !(z < params.maxDepth);
-    outLinearDepth = beyond ? params.maxDepth : z;
+    outLinearDepth = sfxLinearDepthOrFar(z, params.maxDepth);
 }

@@ -16,14 +16,15 @@ layout(set = 0, binding = 2, std140) uniform MbPackParams {
     float radius;          // k: maximum blur radius in pixels at this size
     float velocityScale;   // 0.5 * exposure: displacement across the shutter -> blur radius
     float cameraOnly;      // 1: velocity from depth and the camera motion
-    float pad0;
+    float maxDepth;        // far plane, or SFX_SKY_DEPTH: out-of-range linear depth becomes this
 } params;
 
 layout(location = 0) out vec4 outPacked;
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    float z = texelFetch(uLinearDepth, p, 0).r;
+    // uLinearDepth may be the host's linear depth itself (LinearDepth passing through).
+    float z = sfxLinearDepthOrFar(texelFetch(uLinearDepth, p, 0).r, params.maxDepth);
     vec2 v;
     if (params.cameraOnly != 0.0) {
         // Clip position of this pixel now: w = linear depth for a perspective looking down -z.

@@ -114,7 +114,9 @@ layout(set = 0, binding = 2, std140) uniform AoParams {
 } params;
 layout(location = 0) out vec4 outAo;
 
-float aoDepth(ivec2 q) { return texelFetch(uDepth, q, 0).r; }
+// uDepth may be the host's linear depth itself (LinearDepth passing through): clamp on fetch.
+float aoDepthAt(ivec2 q, int level) { return sfxLinearDepthOrFar(texelFetch(uDepth, q, level).r, params.maxDepth); }
+float aoDepth(ivec2 q) { return aoDepthAt(q, 0); }
 vec3 aoPosition(ivec2 q, float z) { return reconstructViewPosition(vec2(q) + 0.5, z, params.projInfo); }
 // The pixel a tap lands on: floor(centre + offset), clamped to the image (as the reference).
 ivec2 aoTap(ivec2 p, vec2 offset, ivec2 size) { return clamp(ivec2(floor(vec2(p) + 0.5 + offset)), ivec2(0), size - 1); }

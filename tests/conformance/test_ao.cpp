@@ -31,9 +31,11 @@ Format pickFormat(std::initializer_list<Format> wanted, bool renderable) {
     return Format::RGBA8;
 }
 
-GpuAo runAo(const samples::AnalyticScene& scene, const AoSettings& settings) {
+// descInput: what the context is told it will get. The scenes' depth is linear, so Linear reads
+// it where it lies (no linearisation pass unless a MIP is built); Hardware copies it first.
+GpuAo runAo(const samples::AnalyticScene& scene, const AoSettings& settings, DepthKind descInput = DepthKind::Linear) {
     Device& dev = test::device();
-    AoDesc desc{scene.width, scene.height, test::tierProfile(), settings};
+    AoDesc desc{scene.width, scene.height, test::tierProfile(), settings, descInput};
     Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev, desc);
     INFO(ao.status().toString());
     REQUIRE(ao.isOk());
@@ -169,6 +171,28 @@ TEST_CASE("ao: at the smallest radius and epsilon the GPU matches the reference,
             }
             INFO("max error " << maxErr);
             CHECK(maxErr < 0.01);  // a radius far below a pixel finds no occluder on either side
+        }
+}
+
+TEST_CASE("ao: linear depth read in place gives the same output as the copy, one pass fewer", "[ao][plan]") {
+    if (drawsNothing()) {
+        WARN("null backend draws nothing: GPU results are not compared on " << test::label());
+        return;
+    }
+    const samples::AnalyticScene scene = samples::sphereOnPlaneScene(64, 48);
+    for (AoTechnique t : kTechniques)
+        for (bool blur : {false, true}) {
+            INFO(test::label() << " " << toString(t) << (blur ? " blur" : ""));
+            AoSettings s = settingsFor(t);
+            s.blur = blur;
+            const GpuAo copied = runAo(scene, s, DepthKind::Hardware);
+            const GpuAo inPlace = runAo(scene, s, DepthKind::Linear);
+            CHECK(inPlace.visibility.values == copied.visibility.values);
+            // Only a depth MIP (high-tier Scalable) still needs LinearDepth's own texture.
+            const bool mip = copied.config.depthMipLevels > 1;
+            CHECK(inPlace.plan.passes.size() == copied.plan.passes.size() - (mip ? 0 : 1));
+            CHECK((inPlace.plan.bytesOf("depth") > 0) == mip);
+            CHECK(copied.plan.bytesOf("depth") > 0);
         }
 }
 

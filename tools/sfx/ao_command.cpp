@@ -75,7 +75,7 @@ int runAo(const AoFlags& f) {
         if (Status st = dev.writeTexture(normals, 0, px.data(), px.size() * sizeof(float)); !st) return fail(cmd, st);
     }
 
-    Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev, {w, h, opened->tier.profile, s});
+    Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev, {w, h, opened->tier.profile, s, depth->source.kind});
     if (!ao) return fail(cmd, ao.status());
     const bool r32 = dev.caps().renderableFormat[size_t(Format::R32F)];
     const Format outFormat = r32 ? Format::R32F : Format::RGBA8;

@@ -118,7 +118,7 @@ Status run(const MotionBlurFlags& f) {
     if (!velTex) return velTex.status();
     SFX_TRY(device.writeTexture(velTex.value(), 0, vel.data(), vel.size() * 4));
 
-    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(device, {w, h, profile, colorFormat});
+    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(device, {w, h, profile, colorFormat, depth->source.kind});
     if (!mb) return mb.status();
     MotionBlurSettings s;
     s.maxRadiusPx = f.maxRadius;

@@ -93,6 +93,9 @@ struct AoDesc {
     uint32_t height = 0;
     TierProfile profile;  // tiers::profile(tier) or tiers::choose(caps)->profile
     AoSettings settings;
+    // The AoInputs.depth.kind dispatch will get (LinearDepthDesc.input): with Linear, and no
+    // depth MIP needed, the host's texture is read directly and no linearisation pass runs.
+    DepthKind depthInput = DepthKind::Hardware;
 };
 
 // The host's inputs for one frame.

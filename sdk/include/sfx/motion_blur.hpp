@@ -99,6 +99,9 @@ struct MotionBlurDesc {
     TierProfile profile;  // tiers::profile(tier) or tiers::choose(caps)->profile
     // Format of the host colour and of the output: RGBA8, RGBA16F or RGBA32F (renderable).
     Format colorFormat = Format::RGBA16F;
+    // The MotionBlurInputs.depth.kind dispatch will get (LinearDepthDesc.input): with Linear the
+    // host's texture is read directly and no linearisation pass runs.
+    DepthKind depthInput = DepthKind::Hardware;
 };
 
 class MotionBlur {

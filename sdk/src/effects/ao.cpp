@@ -80,7 +80,7 @@ Status AmbientObscurance::allocate() {
     config_ = config.value();
     const Tier tier = desc_.profile.tier;
 
-    LinearDepthDesc dd{desc_.width, desc_.height, tier, config_.depthMipLevels};
+    LinearDepthDesc dd{desc_.width, desc_.height, tier, config_.depthMipLevels, desc_.depthInput};
     Result<std::unique_ptr<LinearDepth>> depth = LinearDepth::create(device_, dd);
     if (!depth) return depth.status();
     depth_ = std::move(depth.value());
@@ -244,7 +244,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
 
     // Profiling: plan() order is the depth passes (linearize + one per MIP level past 0), the
     // obscurance pass, then blur h and v. timed() records a pass bare when profiling is off.
-    const size_t depthPasses = depth_->desc().mipLevels;
+    const size_t depthPasses = depth_->plan().passes.size();  // none when passing linear depth through
     const std::span<const TimerHandle> timers(passTimers_);
     auto timed = [&](size_t passIndex, auto record) -> Status {
         if (timers.empty()) return record();

@@ -19,7 +19,7 @@ struct PackParams {
     float radius;
     float velocityScale;
     float cameraOnly;
-    float pad0;
+    float maxDepth;
 };
 static_assert(sizeof(PackParams) == 112);
 
@@ -135,7 +135,7 @@ MotionBlur::MotionBlur(Device& device, const MotionBlurDesc& desc) : device_(dev
 MotionBlur::~MotionBlur() { release(); }
 
 Status MotionBlur::allocate() {
-    Result<std::unique_ptr<LinearDepth>> depth = LinearDepth::create(device_, {desc_.width, desc_.height, desc_.profile.tier, 1});
+    Result<std::unique_ptr<LinearDepth>> depth = LinearDepth::create(device_, {desc_.width, desc_.height, desc_.profile.tier, 1, desc_.depthInput});
     if (!depth) return depth.status();
     depth_ = std::move(depth.value());
 
@@ -291,6 +291,7 @@ Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings
     pack.radius = float(p.radiusPx);
     pack.velocityScale = float(0.5 * p.exposure);
     pack.cameraOnly = cameraOnly ? 1.0f : 0.0f;
+    pack.maxDepth = float(depth_->reconstruction().maxDepth);
     SFX_TRY(device_.writeBuffer(packParams_, 0, &pack, sizeof pack));
     TileParams tile{};
     tile.tileSize = int32_t(p.radiusPx);

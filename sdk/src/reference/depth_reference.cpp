@@ -14,8 +14,7 @@ Grid linearizeDepth(const Grid& stored, const DepthReconstruction& r) {
             const double denom = stored.at(x, y) * r.ndcScale + r.denomOffset;
             const double z = r.numerator / denom;
             // At or past the far plane (or a division by zero there): the far depth.
-            const bool beyond = !(z > 0.0) || !(z < r.maxDepth);
-            out.at(x, y) = beyond ? r.maxDepth : z;
+            out.at(x, y) = shared::sfxLinearDepthOrFar(z, r.maxDepth);
         }
     }
     return out;
