@@ -44,6 +44,15 @@ SFX_CONST(float, SFX_SKY_DEPTH, 1.0e8)
 // for values already stored by that pass.
 SFX_FN SFX_REAL sfxLinearDepthOrFar(SFX_REAL z, SFX_REAL maxDepth) { return (z > 0.0 && z < maxDepth) ? z : maxDepth; }
 
+// Hardware depth d -> linear eye depth. For any perspective projection z = B / (ndc_z + A), with
+// A = P[2][2] and B = P[3][2] of the column-major matrix; ndc_z = d * ndcScale + ndcOffset maps the
+// stored depth to the API's clip range, and the host folds ndcOffset + A into denomOffset in
+// double precision (makeDepthReconstruction), so this is one multiply-add and a divide. A zero
+// or negative denominator (at or past the far plane) lands on maxDepth.
+SFX_FN SFX_REAL sfxLinearizeDepth(SFX_REAL d, SFX_REAL ndcScale, SFX_REAL denomOffset, SFX_REAL numerator, SFX_REAL maxDepth) {
+    return sfxLinearDepthOrFar(numerator / (d * ndcScale + denomOffset), maxDepth);
+}
+
 // The depth MIP pyramid of the high tier holds at most this many levels (level 0 included).
 SFX_CONST(int, SFX_DEPTH_MIP_MAX_LEVELS, 5)
 
