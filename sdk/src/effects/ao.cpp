@@ -5,11 +5,14 @@
 #include <string>
 
 #include "sfx/ao.hpp"
+#include "effect_common.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared_ao.h"
 
 namespace sfx {
 namespace {
+
+using detail::loadProgram;
 
 // Mirrors AoParams in shader_src/include/sfx_shared_ao.h (std140: 4-byte scalars, vec4 first).
 struct AoParams {
@@ -49,12 +52,6 @@ bool isOutputFormat(Format f) {
 // TierProfile::aoPackedDepthTarget: depth packed into an RGBA8 AO target, or AO alone in RG16F
 // with the blur reading full-precision linear depth.
 Format aoTargetFormat(const TierProfile& profile) { return profile.aoPackedDepthTarget ? Format::RGBA8 : Format::RG16F; }
-
-Result<ProgramHandle> loadProgram(Device& device, const char* name, Tier tier) {
-    Result<const CompiledProgram*> program = shaders::find(name, tier);
-    if (!program) return program.status();
-    return device.createProgram(*program.value());
-}
 
 }  // namespace
 

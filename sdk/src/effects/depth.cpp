@@ -2,11 +2,14 @@
 
 #include <string>
 
+#include "effect_common.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared.h"
 
 namespace sfx {
 namespace {
+
+using detail::loadProgram;
 
 // Mirrors LinearizeParams in shader_src/linearize_depth.frag (std140).
 struct LinearizeParams {
@@ -21,12 +24,6 @@ static_assert(sizeof(LinearizeParams) == 32);
 
 bool isHardwareDepthFormat(Format f) {
     return f == Format::D16 || f == Format::D24S8 || f == Format::D32F || f == Format::R32F;
-}
-
-Result<ProgramHandle> loadProgram(Device& device, const char* name, Tier tier) {
-    Result<const CompiledProgram*> program = shaders::find(name, tier);
-    if (!program) return program.status();
-    return device.createProgram(*program.value());
 }
 
 }  // namespace

@@ -4,12 +4,15 @@
 #include <cmath>
 #include <string>
 
+#include "effect_common.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared.h"
 #include "sfx_shared_mb.h"
 
 namespace sfx {
 namespace {
+
+using detail::loadProgram;
 
 // Mirror the uniform blocks of shader_src/mb_*.frag (std140).
 struct PackParams {
@@ -40,12 +43,6 @@ struct ReconstructParams {
     int32_t pad1;
 };
 static_assert(sizeof(ReconstructParams) == 32);
-
-Result<ProgramHandle> loadProgram(Device& device, const char* name, Tier tier) {
-    Result<const CompiledProgram*> program = shaders::find(name, tier);
-    if (!program) return program.status();
-    return device.createProgram(*program.value());
-}
 
 bool isColorFormat(Format f) { return f == Format::RGBA8 || f == Format::RGBA16F || f == Format::RGBA32F; }
 bool isVelocityFormat(Format f) {
