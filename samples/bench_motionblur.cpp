@@ -141,7 +141,7 @@ Result<TextureHandle> uploadColor(Device& device, const ColorGrid& color, const 
 // caches) and reads the last output back. Shared by the 2.5D and the 3D cases so both are
 // timed the same way.
 Result<Run> timeEffect(Device& device, Tier tier, uint32_t w, uint32_t h, const MotionBlurInputs& in, uint32_t runs) {
-    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(device, {w, h, tier, Format::RGBA32F});
+    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(device, {w, h, tiers::profile(tier), Format::RGBA32F, in.depth.kind});
     if (!mb) return mb.status();
     Result<TimerHandle> timer = device.createTimer();
     if (!timer) return timer.status();
@@ -392,7 +392,7 @@ Status runSceneCases(Device& device, const std::string& backend, Tier tier, cons
                      std::set<std::string>& imagesDone) {
     Result<std::unique_ptr<samples::SceneRenderer>> renderer = samples::SceneRenderer::create(device, tier);
     if (!renderer) return renderer.status();
-    const MotionBlurParams p = resolveMotionBlur(tier, {}, o.height).value();
+    const MotionBlurParams p = resolveMotionBlur(tiers::profile(tier), {}, o.height).value();
     auto writeOnce = [&](const std::string& name, const ColorGrid& c) {
         if (o.imagesDir.empty() || !imagesDone.insert(name).second) return;
         (void)io::writePng(o.imagesDir + "/mb_" + name + ".png", toImage(c));
@@ -548,7 +548,7 @@ int main(int argc, char** argv) {
             (void)io::writePng(imagesDir + "/mb_" + ns.name + "_groundtruth.png", toImage(truth));
         }
         for (Tier tier : {Tier::Current, Tier::High}) {
-            const MotionBlurParams p = resolveMotionBlur(tier, {}, height).value();
+            const MotionBlurParams p = resolveMotionBlur(tiers::profile(tier), {}, height).value();
             const ColorGrid ref = motionBlur(frame.color, frame.depth, frame.velocity, p).color;
             const Errors refErr = errorsOf(ref, truth, mask);
             std::cout << "  reference " << toString(tier) << ": rmse " << refErr.rmse << ", silhouettes " << refErr.rmseSilhouette << "\n";

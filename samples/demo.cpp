@@ -238,7 +238,7 @@ int main(int argc, char** argv) {
         bool cameraOnly;
     };
     const MotionCase motionCases[] = {{"moving_objects", "contact", false}, {"moving_camera", "columns", true}};
-    Result<std::unique_ptr<MotionBlur>> blur = MotionBlur::create(*device, {width, height, tier->tier, Format::RGBA8});
+    Result<std::unique_ptr<MotionBlur>> blur = MotionBlur::create(*device, {width, height, tier->profile, Format::RGBA8});
     if (!blur) return fail(blur.status());
     std::cout << "motion blur plan:\n" << blur.value()->plan().describe();
     Result<TextureHandle> colour =

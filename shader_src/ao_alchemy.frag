@@ -21,9 +21,7 @@ void main() {
         float theta = float(i) * SFX_AO_GOLDEN_ANGLE + phi;
         ivec2 q = aoTap(p, rho * vec2(cos(theta), sin(theta)), size);
         vec3 v = aoPosition(q, aoDepth(q)) - C;
-        float vv = dot(v, v);
-        if (!(vv < r * r)) continue;
-        sum += max(0.0, dot(v, n) - z * params.bias) / (vv + params.epsilon * r * r);
+        sum += aoAlchemyTerm(dot(v, v), dot(v, n), z, r, params.bias, params.epsilon);
     }
     aoWrite(aoFinish(2.0 * params.intensity * r / float(params.samples) * sum), z, false);
 }

@@ -20,16 +20,12 @@ layout(location = 0) out vec4 outAo;
 
 float blurDepth(ivec2 q, vec4 s) {
 #ifdef SFX_TIER_HIGH
-    return texelFetch(uDepth, q, 0).r;
+    // uDepth may be the host's linear depth itself (LinearDepth passing through): clamp on fetch.
+    return sfxLinearDepthOrFar(texelFetch(uDepth, q, 0).r, params.maxDepth);
 #else
     float key = aoUnpackDepthKey(s.ba);
     return key >= 1.0 ? params.maxDepth : params.keyNear * exp2(key * params.keyLog2Range);
 #endif
-}
-
-float gaussianWeight(int k, int radius) {
-    float sigma = 0.5 * float(radius + 1);
-    return exp(-float(k * k) / (2.0 * sigma * sigma));
 }
 
 void main() {
@@ -47,12 +43,12 @@ void main() {
         ivec2 q = p + k * params.direction;
         if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) continue;
         vec4 s = texelFetch(uSource, q, 0);
-        float edge = max(0.0, 1.0 - abs(blurDepth(q, s) - z0) / (SFX_AO_BLUR_DEPTH_TOLERANCE * z0));
-        float w = gaussianWeight(k, params.radius) * edge;
+        float edge = aoBlurEdgeWeight(blurDepth(q, s), z0);
+        float w = aoBlurGaussian(k, params.radius) * edge;
         accWide += w * s.r;
         wWide += w;
         if (params.crease != 0 && abs(k) <= params.moderateRadius) {
-            float wm = gaussianWeight(k, params.moderateRadius) * edge;
+            float wm = aoBlurGaussian(k, params.moderateRadius) * edge;
             // The first pass blurs the raw result (r) twice; the second blurs each in its channel.
             accModerate += wm * (params.finalPass != 0 ? s.g : s.r);
             wModerate += wm;

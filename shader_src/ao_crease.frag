@@ -15,12 +15,7 @@ void main() {
     for (int i = 0; i < SFX_AO_CREASE_TAPS; ++i) {
         ivec2 q = clamp(p + SFX_AO_CREASE_OFFSETS[i], ivec2(0), size - 1);
         vec3 v = aoPosition(q, aoDepth(q)) - C;
-        float dist2 = dot(v, v);
-        if (dist2 < params.epsilon * params.creaseRange * params.creaseRange) continue;
-        float dist = sqrt(dist2);
-        float contrib = clamp((dot(v, n) / dist - params.creaseMinimum) * params.creaseBias, 0.0, 1.0);
-        float atten = 1.0 - clamp(dist / params.creaseRange, 0.0, 1.0);
-        total += contrib * atten;
+        total += aoCreaseTerm(dot(v, v), dot(v, n), params.creaseRange, params.creaseMinimum, params.creaseBias, params.epsilon);
     }
     float fade = 1.0 - clamp((z - params.fadeStart) * params.invFadeRange, 0.0, 1.0);
     aoWrite(aoFinish(params.intensity * total / params.creaseAverager * fade), z, false);

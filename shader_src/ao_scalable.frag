@@ -8,12 +8,8 @@
 float scalableTap(ivec2 p, vec2 offset, int level, ivec2 size, vec3 C, vec3 n) {
     ivec2 q = aoTap(p, offset, size);
     ivec2 m = min(q >> level, textureSize(uDepth, level) - 1);
-    vec3 v = aoPosition(q, texelFetch(uDepth, m, level).r) - C;
-    float r = params.radius;
-    float vv = dot(v, v);
-    if (vv < params.epsilon * r * r) return 0.0;
-    float len = sqrt(vv);
-    return max(1.0 - len / r, 0.0) * max(dot(v, n) / len - params.bias, 0.0);
+    vec3 v = aoPosition(q, aoDepthAt(m, level)) - C;
+    return aoScalableTerm(dot(v, v), dot(v, n), params.radius, params.bias, params.epsilon);
 }
 
 void main() {

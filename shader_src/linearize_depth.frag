@@ -1,9 +1,6 @@
 #version 450
-// Hardware depth -> linear eye depth (positive distance along the view axis).
-// For any perspective projection, eye depth z = B / (ndc_z + A), with A = P[2][2] and
-// B = P[3][2] of the column-major matrix; ndc_z = d * ndcScale + ndcOffset maps the stored
-// depth d to the API's clip range. The host folds ndcOffset + A into one constant in double
-// precision (LinearizeParams.denomOffset) so the shader does one multiply-add and a divide.
+// Hardware depth -> linear eye depth (positive distance along the view axis), by
+// sfxLinearizeDepth in sfx_shared.h (the formula the CPU reference runs too).
 #include "sfx_shared.h"
 
 layout(set = 0, binding = 0) uniform sampler2D uHardwareDepth;
@@ -19,12 +16,6 @@ layout(location = 0) out float outLinearDepth;
 
 void main() {
     float d = texelFetch(uHardwareDepth, ivec2(gl_FragCoord.xy), 0).r;
-    float z = d;
-    if (params.linearInput == 0.0) {
-        float denom = d * params.ndcScale + params.denomOffset;
-        z = params.numerator / denom;
-    }
-    // A non-positive or overflowing quotient is a point at or beyond the far plane.
-    bool beyond = !(z > 0.0) || !(z < params.maxDepth);
-    outLinearDepth = beyond ? params.maxDepth : z;
+    outLinearDepth = params.linearInput != 0.0 ? sfxLinearDepthOrFar(d, params.maxDepth)
+                                               : sfxLinearizeDepth(d, params.ndcScale, params.denomOffset, params.numerator, params.maxDepth);
 }

@@ -16,22 +16,19 @@ layout(set = 0, binding = 2, std140) uniform MbPackParams {
     float radius;          // k: maximum blur radius in pixels at this size
     float velocityScale;   // 0.5 * exposure: displacement across the shutter -> blur radius
     float cameraOnly;      // 1: velocity from depth and the camera motion
-    float pad0;
+    float maxDepth;        // far plane, or SFX_SKY_DEPTH: out-of-range linear depth becomes this
 } params;
 
 layout(location = 0) out vec4 outPacked;
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    float z = texelFetch(uLinearDepth, p, 0).r;
+    // uLinearDepth may be the host's linear depth itself (LinearDepth passing through).
+    float z = sfxLinearDepthOrFar(texelFetch(uLinearDepth, p, 0).r, params.maxDepth);
     vec2 v;
     if (params.cameraOnly != 0.0) {
-        // Clip position of this pixel now: w = linear depth for a perspective looking down -z.
-        vec2 ndc = gl_FragCoord.xy * params.clipFromView.zw - 1.0;
-        vec4 clip = vec4(ndc * z, params.clipFromView.x * (-z) + params.clipFromView.y, z);
-        vec4 prev = params.reprojection * clip;
-        // A point behind the previous camera has no previous pixel: leave it unblurred.
-        v = prev.w > 1.0e-6 ? (ndc - prev.xy / prev.w) * 0.5 * params.target.xy : vec2(0.0);
+        v = mbCameraVelocity(gl_FragCoord.xy, params.clipFromView.zw, params.target.xy, z, params.clipFromView.x,
+                             params.clipFromView.y, params.reprojection);
     } else {
         v = texelFetch(uVelocity, p, 0).xy;
     }

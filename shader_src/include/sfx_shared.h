@@ -17,7 +17,12 @@ struct ivec2 { int x, y; };
 #define SFX_VEC2(x, y) vec2{x, y}
 #define SFX_IVEC2(x, y) ivec2{x, y}
 #define SFX_UINT uint32_t
+// Functions written once for both languages: double in C++ (the references), float in GLSL.
+#define SFX_FN inline
+#define SFX_REAL double
 #else
+#define SFX_FN
+#define SFX_REAL float
 #define SFX_CONST(type, name, value) const type name = value;
 #define SFX_ARRAY_BEGIN(type, name, count) const type name[count] = type[count](
 #define SFX_ARRAY_END );
@@ -31,6 +36,22 @@ struct ivec2 { int x, y; };
 // Pixels at or beyond SFX_SKY_DEPTH (the far plane of an infinite projection, or a cleared
 // depth buffer) are sky: effects leave them unoccluded and unblurred.
 SFX_CONST(float, SFX_SKY_DEPTH, 1.0e8)
+
+// Linear depth as every pass reads it: a non-positive, non-finite or overflowing value is a point
+// at or beyond the far plane, so it becomes maxDepth (the far plane, or SFX_SKY_DEPTH for an
+// infinite projection). The linearisation pass stores this; a pass that reads the host's linear
+// depth directly (LinearDepth passing through) applies it on every fetch, which changes nothing
+// for values already stored by that pass.
+SFX_FN SFX_REAL sfxLinearDepthOrFar(SFX_REAL z, SFX_REAL maxDepth) { return (z > 0.0 && z < maxDepth) ? z : maxDepth; }
+
+// Hardware depth d -> linear eye depth. For any perspective projection z = B / (ndc_z + A), with
+// A = P[2][2] and B = P[3][2] of the column-major matrix; ndc_z = d * ndcScale + ndcOffset maps the
+// stored depth to the API's clip range, and the host folds ndcOffset + A into denomOffset in
+// double precision (makeDepthReconstruction), so this is one multiply-add and a divide. A zero
+// or negative denominator (at or past the far plane) lands on maxDepth.
+SFX_FN SFX_REAL sfxLinearizeDepth(SFX_REAL d, SFX_REAL ndcScale, SFX_REAL denomOffset, SFX_REAL numerator, SFX_REAL maxDepth) {
+    return sfxLinearDepthOrFar(numerator / (d * ndcScale + denomOffset), maxDepth);
+}
 
 // The depth MIP pyramid of the high tier holds at most this many levels (level 0 included).
 SFX_CONST(int, SFX_DEPTH_MIP_MAX_LEVELS, 5)

@@ -7,8 +7,14 @@
 #include "sfx_shared.h"
 
 #ifdef __cplusplus
+#include <algorithm>
 #include <cmath>
 namespace sfx::shared {
+using std::abs;
+using std::clamp;
+using std::exp;
+using std::max;
+using std::sqrt;
 #endif
 
 SFX_CONST(float, SFX_AO_TWO_PI, 6.28318530717958647692)
@@ -53,6 +59,48 @@ SFX_CONST(float, SFX_AO_BLUR_DEPTH_TOLERANCE, 0.05)
 SFX_CONST(int, SFX_AO_MAX_BLUR_RADIUS, 8)
 // Most taps a GPU pass takes (the uniform loop bound); the CPU reference has no limit.
 SFX_CONST(int, SFX_AO_MAX_SAMPLES, 64)
+
+// ---- Per-tap terms (SFX_FN / SFX_REAL: double in the reference, float in the shaders) -------
+// v is the tap's view position minus the centre's, n the centre's normal; vv = dot(v, v) and
+// vn = dot(v, n). Every guard is written as "not inside", so NaN contributes nothing too.
+
+// Alchemy (McGuire et al. 2011, eq. 10) for one sample: counted only inside the sphere of radius
+// r (the Heaviside of eq. 9); z * bias is z_C * beta, a bias growing with distance. epsilon is
+// relative to r^2, so the term is scale-invariant.
+SFX_FN SFX_REAL aoAlchemyTerm(SFX_REAL vv, SFX_REAL vn, SFX_REAL z, SFX_REAL r, SFX_REAL bias, SFX_REAL epsilon) {
+    if (!(vv < r * r)) return 0.0;
+    return max(0.0, vn - z * bias) / (vv + epsilon * r * r);
+}
+
+// Scalable AO (Bukowski et al. 2012) for one tap: linear distance falloff times the biased
+// cosine. A tap on the centre itself (vv within epsilon r^2, including 0) has no direction: 0.
+SFX_FN SFX_REAL aoScalableTerm(SFX_REAL vv, SFX_REAL vn, SFX_REAL r, SFX_REAL bias, SFX_REAL epsilon) {
+    if (!(vv > epsilon * r * r)) return 0.0;
+    SFX_REAL len = sqrt(vv);
+    return max(1.0 - len / r, 0.0) * max(vn / len - bias, 0.0);
+}
+
+// Crease shading (Fox & Compton 2007) for one tap: how far the normal faces the tap beyond the
+// minimum crease, scaled by bias and saturated, attenuated linearly to 0 at `range`. A tap
+// clamped onto the centre (dist^2 within epsilon range^2) adds nothing.
+SFX_FN SFX_REAL aoCreaseTerm(SFX_REAL vv, SFX_REAL vn, SFX_REAL range, SFX_REAL minimumCrease, SFX_REAL bias, SFX_REAL epsilon) {
+    if (!(vv > epsilon * range * range)) return 0.0;
+    SFX_REAL dist = sqrt(vv);
+    SFX_REAL contrib = clamp((vn / dist - minimumCrease) * bias, 0.0, 1.0);
+    SFX_REAL atten = 1.0 - clamp(dist / range, 0.0, 1.0);
+    return contrib * atten;
+}
+
+// Bilateral blur: a Gaussian of sigma (radius + 1) / 2 over the tap index k, times an edge
+// weight falling linearly to 0 as the neighbour's depth zq departs from the centre's z0 by
+// SFX_AO_BLUR_DEPTH_TOLERANCE of z0.
+SFX_FN SFX_REAL aoBlurGaussian(int k, int radius) {
+    SFX_REAL sigma = 0.5 * SFX_REAL(radius + 1);
+    return exp(-SFX_REAL(k * k) / (2.0 * sigma * sigma));
+}
+SFX_FN SFX_REAL aoBlurEdgeWeight(SFX_REAL zq, SFX_REAL z0) {
+    return max(0.0, 1.0 - abs(zq - z0) / (SFX_REAL(SFX_AO_BLUR_DEPTH_TOLERANCE) * z0));
+}
 
 // ---- Per-pixel rotation --------------------------------------------------------------------
 // An integer hash of the pixel, so the GPU (32-bit float) and the reference (double) rotate
@@ -114,7 +162,9 @@ layout(set = 0, binding = 2, std140) uniform AoParams {
 } params;
 layout(location = 0) out vec4 outAo;
 
-float aoDepth(ivec2 q) { return texelFetch(uDepth, q, 0).r; }
+// uDepth may be the host's linear depth itself (LinearDepth passing through): clamp on fetch.
+float aoDepthAt(ivec2 q, int level) { return sfxLinearDepthOrFar(texelFetch(uDepth, q, level).r, params.maxDepth); }
+float aoDepth(ivec2 q) { return aoDepthAt(q, 0); }
 vec3 aoPosition(ivec2 q, float z) { return reconstructViewPosition(vec2(q) + 0.5, z, params.projInfo); }
 // The pixel a tap lands on: floor(centre + offset), clamped to the image (as the reference).
 ivec2 aoTap(ivec2 p, vec2 offset, ivec2 size) { return clamp(ivec2(floor(vec2(p) + 0.5 + offset)), ivec2(0), size - 1); }

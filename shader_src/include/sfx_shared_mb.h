@@ -17,6 +17,8 @@
 #include "sfx_shared.h"
 
 #ifdef __cplusplus
+#include <glm/glm.hpp>
+
 #include <algorithm>
 #include <cmath>
 namespace sfx::shared {
@@ -25,9 +27,17 @@ using std::max;
 using std::min;
 #define SFX_MB_FN inline
 #define SFX_MB_REAL double
+// Vectors and matrices: glm's double types in C++ (the same constructors and operators as GLSL
+// for what is used here; no swizzles), GLSL's own in shaders.
+#define SFX_MB_VEC2 glm::dvec2
+#define SFX_MB_VEC4 glm::dvec4
+#define SFX_MB_MAT4 glm::dmat4
 #else
 #define SFX_MB_FN
 #define SFX_MB_REAL float
+#define SFX_MB_VEC2 vec2
+#define SFX_MB_VEC4 vec4
+#define SFX_MB_MAT4 mat4
 #endif
 
 // A neighbourhood velocity shorter than this (pixels) means nothing moves near the pixel: the
@@ -58,6 +68,20 @@ SFX_ARRAY_END
 SFX_MB_FN SFX_MB_REAL mbJitter(int x, int y, int size) {
     if (size == 2) return ((x + y) & 1) == 0 ? -0.25 : 0.25;
     return SFX_MB_REAL(SFX_MB_JITTER_4X4[(y & 3) * 4 + (x & 3)]);
+}
+
+// Camera-only velocity of the pixel centred at `pc` (memory rows: NDC y = -1 at row 0, hal.hpp)
+// with linear depth z, in pixels across the shutter interval. ndcScale = 2 / (W, H), target =
+// (W, H); clipA = P[2][2], clipB = P[3][2] of the current projection (clip z of view depth -z;
+// clip w = z for a perspective looking down -z); reprojection = previous view-projection *
+// inverse(current view-projection). A point behind the previous camera has no previous pixel: 0.
+SFX_MB_FN SFX_MB_VEC2 mbCameraVelocity(SFX_MB_VEC2 pc, SFX_MB_VEC2 ndcScale, SFX_MB_VEC2 target, SFX_MB_REAL z,
+                                       SFX_MB_REAL clipA, SFX_MB_REAL clipB, SFX_MB_MAT4 reprojection) {
+    SFX_MB_VEC2 ndc = pc * ndcScale - 1.0;
+    SFX_MB_VEC4 clip = SFX_MB_VEC4(ndc * z, clipA * (-z) + clipB, z);
+    SFX_MB_VEC4 prev = reprojection * clip;
+    if (!(prev.w > 1.0e-6)) return SFX_MB_VEC2(0.0);
+    return (ndc - SFX_MB_VEC2(prev.x, prev.y) / prev.w) * 0.5 * target;
 }
 
 // Velocity component in [-k, k] pixels <-> [0, 1] (the seed's rescale to fit two channels).

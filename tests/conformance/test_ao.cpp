@@ -31,9 +31,11 @@ Format pickFormat(std::initializer_list<Format> wanted, bool renderable) {
     return Format::RGBA8;
 }
 
-GpuAo runAo(const samples::AnalyticScene& scene, const AoSettings& settings) {
+// descInput: what the context is told it will get. The scenes' depth is linear, so Linear reads
+// it where it lies (no linearisation pass unless a MIP is built); Hardware copies it first.
+GpuAo runAo(const samples::AnalyticScene& scene, const AoSettings& settings, DepthKind descInput = DepthKind::Linear) {
     Device& dev = test::device();
-    AoDesc desc{scene.width, scene.height, test::tierProfile(), settings};
+    AoDesc desc{scene.width, scene.height, test::tierProfile(), settings, descInput};
     Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev, desc);
     INFO(ao.status().toString());
     REQUIRE(ao.isOk());
@@ -141,6 +143,57 @@ TEST_CASE("ao: each technique matches its CPU reference", "[ao]") {
                     CHECK(rmse < rmseTol);
                     CHECK(double(off) < 0.01 * double(ref.values.size()));
                 }
+}
+
+TEST_CASE("ao: at the smallest radius and epsilon the GPU matches the reference, no NaN", "[ao][bad-input]") {
+    if (drawsNothing()) {
+        WARN("null backend draws nothing: GPU results are not compared on " << test::label());
+        return;
+    }
+    // Nearly every tap lands on the centre pixel: the guard !(|v|^2 > epsilon r^2) must drop it
+    // on the GPU (float) exactly as in the reference (double), never dividing 0 by 0.
+    for (AoTechnique t : kTechniques)
+        for (bool blur : {false, true}) {
+            const samples::AnalyticScene scene = samples::cornerScene(64, 48, 1.0);
+            AoSettings s = settingsFor(t);
+            s.radius = kAoMinRadius;
+            s.crease.range = kAoMinRadius;
+            s.epsilon = 1e-8f;
+            s.blur = blur;
+            INFO(test::label() << " " << toString(t) << (blur ? " blur" : ""));
+            const GpuAo gpu = runAo(scene, s);
+            const Grid ref = reference::ambientVisibility(scene.aoInput(false), gpu.config);
+            double maxErr = 0;
+            for (size_t i = 0; i < ref.values.size(); ++i) {
+                REQUIRE(std::isfinite(gpu.visibility.values[i]));
+                REQUIRE(std::isfinite(ref.values[i]));
+                maxErr = std::max(maxErr, std::abs(gpu.visibility.values[i] - ref.values[i]));
+            }
+            INFO("max error " << maxErr);
+            CHECK(maxErr < 0.01);  // a radius far below a pixel finds no occluder on either side
+        }
+}
+
+TEST_CASE("ao: linear depth read in place gives the same output as the copy, one pass fewer", "[ao][plan]") {
+    if (drawsNothing()) {
+        WARN("null backend draws nothing: GPU results are not compared on " << test::label());
+        return;
+    }
+    const samples::AnalyticScene scene = samples::sphereOnPlaneScene(64, 48);
+    for (AoTechnique t : kTechniques)
+        for (bool blur : {false, true}) {
+            INFO(test::label() << " " << toString(t) << (blur ? " blur" : ""));
+            AoSettings s = settingsFor(t);
+            s.blur = blur;
+            const GpuAo copied = runAo(scene, s, DepthKind::Hardware);
+            const GpuAo inPlace = runAo(scene, s, DepthKind::Linear);
+            CHECK(inPlace.visibility.values == copied.visibility.values);
+            // Only a depth MIP (high-tier Scalable) still needs LinearDepth's own texture.
+            const bool mip = copied.config.depthMipLevels > 1;
+            CHECK(inPlace.plan.passes.size() == copied.plan.passes.size() - (mip ? 0 : 1));
+            CHECK((inPlace.plan.bytesOf("depth") > 0) == mip);
+            CHECK(copied.plan.bytesOf("depth") > 0);
+        }
 }
 
 TEST_CASE("ao: analytic properties hold on the GPU", "[ao]") {

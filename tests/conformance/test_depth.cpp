@@ -231,6 +231,54 @@ TEST_CASE("LinearDepth plan holds only what the tier needs", "[depth][plan]") {
     }
 }
 
+TEST_CASE("LinearDepth: linear input without a pyramid runs no pass and holds no texture", "[depth][plan]") {
+    Device& device = test::device();
+    const uint32_t W = 24, H = 12;
+    auto through = LinearDepth::create(device, {W, H, test::tier(), 1, DepthKind::Linear});
+    REQUIRE(through.isOk());
+    CHECK(through.value()->passThrough());
+    // Known before any dispatch: no pass, no texture, no uniform buffer.
+    const Plan p = through.value()->plan();
+    CHECK(p.passes.empty());
+    CHECK(p.bytesOf("depth") == 0);
+    CHECK(through.value()->texture().isNull());
+
+    std::vector<float> depths(size_t(W) * H);
+    for (size_t i = 0; i < depths.size(); ++i) depths[i] = 0.5f + 0.25f * float(i % 7);
+    TextureHandle src = device.createTexture({W, H, 1, Format::R32F, kTextureSampled, "test-linear-depth"}).value();
+    SFX_REQUIRE_OK(device.writeTexture(src, 0, depths.data(), depths.size() * 4));
+    const CameraProjection cam = makePerspective({}).value();
+    TimerHandle timer = device.createTimer().value();
+    CHECK(through.value()->dispatch({src, DepthKind::Linear, cam}, std::span<const TimerHandle>(&timer, 1)).code() ==
+          StatusCode::InvalidArgument);  // no planned pass to time
+    SFX_REQUIRE_OK(through.value()->dispatch({src, DepthKind::Linear, cam}));
+    CHECK(through.value()->texture() == src);
+    CHECK(through.value()->reconstruction().maxDepth > 0.0);
+    // Hardware depth needs the pass this LinearDepth was told it would not run.
+    const Status wrongKind = through.value()->dispatch({src, DepthKind::Hardware, cam});
+    CHECK(wrongKind.code() == StatusCode::InvalidArgument);
+    CHECK(wrongKind.message().find("DepthSource.kind") != std::string::npos);
+
+    // Said Hardware, given linear depth: the copy pass and its texture, as before, same values.
+    auto copying = LinearDepth::create(device, {W, H, test::tier(), 1, DepthKind::Hardware});
+    REQUIRE(copying.isOk());
+    CHECK_FALSE(copying.value()->passThrough());
+    CHECK(copying.value()->plan().passes.size() == 1);
+    SFX_REQUIRE_OK(copying.value()->dispatch({src, DepthKind::Linear, cam}));
+    CHECK(copying.value()->texture() != src);
+    if (device.caps().backend != BackendKind::Null) CHECK(readLevel(device, copying.value()->texture(), W, H, 0) == depths);
+    // With a pyramid (high tier) linear input still needs LinearDepth's own texture.
+    if (test::tier() == Tier::High) {
+        auto mip = LinearDepth::create(device, {W, H, Tier::High, 2, DepthKind::Linear});
+        REQUIRE(mip.isOk());
+        CHECK_FALSE(mip.value()->passThrough());
+        CHECK(mip.value()->plan().passes.size() == 2);
+    }
+    SFX_REQUIRE_OK(device.destroyTimer(timer));
+    SFX_REQUIRE_OK(device.destroyTexture(src));
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
 TEST_CASE("depth passes stay finite and within bounds at the extremes", "[depth][conformance][extremes]") {
     Device& device = test::device();
     // Extreme depth ranges: a 1e-4 near plane with a 1e6 far plane, and an infinite far plane

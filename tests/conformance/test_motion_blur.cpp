@@ -80,13 +80,15 @@ CameraProjection testCamera(uint32_t w, uint32_t h) {
 }
 
 // Runs the effect and reads the output back as doubles.
+// descInput: what the effect is told it will get. The depth is linear, so Linear reads it where
+// it lies (no linearisation pass); Hardware copies it into LinearDepth's texture first.
 ColorGrid runGpu(const ColorGrid& color, const Grid& depth, const VelocityGrid* velocity, const MotionBlurSettings& s,
-                 const CameraMotion& camera = {}) {
+                 const CameraMotion& camera = {}, DepthKind descInput = DepthKind::Linear) {
     Device& d = test::device();
     const uint32_t w = color.width, h = color.height;
     GpuInputs in;
     upload(in, color, depth, velocity);
-    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {w, h, test::tier(), Format::RGBA16F});
+    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {w, h, test::tierProfile(), Format::RGBA16F, descInput});
     INFO(mb.status().toString());
     REQUIRE(mb.isOk());
     MotionBlurInputs inputs;
@@ -110,7 +112,7 @@ MotionBlurSettings pixelSettings(float radius) {
     s.referenceRows = 0;
     return s;
 }
-MotionBlurParams resolved(const MotionBlurSettings& s, uint32_t h) { return resolveMotionBlur(test::tier(), s, h).value(); }
+MotionBlurParams resolved(const MotionBlurSettings& s, uint32_t h) { return resolveMotionBlur(test::tierProfile(), s, h).value(); }
 
 ColorGrid noise(uint32_t w, uint32_t h, uint32_t seed) {
     std::mt19937 rng(seed);
@@ -307,7 +309,7 @@ TEST_CASE("motion blur: velocities at and beyond the maximum are clamped; no NaN
 
 TEST_CASE("motion blur: bad inputs are named errors", "[motion_blur][conformance]") {
     Device& d = test::device();
-    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {32, 16, test::tier(), Format::RGBA16F});
+    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {32, 16, test::tierProfile(), Format::RGBA16F});
     REQUIRE(mb.isOk());
     GpuInputs in;
     upload(in, ColorGrid(32, 16), Grid(32, 16, 1.0), nullptr);
@@ -329,5 +331,35 @@ TEST_CASE("motion blur: bad inputs are named errors", "[motion_blur][conformance
     const Plan plan = mb.value()->plan();
     CHECK(plan.passes.size() == 5);  // linearize + 4 motion blur passes
     CHECK(plan.bytesOf("motion_blur") > 0);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("motion blur: linear depth read in place gives the same output as the copy, one pass fewer", "[motion_blur][plan]") {
+    Device& d = test::device();
+    for (DepthKind input : {DepthKind::Hardware, DepthKind::Linear}) {
+        Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {32, 16, test::tierProfile(), Format::RGBA16F, input});
+        REQUIRE(mb.isOk());
+        const Plan plan = mb.value()->plan();
+        CHECK(plan.passes.size() == (input == DepthKind::Linear ? 4u : 5u));
+        CHECK((plan.bytesOf("depth") > 0) == (input == DepthKind::Hardware));
+    }
+    if (test::device().caps().backend == BackendKind::Null) return;
+    // Depths in range, beyond the far plane and sky: reading in place clamps as the copy does.
+    const uint32_t w = 48, h = 24;
+    const ColorGrid c = noise(w, h, 7);
+    Grid z(w, h, 2.0);
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x) z.at(x, y) = x < 16 ? 1.0 + 0.01 * y : (x < 32 ? 2.5 : 1e9);
+    VelocityGrid v(w, h, {9.0, 3.0});
+    for (const VelocityGrid* vel : {static_cast<const VelocityGrid*>(&v), static_cast<const VelocityGrid*>(nullptr)}) {
+        CameraMotion cam;
+        cam.currentViewProjection = testCamera(w, h).projection;
+        glm::dmat4 pan(1.0);
+        pan[3][0] = 0.05;  // the camera moved sideways between the frames
+        cam.previousViewProjection = cam.currentViewProjection * pan;
+        const ColorGrid copied = runGpu(c, z, vel, {}, cam, DepthKind::Hardware);
+        const ColorGrid inPlace = runGpu(c, z, vel, {}, cam, DepthKind::Linear);
+        CHECK(inPlace.values == copied.values);
+    }
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }

@@ -58,7 +58,28 @@ TEST_CASE("ao settings: out-of-range values are named errors", "[ao][bad-input]"
     Status st = validateAoSettings(s, high);
     CHECK(st.code() == StatusCode::InvalidArgument);
     CHECK(st.message().find("AoSettings.radius") != std::string::npos);
-    CHECK(st.message().find("(0, 1000]") != std::string::npos);
+    CHECK(st.message().find("[1e-4, 1000]") != std::string::npos);
+    // The minimum keeps epsilon * r^2 a normal float (the centre-tap guard); below it is refused.
+    s.radius = kAoMinRadius;
+    CHECK(validateAoSettings(s, high).isOk());
+    for (float tiny : {9e-5f, 1e-21f, 1e-40f /* denormal */}) {
+        s.radius = tiny;
+        st = validateAoSettings(s, high);
+        CHECK(st.code() == StatusCode::InvalidArgument);
+        CHECK(st.message().find("AoSettings.radius") != std::string::npos);
+    }
+    s = {};
+    s.epsilon = 1e-8f;  // the documented minimum, as a float
+    CHECK(validateAoSettings(s, high).isOk());
+    s = {};
+    s.crease.range = kAoMinRadius;
+    CHECK(validateAoSettings(s, high).isOk());
+    for (float tiny : {9e-5f, 1e-21f, 1e-40f}) {
+        s.crease.range = tiny;
+        st = validateAoSettings(s, high);
+        CHECK(st.code() == StatusCode::InvalidArgument);
+        CHECK(st.message().find("AoSettings.crease.range") != std::string::npos);
+    }
     s.radius = std::numeric_limits<float>::quiet_NaN();
     CHECK(validateAoSettings(s, high).message().find("AoSettings.radius") != std::string::npos);
     s = {};
@@ -87,6 +108,9 @@ TEST_CASE("ao settings: out-of-range values are named errors", "[ao][bad-input]"
 }
 
 TEST_CASE("ao settings resolve to the tier table", "[ao]") {
+    // The blur's depth source is a profile field, matching ao_blur.frag's tier variants.
+    CHECK(tiers::profile(Tier::Current).aoPackedDepthTarget);
+    CHECK_FALSE(tiers::profile(Tier::High).aoPackedDepthTarget);
     const AoConfig aHigh = configFor(AoTechnique::Alchemy, Tier::High);
     CHECK(aHigh.samples == 12);
     CHECK(aHigh.bias == Approx(1e-4));

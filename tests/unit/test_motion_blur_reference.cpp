@@ -8,6 +8,7 @@
 #include "sfx/motion_blur.hpp"
 #include "sfx/null_device.hpp"
 #include "sfx/reference/motion_blur_reference.hpp"
+#include "sfx/tiers.hpp"
 #include "sfx_shared_mb.h"
 
 using namespace sfx;
@@ -19,7 +20,7 @@ MotionBlurParams params(Tier tier, float radiusPx) {
     MotionBlurSettings s;
     s.maxRadiusPx = radiusPx;
     s.referenceRows = 0;  // radius in output pixels
-    Result<MotionBlurParams> p = resolveMotionBlur(tier, s, 64);
+    Result<MotionBlurParams> p = resolveMotionBlur(tiers::profile(tier), s, 64);
     REQUIRE(p.isOk());
     return p.value();
 }
@@ -215,21 +216,21 @@ TEST_CASE("motion blur reference: the jitter patterns and velocity encoding", "[
 
 TEST_CASE("motion blur: settings out of range are named errors; tiers and scaling resolve", "[motion_blur]") {
     MotionBlurSettings s;
-    Result<MotionBlurParams> cur = resolveMotionBlur(Tier::Current, s, 720);
+    Result<MotionBlurParams> cur = resolveMotionBlur(tiers::profile(Tier::Current), s, 720);
     REQUIRE(cur.isOk());
     CHECK(cur->taps == 7);
     CHECK(cur->pairs == 3);
     CHECK(cur->jitterSize == 2);
     CHECK(cur->radiusPx == 10);
-    Result<MotionBlurParams> high = resolveMotionBlur(Tier::High, s, 1080);
+    Result<MotionBlurParams> high = resolveMotionBlur(tiers::profile(Tier::High), s, 1080);
     REQUIRE(high.isOk());
     CHECK(high->taps == 9);
     CHECK(high->jitterSize == 4);
     CHECK(high->radiusPx == 27);  // 18 px at 720 rows, scaled to 1080
-    CHECK(resolveMotionBlur(Tier::Current, s, 180)->radiusPx == 3);  // 2.5 rounds to 3
+    CHECK(resolveMotionBlur(tiers::profile(Tier::Current), s, 180)->radiusPx == 3);  // 2.5 rounds to 3
 
     auto bad = [](MotionBlurSettings st, const char* field) {
-        Result<MotionBlurParams> r = resolveMotionBlur(Tier::High, st, 720);
+        Result<MotionBlurParams> r = resolveMotionBlur(tiers::profile(Tier::High), st, 720);
         REQUIRE_FALSE(r.isOk());
         CHECK(r.status().code() == StatusCode::InvalidArgument);
         CHECK(r.status().message().find(field) != std::string::npos);
@@ -240,8 +241,8 @@ TEST_CASE("motion blur: settings out of range are named errors; tiers and scalin
     t.maxRadiusPx = 65;
     bad(t, "maxRadiusPx");
     t.maxRadiusPx = 40;  // 40 px at 720 rows is fine, at 2160 it is 120 px: refused
-    CHECK(resolveMotionBlur(Tier::High, t, 720).isOk());
-    CHECK_FALSE(resolveMotionBlur(Tier::High, t, 2160).isOk());
+    CHECK(resolveMotionBlur(tiers::profile(Tier::High), t, 720).isOk());
+    CHECK_FALSE(resolveMotionBlur(tiers::profile(Tier::High), t, 2160).isOk());
     t = {};
     t.samples = 8;
     bad(t, "samples");
@@ -250,6 +251,13 @@ TEST_CASE("motion blur: settings out of range are named errors; tiers and scalin
     t = {};
     t.softDepthExtent = 0;
     bad(t, "softDepthExtent");
+    // Denormals (flushed to 0 by GPUs, then divided by) and anything below 1e-6 are refused.
+    t.softDepthExtent = 1e-40f;
+    bad(t, "softDepthExtent");
+    t.softDepthExtent = 9e-7f;
+    bad(t, "softDepthExtent");
+    t.softDepthExtent = kMbMinSoftDepthExtent;
+    CHECK(resolveMotionBlur(tiers::profile(Tier::High), t, 720).isOk());
     t = {};
     t.centreWeight = NAN;
     bad(t, "centreWeight");
@@ -273,4 +281,27 @@ TEST_CASE("motion blur reference: camera-only velocity of a pure translation", "
     const double expected = -0.1 * cam.projection[0][0] * 32 / (2 * 4.0);
     CHECK(v.at(5, 5)[0] == Approx(expected));
     CHECK(v.at(5, 5)[1] == Approx(0.0).margin(1e-9));
+}
+
+TEST_CASE("motion blur: tier parameters come from the profile; an empty one is a named error", "[motion_blur][bad-input]") {
+    // The resolved taps, radius and jitter are the profile's, whatever its tier enum says.
+    TierProfile custom = tiers::profile(Tier::Current);
+    custom.mbTaps = 11;
+    custom.mbMaxRadiusPx = 5;
+    custom.mbJitterSize = 4;
+    Result<MotionBlurParams> p = resolveMotionBlur(custom, {}, 720);
+    REQUIRE(p.isOk());
+    CHECK(p->taps == 11);
+    CHECK(p->radiusPx == 5);
+    CHECK(p->jitterSize == 4);
+
+    Result<MotionBlurParams> empty = resolveMotionBlur(TierProfile{}, {}, 720);
+    REQUIRE_FALSE(empty.isOk());
+    CHECK(empty.status().code() == StatusCode::InvalidArgument);
+    CHECK(empty.status().message().find("MotionBlurDesc.profile") != std::string::npos);
+    std::unique_ptr<Device> device = null::createDevice();
+    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(*device, {32, 16, TierProfile{}, Format::RGBA16F});
+    REQUIRE_FALSE(mb.isOk());
+    CHECK(mb.status().code() == StatusCode::InvalidArgument);
+    CHECK(mb.status().message().find("MotionBlurDesc.profile") != std::string::npos);
 }

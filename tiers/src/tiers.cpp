@@ -64,6 +64,7 @@ TierProfile makeProfile(Tier tier) {
     p.aoDepthMipLevels = high ? uint32_t(SFX_DEPTH_MIP_MAX_LEVELS) : 1u;
     p.aoAlchemySamples = uint32_t(high ? SFX_AO_ALCHEMY_SAMPLES_HIGH : SFX_AO_ALCHEMY_SAMPLES_CURRENT);
     p.aoBlurRadiusPx = uint32_t(high ? SFX_AO_BLUR_RADIUS_HIGH : SFX_AO_BLUR_RADIUS_CURRENT);
+    p.aoPackedDepthTarget = !high;  // ao_blur.frag's current-tier variant reads the packed key
     p.mbTaps = uint32_t(high ? SFX_MB_TAPS_HIGH : SFX_MB_TAPS_CURRENT);
     p.mbMaxRadiusPx = high ? SFX_MB_MAX_RADIUS_PX_HIGH : SFX_MB_MAX_RADIUS_PX_CURRENT;
     p.mbJitterSize = uint32_t(high ? SFX_MB_JITTER_SIZE_HIGH : SFX_MB_JITTER_SIZE_CURRENT);

@@ -17,13 +17,14 @@
 #include <sstream>
 
 namespace sfx::io {
-namespace {
 
 std::string extensionOf(const std::string& path) {
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     return ext;
 }
+
+namespace {
 
 Status fileError(const std::string& path, const std::string& what) { return {StatusCode::FileError, path + ": " + what}; }
 

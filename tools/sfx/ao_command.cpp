@@ -2,6 +2,7 @@
 // Writes visibility in [0, 1] (1 = unoccluded) to --out (.pfm or .exr) and a PNG beside it.
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "cli_common.hpp"
 #include "commands.hpp"
@@ -24,7 +25,7 @@ struct AoFlags {
 
 int runAo(const AoFlags& f) {
     const std::string cmd = "ao";
-    const std::string ext = std::filesystem::path(f.outPath).extension().string();
+    const std::string ext = io::extensionOf(f.outPath);
     if (ext != ".pfm" && ext != ".exr") return fail(cmd, invalidArgument("--out", "'" + f.outPath + "'", "a .pfm or .exr file"));
     AoSettings s;
     if (!parseAoTechnique(f.technique, &s.technique))
@@ -38,32 +39,32 @@ int runAo(const AoFlags& f) {
     s.blurRadius = f.blurRadius;
     s.normals = f.normalsPath.empty() ? AoNormals::FromDepth : AoNormals::FromTexture;
 
-    // Files first: a malformed or mismatched file is named before any device is opened.
-    Result<io::Image> probe = io::readImage(f.camera.depthPath);
-    if (!probe) return fail(cmd, Status{probe.status().code(), "--depth: " + probe.status().message()});
+    // Files first, each read once: a malformed or mismatched file is named before any device is opened.
+    Result<LoadedDepth> depth = readDepth(f.camera);
+    if (!depth) return fail(cmd, depth.status());
+    const uint32_t w = depth->image.width, h = depth->image.height;
+    std::optional<io::Image> normalImage;
     if (!f.normalsPath.empty()) {
-        Result<io::Image> n = loadMatching(f.normalsPath, probe->width, probe->height, "--normals");
+        Result<io::Image> n = loadMatching(f.normalsPath, w, h, "--normals");
         if (!n) return fail(cmd, n.status());
+        normalImage = std::move(n.value());
     }
     Result<OpenedDevice> opened = openDevice(f.device);
     if (!opened) return fail(cmd, opened.status());
     Device& dev = *opened->device;
-    Result<LoadedDepth> depth = loadDepth(dev, f.camera);
-    if (!depth) return fail(cmd, depth.status());
-    const uint32_t w = depth->image.width, h = depth->image.height;
+    if (Status st = uploadDepth(dev, depth.value()); !st) return fail(cmd, st);
 
     TextureHandle normals;
-    if (!f.normalsPath.empty()) {
-        Result<io::Image> n = loadMatching(f.normalsPath, w, h, "--normals");
-        if (!n) return fail(cmd, n.status());
-        if (n->channels < 3)
-            return fail(cmd, Status{StatusCode::FileError, "--normals " + f.normalsPath + " has " + std::to_string(n->channels) +
+    if (normalImage) {
+        const io::Image& n = *normalImage;
+        if (n.channels < 3)
+            return fail(cmd, Status{StatusCode::FileError, "--normals " + f.normalsPath + " has " + std::to_string(n.channels) +
                                                                " channel(s); view-space normals need x, y, z"});
         std::vector<float> px(size_t(w) * h * 4, 0.0f);
         for (uint32_t y = 0; y < h; ++y)
             for (uint32_t x = 0; x < w; ++x)
                 for (uint32_t c = 0; c < 3; ++c) {
-                    const float v = n->at(x, y, c);
+                    const float v = n.at(x, y, c);
                     if (!std::isfinite(v))
                         return fail(cmd, Status{StatusCode::FileError, "--normals " + f.normalsPath + ": pixel (" + std::to_string(x) + ", " +
                                                                            std::to_string(y) + ") is not finite"});
@@ -75,7 +76,7 @@ int runAo(const AoFlags& f) {
         if (Status st = dev.writeTexture(normals, 0, px.data(), px.size() * sizeof(float)); !st) return fail(cmd, st);
     }
 
-    Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev, {w, h, opened->tier.profile, s});
+    Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev, {w, h, opened->tier.profile, s, depth->source.kind});
     if (!ao) return fail(cmd, ao.status());
     const bool r32 = dev.caps().renderableFormat[size_t(Format::R32F)];
     const Format outFormat = r32 ? Format::R32F : Format::RGBA8;
@@ -117,7 +118,7 @@ Command addAoCommand(CLI::App& app) {
     c.app->add_option("--technique", flags->technique, "alchemy | scalable | crease")->capture_default_str();
     c.app->add_option("--normals", flags->normalsPath,
                       "view-space normals file (x right, y up, camera looking down -z; signed float xyz in PFM/EXR)");
-    c.app->add_option("--radius", flags->radius, "world-space radius, (0, 1000]")->capture_default_str();
+    c.app->add_option("--radius", flags->radius, "world-space radius, [1e-4, 1000]")->capture_default_str();
     c.app->add_option("--intensity", flags->intensity, "occlusion scale, [0, 100]")->capture_default_str();
     c.app->add_option("--contrast", flags->contrast, "visibility exponent, [0.1, 10]")->capture_default_str();
     c.app->add_option("--bias", flags->bias, "[0, 1]; -1 = the technique's default")->capture_default_str();

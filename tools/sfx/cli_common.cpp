@@ -69,7 +69,7 @@ Result<io::Image> loadMatching(const std::string& path, uint32_t width, uint32_t
     return image;
 }
 
-Result<LoadedDepth> loadDepth(Device& device, const CameraFlags& f) {
+Result<LoadedDepth> readDepth(const CameraFlags& f) {
     if (f.depthKind != "linear" && f.depthKind != "hardware")
         return invalidArgument("--depth-kind", "'" + f.depthKind + "'", "linear or hardware");
     if (!(f.fovYDegrees > 0 && f.fovYDegrees < 180))
@@ -83,7 +83,7 @@ Result<LoadedDepth> loadDepth(Device& device, const CameraFlags& f) {
 
     LoadedDepth out;
     Result<io::Image> image = io::readImage(f.depthPath);
-    if (!image) return image.status();
+    if (!image) return Status{image.status().code(), "--depth: " + image.status().message()};
     out.image = io::Image(image->width, image->height, 1);
     const bool hardware = f.depthKind == "hardware";
     for (uint32_t y = 0; y < image->height; ++y) {
@@ -109,14 +109,18 @@ Result<LoadedDepth> loadDepth(Device& device, const CameraFlags& f) {
     Result<CameraProjection> camera = makePerspective(p);
     if (!camera) return camera.status();
 
-    TextureDesc desc{image->width, image->height, 1, Format::R32F, kTextureSampled, "sfx-cli-depth"};
-    Result<TextureHandle> tex = device.createTexture(desc);
-    if (!tex) return tex.status();
-    SFX_TRY(device.writeTexture(tex.value(), 0, out.image.pixels.data(), out.image.pixels.size() * sizeof(float)));
-    out.source.texture = tex.value();
     out.source.kind = hardware ? DepthKind::Hardware : DepthKind::Linear;
     out.source.camera = camera.value();
     return out;
+}
+
+Status uploadDepth(Device& device, LoadedDepth& depth) {
+    TextureDesc desc{depth.image.width, depth.image.height, 1, Format::R32F, kTextureSampled, "sfx-cli-depth"};
+    Result<TextureHandle> tex = device.createTexture(desc);
+    if (!tex) return tex.status();
+    SFX_TRY(device.writeTexture(tex.value(), 0, depth.image.pixels.data(), depth.image.pixels.size() * sizeof(float)));
+    depth.source.texture = tex.value();
+    return Status::ok();
 }
 
 int fail(const std::string& command, const Status& status) {

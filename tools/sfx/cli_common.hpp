@@ -45,11 +45,14 @@ struct CameraFlags {
 
 struct LoadedDepth {
     io::Image image;   // as read, one channel, row 0 = top
-    DepthSource source;  // texture uploaded to the device (R32F), with the camera
+    DepthSource source;  // kind and camera; the texture once uploadDepth has run (R32F)
 };
-// Reads the depth file (PFM/EXR/PNG; first channel), validates flags and values (finite,
-// hardware depth in [0,1], linear depth > 0), uploads it and builds the camera.
-Result<LoadedDepth> loadDepth(Device& device, const CameraFlags& flags);
+// Reads the depth file (PFM/EXR/PNG; first channel) once, validates flags and values (finite,
+// hardware depth in [0,1], linear depth > 0) and builds the camera. No device is needed, so a
+// bad file is named before one is opened.
+Result<LoadedDepth> readDepth(const CameraFlags& flags);
+// Uploads depth.image to a new R32F texture on `device` into depth.source.texture.
+Status uploadDepth(Device& device, LoadedDepth& depth);
 
 // Reads an image and checks it matches width x height; `what` names the flag in errors.
 Result<io::Image> loadMatching(const std::string& path, uint32_t width, uint32_t height, const char* what);

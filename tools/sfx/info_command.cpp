@@ -30,6 +30,8 @@ Command addInfoCommand(CLI::App& app) {
             row("depth MIP levels read by AO", cur.aoDepthMipLevels, high.aoDepthMipLevels);
             row("Alchemy samples per pixel", cur.aoAlchemySamples, high.aoAlchemySamples);
             row("AO bilateral blur half-width (px)", cur.aoBlurRadiusPx, high.aoBlurRadiusPx);
+            row("AO blur depth source", cur.aoPackedDepthTarget ? "key packed in the RGBA8 AO target" : "linear depth texture (RG16F AO target)",
+                high.aoPackedDepthTarget ? "key packed in the RGBA8 AO target" : "linear depth texture (RG16F AO target)");
             row("motion blur taps (centre included)", cur.mbTaps, high.mbTaps);
             row("motion blur max radius (px at 720 rows)", cur.mbMaxRadiusPx, high.mbMaxRadiusPx);
             row("motion blur jitter", cur.mbJitterSize == 2 ? "checkerboard" : "4x4", high.mbJitterSize == 2 ? "checkerboard" : "4x4 randomised");

@@ -47,45 +47,37 @@ Status checkFinite(const io::Image& image, const std::string& flag, const std::s
     return Status::ok();
 }
 
-std::string extensionOf(const std::string& path) {
-    const size_t dot = path.find_last_of('.');
-    std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
-    for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-    return ext;
-}
-
 Status run(const MotionBlurFlags& f) {
-    const std::string outExt = extensionOf(f.outPath);
-    if (outExt != "png" && outExt != "pfm" && outExt != "exr")
+    const std::string outExt = io::extensionOf(f.outPath);
+    if (outExt != ".png" && outExt != ".pfm" && outExt != ".exr")
         return invalidArgument("--out", "'" + f.outPath + "'", "a .png, .pfm or .exr file name");
-    const std::string velExt = extensionOf(f.velocityPath);
-    if (velExt != "exr" && velExt != "pfm")
+    const std::string velExt = io::extensionOf(f.velocityPath);
+    if (velExt != ".exr" && velExt != ".pfm")
         return invalidArgument("--velocity", "'" + f.velocityPath + "'", "an .exr or .pfm file (signed pixels)");
 
     // Every file is read and checked before a device is opened: a malformed input is reported
     // as such, naming the file, on any machine.
-    Result<io::Image> depthImage = io::readImage(f.camera.depthPath);
-    if (!depthImage) return depthImage.status();
-    const uint32_t w = depthImage->width, h = depthImage->height;
+    Result<LoadedDepth> depth = readDepth(f.camera);
+    if (!depth) return depth.status();
+    const uint32_t w = depth->image.width, h = depth->image.height;
 
     Result<io::Image> color = loadMatching(f.colorPath, w, h, "--color");
     if (!color) return color.status();
     SFX_TRY(checkFinite(color.value(), "--color", f.colorPath));
     Result<io::Image> velocity = loadMatching(f.velocityPath, w, h, "--velocity");
     if (!velocity) return velocity.status();
-    const uint32_t needed = velExt == "pfm" ? 3u : 2u;
+    const uint32_t needed = velExt == ".pfm" ? 3u : 2u;
     if (velocity->channels < needed)
         return {StatusCode::InvalidArgument, "--velocity " + f.velocityPath + " has " + std::to_string(velocity->channels) +
-                                                 " channel(s); a velocity " + velExt + " needs " + std::to_string(needed) +
-                                                 (velExt == "pfm" ? " (x, y, ignored)" : " (x, y)")};
+                                                 " channel(s); a velocity " + velExt.substr(1) + " needs " + std::to_string(needed) +
+                                                 (velExt == ".pfm" ? " (x, y, ignored)" : " (x, y)")};
     SFX_TRY(checkFinite(velocity.value(), "--velocity", f.velocityPath));
 
     Result<OpenedDevice> opened = openDevice(f.device);
     if (!opened) return opened.status();
     Device& device = *opened->device;
-    const Tier tier = opened->tier.tier;
-    Result<LoadedDepth> depth = loadDepth(device, f.camera);
-    if (!depth) return depth.status();
+    const TierProfile& profile = opened->tier.profile;
+    SFX_TRY(uploadDepth(device, depth.value()));
 
     // RGBA32F when the device renders it (exact), else RGBA16F (ES 3.0 with EXT_color_buffer_half_float).
     const bool full = device.caps().renderableFormat[size_t(Format::RGBA32F)];
@@ -118,7 +110,7 @@ Status run(const MotionBlurFlags& f) {
     if (!velTex) return velTex.status();
     SFX_TRY(device.writeTexture(velTex.value(), 0, vel.data(), vel.size() * 4));
 
-    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(device, {w, h, tier, colorFormat});
+    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(device, {w, h, profile, colorFormat, depth->source.kind});
     if (!mb) return mb.status();
     MotionBlurSettings s;
     s.maxRadiusPx = f.maxRadius;
@@ -155,8 +147,8 @@ Status run(const MotionBlurFlags& f) {
             }
         }
     SFX_TRY(io::writeImage(f.outPath, written));
-    const MotionBlurParams p = resolveMotionBlur(tier, s, h).value();
-    std::cout << "sfx motionblur: " << toString(opened->config) << " " << toString(tier) << " tier, " << p.taps << " taps, radius "
+    const MotionBlurParams p = resolveMotionBlur(profile, s, h).value();
+    std::cout << "sfx motionblur: " << toString(opened->config) << " " << toString(profile.tier) << " tier, " << p.taps << " taps, radius "
               << p.radiusPx << " px, " << w << "x" << h << " -> " << f.outPath << "\n";
     (void)device.destroyTexture(colorTex.value());
     (void)device.destroyTexture(velTex.value());
@@ -184,7 +176,7 @@ Command addMotionBlurCommand(CLI::App& app) {
         ->capture_default_str();
     sub->add_option("--samples", flags->samples, "taps including the centre; 0 = the tier's (7 current, 9 high); odd in [3, 31]")
         ->capture_default_str();
-    sub->add_option("--soft-depth", flags->softDepth, "soft depth comparison extent, in linear depth units; (0, 1e6]")
+    sub->add_option("--soft-depth", flags->softDepth, "soft depth comparison extent, in linear depth units; [1e-6, 1e6]")
         ->capture_default_str();
     sub->add_option("--centre-weight", flags->centreWeight, "weight of the pixel's own colour; larger = thinner blur; (0, 100]")
         ->capture_default_str();

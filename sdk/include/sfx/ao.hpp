@@ -30,8 +30,13 @@ enum class AoNormals : uint32_t {
                   // Float formats (RGBA16F, RGBA32F) hold signed xyz; RGBA8 holds xyz * 0.5 + 0.5.
 };
 
+// Smallest AoSettings.radius and crease.range (world units). Below it epsilon * r^2 (the
+// centre-tap guard) is no longer a normal float: GPUs flush it to 0 and a tap on the centre
+// pixel would compute 0 / 0. 1e-4 keeps it >= 1e-16 for the smallest epsilon (1e-8).
+inline constexpr float kAoMinRadius = 1e-4f;
+
 struct AoCreaseSettings {
-    float range = 1.0f;           // (0, 1000] world distance at which a tap's influence reaches 0
+    float range = 1.0f;           // [1e-4, 1000] world distance at which a tap's influence reaches 0
     float bias = 0.25f;           // (0, 100]  scales (cos - minimumCrease) before saturating
     float averager = 10.0f;       // (0, 1000] divisor of the summed 24 taps
     float minimumCrease = 0.3f;   // [-1, 1)   cosine below which a tap adds nothing (stops radial banding)
@@ -43,7 +48,7 @@ struct AoCreaseSettings {
 // a value outside its range is InvalidArgument naming the field ("AoSettings.radius").
 struct AoSettings {
     AoTechnique technique = AoTechnique::Scalable;
-    float radius = 0.5f;     // (0, 1000] world-space sampling radius (Alchemy, Scalable)
+    float radius = 0.5f;     // [1e-4, 1000] world-space sampling radius (Alchemy, Scalable)
     float intensity = 1.0f;  // [0, 100]  sigma: scales occlusion (all techniques)
     float contrast = 1.0f;   // [0.1, 10] k: visibility = max(0, 1 - occlusion)^k (all techniques)
     // [0, 1], or -1 for the technique's default. Alchemy: beta, a distance per unit of depth
@@ -88,6 +93,9 @@ struct AoDesc {
     uint32_t height = 0;
     TierProfile profile;  // tiers::profile(tier) or tiers::choose(caps)->profile
     AoSettings settings;
+    // The AoInputs.depth.kind dispatch will get (LinearDepthDesc.input): with Linear, and no
+    // depth MIP needed, the host's texture is read directly and no linearisation pass runs.
+    DepthKind depthInput = DepthKind::Hardware;
 };
 
 // The host's inputs for one frame.

@@ -31,6 +31,11 @@ struct LinearDepthDesc {
     // Levels of the rotated-grid depth pyramid, level 0 included: 1 = linear depth only (the
     // current tier never needs more); [1, SFX_DEPTH_MIP_MAX_LEVELS] and at most what the size allows.
     uint32_t mipLevels = 1;
+    // The DepthSource.kind dispatch will get, said up front so that plan() is known before the
+    // first dispatch. Linear with mipLevels 1 needs no pass at all: no texture is allocated and
+    // texture() is the host's own R32F texture (dispatching Hardware depth to it is then
+    // InvalidArgument). Hardware accepts either kind (linear input is copied).
+    DepthKind input = DepthKind::Hardware;
 };
 
 // Owns an R32F texture of linear depth (and its MIP pyramid when mipLevels > 1).
@@ -47,7 +52,11 @@ public:
     Status dispatch(const DepthSource& source, std::span<const TimerHandle> passTimers = {});
     Status resize(uint32_t width, uint32_t height);
 
-    TextureHandle texture() const { return texture_; }  // R32F, mipLevels levels
+    // R32F, mipLevels levels. Without a pass (passThrough()), the host's texture of the last
+    // dispatch (null before the first).
+    TextureHandle texture() const { return passThrough() ? hostTexture_ : texture_; }
+    // True when the input is linear and no pyramid is built: dispatch records nothing.
+    bool passThrough() const { return desc_.input == DepthKind::Linear && desc_.mipLevels == 1; }
     const LinearDepthDesc& desc() const { return desc_; }
     // Reconstruction constants of the last dispatched camera (valid after dispatch).
     const DepthReconstruction& reconstruction() const { return reconstruction_; }
@@ -61,6 +70,7 @@ private:
     Device& device_;
     LinearDepthDesc desc_;
     TextureHandle texture_;
+    TextureHandle hostTexture_;  // the source of the last dispatch, when passing through
     BufferHandle params_;
     ProgramHandle linearizeProgram_, mipProgram_;
     PipelineHandle linearizePipeline_, mipPipeline_;

@@ -30,20 +30,25 @@
 
 namespace sfx {
 
+// Smallest MotionBlurSettings.softDepthExtent: well above FLT_MIN, so no GPU flushes it to 0.
+inline constexpr float kMbMinSoftDepthExtent = 1e-6f;
+
 struct MotionBlurSettings {
     // Maximum blur radius in pixels at referenceRows rows of output; the radius used is
     // round(maxRadiusPx * height / referenceRows), at least 1, so the look holds at any size.
-    // 0 = the tier's (10 px current, 18 px high); else (0, 64] pixels, and the scaled radius
+    // 0 = the tier's (TierProfile::mbMaxRadiusPx: 10 px current, 18 px high); else (0, 64] pixels, and the scaled radius
     // must stay <= 64 (SFX_MB_MAX_RADIUS_LIMIT_PX).
     float maxRadiusPx = 0.0f;
     // Rows at which maxRadiusPx is defined; 0 = no scaling (maxRadiusPx is in output pixels).
     // [0, 16384]; default 720.
     uint32_t referenceRows = 720;
-    // Reconstruction taps, centre included. 0 = the tier's (7 current, 9 high); else odd in
+    // Reconstruction taps, centre included. 0 = the tier's (TierProfile::mbTaps: 7 current,
+    // 9 high); else odd in
     // [3, 31]: samples come in mirrored pairs around the centre.
     uint32_t samples = 0;
     // Depth difference (scene units, as linear depth) over which a sample turns from "level
-    // with the centre" to "in front of / behind it". (0, 1e6]; default 0.1.
+    // with the centre" to "in front of / behind it". [1e-6, 1e6] (kMbMinSoftDepthExtent: a
+    // normal float, which GPUs do not flush to 0 before dividing by it); default 0.1.
     float softDepthExtent = 0.1f;
     // The centre's weight against one averaged sample, divided by max(|v_C|, 1 px): larger
     // keeps more of the pixel's own colour (thinner blur). (0, 100]; default 1.
@@ -66,8 +71,10 @@ struct MotionBlurParams {
 };
 
 // Validates settings (InvalidArgument naming the field and its range; nothing is clamped
-// silently) and resolves them for `tier` at an output of `height` rows.
-Result<MotionBlurParams> resolveMotionBlur(Tier tier, const MotionBlurSettings& settings, uint32_t height);
+// silently) and resolves them with the tier parameters of `profile` (taps, radius, jitter) at an
+// output of `height` rows. An empty or inconsistent profile is InvalidArgument naming
+// "MotionBlurDesc.profile".
+Result<MotionBlurParams> resolveMotionBlur(const TierProfile& profile, const MotionBlurSettings& settings, uint32_t height);
 
 // Camera-only velocity: the host gives the camera's view-projection matrices (column-major,
 // projection * view) for this frame and the previous one; each pixel's depth is reprojected.
@@ -89,9 +96,12 @@ struct MotionBlurInputs {
 struct MotionBlurDesc {
     uint32_t width = 0;   // [1, caps.limits.maxTextureSize]
     uint32_t height = 0;
-    Tier tier = Tier::Current;
+    TierProfile profile;  // tiers::profile(tier) or tiers::choose(caps)->profile
     // Format of the host colour and of the output: RGBA8, RGBA16F or RGBA32F (renderable).
     Format colorFormat = Format::RGBA16F;
+    // The MotionBlurInputs.depth.kind dispatch will get (LinearDepthDesc.input): with Linear the
+    // host's texture is read directly and no linearisation pass runs.
+    DepthKind depthInput = DepthKind::Hardware;
 };
 
 class MotionBlur {

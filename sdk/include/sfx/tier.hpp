@@ -28,6 +28,11 @@ struct TierProfile {
     uint32_t aoDepthMipLevels = 0;     // levels of that pyramid (level 0 included)
     uint32_t aoAlchemySamples = 0;     // default Alchemy sample count
     uint32_t aoBlurRadiusPx = 0;       // bilateral blur half-width
+    // With blur, where the blur finds each pixel's depth. true (current tier): the raw AO goes to
+    // an RGBA8 target with a 16-bit depth key packed in b, a (one fetch per tap, 8-bit targets
+    // only). false (high): an RG16F target, and the blur reads the linear depth texture. Must
+    // match ao_blur.frag, whose high-tier variant (SFX_TIER_HIGH) declares that depth binding.
+    bool aoPackedDepthTarget = false;
     // Motion blur
     uint32_t mbTaps = 0;               // reconstruction taps including the centre
     float mbMaxRadiusPx = 0;           // maximum blur radius at the reference resolution

@@ -5,11 +5,14 @@
 #include <string>
 
 #include "sfx/ao.hpp"
+#include "effect_common.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared_ao.h"
 
 namespace sfx {
 namespace {
+
+using detail::loadProgram;
 
 // Mirrors AoParams in shader_src/include/sfx_shared_ao.h (std140: 4-byte scalars, vec4 first).
 struct AoParams {
@@ -46,15 +49,9 @@ bool isOutputFormat(Format f) {
            f == Format::R32F || f == Format::RGBA32F;
 }
 
-// The current tier packs depth into the RGBA8 AO target; the high tier keeps AO in RG16F and
-// reads full-precision linear depth.
-Format aoTargetFormat(Tier tier) { return tier == Tier::High ? Format::RG16F : Format::RGBA8; }
-
-Result<ProgramHandle> loadProgram(Device& device, const char* name, Tier tier) {
-    Result<const CompiledProgram*> program = shaders::find(name, tier);
-    if (!program) return program.status();
-    return device.createProgram(*program.value());
-}
+// TierProfile::aoPackedDepthTarget: depth packed into an RGBA8 AO target, or AO alone in RG16F
+// with the blur reading full-precision linear depth.
+Format aoTargetFormat(const TierProfile& profile) { return profile.aoPackedDepthTarget ? Format::RGBA8 : Format::RG16F; }
 
 }  // namespace
 
@@ -80,7 +77,7 @@ Status AmbientObscurance::allocate() {
     config_ = config.value();
     const Tier tier = desc_.profile.tier;
 
-    LinearDepthDesc dd{desc_.width, desc_.height, tier, config_.depthMipLevels};
+    LinearDepthDesc dd{desc_.width, desc_.height, tier, config_.depthMipLevels, desc_.depthInput};
     Result<std::unique_ptr<LinearDepth>> depth = LinearDepth::create(device_, dd);
     if (!depth) return depth.status();
     depth_ = std::move(depth.value());
@@ -93,7 +90,7 @@ Status AmbientObscurance::allocate() {
     aoProgram_ = program.value();
 
     if (config_.blurRadius > 0) {
-        targetFormat_ = aoTargetFormat(tier);
+        targetFormat_ = aoTargetFormat(desc_.profile);
         if (!device_.caps().renderableFormat[size_t(targetFormat_)])
             return {StatusCode::UnsupportedFormat, std::string("AO target format ") + toString(targetFormat_) + " is not renderable on this device"};
         for (TextureHandle* t : {&aoTarget_, &blurTarget_}) {
@@ -244,7 +241,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
 
     // Profiling: plan() order is the depth passes (linearize + one per MIP level past 0), the
     // obscurance pass, then blur h and v. timed() records a pass bare when profiling is off.
-    const size_t depthPasses = depth_->desc().mipLevels;
+    const size_t depthPasses = depth_->plan().passes.size();  // none when passing linear depth through
     const std::span<const TimerHandle> timers(passTimers_);
     auto timed = [&](size_t passIndex, auto record) -> Status {
         if (timers.empty()) return record();
@@ -326,7 +323,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
         DrawDesc bdraw;
         bdraw.pipeline = bp.value();
         bdraw.bindings.textures = {TextureBinding{gen::ao_blur::uSource, src, 0, 1, {}}};
-        if (desc_.profile.tier == Tier::High)
+        if (!desc_.profile.aoPackedDepthTarget)
             bdraw.bindings.textures.push_back(TextureBinding{gen::ao_blur::uDepth, depth_->texture(), 0, 1, {}});
         bdraw.bindings.uniformBuffers = {BufferBinding{gen::ao_blur::BlurParams, buffer, 0, 0}};
         SFX_TRY(timed(depthPasses + 1 + size_t(passIndex), [&] { return device_.renderPass(bpass, std::span<const DrawDesc>(&bdraw, 1)); }));
@@ -342,8 +339,8 @@ Plan AmbientObscurance::plan() const {
     if (config_.blurRadius > 0) {
         plan.passes.push_back({"ao", "bilateral blur h", desc_.width, desc_.height});
         plan.passes.push_back({"ao", "bilateral blur v", desc_.width, desc_.height});
-        const TextureDesc td{desc_.width, desc_.height, 1, aoTargetFormat(desc_.profile.tier), kTextureSampled | kTextureRenderTarget};
-        plan.resources.push_back(plannedTexture("ao", desc_.profile.tier == Tier::High ? "raw AO (RG16F)" : "raw AO + packed depth (RGBA8)", td));
+        const TextureDesc td{desc_.width, desc_.height, 1, aoTargetFormat(desc_.profile), kTextureSampled | kTextureRenderTarget};
+        plan.resources.push_back(plannedTexture("ao", desc_.profile.aoPackedDepthTarget ? "raw AO + packed depth (RGBA8)" : "raw AO (RG16F)", td));
         plan.resources.push_back(plannedTexture("ao", "blur intermediate", td));
         plan.resources.push_back({"ao", "blur params", Format::Undefined, 0, 0, 1, 2 * sizeof(BlurParams)});
     }

@@ -50,11 +50,14 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
         return invalidArgument("AoDesc.profile", "an empty or unknown tier profile (tap counts 0)",
                                "tiers::profile(tier) or tiers::choose(caps)->profile");
     if (uint32_t(s.technique) > 2) return invalidArgument("AoSettings.technique", std::to_string(uint32_t(s.technique)), "Alchemy, Scalable or Crease");
-    SFX_TRY(checkRange("AoSettings.radius", s.radius, 0, true, 1000, false, "(0, 1000]"));
+    // The lower bound keeps epsilon * r^2 a normal float (>= 1e-16 with epsilon >= 1e-8): smaller
+    // radii underflow it to 0 on the GPU and a tap on the centre pixel would divide 0 by 0.
+    SFX_TRY(checkRange("AoSettings.radius", s.radius, kAoMinRadius, false, 1000, false, "[1e-4, 1000]"));
     SFX_TRY(checkRange("AoSettings.intensity", s.intensity, 0, false, 100, false, "[0, 100]"));
     SFX_TRY(checkRange("AoSettings.contrast", s.contrast, 0.1, false, 10, false, "[0.1, 10]"));
     if (s.bias != -1.0f) SFX_TRY(checkRange("AoSettings.bias", s.bias, 0, false, 1, false, "[0, 1], or -1 for the technique's default"));
-    SFX_TRY(checkRange("AoSettings.epsilon", s.epsilon, 1e-8, false, 1, false, "[1e-8, 1]"));
+    // The bound is the float nearest 1e-8 (just below it): the documented minimum must be settable.
+    SFX_TRY(checkRange("AoSettings.epsilon", s.epsilon, double(1e-8f), false, 1, false, "[1e-8, 1]"));
     const uint32_t maxSamples = uint32_t(shared::SFX_AO_MAX_SAMPLES);
     if (s.technique == AoTechnique::Crease) {
         if (s.samples != 0 && s.samples != uint32_t(shared::SFX_AO_CREASE_TAPS))
@@ -70,7 +73,7 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
                                "[0, " + std::to_string(shared::SFX_AO_MAX_BLUR_RADIUS) + "] (0 = tier default)");
     if (uint32_t(s.normals) > 1) return invalidArgument("AoSettings.normals", std::to_string(uint32_t(s.normals)), "FromDepth or FromTexture");
     const AoCreaseSettings& c = s.crease;
-    SFX_TRY(checkRange("AoSettings.crease.range", c.range, 0, true, 1000, false, "(0, 1000]"));
+    SFX_TRY(checkRange("AoSettings.crease.range", c.range, kAoMinRadius, false, 1000, false, "[1e-4, 1000]"));
     SFX_TRY(checkRange("AoSettings.crease.bias", c.bias, 0, true, 100, false, "(0, 100]"));
     SFX_TRY(checkRange("AoSettings.crease.averager", c.averager, 0, true, 1000, false, "(0, 1000]"));
     SFX_TRY(checkRange("AoSettings.crease.minimumCrease", c.minimumCrease, -1, false, 1, true, "[-1, 1)"));

@@ -2,11 +2,14 @@
 
 #include <string>
 
+#include "effect_common.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared.h"
 
 namespace sfx {
 namespace {
+
+using detail::loadProgram;
 
 // Mirrors LinearizeParams in shader_src/linearize_depth.frag (std140).
 struct LinearizeParams {
@@ -23,12 +26,6 @@ bool isHardwareDepthFormat(Format f) {
     return f == Format::D16 || f == Format::D24S8 || f == Format::D32F || f == Format::R32F;
 }
 
-Result<ProgramHandle> loadProgram(Device& device, const char* name, Tier tier) {
-    Result<const CompiledProgram*> program = shaders::find(name, tier);
-    if (!program) return program.status();
-    return device.createProgram(*program.value());
-}
-
 }  // namespace
 
 Result<std::unique_ptr<LinearDepth>> LinearDepth::create(Device& device, const LinearDepthDesc& desc) {
@@ -36,6 +33,7 @@ Result<std::unique_ptr<LinearDepth>> LinearDepth::create(Device& device, const L
     const uint32_t maxLevels = uint32_t(shared::SFX_DEPTH_MIP_MAX_LEVELS);
     if (desc.mipLevels == 0 || desc.mipLevels > maxLevels)
         return invalidArgument("LinearDepthDesc.mipLevels", std::to_string(desc.mipLevels), "[1, " + std::to_string(maxLevels) + "]");
+    if (uint32_t(desc.input) > 1) return invalidArgument("LinearDepthDesc.input", std::to_string(uint32_t(desc.input)), "Hardware or Linear");
     if (desc.tier == Tier::Current && desc.mipLevels > 1)
         return invalidArgument("LinearDepthDesc.mipLevels", std::to_string(desc.mipLevels),
                                "1 on the current tier (the depth MIP pyramid is a high-tier pass)");
@@ -54,6 +52,8 @@ Status LinearDepth::allocate() {
         return invalidArgument("LinearDepthDesc.mipLevels", std::to_string(desc_.mipLevels),
                                "[1, " + std::to_string(allowed) + "] for " + std::to_string(desc_.width) + "x" +
                                    std::to_string(desc_.height));
+    // Linear input without a pyramid is used where it lies: nothing to allocate.
+    if (passThrough()) return Status::ok();
     TextureDesc td{desc_.width, desc_.height, desc_.mipLevels, Format::R32F, kTextureSampled | kTextureRenderTarget,
                    "sfx-linear-depth"};
     Result<TextureHandle> tex = device_.createTexture(td);
@@ -101,6 +101,7 @@ void LinearDepth::release() {
     linearizeProgram_ = {};
     params_ = {};
     texture_ = {};
+    hostTexture_ = {};
 }
 
 Status LinearDepth::resize(uint32_t width, uint32_t height) {
@@ -115,11 +116,13 @@ Status LinearDepth::resize(uint32_t width, uint32_t height) {
 }
 
 Status LinearDepth::dispatch(const DepthSource& source, std::span<const TimerHandle> passTimers) {
-    if (texture_.isNull()) return {StatusCode::InvalidHandle, "LinearDepth: resources were not created (failed resize?)"};
-    // One timer per planned pass: linearize, then one per MIP level past 0.
-    if (!passTimers.empty() && passTimers.size() != desc_.mipLevels)
+    if (texture_.isNull() && !passThrough())
+        return {StatusCode::InvalidHandle, "LinearDepth: resources were not created (failed resize?)"};
+    // One timer per planned pass: linearize, then one per MIP level past 0 (none passing through).
+    const size_t passes = plan().passes.size();
+    if (!passTimers.empty() && passTimers.size() != passes)
         return invalidArgument("LinearDepth::dispatch passTimers", std::to_string(passTimers.size()) + " timers",
-                               "none or " + std::to_string(desc_.mipLevels) + " (one per planned pass)");
+                               "none or " + std::to_string(passes) + " (one per planned pass)");
     Result<TextureDesc> src = device_.textureDesc(source.texture);
     if (!src) return Status{src.status().code(), "DepthSource.texture: " + src.status().message()};
     if (src->width != desc_.width || src->height != desc_.height)
@@ -133,10 +136,19 @@ Status LinearDepth::dispatch(const DepthSource& source, std::span<const TimerHan
                 std::string("DepthSource.texture format ") + toString(src->format) + " is not linear depth; allowed R32F"};
     if (uint32_t(source.kind) > 1) return invalidArgument("DepthSource.kind", std::to_string(uint32_t(source.kind)), "Hardware or Linear");
     if (!(src->usage & kTextureSampled)) return invalidArgument("DepthSource.texture usage", "without kTextureSampled", "a sampled texture");
+    if (passThrough() && source.kind != DepthKind::Linear)
+        return invalidArgument("DepthSource.kind", "Hardware",
+                               "Linear, as LinearDepthDesc.input said at creation (no linearisation pass was planned)");
 
     Result<DepthReconstruction> rec = makeDepthReconstruction(source.camera, desc_.width, desc_.height);
     if (!rec) return rec.status();
     reconstruction_ = rec.value();
+    if (passThrough()) {
+        // Readers clamp what they fetch with sfxLinearDepthOrFar (sfx_shared.h), exactly as the
+        // linearisation pass would have, so the host's texture serves as it is.
+        hostTexture_ = source.texture;
+        return Status::ok();
+    }
 
     LinearizeParams p{};
     p.ndcScale = float(reconstruction_.ndcScale);
@@ -173,6 +185,7 @@ Status LinearDepth::dispatch(const DepthSource& source, std::span<const TimerHan
 
 Plan LinearDepth::plan() const {
     Plan plan;
+    if (passThrough()) return plan;  // the host's linear depth is read where it lies
     plan.passes.push_back({"depth", "linearize", desc_.width, desc_.height});
     for (uint32_t level = 1; level < desc_.mipLevels; ++level)
         plan.passes.push_back({"depth", "depth_mip " + std::to_string(level), mipExtent(desc_.width, level),

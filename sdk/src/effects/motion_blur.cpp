@@ -1,14 +1,18 @@
 #include "sfx/motion_blur.hpp"
 
+#include <cstdio>
 #include <cmath>
 #include <string>
 
+#include "effect_common.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared.h"
 #include "sfx_shared_mb.h"
 
 namespace sfx {
 namespace {
+
+using detail::loadProgram;
 
 // Mirror the uniform blocks of shader_src/mb_*.frag (std140).
 struct PackParams {
@@ -18,7 +22,7 @@ struct PackParams {
     float radius;
     float velocityScale;
     float cameraOnly;
-    float pad0;
+    float maxDepth;
 };
 static_assert(sizeof(PackParams) == 112);
 
@@ -40,15 +44,26 @@ struct ReconstructParams {
 };
 static_assert(sizeof(ReconstructParams) == 32);
 
-Result<ProgramHandle> loadProgram(Device& device, const char* name, Tier tier) {
-    Result<const CompiledProgram*> program = shaders::find(name, tier);
-    if (!program) return program.status();
-    return device.createProgram(*program.value());
-}
-
 bool isColorFormat(Format f) { return f == Format::RGBA8 || f == Format::RGBA16F || f == Format::RGBA32F; }
 bool isVelocityFormat(Format f) {
     return f == Format::RG16F || f == Format::RG32F || f == Format::RGBA16F || f == Format::RGBA32F;
+}
+
+std::string num(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+// A value-initialised TierProfile has every count at 0 (no taps, radius 0); it must come from
+// tiers::profile() or tiers::choose(), whose values the shaders' loops and tables accept.
+Status checkProfile(const TierProfile& p) {
+    if (uint32_t(p.tier) >= kTierCount || p.mbTaps < 3 || p.mbTaps > uint32_t(shared::SFX_MB_MAX_TAPS) || p.mbTaps % 2 == 0 ||
+        !(p.mbMaxRadiusPx > 0.0f && p.mbMaxRadiusPx <= float(shared::SFX_MB_MAX_RADIUS_LIMIT_PX)) ||
+        (p.mbJitterSize != 2 && p.mbJitterSize != 4))
+        return invalidArgument("MotionBlurDesc.profile", "an empty or unknown tier profile (mbTaps " + std::to_string(p.mbTaps) + ")",
+                               "tiers::profile(tier) or tiers::choose(caps)->profile");
+    return Status::ok();
 }
 
 uint32_t tilesFor(uint32_t size, uint32_t radius) { return (size + radius - 1) / radius; }
@@ -59,9 +74,8 @@ std::string rangeText(double lo, double hi, bool openLow) {
 
 }  // namespace
 
-Result<MotionBlurParams> resolveMotionBlur(Tier tier, const MotionBlurSettings& s, uint32_t height) {
-    if (uint32_t(tier) >= kTierCount) return invalidArgument("tier", std::to_string(uint32_t(tier)), "Current or High");
-    const bool high = tier == Tier::High;
+Result<MotionBlurParams> resolveMotionBlur(const TierProfile& profile, const MotionBlurSettings& s, uint32_t height) {
+    SFX_TRY(checkProfile(profile));
     const double limit = double(shared::SFX_MB_MAX_RADIUS_LIMIT_PX);
     // Written as !(in range) so NaN is rejected too.
     if (!(s.maxRadiusPx == 0.0f || (s.maxRadiusPx > 0.0f && s.maxRadiusPx <= limit)))
@@ -71,8 +85,10 @@ Result<MotionBlurParams> resolveMotionBlur(Tier tier, const MotionBlurSettings& 
     if (s.samples != 0 && (s.samples < 3 || s.samples > uint32_t(shared::SFX_MB_MAX_TAPS) || s.samples % 2 == 0))
         return invalidArgument("MotionBlurSettings.samples", std::to_string(s.samples),
                                "0 (tier default) or odd in [3, 31] (centre + mirrored pairs)");
-    if (!(s.softDepthExtent > 0.0f && s.softDepthExtent <= 1.0e6f))
-        return invalidArgument("MotionBlurSettings.softDepthExtent", std::to_string(s.softDepthExtent), rangeText(0, 1e6, true));
+    // The lower bound is a normal float: GPUs flush denormals to 0, and the soft depth test
+    // divides by the extent (0 / 0 for a sample level with the centre).
+    if (!(s.softDepthExtent >= kMbMinSoftDepthExtent && s.softDepthExtent <= 1.0e6f))
+        return invalidArgument("MotionBlurSettings.softDepthExtent", num(s.softDepthExtent), "[1e-6, 1e6]");
     if (!(s.centreWeight > 0.0f && s.centreWeight <= 100.0f))
         return invalidArgument("MotionBlurSettings.centreWeight", std::to_string(s.centreWeight), rangeText(0, 100, true));
     if (!(s.exposure >= 0.0f && s.exposure <= 4.0f))
@@ -80,11 +96,10 @@ Result<MotionBlurParams> resolveMotionBlur(Tier tier, const MotionBlurSettings& 
     if (height == 0) return invalidArgument("height", "0", "[1, maxTextureSize]");
 
     MotionBlurParams p;
-    p.taps = s.samples != 0 ? s.samples : uint32_t(high ? shared::SFX_MB_TAPS_HIGH : shared::SFX_MB_TAPS_CURRENT);
+    p.taps = s.samples != 0 ? s.samples : profile.mbTaps;
     p.pairs = (p.taps - 1) / 2;
-    p.jitterSize = uint32_t(high ? shared::SFX_MB_JITTER_SIZE_HIGH : shared::SFX_MB_JITTER_SIZE_CURRENT);
-    const double base = s.maxRadiusPx != 0.0f ? double(s.maxRadiusPx)
-                                              : double(high ? shared::SFX_MB_MAX_RADIUS_PX_HIGH : shared::SFX_MB_MAX_RADIUS_PX_CURRENT);
+    p.jitterSize = profile.mbJitterSize;
+    const double base = s.maxRadiusPx != 0.0f ? double(s.maxRadiusPx) : double(profile.mbMaxRadiusPx);
     const double scaled = s.referenceRows == 0 ? base : base * double(height) / double(s.referenceRows);
     const double radius = std::max(1.0, std::round(scaled));
     if (radius > limit)
@@ -99,7 +114,7 @@ Result<MotionBlurParams> resolveMotionBlur(Tier tier, const MotionBlurSettings& 
 }
 
 Result<std::unique_ptr<MotionBlur>> MotionBlur::create(Device& device, const MotionBlurDesc& desc) {
-    if (uint32_t(desc.tier) >= kTierCount) return invalidArgument("MotionBlurDesc.tier", std::to_string(uint32_t(desc.tier)), "Current or High");
+    SFX_TRY(checkProfile(desc.profile));
     if (!isColorFormat(desc.colorFormat))
         return invalidArgument("MotionBlurDesc.colorFormat", toString(desc.colorFormat), "RGBA8, RGBA16F or RGBA32F");
     const DeviceCaps& caps = device.caps();
@@ -117,7 +132,7 @@ MotionBlur::MotionBlur(Device& device, const MotionBlurDesc& desc) : device_(dev
 MotionBlur::~MotionBlur() { release(); }
 
 Status MotionBlur::allocate() {
-    Result<std::unique_ptr<LinearDepth>> depth = LinearDepth::create(device_, {desc_.width, desc_.height, desc_.tier, 1});
+    Result<std::unique_ptr<LinearDepth>> depth = LinearDepth::create(device_, {desc_.width, desc_.height, desc_.profile.tier, 1, desc_.depthInput});
     if (!depth) return depth.status();
     depth_ = std::move(depth.value());
 
@@ -152,7 +167,7 @@ Status MotionBlur::allocate() {
         {gen::mb_reconstruct::kName, desc_.colorFormat, &reconstructProgram_, &reconstructPipeline_},
     };
     for (const Stage& st : stages) {
-        Result<ProgramHandle> prog = loadProgram(device_, st.program, desc_.tier);
+        Result<ProgramHandle> prog = loadProgram(device_, st.program, desc_.profile.tier);
         if (!prog) return prog.status();
         *st.programOut = prog.value();
         GraphicsPipelineDesc pd;
@@ -224,7 +239,7 @@ Status MotionBlur::resize(uint32_t width, uint32_t height) {
 
 Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings& settings) {
     if (output_.isNull() || !depth_) return {StatusCode::InvalidHandle, "MotionBlur: resources were not created (failed resize?)"};
-    Result<MotionBlurParams> resolved = resolveMotionBlur(desc_.tier, settings, desc_.height);
+    Result<MotionBlurParams> resolved = resolveMotionBlur(desc_.profile, settings, desc_.height);
     if (!resolved) return resolved.status();
     const MotionBlurParams& p = resolved.value();
     const std::string expectedSize = std::to_string(desc_.width) + "x" + std::to_string(desc_.height) + " (the MotionBlur size)";
@@ -273,6 +288,7 @@ Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings
     pack.radius = float(p.radiusPx);
     pack.velocityScale = float(0.5 * p.exposure);
     pack.cameraOnly = cameraOnly ? 1.0f : 0.0f;
+    pack.maxDepth = float(depth_->reconstruction().maxDepth);
     SFX_TRY(device_.writeBuffer(packParams_, 0, &pack, sizeof pack));
     TileParams tile{};
     tile.tileSize = int32_t(p.radiusPx);
@@ -323,7 +339,7 @@ Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings
 Plan MotionBlur::plan(const MotionBlurSettings& settings) const {
     Plan plan;
     if (depth_) plan.append(depth_->plan());
-    Result<MotionBlurParams> resolved = resolveMotionBlur(desc_.tier, settings, std::max(desc_.height, 1u));
+    Result<MotionBlurParams> resolved = resolveMotionBlur(desc_.profile, settings, std::max(desc_.height, 1u));
     const uint32_t radius = resolved ? resolved->radiusPx : 1;
     const uint32_t tw = tilesFor(desc_.width, radius), th = tilesFor(desc_.height, radius);
     const std::string tile = " (" + std::to_string(radius) + "x" + std::to_string(radius) + " tiles)";

@@ -41,10 +41,7 @@ double alchemy(const AoInput& in, const AoConfig& c, uint32_t x, uint32_t y, con
         int qx, qy;
         tapPixel(x, y, rho * std::cos(theta), rho * std::sin(theta), d.width, d.height, &qx, &qy);
         const dvec3 v = positionAt(in.reconstruction, qx, qy, d.at(uint32_t(qx), uint32_t(qy))) - C;
-        const double vv = glm::dot(v, v);
-        if (!(vv < r * r)) continue;  // the Heaviside of eq. 9: only samples inside the sphere
-        // z_C * beta with z_C = -z: the bias grows with distance, as the paper prescribes.
-        sum += std::max(0.0, glm::dot(v, n) - z * c.bias) / (vv + c.epsilon * r * r);
+        sum += sh::aoAlchemyTerm(glm::dot(v, v), glm::dot(v, n), z, r, c.bias, c.epsilon);
     }
     // The falloff length u of the paper's g(t) is taken as r, so that the result is
     // scale-invariant (epsilon is relative to r^2 for the same reason).
@@ -76,10 +73,7 @@ double scalable(const AoInput& in, const std::vector<Grid>& pyramid, const AoCon
             const uint32_t my = std::min(uint32_t(qy) >> level, g.height - 1);
             // The tap's depth may come from a coarse level; its position is the tap's own pixel.
             const dvec3 v = positionAt(in.reconstruction, qx, qy, g.at(mx, my)) - C;
-            const double vv = glm::dot(v, v);
-            if (vv < c.epsilon * r * r) continue;  // the centre itself: no direction
-            const double len = std::sqrt(vv);
-            sum += std::max(1.0 - len / r, 0.0) * std::max(glm::dot(v, n) / len - c.bias, 0.0);
+            sum += sh::aoScalableTerm(glm::dot(v, v), glm::dot(v, n), r, c.bias, c.epsilon);
         }
     }
     const double a = 2.0 * c.intensity / double(c.samples) * sum;
@@ -94,21 +88,11 @@ double crease(const AoInput& in, const AoConfig& c, uint32_t x, uint32_t y, cons
         const int qx = std::clamp(int(x) + sh::SFX_AO_CREASE_OFFSETS[i].x, 0, int(d.width) - 1);
         const int qy = std::clamp(int(y) + sh::SFX_AO_CREASE_OFFSETS[i].y, 0, int(d.height) - 1);
         const dvec3 v = positionAt(in.reconstruction, qx, qy, d.at(uint32_t(qx), uint32_t(qy))) - C;
-        const double dist2 = glm::dot(v, v);
-        if (dist2 < c.epsilon * double(k.range) * double(k.range)) continue;  // clamped onto the centre
-        const double dist = std::sqrt(dist2);
-        const double contrib = saturate((glm::dot(v, n) / dist - double(k.minimumCrease)) * double(k.bias));
-        const double atten = 1.0 - saturate(dist / double(k.range));
-        total += contrib * atten;
+        total += sh::aoCreaseTerm(glm::dot(v, v), glm::dot(v, n), double(k.range), double(k.minimumCrease), double(k.bias), c.epsilon);
     }
     const double invFade = std::isinf(k.fadeEnd) ? 0.0 : 1.0 / (double(k.fadeEnd) - double(k.fadeStart));
     const double fade = 1.0 - saturate((z - double(k.fadeStart)) * invFade);
     return finishVisibility(c.intensity * total / double(k.averager) * fade, c.contrast);
-}
-
-double gaussian(int k, int radius) {
-    const double sigma = 0.5 * double(radius + 1);
-    return std::exp(-double(k * k) / (2.0 * sigma * sigma));
 }
 
 }  // namespace
@@ -174,7 +158,6 @@ Grid rawVisibility(const AoInput& in, const AoConfig& c) {
 
 Grid bilateralBlurPass(const Grid& vis, const Grid& d, double maxDepth, int radius, int dx, int dy) {
     Grid out(vis.width, vis.height, 1.0);
-    const double tolerance = double(shared::SFX_AO_BLUR_DEPTH_TOLERANCE);
     for (uint32_t y = 0; y < vis.height; ++y) {
         for (uint32_t x = 0; x < vis.width; ++x) {
             const double z0 = d.at(x, y);
@@ -187,7 +170,7 @@ Grid bilateralBlurPass(const Grid& vis, const Grid& d, double maxDepth, int radi
                 const int qx = int(x) + k * dx, qy = int(y) + k * dy;
                 if (qx < 0 || qy < 0 || qx >= int(vis.width) || qy >= int(vis.height)) continue;
                 const double zq = d.at(uint32_t(qx), uint32_t(qy));
-                const double w = gaussian(k, radius) * std::max(0.0, 1.0 - std::abs(zq - z0) / (tolerance * z0));
+                const double w = sh::aoBlurGaussian(k, radius) * sh::aoBlurEdgeWeight(zq, z0);
                 acc += w * vis.at(uint32_t(qx), uint32_t(qy));
                 wsum += w;
             }

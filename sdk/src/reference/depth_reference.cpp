@@ -11,11 +11,7 @@ Grid linearizeDepth(const Grid& stored, const DepthReconstruction& r) {
     Grid out(stored.width, stored.height);
     for (uint32_t y = 0; y < stored.height; ++y) {
         for (uint32_t x = 0; x < stored.width; ++x) {
-            const double denom = stored.at(x, y) * r.ndcScale + r.denomOffset;
-            const double z = r.numerator / denom;
-            // At or past the far plane (or a division by zero there): the far depth.
-            const bool beyond = !(z > 0.0) || !(z < r.maxDepth);
-            out.at(x, y) = beyond ? r.maxDepth : z;
+            out.at(x, y) = shared::sfxLinearizeDepth(stored.at(x, y), r.ndcScale, r.denomOffset, r.numerator, r.maxDepth);
         }
     }
     return out;

@@ -151,13 +151,9 @@ VelocityGrid cameraVelocity(const Grid& linearDepth, const glm::dmat4& projectio
     VelocityGrid out(w, h);
     for (uint32_t y = 0; y < h; ++y) {
         for (uint32_t x = 0; x < w; ++x) {
-            const double z = linearDepth.at(x, y);
-            // Pixel centre -> NDC with memory row 0 at NDC y = -1 (hal.hpp).
-            const glm::dvec2 ndc{(x + 0.5) * 2.0 / w - 1.0, (y + 0.5) * 2.0 / h - 1.0};
-            const glm::dvec4 clip{ndc.x * z, ndc.y * z, projection[2][2] * -z + projection[3][2], z};
-            const glm::dvec4 prev = reprojection * clip;
-            if (!(prev.w > 1e-6)) continue;
-            out.at(x, y) = {(ndc.x - prev.x / prev.w) * 0.5 * w, (ndc.y - prev.y / prev.w) * 0.5 * h};
+            const glm::dvec2 v = shared::mbCameraVelocity(glm::dvec2(x + 0.5, y + 0.5), 2.0 / glm::dvec2(w, h), glm::dvec2(w, h),
+                                                          linearDepth.at(x, y), projection[2][2], projection[3][2], reprojection);
+            out.at(x, y) = {v.x, v.y};
         }
     }
     return out;

@@ -21,6 +21,10 @@ struct Image {
     float at(uint32_t x, uint32_t y, uint32_t c = 0) const { return pixels[(size_t(y) * width + x) * channels + c]; }
 };
 
+// The file name's extension, lower-cased, with its dot (".pfm"); empty when it has none. The one
+// rule readImage/writeImage and the tools use to pick a format.
+std::string extensionOf(const std::string& path);
+
 // By extension: .png (8/16-bit, gray/RGB/RGBA, values scaled to [0,1]), .pfm (1 or 3 channels),
 // .exr (channels Y, or R G B [A], or any names sorted; half or float). FileError names the
 // file and what is wrong with it.
