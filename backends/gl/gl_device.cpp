@@ -392,9 +392,13 @@ public:
         GlBuffer b{desc, 0};
         GL(glGenBuffers, 1, &b.name);
         GL(glBindBuffer, GL_COPY_WRITE_BUFFER, b.name);
-        // Zero-filled like every backend's new buffer.
-        std::vector<uint8_t> zeros(desc.size, 0);
-        GL(glBufferData, GL_COPY_WRITE_BUFFER, GLsizeiptr(desc.size), zeros.data(), GL_DYNAMIC_DRAW);
+        // Zero-filled like every backend's new buffer, from a small block rather than a host
+        // copy of the whole buffer (which may be up to maxBufferSize).
+        GL(glBufferData, GL_COPY_WRITE_BUFFER, GLsizeiptr(desc.size), nullptr, GL_DYNAMIC_DRAW);
+        static const std::vector<uint8_t> kZeros(64 * 1024, 0);
+        for (uint64_t offset = 0; offset < desc.size; offset += kZeros.size())
+            GL(glBufferSubData, GL_COPY_WRITE_BUFFER, GLintptr(offset),
+               GLsizeiptr(std::min<uint64_t>(kZeros.size(), desc.size - offset)), kZeros.data());
         GL(glBindBuffer, GL_COPY_WRITE_BUFFER, 0);
         Status s = takeDeviceError(Status::ok());
         if (!s) {

@@ -466,6 +466,7 @@ private:
     Result<VkDescriptorSet> allocateSet(VkDescriptorSetLayout layout);
     Status submitAndWait();
     void releaseGarbage(Garbage& g);
+    void releaseIdleGarbage();
     void retire(VulkanTexture& t);
     void retire(VulkanBuffer& b, Garbage& g);
     void retire(VulkanPipeline& p);
@@ -1100,12 +1101,17 @@ Result<TextureHandle> VulkanDevice::createTexture(const TextureDesc& desc) {
     return textures_.insert(std::move(t));
 }
 
+// Destroyed objects wait in pending_ until the commands recorded with them have run; with
+// nothing recording (and no host command buffer) that is now.
+void VulkanDevice::releaseIdleGarbage() {
+    if (!recording_ && !hostCommandBuffer_) releaseGarbage(pending_);
+}
+
 Status VulkanDevice::destroyTexture(TextureHandle h) {
     SFX_TRY(textures_.check(h, "texture"));
     VulkanTexture t = textures_.remove(h);
     retire(t);
-    // Released once recorded commands that may use it have run.
-    if (!recording_ && !hostCommandBuffer_) releaseGarbage(pending_);
+    releaseIdleGarbage();
     return Status::ok();
 }
 
@@ -1190,7 +1196,7 @@ Status VulkanDevice::destroyBuffer(BufferHandle h) {
     SFX_TRY(buffers_.check(h, "buffer"));
     VulkanBuffer b = buffers_.remove(h);
     retire(b, hostCommandBuffer_ ? hostPending_ : pending_);
-    if (!recording_ && !hostCommandBuffer_) releaseGarbage(pending_);
+    releaseIdleGarbage();
     return Status::ok();
 }
 
@@ -1262,7 +1268,7 @@ Result<SamplerHandle> VulkanDevice::createSampler(const SamplerDesc& desc) {
 Status VulkanDevice::destroySampler(SamplerHandle h) {
     SFX_TRY(samplers_.check(h, "sampler"));
     (hostCommandBuffer_ ? hostPending_ : pending_).samplers.push_back(samplers_.remove(h));
-    if (!recording_ && !hostCommandBuffer_) releaseGarbage(pending_);
+    releaseIdleGarbage();
     return Status::ok();
 }
 
@@ -1311,7 +1317,7 @@ Status VulkanDevice::destroyProgram(ProgramHandle h) {
     // Pipelines made from it have their own layouts and need no module after creation.
     VulkanProgram p = programs_.remove(h);
     for (auto& m : p.modules) (hostCommandBuffer_ ? hostPending_ : pending_).modules.push_back(m.second);
-    if (!recording_ && !hostCommandBuffer_) releaseGarbage(pending_);
+    releaseIdleGarbage();
     return Status::ok();
 }
 
@@ -1488,7 +1494,7 @@ Status VulkanDevice::destroyPipeline(PipelineHandle h) {
     SFX_TRY(pipelines_.check(h, "pipeline"));
     VulkanPipeline p = pipelines_.remove(h);
     retire(p);
-    if (!recording_ && !hostCommandBuffer_) releaseGarbage(pending_);
+    releaseIdleGarbage();
     return Status::ok();
 }
 
