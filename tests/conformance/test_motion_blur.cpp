@@ -309,6 +309,12 @@ TEST_CASE("motion blur: velocities at and beyond the maximum are clamped; no NaN
 
 TEST_CASE("motion blur: bad inputs are named errors", "[motion_blur][conformance]") {
     Device& d = test::device();
+    Result<std::unique_ptr<MotionBlur>> zeroWide = MotionBlur::create(d, {0, 16, test::tierProfile(), Format::RGBA16F});
+    CHECK(zeroWide.status().code() == StatusCode::InvalidArgument);
+    CHECK(zeroWide.status().message().find("MotionBlurDesc.width is 0") != std::string::npos);
+    const uint32_t tooTall = d.caps().limits.maxTextureSize + 1;
+    CHECK(MotionBlur::create(d, {32, tooTall, test::tierProfile(), Format::RGBA16F}).status().message().find(
+              "MotionBlurDesc.height") != std::string::npos);
     Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {32, 16, test::tierProfile(), Format::RGBA16F});
     REQUIRE(mb.isOk());
     GpuInputs in;

@@ -58,9 +58,7 @@ Format aoTargetFormat(const TierProfile& profile) { return profile.aoPackedDepth
 Result<std::unique_ptr<AmbientObscurance>> AmbientObscurance::create(Device& device, const AoDesc& desc) {
     if (uint32_t(desc.profile.tier) >= kTierCount)
         return invalidArgument("AoDesc.profile.tier", std::to_string(uint32_t(desc.profile.tier)), "Current or High");
-    const uint32_t maxSize = device.caps().limits.maxTextureSize;
-    if (desc.width == 0 || desc.width > maxSize) return invalidArgument("AoDesc.width", std::to_string(desc.width), "[1, " + std::to_string(maxSize) + "]");
-    if (desc.height == 0 || desc.height > maxSize) return invalidArgument("AoDesc.height", std::to_string(desc.height), "[1, " + std::to_string(maxSize) + "]");
+    SFX_TRY(detail::checkTargetSize(device, desc.width, desc.height, "AoDesc."));
     SFX_TRY(validateAoSettings(desc.settings, desc.profile));
     std::unique_ptr<AmbientObscurance> ao(new AmbientObscurance(device, desc));
     SFX_TRY(ao->allocate());
@@ -196,9 +194,7 @@ Result<PipelineHandle> AmbientObscurance::pipelineFor(uint32_t programIndex, For
 }
 
 Status AmbientObscurance::resize(uint32_t width, uint32_t height) {
-    const uint32_t maxSize = device_.caps().limits.maxTextureSize;
-    if (width == 0 || width > maxSize) return invalidArgument("width", std::to_string(width), "[1, " + std::to_string(maxSize) + "]");
-    if (height == 0 || height > maxSize) return invalidArgument("height", std::to_string(height), "[1, " + std::to_string(maxSize) + "]");
+    SFX_TRY(detail::checkTargetSize(device_, width, height, ""));
     if (width == desc_.width && height == desc_.height && depth_) return Status::ok();
     release();
     desc_.width = width;

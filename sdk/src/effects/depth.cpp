@@ -105,9 +105,7 @@ void LinearDepth::release() {
 }
 
 Status LinearDepth::resize(uint32_t width, uint32_t height) {
-    const uint32_t maxSize = device_.caps().limits.maxTextureSize;
-    if (width == 0 || width > maxSize) return invalidArgument("width", std::to_string(width), "[1, " + std::to_string(maxSize) + "]");
-    if (height == 0 || height > maxSize) return invalidArgument("height", std::to_string(height), "[1, " + std::to_string(maxSize) + "]");
+    SFX_TRY(detail::checkTargetSize(device_, width, height, ""));
     if (width == desc_.width && height == desc_.height) return Status::ok();
     release();
     desc_.width = width;

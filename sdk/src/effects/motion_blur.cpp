@@ -115,6 +115,7 @@ Result<MotionBlurParams> resolveMotionBlur(const TierProfile& profile, const Mot
 
 Result<std::unique_ptr<MotionBlur>> MotionBlur::create(Device& device, const MotionBlurDesc& desc) {
     SFX_TRY(checkProfile(desc.profile));
+    SFX_TRY(detail::checkTargetSize(device, desc.width, desc.height, "MotionBlurDesc."));
     if (!isColorFormat(desc.colorFormat))
         return invalidArgument("MotionBlurDesc.colorFormat", toString(desc.colorFormat), "RGBA8, RGBA16F or RGBA32F");
     const DeviceCaps& caps = device.caps();
@@ -227,9 +228,7 @@ void MotionBlur::release() {
 }
 
 Status MotionBlur::resize(uint32_t width, uint32_t height) {
-    const uint32_t maxSize = device_.caps().limits.maxTextureSize;
-    if (width == 0 || width > maxSize) return invalidArgument("width", std::to_string(width), "[1, " + std::to_string(maxSize) + "]");
-    if (height == 0 || height > maxSize) return invalidArgument("height", std::to_string(height), "[1, " + std::to_string(maxSize) + "]");
+    SFX_TRY(detail::checkTargetSize(device_, width, height, ""));
     if (width == desc_.width && height == desc_.height && !output_.isNull()) return Status::ok();
     release();
     desc_.width = width;
