@@ -145,33 +145,21 @@ Result<std::vector<PassCost>> profilePasses(Device& dev, AmbientObscurance& ao, 
     return out;
 }
 
-float halfToFloat(uint16_t h) {
-    const uint32_t sign = (h >> 15) & 1, exponent = (h >> 10) & 31, mantissa = h & 1023;
-    float v;
-    if (exponent == 0) v = std::ldexp(float(mantissa), -24);
-    else if (exponent == 31) v = mantissa ? NAN : INFINITY;
-    else v = std::ldexp(float(mantissa | 1024), int(exponent) - 25);
-    return sign ? -v : v;
-}
-
 // The reference's input from what the device rendered: D32F depth linearised on the CPU by
 // the reference's own formula, normals exactly as the GPU reads them (half floats).
 Result<reference::AoInput> readGBuffer(Device& dev, const samples::GBuffer& g) {
-    const size_t n = size_t(g.width) * g.height;
-    std::vector<float> stored(n);
-    SFX_TRY(dev.readTexture(g.depth, 0, stored.data(), n * sizeof(float)));
-    std::vector<uint16_t> halves(n * 4);
-    SFX_TRY(dev.readTexture(g.normals, 0, halves.data(), halves.size() * sizeof(uint16_t)));
+    Result<samples::GBufferContents> contents = samples::readBack(dev, g);
+    if (!contents) return contents.status();
     Result<DepthReconstruction> rec = makeDepthReconstruction(g.camera, g.width, g.height);
     if (!rec) return rec.status();
+    const size_t n = size_t(g.width) * g.height;
     reference::AoInput in;
     in.reconstruction = rec.value();
     reference::Grid storedGrid(g.width, g.height);
-    for (size_t i = 0; i < n; ++i) storedGrid.values[i] = stored[i];
+    for (size_t i = 0; i < n; ++i) storedGrid.values[i] = contents->storedDepth[i];
     in.linearDepth = reference::linearizeDepth(storedGrid, in.reconstruction);
     in.normals.resize(n);
-    for (size_t i = 0; i < n; ++i)
-        in.normals[i] = glm::dvec3(halfToFloat(halves[i * 4]), halfToFloat(halves[i * 4 + 1]), halfToFloat(halves[i * 4 + 2]));
+    for (size_t i = 0; i < n; ++i) in.normals[i] = glm::dvec3(contents->normals[i]);
     return in;
 }
 

@@ -234,32 +234,17 @@ Result<samples::Scene> makeMovingScene(const std::string& name) {
     return s;
 }
 
-// Half floats (the G-buffer's RGBA16F normals and RG16F velocity) to double.
-double halfToDouble(uint16_t h) {
-    const int exponent = (h >> 10) & 31, mantissa = h & 1023;
-    double v = 0;
-    if (exponent == 0) v = std::ldexp(double(mantissa), -24);
-    else if (exponent == 31) v = mantissa ? NAN : INFINITY;
-    else v = std::ldexp(double(mantissa | 1024), exponent - 25);
-    return (h >> 15) ? -v : v;
-}
-
 constexpr std::array<double, 4> kSky{0.55, 0.7, 0.9, 1.0};
 
 // albedo * (0.35 + 0.65 * max(0, n.l)) with a fixed view-space light; sky where nothing was
 // drawn. View space, because a pan only translates the camera: surfaces keep their shading.
-Result<ColorGrid> shadeGBuffer(Device& device, const samples::GBuffer& g) {
-    std::vector<uint8_t> albedo(size_t(g.width) * g.height * 4);
-    std::vector<uint16_t> normals(size_t(g.width) * g.height * 4);
-    SFX_TRY(device.readTexture(g.albedo, 0, albedo.data(), albedo.size()));
-    SFX_TRY(device.readTexture(g.normals, 0, normals.data(), normals.size() * 2));
+ColorGrid shadeGBuffer(const samples::GBufferContents& g) {
     const glm::dvec3 light = glm::normalize(glm::dvec3(-0.4, 0.8, 0.45));
     ColorGrid c(g.width, g.height, kSky);
     for (size_t i = 0; i < c.values.size(); ++i) {
-        if (albedo[i * 4 + 3] == 0) continue;
-        const glm::dvec3 n{halfToDouble(normals[i * 4]), halfToDouble(normals[i * 4 + 1]), halfToDouble(normals[i * 4 + 2])};
-        const double k = 0.35 + 0.65 * std::max(0.0, glm::dot(n, light));
-        for (size_t ch = 0; ch < 3; ++ch) c.values[i][ch] = albedo[i * 4 + ch] / 255.0 * k;
+        if (!g.drawn(i)) continue;
+        const double k = 0.35 + 0.65 * std::max(0.0, glm::dot(glm::dvec3(g.normals[i]), light));
+        for (size_t ch = 0; ch < 3; ++ch) c.values[i][ch] = g.albedo[i * 4 + ch] / 255.0 * k;
     }
     return c;
 }
@@ -273,27 +258,21 @@ struct ShadedFrame {
 };
 
 Result<ShadedFrame> readFrame(Device& device, const samples::GBuffer& g) {
+    Result<samples::GBufferContents> contents = samples::readBack(device, g);
+    if (!contents) return contents.status();
     ShadedFrame f;
-    Result<ColorGrid> c = shadeGBuffer(device, g);
-    if (!c) return c.status();
-    f.color = std::move(c.value());
+    f.color = shadeGBuffer(contents.value());
     const size_t n = size_t(g.width) * g.height;
-    std::vector<float> depth(n);
-    std::vector<uint16_t> vel(n * 2);
-    std::vector<uint8_t> albedo(n * 4);
-    SFX_TRY(device.readTexture(g.depth, 0, depth.data(), depth.size() * 4));
-    SFX_TRY(device.readTexture(g.velocity, 0, vel.data(), vel.size() * 2));
-    SFX_TRY(device.readTexture(g.albedo, 0, albedo.data(), albedo.size()));
     Grid stored(g.width, g.height);
-    for (size_t i = 0; i < n; ++i) stored.values[i] = depth[i];
+    for (size_t i = 0; i < n; ++i) stored.values[i] = contents->storedDepth[i];
     Result<DepthReconstruction> rec = makeDepthReconstruction(g.camera, g.width, g.height);
     if (!rec) return rec.status();
     f.linearDepth = linearizeDepth(stored, rec.value());
     f.velocity = VelocityGrid(g.width, g.height);
     f.drawn.resize(n);
     for (size_t i = 0; i < n; ++i) {
-        f.velocity.values[i] = {halfToDouble(vel[i * 2]), halfToDouble(vel[i * 2 + 1])};
-        f.drawn[i] = albedo[i * 4 + 3] != 0;
+        f.velocity.values[i] = {double(contents->velocity[i].x), double(contents->velocity[i].y)};
+        f.drawn[i] = contents->drawn(i);
     }
     return f;
 }
@@ -306,11 +285,12 @@ Result<ColorGrid> sceneGroundTruth(Device& device, samples::SceneRenderer& rende
         const double t = (i + 0.5) / instants - 0.5;
         Result<samples::GBuffer> g = renderer.render(scene, w, h, t);
         if (!g) return g.status();
-        Result<ColorGrid> c = shadeGBuffer(device, g.value());
+        Result<samples::GBufferContents> contents = samples::readBack(device, g.value());
         renderer.destroy(g.value());
-        if (!c) return c.status();
+        if (!contents) return contents.status();
+        const ColorGrid c = shadeGBuffer(contents.value());
         for (size_t p = 0; p < sum.values.size(); ++p)
-            for (size_t ch = 0; ch < 4; ++ch) sum.values[p][ch] += c->values[p][ch] / instants;
+            for (size_t ch = 0; ch < 4; ++ch) sum.values[p][ch] += c.values[p][ch] / instants;
     }
     return sum;
 }

@@ -10,7 +10,6 @@
 #include <iostream>
 
 #include "scene.hpp"
-#include "sfx/half.hpp"
 #include "sfx/backends.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/depth.hpp"
@@ -32,12 +31,11 @@ Result<io::Image> readR32F(Device& device, TextureHandle texture, uint32_t mip) 
 }
 
 
-Result<io::Image> readNormals(Device& device, TextureHandle texture, uint32_t w, uint32_t h) {
-    std::vector<uint16_t> halves(size_t(w) * h * 4);
-    SFX_TRY(device.readTexture(texture, 0, halves.data(), halves.size() * 2));
-    io::Image image(w, h, 3);
-    for (size_t i = 0; i < size_t(w) * h; ++i)
-        for (int c = 0; c < 3; ++c) image.pixels[i * 3 + c] = halfToFloat(halves[i * 4 + c]) * 0.5f + 0.5f;
+// View-space normals as a picture: n * 0.5 + 0.5.
+io::Image normalsPicture(const samples::GBufferContents& g) {
+    io::Image image(g.width, g.height, 3);
+    for (size_t i = 0; i < g.normals.size(); ++i)
+        for (int c = 0; c < 3; ++c) image.pixels[i * 3 + c] = g.normals[i][c] * 0.5f + 0.5f;
     return image;
 }
 
@@ -62,20 +60,19 @@ Result<std::vector<uint8_t>> readRGBA8(Device& device, TextureHandle texture, ui
     return bytes;
 }
 
-// A lit composite on the CPU: albedo * (ambient * visibility + key light * n.l). The normals
-// image holds n * 0.5 + 0.5; the key light comes from the upper left, in view space.
-io::Image composite(const std::vector<uint8_t>& albedo, const io::Image& normals, const std::vector<uint8_t>* visibility) {
-    io::Image out(normals.width, normals.height, 3);
-    const float lx = -0.45f, ly = 0.75f, lz = 0.48f;
-    for (size_t i = 0; i < size_t(normals.width) * normals.height; ++i) {
-        if (albedo[i * 4 + 3] == 0) {  // nothing drawn: a sky colour
+// A lit composite on the CPU: albedo * (ambient * visibility + key light * n.l), the key light
+// from the upper left, in view space.
+io::Image composite(const samples::GBufferContents& g, const std::vector<uint8_t>* visibility) {
+    io::Image out(g.width, g.height, 3);
+    const glm::vec3 light(-0.45f, 0.75f, 0.48f);
+    for (size_t i = 0; i < g.normals.size(); ++i) {
+        if (!g.drawn(i)) {  // a sky colour
             out.pixels[i * 3 + 0] = 0.62f, out.pixels[i * 3 + 1] = 0.7f, out.pixels[i * 3 + 2] = 0.8f;
             continue;
         }
-        const float nx = normals.pixels[i * 3] * 2 - 1, ny = normals.pixels[i * 3 + 1] * 2 - 1, nz = normals.pixels[i * 3 + 2] * 2 - 1;
-        const float direct = std::max(0.0f, nx * lx + ny * ly + nz * lz);
+        const float direct = std::max(0.0f, glm::dot(g.normals[i], light));
         const float ao = visibility ? (*visibility)[i * 4] / 255.0f : 1.0f;
-        for (int c = 0; c < 3; ++c) out.pixels[i * 3 + c] = albedo[i * 4 + c] / 255.0f * (0.55f * ao + 0.6f * direct);
+        for (int c = 0; c < 3; ++c) out.pixels[i * 3 + c] = g.albedo[i * 4 + c] / 255.0f * (0.55f * ao + 0.6f * direct);
     }
     return out;
 }
@@ -211,12 +208,10 @@ int main(int argc, char** argv) {
         Result<samples::GBuffer> g = renderer.value()->render(scene.value(), width, height);
         if (!g) return fail(g.status());
         const std::string base = outDir + "/" + name;
-        Result<io::Image> normals = readNormals(*device, g->normals, width, height);
-        if (!normals) return fail(normals.status());
-        Result<std::vector<uint8_t>> albedo = readRGBA8(*device, g->albedo, width, height);
-        if (!albedo) return fail(albedo.status());
-        if (Status s = io::writePng(base + "_normals.png", normals.value()); !s) return fail(s);
-        if (Status s = io::writePng(base + "_lit_no_ao.png", composite(albedo.value(), normals.value(), nullptr)); !s) return fail(s);
+        Result<samples::GBufferContents> contents = samples::readBack(*device, g.value());
+        if (!contents) return fail(contents.status());
+        if (Status s = io::writePng(base + "_normals.png", normalsPicture(contents.value())); !s) return fail(s);
+        if (Status s = io::writePng(base + "_lit_no_ao.png", composite(contents.value(), nullptr)); !s) return fail(s);
 
         for (size_t t = 0; t < contexts.size(); ++t) {
             AmbientObscurance& ao = *contexts[t];
@@ -230,7 +225,7 @@ int main(int argc, char** argv) {
             io::Image aoImage(width, height, 1);
             for (size_t i = 0; i < aoImage.pixels.size(); ++i) aoImage.pixels[i] = visibility.value()[i * 4] / 255.0f;
             if (Status s = io::writePng(base + "_ao_" + technique + ".png", aoImage); !s) return fail(s);
-            if (Status s = io::writePng(base + "_lit_" + technique + ".png", composite(albedo.value(), normals.value(), &visibility.value())); !s)
+            if (Status s = io::writePng(base + "_lit_" + technique + ".png", composite(contents.value(), &visibility.value())); !s)
                 return fail(s);
             std::cout << "[" << name << "] ao " << technique << ": " << cost->milliseconds << " ms ("
                       << toString(cost->source) << ", median of " << kTimedRuns << " after a warm-up), " << ao.plan().passes.size() << " passes\n";
@@ -275,11 +270,9 @@ int main(int argc, char** argv) {
         if (Status s = renderer.value()->load(scene.value()); !s) return fail(s);
         Result<samples::GBuffer> g = renderer.value()->render(scene.value(), width, height, 0.0);
         if (!g) return fail(g.status());
-        Result<io::Image> normals = readNormals(*device, g->normals, width, height);
-        if (!normals) return fail(normals.status());
-        Result<std::vector<uint8_t>> albedo = readRGBA8(*device, g->albedo, width, height);
-        if (!albedo) return fail(albedo.status());
-        const io::Image sharp = composite(albedo.value(), normals.value(), nullptr);
+        Result<samples::GBufferContents> contents = samples::readBack(*device, g.value());
+        if (!contents) return fail(contents.status());
+        const io::Image sharp = composite(contents.value(), nullptr);
         const std::vector<uint8_t> sharpBytes = toRGBA8(sharp);
         if (Status s = device->writeTexture(colour.value(), 0, sharpBytes.data(), sharpBytes.size()); !s) return fail(s);
 

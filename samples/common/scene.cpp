@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "sfx/half.hpp"
 #include "sfx_shaders.hpp"
 
 namespace sfx::samples {
@@ -206,24 +207,29 @@ void SceneRenderer::releaseMeshes() {
 
 Status SceneRenderer::load(const Scene& scene) {
     releaseMeshes();
-    for (const Mesh& mesh : scene.meshes) {
-        GpuMesh g;
-        g.source = &mesh;
-        g.indexCount = uint32_t(mesh.indices.size());
-        Result<BufferHandle> vb = device_.createBuffer({mesh.vertices.size() * sizeof(Vertex), kBufferVertex, "scene-vertices"});
-        if (!vb) return vb.status();
-        g.vertices = vb.value();
-        Result<BufferHandle> ib = device_.createBuffer({mesh.indices.size() * sizeof(uint32_t), kBufferIndex, "scene-indices"});
-        if (!ib) return ib.status();
-        g.indices = ib.value();
-        Result<BufferHandle> pb = device_.createBuffer({sizeof(RasterParams), kBufferUniform, "scene-params"});
-        if (!pb) return pb.status();
-        g.params = pb.value();
-        meshes_.push_back(g);
-        SFX_TRY(device_.writeBuffer(g.vertices, 0, mesh.vertices.data(), mesh.vertices.size() * sizeof(Vertex)));
-        SFX_TRY(device_.writeBuffer(g.indices, 0, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t)));
-    }
-    return Status::ok();
+    // Each buffer joins meshes_ as soon as it exists, so a failure part-way releases it too.
+    auto upload = [&]() -> Status {
+        for (const Mesh& mesh : scene.meshes) {
+            GpuMesh& g = meshes_.emplace_back();
+            g.source = &mesh;
+            g.indexCount = uint32_t(mesh.indices.size());
+            Result<BufferHandle> vb = device_.createBuffer({mesh.vertices.size() * sizeof(Vertex), kBufferVertex, "scene-vertices"});
+            if (!vb) return vb.status();
+            g.vertices = vb.value();
+            Result<BufferHandle> ib = device_.createBuffer({mesh.indices.size() * sizeof(uint32_t), kBufferIndex, "scene-indices"});
+            if (!ib) return ib.status();
+            g.indices = ib.value();
+            Result<BufferHandle> pb = device_.createBuffer({sizeof(RasterParams), kBufferUniform, "scene-params"});
+            if (!pb) return pb.status();
+            g.params = pb.value();
+            SFX_TRY(device_.writeBuffer(g.vertices, 0, mesh.vertices.data(), mesh.vertices.size() * sizeof(Vertex)));
+            SFX_TRY(device_.writeBuffer(g.indices, 0, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t)));
+        }
+        return Status::ok();
+    };
+    Status s = upload();
+    if (!s) releaseMeshes();  // no half-loaded scene: render() then reports it is not loaded
+    return s;
 }
 
 Result<GBuffer> SceneRenderer::render(const Scene& scene, uint32_t width, uint32_t height, double time) {
@@ -243,58 +249,54 @@ Result<GBuffer> SceneRenderer::render(const Scene& scene, uint32_t width, uint32
     if (!camera) return camera.status();
     g.camera = camera.value();
 
-    Result<TextureHandle> depth = device_.createTexture({width, height, 1, Format::D32F, kTextureSampled | kTextureRenderTarget, "scene-depth"});
-    if (!depth) return depth.status();
-    g.depth = depth.value();
-    Result<TextureHandle> normals =
-        device_.createTexture({width, height, 1, Format::RGBA16F, kTextureSampled | kTextureRenderTarget, "scene-normals"});
-    if (!normals) {
-        (void)device_.destroyTexture(g.depth);
-        return normals.status();
-    }
-    g.normals = normals.value();
-    Result<TextureHandle> velocity =
-        device_.createTexture({width, height, 1, Format::RG16F, kTextureSampled | kTextureRenderTarget, "scene-velocity"});
-    Result<TextureHandle> albedo =
-        device_.createTexture({width, height, 1, Format::RGBA8, kTextureSampled | kTextureRenderTarget, "scene-albedo"});
-    if (!velocity || !albedo) {
-        if (velocity) (void)device_.destroyTexture(velocity.value());
-        if (albedo) (void)device_.destroyTexture(albedo.value());
+    // Any failure below releases the G-buffer's textures; the caller gets nothing to free.
+    auto record = [&]() -> Status {
+        const struct {
+            TextureHandle* handle;
+            Format format;
+            const char* name;
+        } targets[] = {{&g.depth, Format::D32F, "scene-depth"},
+                       {&g.normals, Format::RGBA16F, "scene-normals"},
+                       {&g.velocity, Format::RG16F, "scene-velocity"},
+                       {&g.albedo, Format::RGBA8, "scene-albedo"}};
+        for (const auto& t : targets) {
+            Result<TextureHandle> texture =
+                device_.createTexture({width, height, 1, t.format, kTextureSampled | kTextureRenderTarget, t.name});
+            if (!texture) return texture.status();
+            *t.handle = texture.value();
+        }
+        std::vector<DrawDesc> draws;
+        for (const GpuMesh& m : meshes_) {
+            auto modelAt = [&](double t) { return glm::translate(glm::dmat4(1.0), m.source->velocity * t) * m.source->model; };
+            const glm::dmat4 modelView = scene.view(time) * modelAt(time);
+            RasterParams p;
+            p.modelView = glm::mat4(modelView);
+            p.projection = glm::mat4(g.camera.projection);
+            p.normalMatrix = glm::mat4(glm::transpose(glm::inverse(modelView)));
+            p.shutterOpenClip = glm::mat4(g.camera.projection * scene.view(time - 0.5) * modelAt(time - 0.5));
+            p.shutterCloseClip = glm::mat4(g.camera.projection * scene.view(time + 0.5) * modelAt(time + 0.5));
+            p.viewportSize = glm::vec4(float(width), float(height), 0, 0);
+            SFX_TRY(device_.writeBuffer(m.params, 0, &p, sizeof p));
+            DrawDesc d;
+            d.pipeline = pipeline_;
+            d.vertexBuffer = m.vertices;
+            d.indexBuffer = m.indices;
+            d.count = m.indexCount;
+            d.bindings.uniformBuffers = {BufferBinding{gen::raster_gbuffer::RasterParams, m.params, 0, 0}};
+            draws.push_back(d);
+        }
+        RenderPassDesc pass;
+        pass.colors = {ColorAttachment{g.normals, 0, LoadOp::Clear, {0, 0, 0, 0}},
+                       ColorAttachment{g.velocity, 0, LoadOp::Clear, {0, 0, 0, 0}},
+                       ColorAttachment{g.albedo, 0, LoadOp::Clear, {0, 0, 0, 0}}};
+        pass.depth = DepthAttachment{g.depth, LoadOp::Clear, 1.0f};
+        pass.debugName = "scene-gbuffer";
+        return device_.renderPass(pass, draws);
+    };
+    if (Status s = record(); !s) {
         destroy(g);
-        return velocity ? albedo.status() : velocity.status();
+        return s;
     }
-    g.velocity = velocity.value();
-    g.albedo = albedo.value();
-    g.shutterOpenViewProjection = g.camera.projection * scene.view(time - 0.5);
-    g.shutterCloseViewProjection = g.camera.projection * scene.view(time + 0.5);
-
-    std::vector<DrawDesc> draws;
-    for (const GpuMesh& m : meshes_) {
-        auto modelAt = [&](double t) { return glm::translate(glm::dmat4(1.0), m.source->velocity * t) * m.source->model; };
-        const glm::dmat4 modelView = scene.view(time) * modelAt(time);
-        RasterParams p;
-        p.modelView = glm::mat4(modelView);
-        p.projection = glm::mat4(g.camera.projection);
-        p.normalMatrix = glm::mat4(glm::transpose(glm::inverse(modelView)));
-        p.shutterOpenClip = glm::mat4(g.camera.projection * scene.view(time - 0.5) * modelAt(time - 0.5));
-        p.shutterCloseClip = glm::mat4(g.camera.projection * scene.view(time + 0.5) * modelAt(time + 0.5));
-        p.viewportSize = glm::vec4(float(width), float(height), 0, 0);
-        SFX_TRY(device_.writeBuffer(m.params, 0, &p, sizeof p));
-        DrawDesc d;
-        d.pipeline = pipeline_;
-        d.vertexBuffer = m.vertices;
-        d.indexBuffer = m.indices;
-        d.count = m.indexCount;
-        d.bindings.uniformBuffers = {BufferBinding{gen::raster_gbuffer::RasterParams, m.params, 0, 0}};
-        draws.push_back(d);
-    }
-    RenderPassDesc pass;
-    pass.colors = {ColorAttachment{g.normals, 0, LoadOp::Clear, {0, 0, 0, 0}},
-                   ColorAttachment{g.velocity, 0, LoadOp::Clear, {0, 0, 0, 0}},
-                   ColorAttachment{g.albedo, 0, LoadOp::Clear, {0, 0, 0, 0}}};
-    pass.depth = DepthAttachment{g.depth, LoadOp::Clear, 1.0f};
-    pass.debugName = "scene-gbuffer";
-    SFX_TRY(device_.renderPass(pass, draws));
     return g;
 }
 
@@ -303,6 +305,27 @@ void SceneRenderer::destroy(GBuffer& g) {
         if (!t->isNull()) (void)device_.destroyTexture(*t);
         *t = {};
     }
+}
+
+Result<GBufferContents> readBack(Device& device, const GBuffer& g) {
+    GBufferContents c;
+    c.width = g.width;
+    c.height = g.height;
+    const size_t n = size_t(g.width) * g.height;
+    c.storedDepth.resize(n);
+    c.albedo.resize(n * 4);
+    std::vector<uint16_t> normals(n * 4), velocity(n * 2);
+    SFX_TRY(device.readTexture(g.depth, 0, c.storedDepth.data(), n * sizeof(float)));
+    SFX_TRY(device.readTexture(g.normals, 0, normals.data(), normals.size() * sizeof(uint16_t)));
+    SFX_TRY(device.readTexture(g.velocity, 0, velocity.data(), velocity.size() * sizeof(uint16_t)));
+    SFX_TRY(device.readTexture(g.albedo, 0, c.albedo.data(), c.albedo.size()));
+    c.normals.resize(n);
+    c.velocity.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        c.normals[i] = {halfToFloat(normals[i * 4]), halfToFloat(normals[i * 4 + 1]), halfToFloat(normals[i * 4 + 2])};
+        c.velocity[i] = {halfToFloat(velocity[i * 2]), halfToFloat(velocity[i * 2 + 1])};
+    }
+    return c;
 }
 
 }  // namespace sfx::samples

@@ -50,8 +50,19 @@ struct GBuffer {
     TextureHandle velocity;  // RG16F pixels across the shutter interval (sfx/motion_blur.hpp convention)
     TextureHandle albedo;    // RGBA8 checkered albedo; a = 0: nothing drawn
     CameraProjection camera;
-    glm::dmat4 shutterOpenViewProjection{1.0}, shutterCloseViewProjection{1.0};  // camera only
 };
+
+// A G-buffer copied back to the host and decoded, row 0 first: what the CPU references,
+// the benchmarks' CPU shading and the demo's pictures read.
+struct GBufferContents {
+    uint32_t width = 0, height = 0;
+    std::vector<float> storedDepth;    // the D32F values as rasterised
+    std::vector<glm::vec3> normals;    // view space, from the RGBA16F halves (exact)
+    std::vector<glm::vec2> velocity;   // pixels across the shutter interval, from RG16F (exact)
+    std::vector<uint8_t> albedo;       // RGBA8
+    bool drawn(size_t i) const { return albedo[i * 4 + 3] != 0; }
+};
+Result<GBufferContents> readBack(Device& device, const GBuffer& gbuffer);
 
 class SceneRenderer {
 public:

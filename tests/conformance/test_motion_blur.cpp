@@ -7,6 +7,7 @@
 #include <cstring>
 #include <random>
 
+#include "sfx/half.hpp"
 #include "sfx/motion_blur.hpp"
 #include "sfx/reference/motion_blur_reference.hpp"
 #include "test_device.hpp"
@@ -15,27 +16,6 @@ using namespace sfx;
 using namespace sfx::reference;
 
 namespace {
-
-// fp16 <-> float for RGBA16F uploads and readbacks (values well inside the normal range).
-uint16_t halfBits(double v) {
-    const float f = float(roundToHalf(v));
-    uint32_t b;
-    std::memcpy(&b, &f, 4);
-    const uint32_t sign = (b >> 16) & 0x8000u;
-    const int exponent = int((b >> 23) & 0xffu) - 127 + 15;
-    const uint32_t mantissa = b & 0x7fffffu;
-    if (f == 0.0f) return uint16_t(sign);
-    if (exponent <= 0) return uint16_t(sign | uint32_t(std::lround(std::fabs(f) * 16777216.0)));  // subnormal
-    return uint16_t(sign | (uint32_t(exponent) << 10) | (mantissa >> 13));
-}
-double fromHalf(uint16_t h) {
-    const int exponent = (h >> 10) & 0x1f;
-    const double mantissa = h & 0x3ff;
-    const double sign = (h & 0x8000) ? -1.0 : 1.0;
-    if (exponent == 0) return sign * std::ldexp(mantissa, -24);
-    if (exponent == 31) return mantissa == 0 ? sign * INFINITY : NAN;
-    return sign * std::ldexp(1024.0 + mantissa, exponent - 25);
-}
 
 // The colour as the GPU sees it (rounded to fp16), so the reference starts from the same input.
 ColorGrid toHalfGrid(const ColorGrid& c) {
@@ -60,7 +40,7 @@ void upload(GpuInputs& in, const ColorGrid& color, const Grid& depth, const Velo
     in.color = d.createTexture({w, h, 1, Format::RGBA16F, kTextureSampled, "mb-test-color"}).value();
     std::vector<uint16_t> c;
     for (const auto& px : color.values)
-        for (double ch : px) c.push_back(halfBits(ch));
+        for (double ch : px) c.push_back(floatToHalf(float(roundToHalf(ch))));
     SFX_REQUIRE_OK(d.writeTexture(in.color, 0, c.data(), c.size() * 2));
     in.depth = d.createTexture({w, h, 1, Format::R32F, kTextureSampled, "mb-test-depth"}).value();
     std::vector<float> z(depth.values.begin(), depth.values.end());
@@ -102,7 +82,7 @@ ColorGrid runGpu(const ColorGrid& color, const Grid& depth, const VelocityGrid* 
     SFX_REQUIRE_OK(d.readTexture(mb.value()->output(), 0, out.data(), out.size() * 2));
     ColorGrid result(w, h);
     for (size_t i = 0; i < result.values.size(); ++i)
-        for (int c = 0; c < 4; ++c) result.values[i][c] = fromHalf(out[i * 4 + size_t(c)]);
+        for (int c = 0; c < 4; ++c) result.values[i][c] = double(halfToFloat(out[i * 4 + size_t(c)]));
     return result;
 }
 
