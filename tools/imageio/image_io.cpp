@@ -223,11 +223,4 @@ Status writeImage(const std::string& path, const Image& image) {
     return fileError(path, "unknown image extension '" + ext + "'; allowed .png, .pfm, .exr");
 }
 
-Image normalized(const Image& image, float lo, float hi) {
-    Image out = image;
-    const float scale = hi > lo ? 1.0f / (hi - lo) : 0.0f;
-    for (float& v : out.pixels) v = (v - lo) * scale;
-    return out;
-}
-
 }  // namespace sfx::io

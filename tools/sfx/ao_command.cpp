@@ -97,7 +97,7 @@ int runAo(const AoFlags& f) {
         if (Status st = dev.readTexture(out.value(), 0, px.data(), px.size()); !st) return fail(cmd, st);
         for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = px[i * 4] / 255.0f;
     }
-    // Texture rows are image rows (row 0 = top, as loadDepth uploaded them).
+    // Texture rows are image rows (row 0 = top, as uploadDepth uploaded them).
     if (Status st = io::writeImage(f.outPath, image); !st) return fail(cmd, st);
     const std::string png = std::filesystem::path(f.outPath).replace_extension(".png").string();
     if (Status st = io::writePng(png, image); !st) return fail(cmd, st);

@@ -39,7 +39,4 @@ Status writeExr(const std::string& path, const Image& image);
 // By extension: .png, .pfm, .exr.
 Status writeImage(const std::string& path, const Image& image);
 
-// The image with each channel mapped by (v - lo) / (hi - lo): for viewing depth as PNG.
-Image normalized(const Image& image, float lo, float hi);
-
 }  // namespace sfx::io
