@@ -185,8 +185,8 @@ int main(int argc, char** argv) {
         desc.settings.technique = technique;
         desc.settings.normals = AoNormals::FromTexture;
         desc.settings.radius = 0.6f;
-        // The seeds' nominal intensity makes scalable AO (a squared sum) and crease shading (a
-        // sum over 10) faint on these scenes; the demo turns them up so the effect shows.
+        // The papers' nominal intensity (sigma = 1) makes scalable AO (a squared sum) and crease
+        // shading (a sum over 10) faint on these scenes; the demo turns them up so the effect shows.
         desc.settings.intensity = technique == AoTechnique::Scalable ? 3.0f : technique == AoTechnique::Crease ? 3.0f : 1.0f;
         std::cout << "ao " << toString(technique) << ": radius " << desc.settings.radius << ", intensity "
                   << desc.settings.intensity << "\n";

@@ -39,7 +39,7 @@ void main() {
         v = vec2(0.0);
         len = 0.0;
     }
-    // Clamp the magnitude, keeping the direction (seed: "clamp to max blur").
+    // Clamp the magnitude, keeping the direction (the course's "clamp to max blur").
     if (len > params.radius) v *= params.radius / len;
     vec2 enc = vec2(mbEncodeVelocity(v.x, params.radius), mbEncodeVelocity(v.y, params.radius));
     float zc = min(z, SFX_MB_MAX_PACKED_DEPTH);

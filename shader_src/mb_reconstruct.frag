@@ -1,6 +1,6 @@
 #version 450
-// Motion blur pass 4: gather reconstruction (seed 003). Samples in mirrored pairs along the
-// neighbourhood velocity v_N and, for odd pairs, the centre velocity v_C; each sample weighted
+// Motion blur pass 4: gather reconstruction (docs/algorithms.md). Samples in mirrored pairs
+// along the neighbourhood velocity v_N and, for odd pairs, the centre velocity v_C; each sample weighted
 // by the soft depth comparison, the background / foreground cones and the both-moving test of
 // sfx_shared_mb.h; weights summed and normalised. Pixels with nothing moving near them return
 // their colour untouched.

@@ -82,7 +82,7 @@ vec3 reconstructViewPosition(vec2 pixelCentre, float z, vec4 projInfo) {
 }
 #endif
 
-// ---- Tier parameters (the design card's tier table; tiers/ selects among them) ------------
+// ---- Tier parameters (docs/tiers.md's parameter table; tiers/ selects among them) ---------
 SFX_CONST(int, SFX_AO_SCALABLE_TAPS_CURRENT, 4)      // mirrored: 2 offsets, each also negated
 SFX_CONST(int, SFX_AO_SCALABLE_TAPS_HIGH, 9)         // spiral taps reading the depth MIP
 SFX_CONST(float, SFX_AO_RADIUS_CLAMP_PX_CURRENT, 20.0)

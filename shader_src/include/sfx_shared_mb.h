@@ -1,6 +1,8 @@
 // Motion blur pieces shared by the mb_*.frag shaders and the C++ CPU reference
 // (sfx/reference/motion_blur_reference.hpp): the velocity encoding, the jitter patterns, where
 // samples go and how they are weighted. Both sides include this one file so they cannot drift.
+// "The course" below is Bukowski, Hennessy, McGuire, Osman, "Scalable High Quality Motion Blur
+// and Ambient Occlusion" (SIGGRAPH 2012); docs/algorithms.md restates it.
 //
 // Scalar code only, in the common subset of GLSL 450 and C++20. In C++ the functions take
 // double (SFX_MB_REAL); in GLSL float. Include sfx_shared.h first: its macros are used here.
@@ -41,7 +43,7 @@ using std::min;
 #endif
 
 // A neighbourhood velocity shorter than this (pixels) means nothing moves near the pixel: the
-// reconstruction returns the input colour unchanged (the seed's "branch on velocity").
+// reconstruction returns the input colour unchanged (the course's "branch on velocity").
 SFX_CONST(float, SFX_MB_STILL_PX, 0.5)
 // Packed depth is stored as an fp16 hi/lo pair; fp16 ends at 65504, so depth is clamped here.
 // Anything this far is "very far" for the soft comparisons; sky (SFX_SKY_DEPTH) lands here too.
@@ -84,7 +86,7 @@ SFX_MB_FN SFX_MB_VEC2 mbCameraVelocity(SFX_MB_VEC2 pc, SFX_MB_VEC2 ndcScale, SFX
     return (ndc - SFX_MB_VEC2(prev.x, prev.y) / prev.w) * 0.5 * target;
 }
 
-// Velocity component in [-k, k] pixels <-> [0, 1] (the seed's rescale to fit two channels).
+// Velocity component in [-k, k] pixels <-> [0, 1] (the course's rescale to fit two channels).
 SFX_MB_FN SFX_MB_REAL mbEncodeVelocity(SFX_MB_REAL v, SFX_MB_REAL k) { return v / (2.0 * k) + 0.5; }
 SFX_MB_FN SFX_MB_REAL mbDecodeVelocity(SFX_MB_REAL e, SFX_MB_REAL k) { return (e - 0.5) * (2.0 * k); }
 
@@ -99,7 +101,7 @@ SFX_MB_FN SFX_MB_REAL mbSampleT(int i, int pairs, SFX_MB_REAL jitter, SFX_MB_REA
     return side * (SFX_MB_REAL(i) + 0.5 + side * jitter) / SFX_MB_REAL(pairs);
 }
 // Even pairs follow the neighbourhood velocity v_N, odd pairs the centre velocity v_C (the
-// seed's alternation, hiding tile edges); a still centre gives its pairs to v_N as well.
+// course's alternation, hiding tile edges); a still centre gives its pairs to v_N as well.
 SFX_MB_FN bool mbPairUsesCentre(int i, SFX_MB_REAL centreSpeed) {
     return (i & 1) == 1 && centreSpeed >= SFX_MB_REAL(SFX_MB_STILL_PX);
 }
@@ -114,13 +116,13 @@ SFX_MB_FN SFX_MB_REAL mbSoftDepth(SFX_MB_REAL za, SFX_MB_REAL zb, SFX_MB_REAL ex
 SFX_MB_FN SFX_MB_REAL mbCone(SFX_MB_REAL dist, SFX_MB_REAL speed) {
     return clamp(1.0 - dist / max(speed, 1.0e-4), 0.0, 1.0);
 }
-// Cylinder: the seed's "both moving" overlap test (speed >= dist), softened to a 1 px linear
+// Cylinder: the course's "both moving" overlap test (speed >= dist), softened to a 1 px linear
 // ramp centred on speed == dist. A sample whose rounded offset is the velocity itself sits
 // exactly at dist == speed, and a hard step there flips with the last bit of the fp16 velocity
 // (GPUs may round it to nearest or toward zero): the ramp makes the weight continuous.
 SFX_MB_FN SFX_MB_REAL mbCylinder(SFX_MB_REAL dist, SFX_MB_REAL speed) { return clamp(speed - dist + 0.5, 0.0, 1.0); }
 
-// Weight of sample S at distance `dist` from centre C (the seed's three cases, not exclusive):
+// Weight of sample S at distance `dist` from centre C (the course's three cases, not exclusive):
 //   background estimate  mbSoftDepth(z_C, z_S) * cone(dist, |v_C|)
 //   foreground over C    mbSoftDepth(z_S, z_C) * cone(dist, |v_S|)
 //   both moving          cylinder(dist, |v_S|) * cylinder(dist, |v_C|)

@@ -44,7 +44,8 @@ struct AoCreaseSettings {
     float fadeEnd = 100.0f;       // (fadeStart, inf] linear depth where crease shading is gone
 };
 
-// Every knob of the effect. Defaults are the seeds' nominal values; ranges are enforced:
+// Every knob of the effect. Defaults are the papers' nominal values
+// (docs/algorithms.md); ranges are enforced:
 // a value outside its range is InvalidArgument naming the field ("AoSettings.radius").
 struct AoSettings {
     AoTechnique technique = AoTechnique::Scalable;

@@ -1,6 +1,8 @@
-// Motion blur reconstruction (seed 003): a gather blur along per-pixel velocity that blurs
-// moving objects past their silhouettes and keeps still ones sharp. Same shape as every effect:
-// create / dispatch / resize / destroy (RAII), status returns, a plan of passes and bytes.
+// Motion blur reconstruction (McGuire et al.'s reconstruction filter, tiered as in the Scalable
+// High Quality Motion Blur and Ambient Occlusion course; docs/algorithms.md): a gather blur along
+// per-pixel velocity that blurs moving objects past their silhouettes and keeps still ones sharp.
+// Same shape as every effect: create / dispatch / resize / destroy (RAII), status returns, a plan
+// of passes and bytes.
 //
 // Velocity convention (inputs.velocity and the CLI's velocity files):
 // - units: pixels of the output; x toward increasing column, y toward increasing memory row
