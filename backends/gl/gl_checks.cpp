@@ -62,7 +62,7 @@ Status GlDevice::checkBindingsMatch(const GlProgram& program, const BindingSet& 
 }
 
 Status GlDevice::checkBufferRange(GLenum target, const BufferBinding& bb, uint32_t alignment, uint32_t minSize,
-                        const ShaderResource* resource) {
+                                  const ShaderResource* resource) {
     SFX_TRY(buffers_.check(bb.buffer, "BufferBinding.buffer"));
     const GlBuffer& buf = buffers_.get(bb.buffer);
     const uint64_t size = boundSize(bb, buf.desc);

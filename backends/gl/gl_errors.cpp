@@ -53,8 +53,8 @@ void GlDevice::enableDebugOutput() {
     debugOutput_ = true;
 }
 
-void APIENTRY GlDevice::debugCallback(GLenum source, GLenum type, GLuint, GLenum, GLsizei, const GLchar* message,
-                                      const void* user) {
+void APIENTRY GlDevice::debugCallback(GLenum source, GLenum type, GLuint, GLenum, GLsizei,
+                                      const GLchar* message, const void* user) {
     // Compile and link failures reach the caller as ShaderError with the info log.
     if (type != GL_DEBUG_TYPE_ERROR || source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
     auto* self = static_cast<GlDevice*>(const_cast<void*>(user));
