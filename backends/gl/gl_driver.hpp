@@ -1,0 +1,217 @@
+// The GL driver's device class, shared by the files that implement it (internal to the GL
+// backend). One class, its members defined by concern:
+//   gl_device.cpp       construction, context switching, commands' validate-then-encode entry
+//                       points, timers, and the factories
+//   gl_caps.cpp         entry-point loading and the caps (init)
+//   gl_errors.cpp       per-call GL error checks and KHR_debug output
+//   gl_resources.cpp    textures, buffers, samplers
+//   gl_programs.cpp     shader compile/link, name-based binding, pipelines
+//   gl_checks.cpp       the GL backend's own binding, attachment and feedback checks
+//   gl_commands.cpp     render passes, draws, dispatches: GL state and resource binding
+//   gl_framebuffers.cpp the framebuffer object cache
+//   gl_readback.cpp     texture and buffer readback, the GL ES depth copy
+// GL runs commands as they are issued, so the HAL's call order is kept by calling GL in that
+// order; flush() is glFinish.
+#pragma once
+
+#include <chrono>
+#include <map>
+#include <set>
+#include <span>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "gl_functions.hpp"
+#include "gl_platform.hpp"
+#include "sfx/gl_device.hpp"
+#include "sfx/hal_validation.hpp"
+
+namespace sfx::gl {
+
+using Clock = std::chrono::steady_clock;
+
+inline std::string str(uint64_t v) { return std::to_string(v); }
+
+struct GlTexture {
+    TextureDesc desc;
+    GLuint name = 0;
+};
+struct GlBuffer {
+    BufferDesc desc;
+    GLuint name = 0;
+};
+struct GlSampler {
+    SamplerDesc desc;
+    GLuint name = 0;
+};
+struct GlProgram {
+    std::string label;
+    GLuint name = 0;
+    bool compute = false;
+    std::vector<ShaderResource> resources;
+};
+struct GlPipeline {
+    bool compute = false;
+    ProgramHandle program;
+    GraphicsPipelineDesc desc;  // graphics state; program field unused
+    GLuint vao = 0;
+};
+struct GlTimer {
+    bool begun = false, ended = false;
+    Clock::time_point begin{}, end{};
+    double lastMs = -1;  // the last finished measurement
+};
+
+// A render pass's colour attachments (texture, mip) as the checks accepted them.
+using ColorTargets = std::vector<std::pair<const GlTexture*, uint32_t>>;
+// What a checked render pass renders to: its attachments and their one extent.
+struct PassTargets {
+    ColorTargets colors;
+    const GlTexture* depth = nullptr;
+    uint32_t width = 0, height = 0;
+};
+
+// Attachments of a framebuffer object: (texture name << 32 | mip) per colour, then depth.
+using FboKey = std::vector<uint64_t>;
+
+// A checked GL call inside GlDevice: glGetError after it when options.validation (see checked()).
+#define GL(fn, ...) checked(#fn, __FILE__, __LINE__, gl_.fn __VA_OPT__(, ) __VA_ARGS__)
+
+class GlDevice final : public Device {
+public:
+    GlDevice(std::unique_ptr<GlPlatform> platform, Api api, const DeviceOptions& options);
+    ~GlDevice() override;
+
+    // Loads entry points and fills the caps; the platform's context is current.
+    Status init(CapabilityCeiling ceiling);
+
+    const DeviceCaps& caps() const override { return caps_; }
+
+    Result<TextureHandle> createTexture(const TextureDesc& desc) override;
+    Status destroyTexture(TextureHandle h) override;
+    Result<TextureDesc> textureDesc(TextureHandle h) const override;
+    Status writeTexture(TextureHandle h, uint32_t mip, const void* data, size_t bytes) override;
+    Status readTexture(TextureHandle h, uint32_t mip, void* out, size_t bytes) override;
+
+    Result<BufferHandle> createBuffer(const BufferDesc& desc) override;
+    Status destroyBuffer(BufferHandle h) override;
+    Status writeBuffer(BufferHandle h, uint64_t offset, const void* data, size_t bytes) override;
+    Status readBuffer(BufferHandle h, uint64_t offset, void* out, size_t bytes) override;
+
+    Result<SamplerHandle> createSampler(const SamplerDesc& desc) override;
+    Status destroySampler(SamplerHandle h) override;
+
+    Result<ProgramHandle> createProgram(const CompiledProgram& program) override;
+    Status destroyProgram(ProgramHandle h) override;
+    Result<PipelineHandle> createGraphicsPipeline(const GraphicsPipelineDesc& desc) override;
+    Result<PipelineHandle> createComputePipeline(const ComputePipelineDesc& desc) override;
+    Status destroyPipeline(PipelineHandle h) override;
+
+    Result<TimerHandle> createTimer() override;
+    Status destroyTimer(TimerHandle h) override;
+    Status beginTimer(TimerHandle h) override;
+    Status endTimer(TimerHandle h) override;
+    Result<TimerReading> readTimer(TimerHandle h) override;
+
+    Status renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) override;
+    Status dispatch(const DispatchDesc& d) override;
+    Status flush() override;
+
+    std::vector<std::string> takeValidationMessages() override;
+
+private:
+    // ---- Context (gl_device.cpp) ----------------------------------------------------------
+    bool makeCurrent();
+    Status enter();
+    bool hostContext() const;
+
+    // ---- Errors and debug output (gl_errors.cpp) ------------------------------------------
+    // A call's result once GL has had its say: the first GL error caught since enter() wins.
+    Status takeDeviceError(Status s);
+    void checkError(const char* fn, const char* file, int line);
+    template <class F, class... A>
+    auto checked(const char* fn, const char* file, int line, F f, A&&... args) -> decltype(f(std::forward<A>(args)...)) {
+        if constexpr (std::is_void_v<decltype(f(std::forward<A>(args)...))>) {
+            f(std::forward<A>(args)...);
+            checkError(fn, file, line);
+        } else {
+            auto r = f(std::forward<A>(args)...);
+            checkError(fn, file, line);
+            return r;
+        }
+    }
+    void enableDebugOutput();
+    static void APIENTRY debugCallback(GLenum source, GLenum type, GLuint, GLenum, GLsizei, const GLchar* message,
+                                         const void* user);
+
+    // ---- Resources (gl_resources.cpp) -----------------------------------------------------
+    void setSamplerState(GLuint s, const SamplerDesc& d);
+
+    // ---- Programs (gl_programs.cpp) -------------------------------------------------------
+    // Compiles and links `program`'s text for the device's dialect and binds its resources by name.
+    Result<GLuint> linkProgram(const CompiledProgram& program);
+    Result<GLuint> compileShader(const std::string& programName, GLenum type, const std::string& source);
+    Result<GLuint> buildProgram(const std::string& programName, const std::vector<std::pair<GLenum, std::string>>& sources);
+    void bindResourcesByName(GLuint program, const std::vector<ShaderResource>& resources);
+
+    // ---- The backend's own checks (gl_checks.cpp) -----------------------------------------
+    Status checkBindingsMatch(const GlProgram& program, const BindingSet& b, const char* where);
+    Status checkBufferRange(GLenum target, const BufferBinding& bb, uint32_t alignment, uint32_t minSize,
+                            const ShaderResource* resource);
+    const ShaderResource* findResource(const GlProgram* program, ResourceKind kind, uint32_t binding);
+    Status checkResources(const BindingSet& b, const GlProgram* program);
+    Status checkPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, PassTargets* targets);
+    Status checkDraw(const DrawDesc& d, const ColorTargets& colors, const GlTexture* depth);
+    Result<const GlProgram*> checkDispatch(const DispatchDesc& d);
+
+    // ---- Commands (gl_commands.cpp) -------------------------------------------------------
+    // The range a buffer binding covers: its size, or the rest of the buffer when size is 0.
+    static uint64_t boundSize(const BufferBinding& bb, const BufferDesc& d) {
+        return bb.size ? bb.size : (bb.offset < d.size ? d.size - bb.offset : 0);
+    }
+    bool filterable(Format f) const;
+    void bindResources(const BindingSet& b);
+    void unbindResources(const BindingSet& b);
+    Status encodeRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, const PassTargets& targets);
+    void encodeDraw(const DrawDesc& d);
+    void encodeDispatch(const GlProgram& program, const DispatchDesc& d);
+
+    // ---- Framebuffer cache (gl_framebuffers.cpp) ------------------------------------------
+    GLenum depthAttachmentPoint(Format f) const;
+    Result<GLuint> framebuffer(const ColorTargets& colors, const GlTexture* depth, uint32_t depthMip);
+    void forgetFbosOf(GLuint texture);
+
+    // ---- Readback (gl_readback.cpp) -------------------------------------------------------
+    Status readLevel(const GlTexture& t, uint32_t mip, void* out);
+    Status copyDepthEs(const GlTexture& t, uint32_t mip, uint32_t w, uint32_t h, float* out);
+
+    std::unique_ptr<GlPlatform> platform_;
+    Api api_;
+    DeviceOptions options_;
+    GlFunctions gl_;
+    bool loaded_ = false;
+    DeviceCaps caps_;
+    std::set<std::string> extensions_;
+    bool float32Filterable_ = false;
+    bool debugOutput_ = false;
+    uint32_t uniformOffsetAlignment_ = 1, storageOffsetAlignment_ = 1;
+    std::vector<std::string> messages_;
+    std::string pendingError_;  // the first GL error since the current call began
+
+    uint16_t serial_;
+    HandlePool<TextureTag, GlTexture> textures_;
+    HandlePool<BufferTag, GlBuffer> buffers_;
+    HandlePool<SamplerTag, GlSampler> samplers_;
+    HandlePool<ProgramTag, GlProgram> programs_;
+    HandlePool<PipelineTag, GlPipeline> pipelines_;
+    HandlePool<TimerTag, GlTimer> timers_;
+
+    std::map<FboKey, GLuint> fbos_;
+    GLuint nearestSampler_ = 0;
+    GLuint emptyVao_ = 0;
+    GLuint depthCopyProgram_ = 0;
+};
+
+}  // namespace sfx::gl

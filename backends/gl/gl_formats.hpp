@@ -1,0 +1,23 @@
+// How the HAL's formats and fixed-function enums map to GL (internal to the GL backend).
+#pragma once
+
+#include "gl_functions.hpp"
+#include "sfx/hal.hpp"
+
+namespace sfx::gl {
+
+struct GlFormat {
+    GLenum internalFormat;
+    GLenum format;  // for uploads and desktop depth reads
+    GLenum type;
+};
+
+GlFormat glFormat(Format f);
+bool isHalfFormat(Format f);
+bool isFloat32Format(Format f);
+
+GLenum compareFunc(CompareOp op);
+GLenum blendFactor(BlendFactor f);
+GLenum wrapMode(AddressMode a);
+
+}  // namespace sfx::gl

@@ -1,0 +1,172 @@
+// Programs and pipelines: the device dialect's text compiled and linked, resources bound by their
+// reflected GL names, and pipelines holding the graphics state a draw applies.
+#include <algorithm>
+
+#include "gl_driver.hpp"
+
+namespace sfx::gl {
+
+Result<ProgramHandle> GlDevice::createProgram(const CompiledProgram& program) {
+    // The shared check names what the device lacks before looking for the dialect's text.
+    SFX_TRY(validation::program(program, caps_));
+    SFX_TRY(enter());
+    Result<GLuint> linked = linkProgram(program);
+    if (!linked) return takeDeviceError(linked.status());
+    const GLuint name = linked.value();
+    Status s = takeDeviceError(Status::ok());
+    if (!s) {
+        gl_.glDeleteProgram(name);
+        return s;
+    }
+    return programs_.insert(GlProgram{program.name, name, program.isCompute(), program.resources});
+}
+
+Status GlDevice::destroyProgram(ProgramHandle h) {
+    SFX_TRY(programs_.check(h, "program"));
+    SFX_TRY(enter());
+    GlProgram p = programs_.remove(h);
+    GL(glDeleteProgram, p.name);
+    return takeDeviceError(Status::ok());
+}
+
+Result<GLuint> GlDevice::linkProgram(const CompiledProgram& program) {
+    std::vector<std::pair<GLenum, std::string>> sources;
+    for (const StageCode& s : program.stages) {
+        const GLenum type = s.stage == ShaderStage::Vertex     ? GL_VERTEX_SHADER
+                            : s.stage == ShaderStage::Fragment ? GL_FRAGMENT_SHADER
+                                                               : GL_COMPUTE_SHADER;
+        sources.push_back({type, s.glsl[size_t(caps_.dialect)]});
+    }
+    Result<GLuint> linked = buildProgram(program.name, sources);
+    if (!linked) return linked.status();
+    bindResourcesByName(linked.value(), program.resources);
+    return linked.value();
+}
+
+Result<GLuint> GlDevice::compileShader(const std::string& programName, GLenum type, const std::string& source) {
+    const GLuint shader = GL(glCreateShader, type);
+    const char* text = source.c_str();
+    GL(glShaderSource, shader, 1, &text, nullptr);
+    GL(glCompileShader, shader);
+    GLint ok = 0;
+    GL(glGetShaderiv, shader, GL_COMPILE_STATUS, &ok);
+    if (ok) return shader;
+    GLint length = 0;
+    GL(glGetShaderiv, shader, GL_INFO_LOG_LENGTH, &length);
+    std::string log(size_t(std::max(length, 1)), '\0');
+    GL(glGetShaderInfoLog, shader, GLsizei(log.size()), nullptr, log.data());
+    GL(glDeleteShader, shader);
+    const char* stage = type == GL_VERTEX_SHADER ? "vertex" : type == GL_FRAGMENT_SHADER ? "fragment" : "compute";
+    return Status{StatusCode::ShaderError, "program '" + programName + "' " + stage + " stage failed to compile (" +
+                                               toString(caps_.dialect) + "): " + log.c_str()};
+}
+
+Result<GLuint> GlDevice::buildProgram(const std::string& programName,
+                                      const std::vector<std::pair<GLenum, std::string>>& sources) {
+    std::vector<GLuint> shaders;
+    auto deleteShaders = [&] {
+        for (GLuint s : shaders) GL(glDeleteShader, s);
+    };
+    for (const auto& [type, text] : sources) {
+        Result<GLuint> s = compileShader(programName, type, text);
+        if (!s) {
+            deleteShaders();
+            return s.status();
+        }
+        shaders.push_back(s.value());
+    }
+    const GLuint program = GL(glCreateProgram);
+    for (GLuint s : shaders) GL(glAttachShader, program, s);
+    GL(glLinkProgram, program);
+    deleteShaders();  // flagged; they go with the program
+    GLint ok = 0;
+    GL(glGetProgramiv, program, GL_LINK_STATUS, &ok);
+    if (ok) return program;
+    GLint length = 0;
+    GL(glGetProgramiv, program, GL_INFO_LOG_LENGTH, &length);
+    std::string log(size_t(std::max(length, 1)), '\0');
+    GL(glGetProgramInfoLog, program, GLsizei(log.size()), nullptr, log.data());
+    GL(glDeleteProgram, program);
+    return Status{StatusCode::ShaderError, "program '" + programName + "' failed to link (" +
+                                               toString(caps_.dialect) + "): " + log.c_str()};
+}
+
+// SPIR-V to ESSL 300 / GLSL 330 drops binding qualifiers, so bind by the reflected GL name
+// (harmless where the qualifier survived). Texture unit = uniform block binding = the
+// reflected binding number.
+void GlDevice::bindResourcesByName(GLuint program, const std::vector<ShaderResource>& resources) {
+    GL(glUseProgram, program);
+    for (const ShaderResource& r : resources) {
+        switch (r.kind) {
+        case ResourceKind::SampledTexture: {
+            const GLint loc = GL(glGetUniformLocation, program, r.glName.c_str());
+            if (loc >= 0) GL(glUniform1i, loc, GLint(r.binding));
+            break;
+        }
+        case ResourceKind::UniformBuffer: {
+            const GLuint index = GL(glGetUniformBlockIndex, program, r.glName.c_str());
+            if (index != GL_INVALID_INDEX) GL(glUniformBlockBinding, program, index, r.binding);
+            break;
+        }
+        case ResourceKind::StorageBuffer:
+            // GL ES has no glShaderStorageBlockBinding; ESSL 310 keeps binding= instead.
+            if (api_ == Api::DesktopGL && gl_.glShaderStorageBlockBinding && gl_.glGetProgramResourceIndex) {
+                const GLuint index = GL(glGetProgramResourceIndex, program, GL_SHADER_STORAGE_BLOCK, r.glName.c_str());
+                if (index != GL_INVALID_INDEX) GL(glShaderStorageBlockBinding, program, index, r.binding);
+            }
+            break;
+        case ResourceKind::StorageImage:
+            // Image units cannot be reassigned on GL ES; high-tier dialects keep binding=.
+            if (api_ == Api::DesktopGL) {
+                const GLint loc = GL(glGetUniformLocation, program, r.glName.c_str());
+                if (loc >= 0) GL(glUniform1i, loc, GLint(r.binding));
+            }
+            break;
+        }
+    }
+    GL(glUseProgram, 0);
+}
+
+Result<PipelineHandle> GlDevice::createGraphicsPipeline(const GraphicsPipelineDesc& desc) {
+    SFX_TRY(programs_.check(desc.program, "GraphicsPipelineDesc.program"));
+    if (programs_.get(desc.program).compute)
+        return Status{StatusCode::InvalidArgument, "GraphicsPipelineDesc.program is a compute program"};
+    SFX_TRY(validation::graphicsPipelineShape(desc, caps_));
+    SFX_TRY(validation::graphicsPipelineState(desc, caps_));
+    SFX_TRY(enter());
+    GlPipeline p;
+    p.program = desc.program;
+    p.desc = desc;
+    p.desc.debugName = "";
+    // The VAO holds which attributes are enabled; the buffer is attached per draw.
+    GL(glGenVertexArrays, 1, &p.vao);
+    GL(glBindVertexArray, p.vao);
+    for (const VertexAttribute& a : desc.vertexLayout.attributes) GL(glEnableVertexAttribArray, a.location);
+    GL(glBindVertexArray, 0);
+    Status s = takeDeviceError(Status::ok());
+    if (!s) {
+        gl_.glDeleteVertexArrays(1, &p.vao);
+        return s;
+    }
+    return pipelines_.insert(std::move(p));
+}
+
+Result<PipelineHandle> GlDevice::createComputePipeline(const ComputePipelineDesc& desc) {
+    SFX_TRY(programs_.check(desc.program, "ComputePipelineDesc.program"));
+    if (!programs_.get(desc.program).compute)
+        return Status{StatusCode::InvalidArgument, "ComputePipelineDesc.program is not a compute program"};
+    GlPipeline p;
+    p.compute = true;
+    p.program = desc.program;
+    return pipelines_.insert(std::move(p));
+}
+
+Status GlDevice::destroyPipeline(PipelineHandle h) {
+    SFX_TRY(pipelines_.check(h, "pipeline"));
+    SFX_TRY(enter());
+    GlPipeline p = pipelines_.remove(h);
+    if (p.vao) GL(glDeleteVertexArrays, 1, &p.vao);
+    return takeDeviceError(Status::ok());
+}
+
+}  // namespace sfx::gl
