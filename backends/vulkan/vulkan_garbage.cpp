@@ -1,8 +1,6 @@
 // Deferred destruction: destroyed objects wait in a Garbage list until the GPU is done with the
 // commands recorded with them (pending_: the next submit; hostPending_: the next
 // setCommandBuffer, when the host has finished its command buffer), and teardown.
-#include <dlfcn.h>
-
 #include "vulkan_device_impl.hpp"
 
 namespace sfx::vulkan {
@@ -85,8 +83,7 @@ void VulkanDevice::shutdown() {
     messenger_ = VK_NULL_HANDLE;
     if (setup_.ownsInstance && setup_.instance) vk_.vkDestroyInstance(setup_.instance, nullptr);
     setup_.instance = VK_NULL_HANDLE;
-    if (setup_.loaderLibrary) dlclose(setup_.loaderLibrary);
-    setup_.loaderLibrary = nullptr;
+    closeLoader(setup_.loaderLibrary);
 }
 
 }  // namespace sfx::vulkan

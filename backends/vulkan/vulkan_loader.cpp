@@ -2,7 +2,32 @@
 // VkResults in statuses.
 #include "vulkan_loader.hpp"
 
+#include <dlfcn.h>
+
 namespace sfx::vulkan {
+
+Status openLoader(Functions& f, void*& library) {
+    // The loader is opened here rather than linked, so its absence is a status, not a crash.
+    void* lib = dlopen("libvulkan.so.1", RTLD_NOW | RTLD_LOCAL);
+    if (!lib) lib = dlopen("libvulkan.so", RTLD_NOW | RTLD_LOCAL);
+    if (!lib)
+        return {StatusCode::BackendUnavailable,
+                std::string("the Vulkan loader (libvulkan.so.1, package libvulkan1) could not be opened: ") + dlerror()};
+    library = lib;
+    f.vkGetInstanceProcAddr = reinterpret_cast<PFN_vkGetInstanceProcAddr>(dlsym(lib, "vkGetInstanceProcAddr"));
+    if (!f.vkGetInstanceProcAddr) return {StatusCode::BackendUnavailable, "the Vulkan loader has no vkGetInstanceProcAddr"};
+    loadInstanceFn(f, VK_NULL_HANDLE, "vkCreateInstance", &f.vkCreateInstance);
+    loadInstanceFn(f, VK_NULL_HANDLE, "vkEnumerateInstanceLayerProperties", &f.vkEnumerateInstanceLayerProperties);
+    loadInstanceFn(f, VK_NULL_HANDLE, "vkEnumerateInstanceVersion", &f.vkEnumerateInstanceVersion);
+    if (!f.vkCreateInstance || !f.vkEnumerateInstanceLayerProperties)
+        return {StatusCode::BackendUnavailable, "the Vulkan loader lacks vkCreateInstance"};
+    return Status::ok();
+}
+
+void closeLoader(void*& library) {
+    if (library) dlclose(library);
+    library = nullptr;
+}
 
 Status loadInstanceFunctions(Functions& f, VkInstance instance) {
 #define SFX_LOAD(name)                                       \

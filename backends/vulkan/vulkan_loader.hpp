@@ -118,6 +118,11 @@ bool loadDeviceFn(const Functions& f, VkDevice device, const char* name, F* out)
     return *out != nullptr;
 }
 
+// Opens libvulkan and loads vkGetInstanceProcAddr and the global entry points; `library` holds
+// the handle (from the moment it is opened, so closeLoader releases it on any later failure).
+Status openLoader(Functions& f, void*& library);
+void closeLoader(void*& library);
+
 // Every instance- and device-level entry point of the lists above; BackendUnavailable names the
 // first one missing (and dynamic rendering, core or KHR, is required).
 Status loadInstanceFunctions(Functions& f, VkInstance instance);

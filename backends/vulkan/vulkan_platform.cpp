@@ -1,8 +1,6 @@
 // Platform: the loader, the instance (with the validation layer and its messenger when asked),
 // the physical device pick and the logical device, or the host's objects when wrapping; then the
 // per-device objects every command needs. Also the backend's public entry points.
-#include <dlfcn.h>
-
 #include <cstring>
 
 #include "vulkan_device_impl.hpp"
@@ -33,20 +31,7 @@ VkDebugUtilsMessengerCreateInfoEXT messengerInfo(void* user) {
 }  // namespace
 
 Status VulkanDevice::initOwn(const DeviceOptions& options) {
-    // The loader is opened here rather than linked, so its absence is a status, not a crash.
-    void* lib = dlopen("libvulkan.so.1", RTLD_NOW | RTLD_LOCAL);
-    if (!lib) lib = dlopen("libvulkan.so", RTLD_NOW | RTLD_LOCAL);
-    if (!lib)
-        return {StatusCode::BackendUnavailable,
-                std::string("the Vulkan loader (libvulkan.so.1, package libvulkan1) could not be opened: ") + dlerror()};
-    setup_.loaderLibrary = lib;
-    vk_.vkGetInstanceProcAddr = reinterpret_cast<PFN_vkGetInstanceProcAddr>(dlsym(lib, "vkGetInstanceProcAddr"));
-    if (!vk_.vkGetInstanceProcAddr) return {StatusCode::BackendUnavailable, "the Vulkan loader has no vkGetInstanceProcAddr"};
-    loadInstanceFn(vk_, VK_NULL_HANDLE, "vkCreateInstance", &vk_.vkCreateInstance);
-    loadInstanceFn(vk_, VK_NULL_HANDLE, "vkEnumerateInstanceLayerProperties", &vk_.vkEnumerateInstanceLayerProperties);
-    loadInstanceFn(vk_, VK_NULL_HANDLE, "vkEnumerateInstanceVersion", &vk_.vkEnumerateInstanceVersion);
-    if (!vk_.vkCreateInstance || !vk_.vkEnumerateInstanceLayerProperties)
-        return {StatusCode::BackendUnavailable, "the Vulkan loader lacks vkCreateInstance"};
+    SFX_TRY(openLoader(vk_, setup_.loaderLibrary));
     uint32_t instanceVersion = VK_API_VERSION_1_0;
     if (vk_.vkEnumerateInstanceVersion) vk_.vkEnumerateInstanceVersion(&instanceVersion);
     if (instanceVersion < VK_API_VERSION_1_1)
