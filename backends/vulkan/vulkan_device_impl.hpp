@@ -109,6 +109,10 @@ public:
 
 private:
     // vulkan_platform.cpp
+    Status createInstance(const DeviceOptions& options, uint32_t& apiVersion);
+    // Needs a graphics+compute queue and dynamic rendering; discrete first.
+    Status pickPhysicalDevice(uint32_t apiVersion, bool& needsKhrDynamicRendering);
+    Status createLogicalDevice(bool needsKhrDynamicRendering);
     Status finishInit(const DeviceOptions& options, bool ownsDevice);
     void setName(VkObjectType type, uint64_t handle, const char* name);
     // vulkan_caps.cpp

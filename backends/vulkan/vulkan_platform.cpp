@@ -31,6 +31,17 @@ VkDebugUtilsMessengerCreateInfoEXT messengerInfo(void* user) {
 }  // namespace
 
 Status VulkanDevice::initOwn(const DeviceOptions& options) {
+    uint32_t apiVersion = 0;
+    SFX_TRY(createInstance(options, apiVersion));
+    bool needsKhrDynamicRendering = false;
+    SFX_TRY(pickPhysicalDevice(apiVersion, needsKhrDynamicRendering));
+    SFX_TRY(createLogicalDevice(needsKhrDynamicRendering));
+    return finishInit(options, true);
+}
+
+// The loader, then an instance of the highest version up to 1.3 it offers (at least 1.1), with
+// the validation layer and debug utils when asked; apiVersion is what the instance was made for.
+Status VulkanDevice::createInstance(const DeviceOptions& options, uint32_t& apiVersion) {
     SFX_TRY(openLoader(vk_, setup_.loaderLibrary));
     uint32_t instanceVersion = VK_API_VERSION_1_0;
     if (vk_.vkEnumerateInstanceVersion) vk_.vkEnumerateInstanceVersion(&instanceVersion);
@@ -73,8 +84,11 @@ Status VulkanDevice::initOwn(const DeviceOptions& options) {
     setup_.ownsInstance = true;
     setup_.debugUtils = options.validation;
     SFX_TRY(loadInstanceFunctions(vk_, setup_.instance));
+    apiVersion = app.apiVersion;
+    return Status::ok();
+}
 
-    // Physical device: needs a graphics+compute queue and dynamic rendering; discrete first.
+Status VulkanDevice::pickPhysicalDevice(uint32_t apiVersion, bool& needsKhrDynamicRendering) {
     uint32_t count = 0;
     vk_.vkEnumeratePhysicalDevices(setup_.instance, &count, nullptr);
     std::vector<VkPhysicalDevice> gpus(count);
@@ -92,7 +106,7 @@ Status VulkanDevice::initOwn(const DeviceOptions& options) {
         vk_.vkEnumerateDeviceExtensionProperties(gpu, nullptr, &extCount, exts.data());
         bool khrDynamic = false;
         for (const auto& e : exts) khrDynamic |= std::strcmp(e.extensionName, VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME) == 0;
-        const bool core13 = p.apiVersion >= VK_API_VERSION_1_3 && app.apiVersion >= VK_API_VERSION_1_3;
+        const bool core13 = p.apiVersion >= VK_API_VERSION_1_3 && apiVersion >= VK_API_VERSION_1_3;
         if (!core13 && !(khrDynamic && p.apiVersion >= VK_API_VERSION_1_1)) {
             rejected += std::string(" ") + p.deviceName + " (no dynamic rendering);";
             continue;
@@ -124,7 +138,11 @@ Status VulkanDevice::initOwn(const DeviceOptions& options) {
         }
     }
     if (!physical_) return {StatusCode::BackendUnavailable, "no Vulkan device is usable:" + rejected};
+    needsKhrDynamicRendering = bestNeedsKhr;
+    return Status::ok();
+}
 
+Status VulkanDevice::createLogicalDevice(bool needsKhrDynamicRendering) {
     // Features: dynamic rendering always; stores and atomics outside compute when present.
     VkPhysicalDeviceFeatures supported{};
     vk_.vkGetPhysicalDeviceFeatures(physical_, &supported);
@@ -144,7 +162,7 @@ Status VulkanDevice::initOwn(const DeviceOptions& options) {
     qci.queueCount = 1;
     qci.pQueuePriorities = &priority;
     std::vector<const char*> deviceExtensions;
-    if (bestNeedsKhr) deviceExtensions.push_back(VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME);
+    if (needsKhrDynamicRendering) deviceExtensions.push_back(VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME);
     VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
     dci.pNext = &dynamic;
     dci.queueCreateInfoCount = 1;
@@ -152,12 +170,12 @@ Status VulkanDevice::initOwn(const DeviceOptions& options) {
     dci.pEnabledFeatures = &enabled;
     dci.enabledExtensionCount = uint32_t(deviceExtensions.size());
     dci.ppEnabledExtensionNames = deviceExtensions.data();
-    r = vk_.vkCreateDevice(physical_, &dci, nullptr, &device_);
+    VkResult r = vk_.vkCreateDevice(physical_, &dci, nullptr, &device_);
     if (r != VK_SUCCESS) return {StatusCode::BackendUnavailable, "vkCreateDevice failed: " + vkResultName(r)};
     ownsDevice_ = true;
     SFX_TRY(loadDeviceFunctions(vk_, device_));
     vk_.vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
-    return finishInit(options, true);
+    return Status::ok();
 }
 
 Status VulkanDevice::initWrapped(const ExternalVulkan& ext, const DeviceOptions& options) {
