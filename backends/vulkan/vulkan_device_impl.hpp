@@ -148,6 +148,10 @@ private:
     Result<ProgramHandle> makeProgram(const CompiledProgram& program);
     Result<PipelineHandle> makeGraphicsPipeline(const GraphicsPipelineDesc& desc, const VulkanProgram& prog);
     Result<PipelineHandle> makeComputePipeline(const ComputePipelineDesc& desc, const VulkanProgram& prog);
+    // The program's reflection and the layouts made from it; on failure `p` is retired.
+    Status startPipeline(const VulkanProgram& prog, bool compute, VulkanPipeline& p);
+    // Inserts `p` once created (r is VK_SUCCESS); otherwise retires it and names the program.
+    Result<PipelineHandle> finishPipeline(VulkanPipeline& p, VkResult r, const char* call, const char* debugName);
 
     // vulkan_commands.cpp: recording, submission and the host's command buffer.
     Result<VkCommandBuffer> recording();

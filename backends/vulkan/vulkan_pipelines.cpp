@@ -44,20 +44,32 @@ Result<ProgramHandle> VulkanDevice::makeProgram(const CompiledProgram& program) 
 }
 
 
-Result<PipelineHandle> VulkanDevice::makeGraphicsPipeline(const GraphicsPipelineDesc& desc, const VulkanProgram& prog) {
-    VulkanPipeline p;
-    p.compute = false;
+Status VulkanDevice::startPipeline(const VulkanProgram& prog, bool compute, VulkanPipeline& p) {
+    p.compute = compute;
     p.resources = prog.resources;
     p.programName = prog.name;
+    Status s = createLayouts(prog.resources, compute, p);
+    if (!s) retire(p);
+    return s;
+}
+
+Result<PipelineHandle> VulkanDevice::finishPipeline(VulkanPipeline& p, VkResult r, const char* call, const char* debugName) {
+    if (r != VK_SUCCESS) {
+        const std::string program = p.programName;
+        retire(p);
+        return Status{StatusCode::ShaderError, "program '" + program + "': " + call + " failed: " + vkResultName(r)};
+    }
+    setName(VK_OBJECT_TYPE_PIPELINE, uint64_t(p.pipeline), debugName);
+    return pipelines_.insert(std::move(p));
+}
+
+Result<PipelineHandle> VulkanDevice::makeGraphicsPipeline(const GraphicsPipelineDesc& desc, const VulkanProgram& prog) {
+    VulkanPipeline p;
     p.colorFormats = desc.colorFormats;
     p.depthFormat = desc.depthFormat;
     p.usesVertexBuffer = desc.vertexLayout.stride > 0;
     p.vertexLayout = desc.vertexLayout;
-    Status s = createLayouts(prog.resources, false, p);
-    if (!s) {
-        retire(p);
-        return s;
-    }
+    SFX_TRY(startPipeline(prog, false, p));
 
     std::vector<VkPipelineShaderStageCreateInfo> stages;
     for (const auto& [stage, module] : prog.modules) {
@@ -140,38 +152,21 @@ Result<PipelineHandle> VulkanDevice::makeGraphicsPipeline(const GraphicsPipeline
     pci.pColorBlendState = &cb;
     pci.pDynamicState = &dyn;
     pci.layout = p.layout;
-    VkResult r = vk_.vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &pci, nullptr, &p.pipeline);
-    if (r != VK_SUCCESS) {
-        retire(p);
-        return Status{StatusCode::ShaderError, "program '" + prog.name + "': vkCreateGraphicsPipelines failed: " + vkResultName(r)};
-    }
-    setName(VK_OBJECT_TYPE_PIPELINE, uint64_t(p.pipeline), desc.debugName);
-    return pipelines_.insert(std::move(p));
+    const VkResult r = vk_.vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &pci, nullptr, &p.pipeline);
+    return finishPipeline(p, r, "vkCreateGraphicsPipelines", desc.debugName);
 }
 
 Result<PipelineHandle> VulkanDevice::makeComputePipeline(const ComputePipelineDesc& desc, const VulkanProgram& prog) {
     VulkanPipeline p;
-    p.compute = true;
-    p.resources = prog.resources;
-    p.programName = prog.name;
-    Status s = createLayouts(prog.resources, true, p);
-    if (!s) {
-        retire(p);
-        return s;
-    }
+    SFX_TRY(startPipeline(prog, true, p));
     VkComputePipelineCreateInfo pci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     pci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     pci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     pci.stage.module = prog.modules[0].second;
     pci.stage.pName = "main";
     pci.layout = p.layout;
-    VkResult r = vk_.vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &pci, nullptr, &p.pipeline);
-    if (r != VK_SUCCESS) {
-        retire(p);
-        return Status{StatusCode::ShaderError, "program '" + prog.name + "': vkCreateComputePipelines failed: " + vkResultName(r)};
-    }
-    setName(VK_OBJECT_TYPE_PIPELINE, uint64_t(p.pipeline), desc.debugName);
-    return pipelines_.insert(std::move(p));
+    const VkResult r = vk_.vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &pci, nullptr, &p.pipeline);
+    return finishPipeline(p, r, "vkCreateComputePipelines", desc.debugName);
 }
 
 }  // namespace sfx::vulkan
