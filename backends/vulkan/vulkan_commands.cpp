@@ -1,0 +1,175 @@
+// Commands and submission: the device's own command buffer (begun on the first command after a
+// flush, submitted and waited for by the next flush or read), or the host's command buffer while
+// one is set; and the recording of render passes and dispatches whose arguments the device has
+// already checked.
+#include "vulkan_device_impl.hpp"
+#include "vulkan_formats.hpp"
+
+namespace sfx::vulkan {
+
+Status VulkanDevice::noHostCommandBuffer(const char* call) const {
+    if (hostCommandBuffer_)
+        return {StatusCode::UnsupportedFeature,
+                std::string(call) + " needs a submit, but the device records into a host command buffer; "
+                                    "submit it, call flush(), then read"};
+    return Status::ok();
+}
+
+Result<VkCommandBuffer> VulkanDevice::recording() {
+    if (hostCommandBuffer_) return hostCommandBuffer_;
+    if (!recording_) {
+        VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+        SFX_VK(vk_.vkBeginCommandBuffer(commandBuffer_, &bi));
+        recording_ = true;
+        recordStart_ = std::chrono::steady_clock::now();
+    }
+    return commandBuffer_;
+}
+
+Status VulkanDevice::submitAndWait() {
+    if (!recording_) return Status::ok();
+    recording_ = false;
+    SFX_VK(vk_.vkEndCommandBuffer(commandBuffer_));
+    VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    si.commandBufferCount = 1;
+    si.pCommandBuffers = &commandBuffer_;
+    SFX_VK(vk_.vkQueueSubmit(queue_, 1, &si, fence_));
+    SFX_VK(vk_.vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX));
+    const double wallMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - recordStart_).count();
+    SFX_VK(vk_.vkResetFences(device_, 1, &fence_));
+    SFX_VK(vk_.vkResetCommandBuffer(commandBuffer_, 0));
+    for (VkDescriptorPool p : descriptorPools_) vk_.vkResetDescriptorPool(device_, p, 0);
+    currentPool_ = 0;
+    releaseGarbage(pending_);
+    markEndedTimersFlushed(false, wallMs);
+    return Status::ok();
+}
+
+Status VulkanDevice::flush() {
+    if (hostCommandBuffer_) {
+        // The host ends and submits its command buffer; what it used lives until it is done.
+        hostCommandBuffer_ = VK_NULL_HANDLE;
+        for (VkDescriptorPool p : descriptorPools_) hostPending_.descriptorPools.push_back(p);
+        descriptorPools_.clear();
+        currentPool_ = 0;
+        markEndedTimersFlushed(true, 0);
+        return Status::ok();
+    }
+    return submitAndWait();
+}
+
+Status VulkanDevice::setHostCommandBuffer(VkCommandBuffer cb) {
+    if (hostCommandBuffer_) SFX_TRY(flush());  // detach the previous one
+    // Work recorded on our own command buffer comes first.
+    SFX_TRY(submitAndWait());
+    // The previous host command buffer has finished by now (documented contract).
+    releaseGarbage(hostPending_);
+    hostCommandBuffer_ = cb;
+    return Status::ok();
+}
+
+Status VulkanDevice::recordRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws,
+                                      const PassTargets& targets, std::vector<ResolvedBindings>& resolved) {
+    // Views before recording, so that a failure leaves the command buffer untouched.
+    std::vector<VkImageView> colorViews;
+    for (const ColorAttachment& c : pass.colors) {
+        Result<VkImageView> v = attachmentView(textures_.get(c.texture), c.mip);
+        if (!v) return v.status();
+        colorViews.push_back(v.value());
+    }
+    VkImageView depthView = VK_NULL_HANDLE;
+    if (targets.depth) {
+        Result<VkImageView> v = attachmentView(*targets.depth, 0);
+        if (!v) return v.status();
+        depthView = v.value();
+    }
+    std::vector<VkDescriptorSet> sets(draws.size(), VK_NULL_HANDLE);
+    for (size_t i = 0; i < draws.size(); ++i) {
+        Result<VkDescriptorSet> set = writeSet(pipelines_.get(draws[i].pipeline), resolved[i]);
+        if (!set) return set.status();
+        sets[i] = set.value();
+    }
+
+    Result<VkCommandBuffer> cbr = recording();
+    if (!cbr) return cbr.status();
+    VkCommandBuffer cb = cbr.value();
+    barrier(cb, targets.uses);
+
+    auto loadOp = [](LoadOp op) {
+        return op == LoadOp::Clear ? VK_ATTACHMENT_LOAD_OP_CLEAR
+               : op == LoadOp::Load ? VK_ATTACHMENT_LOAD_OP_LOAD
+                                    : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    };
+    std::vector<VkRenderingAttachmentInfo> colorInfos;
+    for (size_t i = 0; i < pass.colors.size(); ++i) {
+        const ColorAttachment& c = pass.colors[i];
+        VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        a.imageView = colorViews[i];
+        a.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        a.loadOp = loadOp(c.load);
+        a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        if (isIntegerFormat(targets.colorFormats[i])) {
+            for (int k = 0; k < 4; ++k) a.clearValue.color.uint32[k] = c.clearColor[k] > 0 ? uint32_t(c.clearColor[k]) : 0u;
+        } else {
+            for (int k = 0; k < 4; ++k) a.clearValue.color.float32[k] = c.clearColor[k];
+        }
+        colorInfos.push_back(a);
+    }
+    VkRenderingAttachmentInfo depthInfo{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    if (targets.depth) {
+        depthInfo.imageView = depthView;
+        depthInfo.imageLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+        depthInfo.loadOp = loadOp(pass.depth.load);
+        depthInfo.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        depthInfo.clearValue.depthStencil = {pass.depth.clearDepth, 0};
+    }
+    VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    ri.renderArea = {{0, 0}, {targets.width, targets.height}};
+    ri.layerCount = 1;
+    ri.colorAttachmentCount = uint32_t(colorInfos.size());
+    ri.pColorAttachments = colorInfos.data();
+    ri.pDepthAttachment = targets.depth ? &depthInfo : nullptr;
+    vk_.vkCmdBeginRendering(cb, &ri);
+    // Positive height: NDC y = -1 lands on row 0, as on GL (see hal.hpp).
+    VkViewport viewport{0, 0, float(targets.width), float(targets.height), 0.0f, 1.0f};
+    VkRect2D scissor{{0, 0}, {targets.width, targets.height}};
+    vk_.vkCmdSetViewport(cb, 0, 1, &viewport);
+    vk_.vkCmdSetScissor(cb, 0, 1, &scissor);
+    for (size_t i = 0; i < draws.size(); ++i) {
+        const DrawDesc& d = draws[i];
+        const VulkanPipeline& pl = pipelines_.get(d.pipeline);
+        vk_.vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pl.pipeline);
+        if (sets[i]) vk_.vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pl.layout, 0, 1, &sets[i], 0, nullptr);
+        if (pl.usesVertexBuffer) {
+            const VkDeviceSize offset = 0;
+            vk_.vkCmdBindVertexBuffers(cb, 0, 1, &buffers_.get(d.vertexBuffer).buffer, &offset);
+        }
+        if (!d.indexBuffer.isNull()) {
+            vk_.vkCmdBindIndexBuffer(cb, buffers_.get(d.indexBuffer).buffer, 0, VK_INDEX_TYPE_UINT32);
+            vk_.vkCmdDrawIndexed(cb, d.count, d.instanceCount, 0, 0, 0);
+        } else {
+            vk_.vkCmdDraw(cb, d.count, d.instanceCount, 0, 0);
+        }
+    }
+    vk_.vkCmdEndRendering(cb);
+    return Status::ok();
+}
+
+Status VulkanDevice::recordDispatch(const DispatchDesc& d, const VulkanPipeline& pl, const std::vector<ImageUse>& uses,
+                                    ResolvedBindings& resolved) {
+    Result<VkDescriptorSet> s = writeSet(pl, resolved);
+    if (!s) return s.status();
+    const VkDescriptorSet set = s.value();
+    Result<VkCommandBuffer> cbr = recording();
+    if (!cbr) return cbr.status();
+    VkCommandBuffer cb = cbr.value();
+    barrier(cb, uses);
+    vk_.vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pl.pipeline);
+    if (set) vk_.vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pl.layout, 0, 1, &set, 0, nullptr);
+    vk_.vkCmdDispatch(cb, d.groupsX, d.groupsY, d.groupsZ);
+    return Status::ok();
+}
+
+}  // namespace sfx::vulkan

@@ -1,0 +1,224 @@
+// The Vulkan backend's Device. Its public calls (vulkan_device.cpp) validate their arguments and
+// delegate to the files that own each concern; the comments below name the file of each group.
+//
+// Design, chosen for correctness over overlap:
+// - One command buffer records everything between flushes; flush() submits it and waits.
+// - Every command starts with a full memory barrier (all commands -> all commands) plus the
+//   layout transitions its images need; each mip of each image tracks its own layout, so a pass
+//   may render into mip i+1 while sampling mip i.
+// - Buffers live in host-visible, coherent memory. Writes are recorded as copies from staging
+//   buffers so that they stay ordered with the commands around them.
+// - Vulkan functions come from a table loaded through vkGetInstanceProcAddr: the loader is opened
+//   at run time (own device) or the host's entry point is used (wrapped device).
+#pragma once
+
+#include <chrono>
+#include <cstdio>
+#include <mutex>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "sfx/handle.hpp"
+#include "sfx/vulkan_device.hpp"
+#include "vulkan_loader.hpp"
+#include "vulkan_objects.hpp"
+
+namespace sfx::vulkan {
+
+// What the loader and the instance were made with; shared by createDevice and wrapDevice.
+struct InstanceSetup {
+    Functions fns;
+    void* loaderLibrary = nullptr;  // dlopen handle, own device only
+    VkInstance instance = VK_NULL_HANDLE;
+    bool ownsInstance = false;
+    bool debugUtils = false;
+};
+
+// vulkan_pipelines.cpp: SPIR-V that the driver would choke on is refused, with SPIRV-Tools' words.
+Status validateSpirv(const CompiledProgram& program, const StageCode& stage);
+
+class VulkanDevice final : public Device {
+public:
+    VulkanDevice() : serial_(nextDeviceSerial()), textures_(serial_, "texture"), buffers_(serial_, "buffer"),
+                     samplers_(serial_, "sampler"), programs_(serial_, "program"), pipelines_(serial_, "pipeline"),
+                     timers_(serial_, "timer") {}
+    ~VulkanDevice() override {
+        shutdown();
+        // Messages nobody took (teardown ones included) can only be told on stderr now.
+        for (const std::string& m : takeValidationMessages())
+            std::fprintf(stderr, "sfx vulkan: untaken validation message at teardown: %s\n", m.c_str());
+    }
+
+    // vulkan_platform.cpp: own instance and device, or the host's objects.
+    Status initOwn(const DeviceOptions& options);
+    Status initWrapped(const ExternalVulkan& ext, const DeviceOptions& options);
+
+    // vulkan_commands.cpp
+    Status setHostCommandBuffer(VkCommandBuffer cb);
+
+    const DeviceCaps& caps() const override { return caps_; }
+
+    // The HAL calls: vulkan_device.cpp, but for the timers (vulkan_timers.cpp) and flush
+    // (vulkan_commands.cpp).
+    Result<TextureHandle> createTexture(const TextureDesc& desc) override;
+    Status destroyTexture(TextureHandle texture) override;
+    Result<TextureDesc> textureDesc(TextureHandle texture) const override {
+        SFX_TRY(textures_.check(texture, "texture"));
+        return textures_.get(texture).desc;
+    }
+    Status writeTexture(TextureHandle texture, uint32_t mip, const void* data, size_t bytes) override;
+    Status readTexture(TextureHandle texture, uint32_t mip, void* out, size_t bytes) override;
+
+    Result<BufferHandle> createBuffer(const BufferDesc& desc) override;
+    Status destroyBuffer(BufferHandle buffer) override;
+    Status writeBuffer(BufferHandle buffer, uint64_t offset, const void* data, size_t bytes) override;
+    Status readBuffer(BufferHandle buffer, uint64_t offset, void* out, size_t bytes) override;
+
+    Result<SamplerHandle> createSampler(const SamplerDesc& desc) override;
+    Status destroySampler(SamplerHandle sampler) override;
+
+    Result<ProgramHandle> createProgram(const CompiledProgram& program) override;
+    Status destroyProgram(ProgramHandle program) override;
+
+    Result<PipelineHandle> createGraphicsPipeline(const GraphicsPipelineDesc& desc) override;
+    Result<PipelineHandle> createComputePipeline(const ComputePipelineDesc& desc) override;
+    Status destroyPipeline(PipelineHandle pipeline) override;
+
+    Result<TimerHandle> createTimer() override;
+    Status destroyTimer(TimerHandle timer) override;
+
+    Status renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) override;
+    Status dispatch(const DispatchDesc& dispatch) override;
+    Status beginTimer(TimerHandle timer) override;
+    Status endTimer(TimerHandle timer) override;
+    Status flush() override;
+    Result<TimerReading> readTimer(TimerHandle timer) override;
+
+    std::vector<std::string> takeValidationMessages() override {
+        std::lock_guard<std::mutex> lock(messagesMutex_);
+        std::vector<std::string> out;
+        out.swap(messages_);
+        return out;
+    }
+
+    void addValidationMessage(std::string m) {
+        std::lock_guard<std::mutex> lock(messagesMutex_);
+        messages_.push_back(std::move(m));
+    }
+
+private:
+    // vulkan_platform.cpp
+    Status createInstance(const DeviceOptions& options, uint32_t& apiVersion);
+    // Needs a graphics+compute queue and dynamic rendering; discrete first.
+    Status pickPhysicalDevice(uint32_t apiVersion, bool& needsKhrDynamicRendering);
+    Status createLogicalDevice(bool needsKhrDynamicRendering);
+    Status finishInit(const DeviceOptions& options, bool ownsDevice);
+    void setName(VkObjectType type, uint64_t handle, const char* name);
+    // vulkan_caps.cpp
+    void fillCaps(const DeviceOptions& options);
+
+    // vulkan_memory.cpp: allocations, host-visible buffers and their staging copies.
+    Result<Allocation> allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags want, bool map);
+    Result<VulkanBuffer> makeBuffer(uint64_t size, VkBufferUsageFlags usage, const char* name);
+    Result<BufferHandle> makeHalBuffer(const BufferDesc& desc);
+    Status stageBufferWrite(VulkanBuffer& b, uint64_t offset, const void* data, size_t bytes);
+    Status readBackBuffer(VulkanBuffer& b, uint64_t offset, void* out, size_t bytes);
+
+    // vulkan_textures.cpp: images, their views and layouts, samplers.
+    Result<TextureHandle> makeTexture(const TextureDesc& desc);
+    Status uploadTexture(VulkanTexture& t, uint32_t mip, const void* data, size_t bytes);
+    Status downloadTexture(VulkanTexture& t, uint32_t mip, void* out, size_t bytes);
+    Result<SamplerHandle> makeSampler(const SamplerDesc& desc);
+    Result<VkImageView> sampledView(VulkanTexture& t, uint32_t baseMip, uint32_t mipCount);
+    Result<VkImageView> attachmentView(VulkanTexture& t, uint32_t mip);
+    Result<VkImageView> storageView(VulkanTexture& t, uint32_t mip) { return sampledView(t, mip, 1); }
+    // A full barrier plus the layout transitions of `uses`.
+    void barrier(VkCommandBuffer cb, const std::vector<ImageUse>& uses);
+
+    // vulkan_descriptors.cpp
+    Status resolveBindings(const BindingSet& set, const VulkanPipeline& pipeline, const char* what,
+                           std::vector<ImageUse>& uses, ResolvedBindings& out);
+    Result<VkDescriptorSet> allocateSet(VkDescriptorSetLayout layout);
+    // A set of the pipeline's layout holding `resolved`; VK_NULL_HANDLE for a pipeline without resources.
+    Result<VkDescriptorSet> writeSet(const VulkanPipeline& pipeline, ResolvedBindings& resolved);
+    Status createLayouts(const std::vector<ShaderResource>& resources, bool compute, VulkanPipeline& out);
+
+    // vulkan_pipelines.cpp
+    Result<ProgramHandle> makeProgram(const CompiledProgram& program);
+    Result<PipelineHandle> makeGraphicsPipeline(const GraphicsPipelineDesc& desc, const VulkanProgram& prog);
+    Result<PipelineHandle> makeComputePipeline(const ComputePipelineDesc& desc, const VulkanProgram& prog);
+    // The program's reflection and the layouts made from it; on failure `p` is retired.
+    Status startPipeline(const VulkanProgram& prog, bool compute, VulkanPipeline& p);
+    // Inserts `p` once created (r is VK_SUCCESS); otherwise retires it and names the program.
+    Result<PipelineHandle> finishPipeline(VulkanPipeline& p, VkResult r, const char* call, const char* debugName);
+
+    // vulkan_commands.cpp: recording, submission and the host's command buffer.
+    Result<VkCommandBuffer> recording();
+    Status submitAndWait();
+    Status noHostCommandBuffer(const char* call) const;
+    Status recordRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, const PassTargets& targets,
+                            std::vector<ResolvedBindings>& resolved);
+    Status recordDispatch(const DispatchDesc& d, const VulkanPipeline& pl, const std::vector<ImageUse>& uses,
+                          ResolvedBindings& resolved);
+
+    // vulkan_garbage.cpp: deferred destruction.
+    Garbage& currentGarbage() { return hostCommandBuffer_ ? hostPending_ : pending_; }
+    void releaseGarbage(Garbage& g);
+    void releaseIdleGarbage();
+    void retire(VulkanTexture& t);
+    void retire(VulkanBuffer& b, Garbage& g);
+    void retire(VulkanPipeline& p);
+    void shutdown();
+
+    // vulkan_timers.cpp
+    Status createTimerPool();
+    // Ended timers hold a finished measurement: of the submit that took wallMs, or of a host
+    // command buffer (hostRecorded), whose results may not be ready and whose wall time is unknown.
+    void markEndedTimersFlushed(bool hostRecorded, double wallMs);
+
+    DeviceCaps caps_;
+    uint16_t serial_;
+    HandlePool<TextureTag, VulkanTexture> textures_;
+    HandlePool<BufferTag, VulkanBuffer> buffers_;
+    HandlePool<SamplerTag, VkSampler> samplers_;
+    HandlePool<ProgramTag, VulkanProgram> programs_;
+    HandlePool<PipelineTag, VulkanPipeline> pipelines_;
+    HandlePool<TimerTag, VulkanTimer> timers_;
+
+public:  // set up by the factory functions
+    InstanceSetup setup_;
+    VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkQueue queue_ = VK_NULL_HANDLE;
+    uint32_t queueFamily_ = 0;
+    bool ownsDevice_ = false;
+    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+
+private:
+    Functions& vk_ = setup_.fns;
+    VkPhysicalDeviceProperties props_{};
+    VkPhysicalDeviceMemoryProperties memProps_{};
+    uint32_t timestampValidBits_ = 0;
+    bool fullFeatures_ = true;  // no ceiling
+
+    VkCommandPool commandPool_ = VK_NULL_HANDLE;
+    VkCommandBuffer commandBuffer_ = VK_NULL_HANDLE;
+    VkFence fence_ = VK_NULL_HANDLE;
+    bool recording_ = false;               // own command buffer begun and holds commands
+    VkCommandBuffer hostCommandBuffer_ = VK_NULL_HANDLE;
+    VkSampler defaultSampler_ = VK_NULL_HANDLE;
+    VkQueryPool queryPool_ = VK_NULL_HANDLE;
+    std::vector<uint32_t> freeTimerSlots_;
+
+    std::vector<VkDescriptorPool> descriptorPools_;
+    size_t currentPool_ = 0;
+    Garbage pending_;       // released after the next flush
+    Garbage hostPending_;   // used by a host command buffer: released at the next setCommandBuffer
+    std::chrono::steady_clock::time_point recordStart_{};
+
+    std::mutex messagesMutex_;
+    std::vector<std::string> messages_;
+};
+
+}  // namespace sfx::vulkan

@@ -1,0 +1,172 @@
+// Programs (shader modules, SPIR-V checked by SPIRV-Tools first) and the graphics and compute
+// pipelines made from them. Pipelines own their layouts, so a program may be destroyed first.
+#include <spirv-tools/libspirv.hpp>
+
+#include "vulkan_device_impl.hpp"
+#include "vulkan_formats.hpp"
+
+namespace sfx::vulkan {
+
+// SPIR-V that the driver would choke on is refused here, with SPIRV-Tools' words.
+Status validateSpirv(const CompiledProgram& program, const StageCode& stage) {
+    spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_1);
+    std::string errors;
+    tools.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t& pos, const char* message) {
+        errors += "  word " + std::to_string(pos.index) + ": " + message + "\n";
+    });
+    if (!tools.Validate(stage.spirv))
+        return {StatusCode::ShaderError, "program '" + program.name + "' " + toString(stage.stage) +
+                                             " stage: invalid SPIR-V:\n" + errors};
+    return Status::ok();
+}
+
+Result<ProgramHandle> VulkanDevice::makeProgram(const CompiledProgram& program) {
+    VulkanProgram p;
+    p.name = program.name;
+    p.compute = program.isCompute();
+    p.resources = program.resources;
+    auto cleanup = [&]() {
+        for (auto& m : p.modules) vk_.vkDestroyShaderModule(device_, m.second, nullptr);
+    };
+    for (const StageCode& s : program.stages) {
+        VkShaderModuleCreateInfo mci{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+        mci.codeSize = s.spirv.size() * sizeof(uint32_t);
+        mci.pCode = s.spirv.data();
+        VkShaderModule module;
+        VkResult r = vk_.vkCreateShaderModule(device_, &mci, nullptr, &module);
+        if (r != VK_SUCCESS) {
+            cleanup();
+            return Status{StatusCode::ShaderError, "program '" + program.name + "': vkCreateShaderModule failed: " + vkResultName(r)};
+        }
+        p.modules.emplace_back(s.stage, module);
+    }
+    return programs_.insert(std::move(p));
+}
+
+
+Status VulkanDevice::startPipeline(const VulkanProgram& prog, bool compute, VulkanPipeline& p) {
+    p.compute = compute;
+    p.resources = prog.resources;
+    p.programName = prog.name;
+    Status s = createLayouts(prog.resources, compute, p);
+    if (!s) retire(p);
+    return s;
+}
+
+Result<PipelineHandle> VulkanDevice::finishPipeline(VulkanPipeline& p, VkResult r, const char* call, const char* debugName) {
+    if (r != VK_SUCCESS) {
+        const std::string program = p.programName;
+        retire(p);
+        return Status{StatusCode::ShaderError, "program '" + program + "': " + call + " failed: " + vkResultName(r)};
+    }
+    setName(VK_OBJECT_TYPE_PIPELINE, uint64_t(p.pipeline), debugName);
+    return pipelines_.insert(std::move(p));
+}
+
+Result<PipelineHandle> VulkanDevice::makeGraphicsPipeline(const GraphicsPipelineDesc& desc, const VulkanProgram& prog) {
+    VulkanPipeline p;
+    p.colorFormats = desc.colorFormats;
+    p.depthFormat = desc.depthFormat;
+    p.usesVertexBuffer = desc.vertexLayout.stride > 0;
+    p.vertexLayout = desc.vertexLayout;
+    SFX_TRY(startPipeline(prog, false, p));
+
+    std::vector<VkPipelineShaderStageCreateInfo> stages;
+    for (const auto& [stage, module] : prog.modules) {
+        VkPipelineShaderStageCreateInfo si{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+        si.stage = stage == ShaderStage::Vertex ? VK_SHADER_STAGE_VERTEX_BIT : VK_SHADER_STAGE_FRAGMENT_BIT;
+        si.module = module;
+        si.pName = "main";
+        stages.push_back(si);
+    }
+    VkVertexInputBindingDescription vb{0, desc.vertexLayout.stride, VK_VERTEX_INPUT_RATE_VERTEX};
+    std::vector<VkVertexInputAttributeDescription> attributes;
+    for (const VertexAttribute& a : desc.vertexLayout.attributes) {
+        const VkFormat f = a.format == VertexFormat::Float2   ? VK_FORMAT_R32G32_SFLOAT
+                           : a.format == VertexFormat::Float3 ? VK_FORMAT_R32G32B32_SFLOAT
+                                                              : VK_FORMAT_R32G32B32A32_SFLOAT;
+        attributes.push_back({a.location, 0, f, a.offset});
+    }
+    VkPipelineVertexInputStateCreateInfo vi{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    if (p.usesVertexBuffer) {
+        vi.vertexBindingDescriptionCount = 1;
+        vi.pVertexBindingDescriptions = &vb;
+        vi.vertexAttributeDescriptionCount = uint32_t(attributes.size());
+        vi.pVertexAttributeDescriptions = attributes.data();
+    }
+    VkPipelineInputAssemblyStateCreateInfo ia{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    ia.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkPipelineViewportStateCreateInfo vp{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    vp.viewportCount = 1;
+    vp.scissorCount = 1;
+    VkPipelineRasterizationStateCreateInfo rs{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    rs.polygonMode = VK_POLYGON_MODE_FILL;
+    rs.cullMode = desc.cull == CullMode::Back    ? VK_CULL_MODE_BACK_BIT
+                  : desc.cull == CullMode::Front ? VK_CULL_MODE_FRONT_BIT
+                                                 : VK_CULL_MODE_NONE;
+    // The HAL's front faces wind counter-clockwise with rows counted upwards (GL's window
+    // convention). Vulkan measures winding with framebuffer y pointing down the rows, so the same
+    // memory picture winds clockwise here.
+    rs.frontFace = VK_FRONT_FACE_CLOCKWISE;
+    rs.lineWidth = 1.0f;
+    VkPipelineMultisampleStateCreateInfo ms{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    VkPipelineDepthStencilStateCreateInfo ds{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+    ds.depthTestEnable = desc.depth.test;
+    ds.depthWriteEnable = desc.depth.write;
+    ds.depthCompareOp = desc.depth.test ? toVk(desc.depth.compare) : VK_COMPARE_OP_ALWAYS;
+    std::vector<VkPipelineColorBlendAttachmentState> blends;
+    for (size_t i = 0; i < desc.colorFormats.size(); ++i) {
+        VkPipelineColorBlendAttachmentState b{};
+        b.blendEnable = desc.blend.enable;
+        b.srcColorBlendFactor = b.srcAlphaBlendFactor = toVk(desc.blend.src);
+        b.dstColorBlendFactor = b.dstAlphaBlendFactor = toVk(desc.blend.dst);
+        b.colorBlendOp = b.alphaBlendOp = VK_BLEND_OP_ADD;
+        b.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+        blends.push_back(b);
+    }
+    VkPipelineColorBlendStateCreateInfo cb{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    cb.attachmentCount = uint32_t(blends.size());
+    cb.pAttachments = blends.data();
+    const VkDynamicState dynamics[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo dyn{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+    dyn.dynamicStateCount = 2;
+    dyn.pDynamicStates = dynamics;
+    std::vector<VkFormat> colorFormats;
+    for (Format f : desc.colorFormats) colorFormats.push_back(toVkFormat(f));
+    VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+    rendering.colorAttachmentCount = uint32_t(colorFormats.size());
+    rendering.pColorAttachmentFormats = colorFormats.data();
+    rendering.depthAttachmentFormat = toVkFormat(desc.depthFormat);
+
+    VkGraphicsPipelineCreateInfo pci{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+    pci.pNext = &rendering;
+    pci.stageCount = uint32_t(stages.size());
+    pci.pStages = stages.data();
+    pci.pVertexInputState = &vi;
+    pci.pInputAssemblyState = &ia;
+    pci.pViewportState = &vp;
+    pci.pRasterizationState = &rs;
+    pci.pMultisampleState = &ms;
+    pci.pDepthStencilState = &ds;
+    pci.pColorBlendState = &cb;
+    pci.pDynamicState = &dyn;
+    pci.layout = p.layout;
+    const VkResult r = vk_.vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &pci, nullptr, &p.pipeline);
+    return finishPipeline(p, r, "vkCreateGraphicsPipelines", desc.debugName);
+}
+
+Result<PipelineHandle> VulkanDevice::makeComputePipeline(const ComputePipelineDesc& desc, const VulkanProgram& prog) {
+    VulkanPipeline p;
+    SFX_TRY(startPipeline(prog, true, p));
+    VkComputePipelineCreateInfo pci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    pci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    pci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    pci.stage.module = prog.modules[0].second;
+    pci.stage.pName = "main";
+    pci.layout = p.layout;
+    const VkResult r = vk_.vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &pci, nullptr, &p.pipeline);
+    return finishPipeline(p, r, "vkCreateComputePipelines", desc.debugName);
+}
+
+}  // namespace sfx::vulkan

@@ -1,0 +1,171 @@
+// Textures and barriers: images and their memory, sampled and attachment views, the per-mip
+// layout tracking behind every command's barrier, texture uploads and readbacks through staging
+// buffers, and samplers.
+#include <cstring>
+
+#include "vulkan_device_impl.hpp"
+#include "vulkan_formats.hpp"
+
+namespace sfx::vulkan {
+
+Result<TextureHandle> VulkanDevice::makeTexture(const TextureDesc& desc) {
+    VulkanTexture t;
+    t.desc = desc;
+    t.format = toVkFormat(desc.format);
+    VkImageCreateInfo ici{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    ici.imageType = VK_IMAGE_TYPE_2D;
+    ici.format = t.format;
+    ici.extent = {desc.width, desc.height, 1};
+    ici.mipLevels = desc.mipLevels;
+    ici.arrayLayers = 1;
+    ici.samples = VK_SAMPLE_COUNT_1_BIT;
+    ici.tiling = VK_IMAGE_TILING_OPTIMAL;
+    ici.usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    if (desc.usage & kTextureSampled) ici.usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
+    if (desc.usage & kTextureStorage) ici.usage |= VK_IMAGE_USAGE_STORAGE_BIT;
+    if (desc.usage & kTextureRenderTarget)
+        ici.usage |= isDepthFormat(desc.format) ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+    ici.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    ici.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    SFX_VK(vk_.vkCreateImage(device_, &ici, nullptr, &t.image));
+    VkMemoryRequirements req;
+    vk_.vkGetImageMemoryRequirements(device_, t.image, &req);
+    Result<Allocation> a = allocate(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, false);
+    if (!a) a = allocate(req, 0, false);
+    if (!a) {
+        vk_.vkDestroyImage(device_, t.image, nullptr);
+        return a.status();
+    }
+    t.memory = a->memory;
+    VkResult r = vk_.vkBindImageMemory(device_, t.image, t.memory, 0);
+    if (r != VK_SUCCESS) {
+        vk_.vkDestroyImage(device_, t.image, nullptr);
+        vk_.vkFreeMemory(device_, t.memory, nullptr);
+        return vkError("vkBindImageMemory", r);
+    }
+    setName(VK_OBJECT_TYPE_IMAGE, uint64_t(t.image), desc.debugName);
+    t.layouts.assign(desc.mipLevels, VK_IMAGE_LAYOUT_UNDEFINED);
+    t.attachmentViews.assign(desc.mipLevels, VK_NULL_HANDLE);
+    return textures_.insert(std::move(t));
+}
+
+Result<VkImageView> VulkanDevice::sampledView(VulkanTexture& t, uint32_t baseMip, uint32_t mipCount) {
+    auto key = std::make_pair(baseMip, mipCount);
+    auto it = t.views.find(key);
+    if (it != t.views.end()) return it->second;
+    VkImageViewCreateInfo vci{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    vci.image = t.image;
+    vci.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    vci.format = t.format;
+    vci.subresourceRange = {dataAspect(t.desc.format), baseMip, mipCount, 0, 1};
+    VkImageView view;
+    SFX_VK(vk_.vkCreateImageView(device_, &vci, nullptr, &view));
+    t.views[key] = view;
+    return view;
+}
+
+Result<VkImageView> VulkanDevice::attachmentView(VulkanTexture& t, uint32_t mip) {
+    if (t.attachmentViews[mip]) return t.attachmentViews[mip];
+    VkImageViewCreateInfo vci{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    vci.image = t.image;
+    vci.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    vci.format = t.format;
+    vci.subresourceRange = {fullAspect(t.desc.format), mip, 1, 0, 1};
+    SFX_VK(vk_.vkCreateImageView(device_, &vci, nullptr, &t.attachmentViews[mip]));
+    return t.attachmentViews[mip];
+}
+
+void VulkanDevice::barrier(VkCommandBuffer cb, const std::vector<ImageUse>& uses) {
+    // Everything before against everything after: simple and always correct.
+    VkMemoryBarrier global{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    global.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
+    global.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+    std::vector<VkImageMemoryBarrier> images;
+    for (const ImageUse& u : uses) {
+        for (uint32_t m = u.baseMip; m < u.baseMip + u.mipCount; ++m) {
+            if (u.texture->layouts[m] == u.layout) continue;
+            VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+            b.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
+            b.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+            b.oldLayout = u.texture->layouts[m];
+            b.newLayout = u.layout;
+            b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+            b.image = u.texture->image;
+            b.subresourceRange = {fullAspect(u.texture->desc.format), m, 1, 0, 1};
+            images.push_back(b);
+            u.texture->layouts[m] = u.layout;
+        }
+    }
+    vk_.vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &global, 0,
+                             nullptr, uint32_t(images.size()), images.data());
+}
+
+Status VulkanDevice::uploadTexture(VulkanTexture& t, uint32_t mip, const void* data, size_t bytes) {
+    Result<VulkanBuffer> staging = makeBuffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "sfx staging (writeTexture)");
+    if (!staging) return staging.status();
+    // The HAL's D24S8 bytes put depth high; Vulkan's depth-aspect copy wants it low.
+    if (t.desc.format == Format::D24S8)
+        d24s8ToVulkan(data, staging->alloc.mapped, bytes);
+    else
+        std::memcpy(staging->alloc.mapped, data, bytes);
+    Result<VkCommandBuffer> cb = recording();
+    if (!cb) {
+        retire(staging.value(), pending_);
+        return cb.status();
+    }
+    barrier(cb.value(), {ImageUse{&t, mip, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL}});
+    VkBufferImageCopy region{};
+    region.imageSubresource = {dataAspect(t.desc.format), mip, 0, 1};
+    region.imageExtent = {mipExtent(t.desc.width, mip), mipExtent(t.desc.height, mip), 1};
+    vk_.vkCmdCopyBufferToImage(cb.value(), staging->buffer, t.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    retire(staging.value(), currentGarbage());
+    return Status::ok();
+}
+
+Status VulkanDevice::downloadTexture(VulkanTexture& t, uint32_t mip, void* out, size_t bytes) {
+    Result<VulkanBuffer> staging = makeBuffer(bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "sfx staging (readTexture)");
+    if (!staging) return staging.status();
+    VulkanBuffer readback = staging.value();
+    Result<VkCommandBuffer> cb = recording();
+    if (!cb) {
+        retire(readback, pending_);
+        return cb.status();
+    }
+    barrier(cb.value(), {ImageUse{&t, mip, 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL}});
+    VkBufferImageCopy region{};
+    region.imageSubresource = {dataAspect(t.desc.format), mip, 0, 1};
+    region.imageExtent = {mipExtent(t.desc.width, mip), mipExtent(t.desc.height, mip), 1};
+    vk_.vkCmdCopyImageToBuffer(cb.value(), t.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1, &region);
+    // Makes the copy visible to the host read below.
+    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vk_.vkCmdPipelineBarrier(cb.value(), VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0,
+                             nullptr, 0, nullptr);
+    Status s = submitAndWait();
+    if (s && t.desc.format == Format::D24S8)
+        d24s8FromVulkan(readback.alloc.mapped, out, bytes);
+    else if (s)
+        std::memcpy(out, readback.alloc.mapped, bytes);
+    retire(readback, pending_);
+    releaseGarbage(pending_);
+    return s;
+}
+
+Result<SamplerHandle> VulkanDevice::makeSampler(const SamplerDesc& desc) {
+    auto filter = [](Filter f) { return f == Filter::Linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST; };
+    const VkSamplerAddressMode address = desc.address == AddressMode::Repeat           ? VK_SAMPLER_ADDRESS_MODE_REPEAT
+                                         : desc.address == AddressMode::MirroredRepeat ? VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT
+                                                                                       : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    VkSamplerCreateInfo sci{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    sci.magFilter = filter(desc.magFilter);
+    sci.minFilter = filter(desc.minFilter);
+    sci.mipmapMode = desc.mipFilter == Filter::Linear ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    sci.addressModeU = sci.addressModeV = sci.addressModeW = address;
+    sci.maxLod = VK_LOD_CLAMP_NONE;
+    VkSampler s;
+    SFX_VK(vk_.vkCreateSampler(device_, &sci, nullptr, &s));
+    return samplers_.insert(s);
+}
+
+}  // namespace sfx::vulkan
