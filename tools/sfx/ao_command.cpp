@@ -1,6 +1,5 @@
 // sfx ao: ambient obscurance on G-buffer files, with any technique, tier and backend.
 // Writes visibility in [0, 1] (1 = unoccluded) to --out (.pfm or .exr) and a PNG beside it.
-#include <filesystem>
 #include <iostream>
 #include <optional>
 
