@@ -106,6 +106,17 @@ glm::dmat4 Scene::view(double time) const {
     return glm::lookAt(eye + shift, target + shift, glm::dvec3(0, 1, 0));
 }
 
+Result<CameraProjection> Scene::projection(uint32_t width, uint32_t height, ClipDepthRange clipDepth) const {
+    PerspectiveDesc pd;
+    pd.fovYRadians = fovYDegrees * kPi / 180.0;
+    pd.aspect = double(width) / double(height);
+    pd.nearPlane = nearPlane;
+    pd.farPlane = farPlane;
+    pd.clipDepth = clipDepth;
+    pd.rowZeroIsTop = true;
+    return makePerspective(pd);
+}
+
 std::vector<std::string> sceneNames() { return {"corner", "steps", "columns", "contact", "bunny"}; }
 
 Result<Scene> makeScene(const std::string& name) {
@@ -238,14 +249,7 @@ Result<GBuffer> SceneRenderer::render(const Scene& scene, uint32_t width, uint32
     GBuffer g;
     g.width = width;
     g.height = height;
-    PerspectiveDesc pd;
-    pd.fovYRadians = scene.fovYDegrees * kPi / 180.0;
-    pd.aspect = double(width) / double(height);
-    pd.nearPlane = scene.nearPlane;
-    pd.farPlane = scene.farPlane;
-    pd.clipDepth = device_.caps().clipDepth;
-    pd.rowZeroIsTop = true;
-    Result<CameraProjection> camera = makePerspective(pd);
+    Result<CameraProjection> camera = scene.projection(width, height, device_.caps().clipDepth);
     if (!camera) return camera.status();
     g.camera = camera.value();
 

@@ -35,6 +35,8 @@ struct Scene {
     double nearPlane = 0.1;
     double farPlane = 100.0;
     glm::dmat4 view(double time = 0.0) const;  // camera at `time` shutter intervals from t = 0
+    // The projection render() draws a width x height picture with (row 0 = top).
+    Result<CameraProjection> projection(uint32_t width, uint32_t height, ClipDepthRange clipDepth) const;
 };
 
 // "corner", "steps", "columns", "contact", "bunny". FileError when the bunny's OBJ is missing

@@ -1,6 +1,7 @@
 #include "cli_common.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 
@@ -121,6 +122,12 @@ Status uploadDepth(Device& device, LoadedDepth& depth) {
     SFX_TRY(device.writeTexture(tex.value(), 0, depth.image.pixels.data(), depth.image.pixels.size() * sizeof(float)));
     depth.source.texture = tex.value();
     return Status::ok();
+}
+
+Result<std::string> writePngBeside(const std::string& outPath, const io::Image& image) {
+    const std::string png = std::filesystem::path(outPath).replace_extension(".png").string();
+    SFX_TRY(io::writePng(png, image));
+    return png;
 }
 
 int fail(const std::string& command, const Status& status) {
