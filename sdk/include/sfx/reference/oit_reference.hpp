@@ -60,7 +60,8 @@ std::vector<OitFragment> sortedFragments(const std::vector<OitFragment>& fragmen
 
 // Every fragment composited front to back over the opaque colour.
 glm::dvec3 compositeExact(const std::vector<OitFragment>& fragments, const OpaqueSurface& opaque);
-// The nearest maxLayers exact, those behind folded into one tail layer (sfx_shared_oit.h).
+// The nearest maxLayers exact, those behind folded into one tail layer (sfx_shared_oit.h);
+// maxLayers 0 keeps every fragment.
 glm::dvec3 compositeKept(const std::vector<OitFragment>& fragments, const OpaqueSurface& opaque, uint32_t maxLayers);
 // The whole picture, maxLayers = 0: every fragment exact.
 std::vector<glm::dvec3> compositeImage(const FragmentImage& image, uint32_t maxLayers = 0);
