@@ -408,7 +408,7 @@ int main(int argc, char** argv) {
             }
             DeviceOptions dopt;
             dopt.validation = false;  // validation would be timed too
-            dopt.ceiling = tier == Tier::Current ? CapabilityCeiling::GLES30 : CapabilityCeiling::None;
+            dopt.ceiling = tiers::row(tier).ceiling;
             Result<std::unique_ptr<Device>> opened = openDevice(bc, dopt);
             if (!opened) {
                 std::cout << "bench_ao: skipping " << backendName << ": " << opened.status().toString() << std::endl;

@@ -30,6 +30,7 @@
 #include "sfx/image_io.hpp"
 #include "sfx/motion_blur.hpp"
 #include "sfx/reference/motion_blur_reference.hpp"
+#include "sfx/tiers.hpp"
 #include "scene.hpp"
 
 using namespace sfx;
@@ -357,7 +358,7 @@ const char* timingLabel(TimingSource source) {
 Result<std::unique_ptr<Device>> openFor(const BackendConfig& config, Tier tier) {
     DeviceOptions options;
     options.validation = false;
-    options.ceiling = tier == Tier::Current ? CapabilityCeiling::GLES30 : CapabilityCeiling::None;
+    options.ceiling = tiers::row(tier).ceiling;
     Result<std::unique_ptr<Device>> device = openDevice(config, options);
     if (!device) return device.status();
     Result<tiers::TierChoice> choice = tiers::choose(device.value()->caps(), tier);

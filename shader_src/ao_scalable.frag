@@ -31,7 +31,7 @@ void main() {
         float theta = SFX_AO_TWO_PI * alpha * params.spiralTurns + phi;
         vec2 offset = h * vec2(cos(theta), sin(theta));
         int level = 0;
-#ifdef SFX_TIER_HIGH
+#ifdef SFX_AO_DEPTH_MIP  // generated from the tier table (TierProfile::aoUsesDepthMip)
         if (params.mipLevels > 1 && h >= 1.0)
             level = clamp(int(floor(log2(h))) - SFX_AO_MIP_LEVEL_OFFSET, 0, params.mipLevels - 1);
 #endif

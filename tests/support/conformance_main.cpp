@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
     }
     DeviceOptions options;
     options.validation = true;
-    options.ceiling = test::gTier == Tier::Current ? CapabilityCeiling::GLES30 : CapabilityCeiling::None;
+    options.ceiling = tiers::row(test::gTier).ceiling;
     Result<std::unique_ptr<Device>> device = openDevice(test::gConfig, options);
     if (!device) {
         const bool required = std::getenv("SFX_REQUIRE_ALL_BACKENDS") != nullptr;
