@@ -110,7 +110,7 @@ int main(int argc, char** argv) {
         "  sfxc --manifest shader_src/programs.txt --check\n",
         "sfxc"};
     std::vector<std::string> files;
-    std::string target = "spirv", tierName = "high", output, manifest, outHeader, outSource;
+    std::string target = "spirv", tierName = kTierNames[kTierCount - 1], output, manifest, outHeader, outSource;
     std::vector<std::string> includes, defines;
     bool reflectFlag = false, check = false, verbose = false;
     app.add_option("files", files, "shader files (.vert .frag .comp) to compile one by one");
