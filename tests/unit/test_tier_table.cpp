@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <string>
+#include <tuple>
 
 #include "sfx/tiers.hpp"
 #include "sfx_shaders.hpp"
@@ -15,6 +16,13 @@
 using namespace sfx;
 
 namespace {
+
+// Every parameter of a profile, for comparing whole profiles.
+auto fields(const TierProfile& p) {
+    return std::make_tuple(p.tier, p.aoScalableTaps, p.aoScalableMirrored, p.aoScalableMaxRadiusPx, p.aoUsesDepthMip,
+                           p.aoDepthMipLevels, p.aoAlchemySamples, p.aoBlurRadiusPx, p.aoPackedDepthTarget, p.mbTaps,
+                           p.mbMaxRadiusPx, p.mbJitterSize, p.abufferOit);
+}
 
 bool sameStructure(const TierProfile& a, const TierProfile& b) {
     return a.tier == b.tier && a.aoUsesDepthMip == b.aoUsesDepthMip && a.aoPackedDepthTarget == b.aoPackedDepthTarget;
@@ -58,30 +66,19 @@ TEST_CASE("tier table: a row per tier, in order, each with its default preset fi
 }
 
 TEST_CASE("tier table: the default presets hold the parameters the tiers always had", "[tiers]") {
-    const TierProfile& cur = tiers::profile(Tier::Current);
-    CHECK(cur.aoScalableTaps == 4);
-    CHECK(cur.aoScalableMirrored);
-    CHECK(cur.aoScalableMaxRadiusPx == 20.0f);
-    CHECK(cur.aoDepthMipLevels == 1);
-    CHECK(cur.aoAlchemySamples == 6);
-    CHECK(cur.aoBlurRadiusPx == 2);
-    CHECK(cur.aoPackedDepthTarget);
-    CHECK(cur.mbTaps == 7);
-    CHECK(cur.mbMaxRadiusPx == 10.0f);
-    CHECK(cur.mbJitterSize == 2);
-    CHECK_FALSE(cur.abufferOit);
-    const TierProfile& high = tiers::profile(Tier::High);
-    CHECK(high.aoScalableTaps == 9);
-    CHECK_FALSE(high.aoScalableMirrored);
-    CHECK(high.aoScalableMaxRadiusPx == 0.0f);
-    CHECK(high.aoDepthMipLevels == uint32_t(shared::SFX_DEPTH_MIP_MAX_LEVELS));
-    CHECK(high.aoAlchemySamples == 12);
-    CHECK(high.aoBlurRadiusPx == 6);
-    CHECK_FALSE(high.aoPackedDepthTarget);
-    CHECK(high.mbTaps == 9);
-    CHECK(high.mbMaxRadiusPx == 18.0f);
-    CHECK(high.mbJitterSize == 4);
-    CHECK(high.abufferOit);
+    // Written out here, apart from the table, so that moving the values into it changed none.
+    TierProfile expected[kTierCount];
+    expected[0] = {.tier = Tier::Current, .aoScalableTaps = 4, .aoScalableMirrored = true, .aoScalableMaxRadiusPx = 20.0f,
+                   .aoUsesDepthMip = false, .aoDepthMipLevels = 1, .aoAlchemySamples = 6, .aoBlurRadiusPx = 2,
+                   .aoPackedDepthTarget = true, .mbTaps = 7, .mbMaxRadiusPx = 10.0f, .mbJitterSize = 2, .abufferOit = false};
+    expected[1] = {.tier = Tier::High, .aoScalableTaps = 9, .aoScalableMirrored = false, .aoScalableMaxRadiusPx = 0.0f,
+                   .aoUsesDepthMip = true, .aoDepthMipLevels = uint32_t(shared::SFX_DEPTH_MIP_MAX_LEVELS),
+                   .aoAlchemySamples = 12, .aoBlurRadiusPx = 6, .aoPackedDepthTarget = false, .mbTaps = 9,
+                   .mbMaxRadiusPx = 18.0f, .mbJitterSize = 4, .abufferOit = true};
+    for (uint32_t i = 0; i < kTierCount; ++i) {
+        INFO(toString(Tier(i)));
+        CHECK(fields(tiers::profile(Tier(i))) == fields(expected[i]));
+    }
 }
 
 TEST_CASE("tier table: names, shader defines and dialects are generated from it", "[tiers][shaders]") {
