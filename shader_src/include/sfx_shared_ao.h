@@ -33,7 +33,7 @@ SFX_CONST(float, SFX_AO_TWO_PI, 6.28318530717958647692)
 // taps line up). The current tier uses 2 offsets, each also negated (4 taps): with an integer
 // number of turns both offsets would lie on one line through the centre; 1.5 turns puts them
 // at 135 and 45 degrees, so the 4 taps form an X at two radii.
-SFX_CONST(float, SFX_AO_SPIRAL_TURNS_HIGH, 7.0)
+SFX_CONST(float, SFX_AO_SPIRAL_TURNS_SPIRAL, 7.0)
 SFX_CONST(float, SFX_AO_SPIRAL_TURNS_MIRRORED, 1.5)
 // A tap at screen distance h reads depth MIP level clamp(floor(log2(h)) - Q, 0, levels - 1).
 SFX_CONST(int, SFX_AO_MIP_LEVEL_OFFSET, 3)

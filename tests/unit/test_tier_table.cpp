@@ -12,6 +12,7 @@
 #include "sfx_shared.h"
 #include "sfx_shared_ao.h"
 #include "sfx_shared_mb.h"
+#include "sfx_shared_raster.h"
 
 using namespace sfx;
 
@@ -135,6 +136,7 @@ TEST_CASE("shared uniform blocks: the C++ structs have the compiled blocks' size
         {"mb_pack", "MbPackParams", sizeof(shared::MbPackParams), shared::MbPackParams::kBinding},
         {"mb_tile_max", "MbTileParams", sizeof(shared::MbTileParams), shared::MbTileParams::kBinding},
         {"mb_reconstruct", "MbReconstructParams", sizeof(shared::MbReconstructParams), shared::MbReconstructParams::kBinding},
+        {"raster_gbuffer", "RasterParams", sizeof(shared::RasterParams), shared::RasterParams::kBinding},
     };
     for (const Expected& e : expected)
         for (uint32_t t = 0; t < kTierCount; ++t) {

@@ -102,7 +102,7 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
             c.bias = s.bias == -1.0f ? kAoScalableDefaultBias : s.bias;
             c.samples = s.samples ? s.samples : profile.aoScalableTaps;
             c.mirrored = profile.aoScalableMirrored;
-            c.spiralTurns = c.mirrored ? shared::SFX_AO_SPIRAL_TURNS_MIRRORED : shared::SFX_AO_SPIRAL_TURNS_HIGH;
+            c.spiralTurns = c.mirrored ? shared::SFX_AO_SPIRAL_TURNS_MIRRORED : shared::SFX_AO_SPIRAL_TURNS_SPIRAL;
             c.maxRadiusPx = profile.aoScalableMaxRadiusPx;
             c.depthMipLevels = profile.aoUsesDepthMip ? std::max(1u, std::min(profile.aoDepthMipLevels, mipLevelsAllowed)) : 1;
             break;
