@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 #include "sfx/half.hpp"
 #include "sfx_shaders.hpp"
+#include "sfx_shared_raster.h"
 
 namespace sfx::samples {
 namespace {
@@ -120,11 +122,16 @@ Result<Scene> makeScene(const std::string& name) {
     return s;
 }
 
-// Mirrors RasterParams in shader_src/raster_gbuffer.vert (std140).
-struct RasterParams {
-    glm::mat4 modelView, projection, normalMatrix, shutterOpenClip, shutterCloseClip;
-    glm::vec4 viewportSize;
-};
+// The raster pass's uniform block, declared once in sfx_shared_raster.h for GLSL and C++.
+using shared::RasterParams;
+
+namespace {
+// A column-major matrix into a block's mat4 member.
+void store(float (&dst)[16], const glm::dmat4& m) {
+    const glm::mat4 f(m);
+    std::memcpy(dst, glm::value_ptr(f), sizeof dst);
+}
+}  // namespace
 
 Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Device& device, Tier tier) {
     std::unique_ptr<SceneRenderer> r(new SceneRenderer(device));
@@ -219,13 +226,14 @@ Result<GBuffer> SceneRenderer::render(const Scene& scene, uint32_t width, uint32
         for (const GpuMesh& m : meshes_) {
             auto modelAt = [&](double t) { return glm::translate(glm::dmat4(1.0), m.source->velocity * t) * m.source->model; };
             const glm::dmat4 modelView = scene.view(time) * modelAt(time);
-            RasterParams p;
-            p.modelView = glm::mat4(modelView);
-            p.projection = glm::mat4(g.camera.projection);
-            p.normalMatrix = glm::mat4(glm::transpose(glm::inverse(modelView)));
-            p.shutterOpenClip = glm::mat4(g.camera.projection * scene.view(time - 0.5) * modelAt(time - 0.5));
-            p.shutterCloseClip = glm::mat4(g.camera.projection * scene.view(time + 0.5) * modelAt(time + 0.5));
-            p.viewportSize = glm::vec4(float(width), float(height), 0, 0);
+            RasterParams p{};
+            store(p.modelView, modelView);
+            store(p.projection, g.camera.projection);
+            store(p.normalMatrix, glm::transpose(glm::inverse(modelView)));
+            store(p.shutterOpenClip, g.camera.projection * scene.view(time - 0.5) * modelAt(time - 0.5));
+            store(p.shutterCloseClip, g.camera.projection * scene.view(time + 0.5) * modelAt(time + 0.5));
+            p.viewportSize[0] = float(width);
+            p.viewportSize[1] = float(height);
             SFX_TRY(device_.writeBuffer(m.params, 0, &p, sizeof p));
             DrawDesc d;
             d.pipeline = pipeline_;

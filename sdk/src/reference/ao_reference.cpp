@@ -114,35 +114,39 @@ glm::dvec3 viewPosition(const AoInput& in, uint32_t x, uint32_t y) {
 
 std::vector<glm::dvec3> normalsFromDepth(const Grid& d, const DepthReconstruction& rec) {
     std::vector<dvec3> out(size_t(d.width) * d.height, dvec3(0, 0, 1));
-    auto pos = [&](int x, int y) { return positionAt(rec, x, y, d.at(uint32_t(x), uint32_t(y))); };
+    // The rule of sfx_shared_ao.h: every depth read as sfxLinearDepthOrFar makes it.
+    auto depth = [&](int x, int y) { return sh::sfxLinearDepthOrFar(d.at(uint32_t(x), uint32_t(y)), rec.maxDepth); };
+    auto pos = [&](int x, int y) { return positionAt(rec, x, y, depth(x, y)); };
     const int w = int(d.width), h = int(d.height);
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
-            const double z = d.at(uint32_t(x), uint32_t(y));
+            const double z = depth(x, y);
             const dvec3 C = pos(x, y);
-            // On each axis take the neighbour whose depth is closer (ties: the lower index).
             dvec3 dx(1, 0, 0), dy(0, 1, 0);
             if (w > 1) {
-                const bool useRight = x == 0 || (x < w - 1 && std::abs(d.at(uint32_t(x + 1), uint32_t(y)) - z) <
-                                                                  std::abs(d.at(uint32_t(x - 1), uint32_t(y)) - z));
-                dx = useRight ? pos(x + 1, y) - C : C - pos(x - 1, y);
+                const double zl = x > 0 ? depth(x - 1, y) : 0.0, zr = x < w - 1 ? depth(x + 1, y) : 0.0;
+                dx = sh::aoNormalUsesNext(x, w, zl, zr, z) ? pos(x + 1, y) - C : C - pos(x - 1, y);
             }
             if (h > 1) {
-                const bool useNext = y == 0 || (y < h - 1 && std::abs(d.at(uint32_t(x), uint32_t(y + 1)) - z) <
-                                                                 std::abs(d.at(uint32_t(x), uint32_t(y - 1)) - z));
-                dy = useNext ? pos(x, y + 1) - C : C - pos(x, y - 1);
+                const double zd = y > 0 ? depth(x, y - 1) : 0.0, zu = y < h - 1 ? depth(x, y + 1) : 0.0;
+                dy = sh::aoNormalUsesNext(y, h, zd, zu, z) ? pos(x, y + 1) - C : C - pos(x, y - 1);
             }
-            dvec3 n = glm::cross(dx, dy);
-            const double len = glm::length(n);
-            n = len > 0 && std::isfinite(len) ? n / len : dvec3(0, 0, 1);
-            if (glm::dot(n, C) > 0) n = -n;  // face the camera (C is the ray from the eye)
-            out[size_t(y) * d.width + size_t(x)] = n;
+            out[size_t(y) * d.width + size_t(x)] = sh::aoFacingNormal(dx, dy, C);
         }
     }
     return out;
 }
 
-Grid rawVisibility(const AoInput& in, const AoConfig& c) {
+Grid linearDepthOrFar(const Grid& linearDepth, double maxDepth) {
+    Grid out = linearDepth;
+    for (double& z : out.values) z = sh::sfxLinearDepthOrFar(z, maxDepth);
+    return out;
+}
+
+namespace {
+
+// The obscurance of `in`, whose linear depth already went through linearDepthOrFar.
+Grid rawVisibilityOfClamped(const AoInput& in, const AoConfig& c) {
     const Grid& d = in.linearDepth;
     const std::vector<dvec3> derived = in.normals.empty() ? normalsFromDepth(d, in.reconstruction) : std::vector<dvec3>{};
     const std::vector<dvec3>& normals = in.normals.empty() ? derived : in.normals;
@@ -171,6 +175,14 @@ Grid rawVisibility(const AoInput& in, const AoConfig& c) {
     return out;
 }
 
+}  // namespace
+
+Grid rawVisibility(const AoInput& in, const AoConfig& c) {
+    AoInput clamped = in;
+    clamped.linearDepth = linearDepthOrFar(in.linearDepth, in.reconstruction.maxDepth);
+    return rawVisibilityOfClamped(clamped, c);
+}
+
 Grid bilateralBlurPass(const Grid& vis, const Grid& d, double maxDepth, int radius, int dx, int dy) {
     Grid out(vis.width, vis.height, 1.0);
     for (uint32_t y = 0; y < vis.height; ++y) {
@@ -196,11 +208,13 @@ Grid bilateralBlurPass(const Grid& vis, const Grid& d, double maxDepth, int radi
 }
 
 Grid ambientVisibility(const AoInput& in, const AoConfig& c) {
-    Grid raw = rawVisibility(in, c);
+    const double maxDepth = in.reconstruction.maxDepth;
+    AoInput clamped = in;
+    clamped.linearDepth = linearDepthOrFar(in.linearDepth, maxDepth);
+    Grid raw = rawVisibilityOfClamped(clamped, c);
     if (c.blurRadius == 0) return raw;
     const int r = int(c.blurRadius);
-    const double maxDepth = in.reconstruction.maxDepth;
-    const Grid& d = in.linearDepth;
+    const Grid& d = clamped.linearDepth;
     Grid wide = bilateralBlurPass(bilateralBlurPass(raw, d, maxDepth, r, 1, 0), d, maxDepth, r, 0, 1);
     if (c.technique != AoTechnique::Crease) return wide;
     const int rm = std::max(1, r / 2);
