@@ -7,7 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "sfx/half.hpp"
-#include "sfx_shaders.hpp"
+#include "sfx_sample_shaders.hpp"
 
 namespace sfx::samples {
 namespace {
@@ -171,7 +171,7 @@ struct RasterParams {
 
 Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Device& device, Tier tier) {
     std::unique_ptr<SceneRenderer> r(new SceneRenderer(device));
-    Result<const CompiledProgram*> program = shaders::find(gen::raster_gbuffer::kName, tier);
+    Result<const CompiledProgram*> program = sample_shaders::find(gen::raster_gbuffer::kName, tier);
     if (!program) return program.status();
     Result<ProgramHandle> handle = device.createProgram(*program.value());
     if (!handle) return handle.status();
