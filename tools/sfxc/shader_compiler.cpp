@@ -328,6 +328,12 @@ std::string identifier(const std::string& s) {
 std::string rawString(const std::string& s) { return "R\"sfxglsl(" + s + ")sfxglsl\""; }
 }  // namespace
 
+// The SPIR-V array of stage `stage` of `p`, named after the program and tier so that the symbol
+// table of a library shows which programs it embeds (tests/check_runtime_library.sh reads it).
+static std::string spirvArrayName(const CompiledProgram& p, size_t stage) {
+    return "kSpirv_" + identifier(p.name) + "_" + toString(p.tier) + "_" + std::to_string(stage);
+}
+
 Result<std::pair<std::string, std::string>> generateEmbedding(const std::vector<CompiledProgram>& programs,
                                                               const EmbeddingDesc& desc) {
     const std::string ns = "sfx::" + desc.cppNamespace;
@@ -368,7 +374,7 @@ Result<std::pair<std::string, std::string>> generateEmbedding(const std::vector<
     for (size_t pi = 0; pi < programs.size(); ++pi) {
         const CompiledProgram& p = programs[pi];
         for (size_t si = 0; si < p.stages.size(); ++si) {
-            c << "const uint32_t kSpirv_" << pi << "_" << si << "[] = {";
+            c << "const uint32_t " << spirvArrayName(p, si) << "[] = {";
             const auto& words = p.stages[si].spirv;
             for (size_t w = 0; w < words.size(); ++w) c << (w % 12 == 0 ? "\n    " : " ") << words[w] << "u,";
             c << "\n};\n";
@@ -382,7 +388,7 @@ Result<std::pair<std::string, std::string>> generateEmbedding(const std::vector<
         for (size_t si = 0; si < p.stages.size(); ++si) {
             const StageCode& s = p.stages[si];
             c << "        {\n            StageCode s;\n            s.stage = ShaderStage(" << uint32_t(s.stage) << ");\n"
-              << "            s.spirv.assign(std::begin(kSpirv_" << pi << "_" << si << "), std::end(kSpirv_" << pi << "_" << si
+              << "            s.spirv.assign(std::begin(" << spirvArrayName(p, si) << "), std::end(" << spirvArrayName(p, si)
               << "));\n";
             for (const DialectTarget& t : kGlTargets)
                 c << "            s.glsl[" << size_t(t.dialect) << "] = " << rawString(s.glsl[size_t(t.dialect)]) << ";\n";
