@@ -51,10 +51,7 @@ TEST_CASE("hal: indexed mesh with depth test, nearer wins; depth reads back; row
         }
     // The depth attachment, sampled right after the pass that wrote it.
     if (renderable(Format::R32F)) {
-        TextureHandle linear = makeTexture(c, n, n, Format::R32F, kTextureSampled | kTextureRenderTarget);
-        PipelineHandle copy = fullscreenPipeline(c, "copy", Format::R32F);
-        fullscreenPass(linear, copy, {.textures = {{gen::copy::uSource, depth}}});
-        REQUIRE(readLevel<float>(linear) == z);
+        REQUIRE(sampledThroughCopy(c, depth, n, n) == z);
     }
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }

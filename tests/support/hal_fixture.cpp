@@ -63,6 +63,13 @@ void fullscreenPass(TextureHandle target, PipelineHandle pipeline, BindingSet bi
     SFX_REQUIRE_OK(dev().renderPass(pass, {&draw, 1}));
 }
 
+std::vector<float> sampledThroughCopy(Cleanup& c, TextureHandle source, uint32_t w, uint32_t h, uint32_t mip) {
+    TextureHandle target = makeTexture(c, w, h, Format::R32F, kTextureSampled | kTextureRenderTarget);
+    PipelineHandle copy = fullscreenPipeline(c, "copy", Format::R32F);
+    fullscreenPass(target, copy, {.textures = {{gen::copy::uSource, source, mip, 1}}});
+    return readLevel<float>(target);
+}
+
 GraphicsPipelineDesc meshPipelineDesc(Format color, Format depth) {
     GraphicsPipelineDesc d;
     d.colorFormats = {color};

@@ -51,6 +51,10 @@ std::vector<T> readLevel(TextureHandle t, uint32_t mip = 0) {
 // Full-screen pass of `pipeline` into `target` with the given bindings.
 void fullscreenPass(TextureHandle target, PipelineHandle pipeline, BindingSet bindings = {}, uint32_t mip = 0);
 
+// Mip `mip` of `source` (w x h there) drawn through the copy program into a new R32F target,
+// read back: what a pass sampling `source` sees.
+std::vector<float> sampledThroughCopy(Cleanup& c, TextureHandle source, uint32_t w, uint32_t h, uint32_t mip = 0);
+
 struct MeshVertex {
     float x, y, z;
     float r, g, b, a;
