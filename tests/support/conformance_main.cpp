@@ -1,9 +1,8 @@
 // Entry point of the conformance tests: opens the device named on the command line once,
 // runs the Catch2 session, and fails the run on any validation message. Cases that do not
-// apply to the device are not run (and not counted): [gl] cases run only on GL backends,
-// [tier-high] cases only at the high tier. A backend that cannot be opened, or a case that
-// cannot run (SFX_SKIP), makes the run "skipped" for CTest, or a failure under
-// SFX_REQUIRE_ALL_BACKENDS=1.
+// apply to the device are not run (and not counted): [gl] cases run only on GL backends. A
+// backend that cannot be opened, or a case that cannot run (SFX_SKIP), makes the run
+// "skipped" for CTest, or a failure under SFX_REQUIRE_ALL_BACKENDS=1.
 #define CATCH_CONFIG_RUNNER
 #include <catch2/catch.hpp>
 
@@ -87,10 +86,6 @@ int main(int argc, char** argv) {
     if (kind != BackendKind::GL && kind != BackendKind::GLES) {
         session.configData().testsOrTags.push_back("~[gl]");
         std::cout << "not run here: cases tagged [gl] (GL backends only)\n";
-    }
-    if (test::gTier != Tier::High) {
-        session.configData().testsOrTags.push_back("~[tier-high]");
-        std::cout << "not run here: cases tagged [tier-high] (high tier only)\n";
     }
 
     int rc = session.run();
