@@ -5,7 +5,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "sfx/half.hpp"
-#include "sfx_shaders.hpp"
+#include "sfx_sample_shaders.hpp"
 #include "sfx_shared_raster.h"
 
 namespace sfx::samples {
@@ -135,7 +135,7 @@ void store(float (&dst)[16], const glm::dmat4& m) {
 
 Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Device& device, Tier tier) {
     std::unique_ptr<SceneRenderer> r(new SceneRenderer(device));
-    Result<const CompiledProgram*> program = shaders::find(gen::raster_gbuffer::kName, tier);
+    Result<const CompiledProgram*> program = sample_shaders::find(gen::raster_gbuffer::kName, tier);
     if (!program) return program.status();
     Result<ProgramHandle> handle = device.createProgram(*program.value());
     if (!handle) return handle.status();

@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "sfx/tiers.hpp"
+#include "sfx_sample_shaders.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared.h"
 #include "sfx_shared_ao.h"
@@ -140,7 +141,9 @@ TEST_CASE("shared uniform blocks: the C++ structs have the compiled blocks' size
     };
     for (const Expected& e : expected)
         for (uint32_t t = 0; t < kTierCount; ++t) {
-            Result<const CompiledProgram*> p = shaders::find(e.program, Tier(t));
+            // The G-buffer raster program belongs to the samples' shader library, not the runtime's.
+            const bool sample = std::string_view(e.program) == gen::raster_gbuffer::kName;
+            Result<const CompiledProgram*> p = sample ? sample_shaders::find(e.program, Tier(t)) : shaders::find(e.program, Tier(t));
             REQUIRE(p.isOk());
             INFO(e.program << " " << toString(Tier(t)) << " " << e.block);
             const auto& res = p.value()->resources;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "sfx/vulkan_device.hpp"
+#include "skips.hpp"
 
 using namespace sfx;
 
@@ -132,10 +133,7 @@ void clearTo(Device& d, TextureHandle t, float value) {
 
 TEST_CASE("vulkan: wrapped host device, host command buffer, host objects survive the SDK", "[vulkan]") {
     Host host;
-    if (!host.create()) {
-        WARN("skipped: " << host.skipReason);
-        return;
-    }
+    if (!host.create()) SFX_SKIP(host.skipReason);
     vulkan::ExternalVulkan ext;
     ext.instance = host.instance;
     ext.physicalDevice = host.physical;
@@ -236,8 +234,7 @@ TEST_CASE("vulkan: own device opens, and wrapDevice rejects missing host objects
     Result<std::unique_ptr<Device>> own = vulkan::createDevice({});
     if (!own) {
         CHECK(own.status().code() == StatusCode::BackendUnavailable);
-        WARN("skipped: " << own.status().toString());
-        return;
+        SFX_SKIP(own.status().toString());
     }
     CHECK(own.value()->caps().platform == "vulkan-loader");
     CHECK(own.value()->caps().apiName.rfind("Vulkan 1.", 0) == 0);
