@@ -1,7 +1,5 @@
 #include "scene.hpp"
 
-#include <tiny_obj_loader.h>
-
 #include <cmath>
 #include <filesystem>
 #include <glm/gtc/matrix_transform.hpp>
@@ -75,30 +73,6 @@ Mesh cylinder(glm::vec3 base, float radius, float height, int slices = 32) {
     return m;
 }
 
-Result<Mesh> loadObj(const std::string& path) {
-    if (!std::filesystem::exists(path))
-        return Status{StatusCode::FileError, path + ": no such file (install Debian's glmark2-data)"};
-    tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(path)) return Status{StatusCode::FileError, path + ": " + reader.Error()};
-    const auto& attrib = reader.GetAttrib();
-    Mesh m;
-    m.vertices.resize(attrib.vertices.size() / 3);
-    for (size_t i = 0; i < m.vertices.size(); ++i)
-        m.vertices[i] = {{attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]}, glm::vec3(0)};
-    for (const auto& shape : reader.GetShapes())
-        for (const auto& idx : shape.mesh.indices) m.indices.push_back(uint32_t(idx.vertex_index));
-    // The OBJ has no normals: area-weighted smooth vertex normals from the faces.
-    for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
-        Vertex &a = m.vertices[m.indices[t]], &b = m.vertices[m.indices[t + 1]], &c = m.vertices[m.indices[t + 2]];
-        const glm::vec3 n = glm::cross(b.position - a.position, c.position - a.position);
-        a.normal += n;
-        b.normal += n;
-        c.normal += n;
-    }
-    for (Vertex& v : m.vertices) v.normal = glm::length(v.normal) > 0 ? glm::normalize(v.normal) : glm::vec3(0, 1, 0);
-    return m;
-}
-
 }  // namespace
 
 glm::dmat4 Scene::view(double time) const {
@@ -145,6 +119,8 @@ Result<Scene> makeScene(const std::string& name) {
         s.eye = {0, 1.3, 3.0};
         s.target = {0, 0.4, 0};
     } else if (name == "bunny") {
+        if (!std::filesystem::exists(kBunnyPath))
+            return Status{StatusCode::FileError, std::string(kBunnyPath) + ": no such file (install Debian's glmark2-data)"};
         Result<Mesh> bunny = loadObj(kBunnyPath);
         if (!bunny) return bunny.status();
         // glmark2's bunny spans about [-1, 1]: stand it on the floor.

@@ -9,21 +9,10 @@
 #include <vector>
 
 #include "sfx/camera.hpp"
+#include "obj_mesh.hpp"
 #include "sfx/hal.hpp"
 
 namespace sfx::samples {
-
-struct Vertex {
-    glm::vec3 position;
-    glm::vec3 normal;
-};
-
-struct Mesh {
-    std::vector<Vertex> vertices;
-    std::vector<uint32_t> indices;  // triangles
-    glm::dmat4 model{1.0};
-    glm::dvec3 velocity{0.0};       // world units per shutter interval (for moving-object demos)
-};
 
 struct Scene {
     std::string name;

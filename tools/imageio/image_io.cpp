@@ -3,7 +3,9 @@
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
+#include <ImfIO.h>
 #include <ImfInputFile.h>
+#include <Iex.h>
 #include <ImfOutputFile.h>
 #include <png.h>
 
@@ -13,6 +15,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <sstream>
 
@@ -37,13 +40,26 @@ Status checkImage(const Image& image, const std::string& path) {
     return Status::ok();
 }
 
+// Refuses a header's size before anything of that size is allocated: a small file may claim
+// (or, compressed, really hold) more pixels than the tools and effects take.
+Status checkDecodedSize(const std::string& path, const char* format, uint64_t width, uint64_t height) {
+    if (width <= kMaxImageSide && height <= kMaxImageSide && width * height <= kMaxImagePixels) return Status::ok();
+    return fileError(path, std::string(format) + " size " + std::to_string(width) + "x" + std::to_string(height) +
+                               " is over the limit (sides up to " + std::to_string(kMaxImageSide) + ", up to " +
+                               std::to_string(kMaxImagePixels) + " pixels)");
+}
+
 // ---- PNG ------------------------------------------------------------------------------------
-Result<Image> readPng(const std::string& path) {
+Result<Image> decodePng(const std::string& path, const uint8_t* data, size_t size) {
     png_image png;
     std::memset(&png, 0, sizeof png);
     png.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&png, path.c_str()))
+    if (!png_image_begin_read_from_memory(&png, data, size))
         return fileError(path, std::string("not a readable PNG: ") + png.message);
+    if (Status size = checkDecodedSize(path, "PNG", png.width, png.height); !size) {
+        png_image_free(&png);
+        return size;
+    }
     const uint32_t channels = PNG_IMAGE_SAMPLE_CHANNELS(png.format);
     png.format = channels == 1 ? PNG_FORMAT_GRAY : channels == 2 ? PNG_FORMAT_GA : channels == 3 ? PNG_FORMAT_RGB : PNG_FORMAT_RGBA;
     std::vector<uint8_t> bytes(PNG_IMAGE_SIZE(png));
@@ -80,25 +96,22 @@ Status writePngFile(const std::string& path, const Image& image) {
 // ---- PFM ------------------------------------------------------------------------------------
 // Header: "PF" (RGB) or "Pf" (grey), "width height", scale (negative: little endian); then
 // float rows from the bottom of the picture to the top.
-Result<Image> readPfm(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return fileError(path, "cannot open for reading");
+Result<Image> decodePfm(const std::string& path, const uint8_t* data, size_t size) {
+    std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
     std::string magic;
     long long w = 0, h = 0;
     double scale = 0;
     in >> magic >> w >> h >> scale;
     if (!in || (magic != "PF" && magic != "Pf"))
         return fileError(path, "not a PFM file (expected 'PF' or 'Pf', width, height and scale)");
-    if (w <= 0 || h <= 0 || w > 65536 || h > 65536)
-        return fileError(path, "PFM size " + std::to_string(w) + "x" + std::to_string(h) + " is outside 1..65536");
+    if (w <= 0 || h <= 0) return fileError(path, "PFM size " + std::to_string(w) + "x" + std::to_string(h) + " is not positive");
+    SFX_TRY(checkDecodedSize(path, "PFM", uint64_t(w), uint64_t(h)));
     if (scale == 0 || !std::isfinite(scale)) return fileError(path, "PFM scale must be a non-zero number");
     in.get();  // the single whitespace character after the scale
     const uint32_t channels = magic == "PF" ? 3 : 1;
     // Check the data is really there before allocating what the header claims.
     const std::streamoff dataStart = in.tellg();
-    in.seekg(0, std::ios::end);
-    const std::streamoff available = in.tellg() - dataStart;
-    in.seekg(dataStart);
+    const long long available = dataStart < 0 ? 0 : static_cast<long long>(size) - dataStart;
     const long long needed = w * h * channels * 4;
     if (dataStart < 0 || available < needed)
         return fileError(path, "PFM header says " + std::to_string(w) + "x" + std::to_string(h) + "x" +
@@ -106,11 +119,9 @@ Result<Image> readPfm(const std::string& path) {
                                    std::to_string(std::max<long long>(available, 0)) + " bytes of data");
     Image image(uint32_t(w), uint32_t(h), channels);
     const size_t rowValues = size_t(w) * channels;
-    std::vector<uint8_t> row(rowValues * 4);
     const bool littleEndian = scale < 0;
     for (uint32_t r = 0; r < image.height; ++r) {
-        if (!in.read(reinterpret_cast<char*>(row.data()), std::streamsize(row.size())))
-            return fileError(path, "PFM data ends early at row " + std::to_string(r) + " of " + std::to_string(h));
+        const uint8_t* row = data + dataStart + size_t(r) * rowValues * 4;
         float* dst = &image.pixels[size_t(image.height - 1 - r) * rowValues];
         for (size_t i = 0; i < rowValues; ++i) {
             uint8_t b[4];
@@ -140,12 +151,40 @@ Status writePfmFile(const std::string& path, const Image& image) {
 }
 
 // ---- EXR ------------------------------------------------------------------------------------
-Result<Image> readExr(const std::string& path) {
+// OpenEXR reads through this stream so a file in memory decodes like one on disk.
+class MemoryIStream final : public Imf::IStream {
+public:
+    MemoryIStream(const std::string& name, const uint8_t* data, size_t size) : Imf::IStream(name.c_str()), data_(data), size_(size) {}
+    // OpenEXR's contract: false when the end of the file was reached exactly, throw past it.
+    bool read(char c[], int n) override {
+        if (n < 0 || uint64_t(n) > size_ - position_) THROW(Iex::InputExc, "unexpected end of file");
+        std::memcpy(c, data_ + position_, size_t(n));
+        position_ += uint64_t(n);
+        return position_ < size_;
+    }
+    uint64_t tellg() override { return position_; }
+    void seekg(uint64_t position) override {
+        if (position > size_) THROW(Iex::InputExc, "seek past the end of the file");
+        position_ = position;
+    }
+
+private:
+    const uint8_t* data_;
+    uint64_t size_, position_ = 0;
+};
+
+Result<Image> decodeExr(const std::string& path, const uint8_t* data, size_t size) {
     try {
-        Imf::InputFile file(path.c_str());
+        // OpenEXR refuses headers over this size itself, before it allocates its offset tables.
+        Imf::Header::setMaxImageSize(int(kMaxImageSide), int(kMaxImageSide));
+        Imf::Header::setMaxTileSize(int(kMaxImageSide), int(kMaxImageSide));
+        MemoryIStream stream(path, data, size);
+        Imf::InputFile file(stream);
         const Imath::Box2i dw = file.header().dataWindow();
-        const int w = dw.max.x - dw.min.x + 1, h = dw.max.y - dw.min.y + 1;
+        // In 64 bits: a data window from INT_MIN to INT_MAX overflows int.
+        const int64_t w = int64_t(dw.max.x) - dw.min.x + 1, h = int64_t(dw.max.y) - dw.min.y + 1;
         if (w <= 0 || h <= 0) return fileError(path, "EXR has an empty data window");
+        SFX_TRY(checkDecodedSize(path, "EXR", uint64_t(w), uint64_t(h)));
         std::vector<std::string> names;
         for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) names.push_back(it.name());
         // Conventional orders first; otherwise the channels in the file's (alphabetical) order.
@@ -160,10 +199,8 @@ Result<Image> readExr(const std::string& path) {
         Image image(uint32_t(w), uint32_t(h), uint32_t(order.size()));
         Imf::FrameBuffer fb;
         const size_t xStride = sizeof(float) * image.channels, yStride = xStride * size_t(w);
-        for (size_t c = 0; c < order.size(); ++c) {
-            char* base = reinterpret_cast<char*>(image.pixels.data() + c) - (dw.min.x * xStride) - (dw.min.y * yStride);
-            fb.insert(order[c].c_str(), Imf::Slice(Imf::FLOAT, base, xStride, yStride, 1, 1, 0.0));
-        }
+        for (size_t c = 0; c < order.size(); ++c)  // Slice::Make offsets by the data window's origin safely
+            fb.insert(order[c].c_str(), Imf::Slice::Make(Imf::FLOAT, image.pixels.data() + c, dw, xStride, yStride));
         file.setFrameBuffer(fb);
         file.readPixels(dw.min.y, dw.max.y);
         return image;
@@ -193,13 +230,25 @@ Status writeExrFile(const std::string& path, const Image& image) {
 
 }  // namespace
 
+Result<Image> decodeImage(const std::string& path, const void* data, size_t size) {
+    const auto* bytes = static_cast<const uint8_t*>(data);
+    const std::string ext = extensionOf(path);
+    if (ext == ".png") return decodePng(path, bytes, size);
+    if (ext == ".pfm") return decodePfm(path, bytes, size);
+    if (ext == ".exr") return decodeExr(path, bytes, size);
+    return fileError(path, "unknown image extension '" + ext + "'; allowed .png, .pfm, .exr");
+}
+
 Result<Image> readImage(const std::string& path) {
     if (!std::filesystem::exists(path)) return fileError(path, "no such file");
     const std::string ext = extensionOf(path);
-    if (ext == ".png") return readPng(path);
-    if (ext == ".pfm") return readPfm(path);
-    if (ext == ".exr") return readExr(path);
-    return fileError(path, "unknown image extension '" + ext + "'; allowed .png, .pfm, .exr");
+    if (ext != ".png" && ext != ".pfm" && ext != ".exr")
+        return fileError(path, "unknown image extension '" + ext + "'; allowed .png, .pfm, .exr");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return fileError(path, "cannot open for reading");
+    const std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) return fileError(path, "read failed");
+    return decodeImage(path, bytes.data(), bytes.size());
 }
 
 Status writePng(const std::string& path, const Image& image) {
