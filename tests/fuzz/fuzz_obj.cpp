@@ -1,0 +1,18 @@
+// The samples' OBJ reader (samples/common/obj_mesh.hpp) on arbitrary text: a mesh or a
+// FileError, and every index of a mesh it returns names one of its vertices.
+#include <cstdlib>
+
+#include "obj_mesh.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    sfx::Result<sfx::samples::Mesh> mesh = sfx::samples::parseObj("input.obj", text);
+    if (!mesh) {
+        if (mesh.status().code() != sfx::StatusCode::FileError) std::abort();
+        return 0;
+    }
+    if (mesh->indices.size() % 3 != 0) std::abort();
+    for (uint32_t i : mesh->indices)
+        if (i >= mesh->vertices.size()) std::abort();
+    return 0;
+}
