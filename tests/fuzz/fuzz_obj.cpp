@@ -1,5 +1,6 @@
 // The samples' OBJ reader (samples/common/obj_mesh.hpp) on arbitrary text: a mesh or a
-// FileError, and every index of a mesh it returns names one of its vertices.
+// FileError; every index of a mesh it returns names one of its vertices, every normal is unit.
+#include <cmath>
 #include <cstdlib>
 
 #include "obj_mesh.hpp"
@@ -14,5 +15,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (mesh->indices.size() % 3 != 0) std::abort();
     for (uint32_t i : mesh->indices)
         if (i >= mesh->vertices.size()) std::abort();
+    for (const sfx::samples::Vertex& v : mesh->vertices)  // normals are unit (or the fallback), never NaN
+        if (!(std::abs(glm::length(v.normal) - 1.0f) < 1e-3f)) std::abort();
     return 0;
 }
