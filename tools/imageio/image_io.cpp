@@ -42,23 +42,23 @@ Status checkImage(const Image& image, const std::string& path) {
 
 // Refuses a header's size before anything of that size is allocated: a small file may claim
 // (or, compressed, really hold) more pixels than the tools and effects take.
-Status checkDecodedSize(const std::string& path, const char* format, uint64_t width, uint64_t height) {
-    if (width <= kMaxImageSide && height <= kMaxImageSide && width * height <= kMaxImagePixels) return Status::ok();
+Status checkDecodedSize(const std::string& path, const char* format, uint64_t width, uint64_t height, uint64_t maxPixels) {
+    if (width <= kMaxImageSide && height <= kMaxImageSide && width * height <= maxPixels) return Status::ok();
     return fileError(path, std::string(format) + " size " + std::to_string(width) + "x" + std::to_string(height) +
                                " is over the limit (sides up to " + std::to_string(kMaxImageSide) + ", up to " +
-                               std::to_string(kMaxImagePixels) + " pixels)");
+                               std::to_string(maxPixels) + " pixels)");
 }
 
 // ---- PNG ------------------------------------------------------------------------------------
-Result<Image> decodePng(const std::string& path, const uint8_t* data, size_t size) {
+Result<Image> decodePng(const std::string& path, const uint8_t* data, size_t size, uint64_t maxPixels) {
     png_image png;
     std::memset(&png, 0, sizeof png);
     png.version = PNG_IMAGE_VERSION;
     if (!png_image_begin_read_from_memory(&png, data, size))
         return fileError(path, std::string("not a readable PNG: ") + png.message);
-    if (Status size = checkDecodedSize(path, "PNG", png.width, png.height); !size) {
+    if (Status fits = checkDecodedSize(path, "PNG", png.width, png.height, maxPixels); !fits) {
         png_image_free(&png);
-        return size;
+        return fits;
     }
     const uint32_t channels = PNG_IMAGE_SAMPLE_CHANNELS(png.format);
     png.format = channels == 1 ? PNG_FORMAT_GRAY : channels == 2 ? PNG_FORMAT_GA : channels == 3 ? PNG_FORMAT_RGB : PNG_FORMAT_RGBA;
@@ -96,7 +96,7 @@ Status writePngFile(const std::string& path, const Image& image) {
 // ---- PFM ------------------------------------------------------------------------------------
 // Header: "PF" (RGB) or "Pf" (grey), "width height", scale (negative: little endian); then
 // float rows from the bottom of the picture to the top.
-Result<Image> decodePfm(const std::string& path, const uint8_t* data, size_t size) {
+Result<Image> decodePfm(const std::string& path, const uint8_t* data, size_t size, uint64_t maxPixels) {
     std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
     std::string magic;
     long long w = 0, h = 0;
@@ -105,7 +105,7 @@ Result<Image> decodePfm(const std::string& path, const uint8_t* data, size_t siz
     if (!in || (magic != "PF" && magic != "Pf"))
         return fileError(path, "not a PFM file (expected 'PF' or 'Pf', width, height and scale)");
     if (w <= 0 || h <= 0) return fileError(path, "PFM size " + std::to_string(w) + "x" + std::to_string(h) + " is not positive");
-    SFX_TRY(checkDecodedSize(path, "PFM", uint64_t(w), uint64_t(h)));
+    SFX_TRY(checkDecodedSize(path, "PFM", uint64_t(w), uint64_t(h), maxPixels));
     if (scale == 0 || !std::isfinite(scale)) return fileError(path, "PFM scale must be a non-zero number");
     in.get();  // the single whitespace character after the scale
     const uint32_t channels = magic == "PF" ? 3 : 1;
@@ -173,7 +173,7 @@ private:
     uint64_t size_, position_ = 0;
 };
 
-Result<Image> decodeExr(const std::string& path, const uint8_t* data, size_t size) {
+Result<Image> decodeExr(const std::string& path, const uint8_t* data, size_t size, uint64_t maxPixels) {
     try {
         // OpenEXR refuses headers over this size itself, before it allocates its offset tables.
         Imf::Header::setMaxImageSize(int(kMaxImageSide), int(kMaxImageSide));
@@ -184,7 +184,7 @@ Result<Image> decodeExr(const std::string& path, const uint8_t* data, size_t siz
         // In 64 bits: a data window from INT_MIN to INT_MAX overflows int.
         const int64_t w = int64_t(dw.max.x) - dw.min.x + 1, h = int64_t(dw.max.y) - dw.min.y + 1;
         if (w <= 0 || h <= 0) return fileError(path, "EXR has an empty data window");
-        SFX_TRY(checkDecodedSize(path, "EXR", uint64_t(w), uint64_t(h)));
+        SFX_TRY(checkDecodedSize(path, "EXR", uint64_t(w), uint64_t(h), maxPixels));
         std::vector<std::string> names;
         for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) names.push_back(it.name());
         // Conventional orders first; otherwise the channels in the file's (alphabetical) order.
@@ -230,12 +230,12 @@ Status writeExrFile(const std::string& path, const Image& image) {
 
 }  // namespace
 
-Result<Image> decodeImage(const std::string& path, const void* data, size_t size) {
+Result<Image> decodeImage(const std::string& path, const void* data, size_t size, uint64_t maxPixels) {
     const auto* bytes = static_cast<const uint8_t*>(data);
     const std::string ext = extensionOf(path);
-    if (ext == ".png") return decodePng(path, bytes, size);
-    if (ext == ".pfm") return decodePfm(path, bytes, size);
-    if (ext == ".exr") return decodeExr(path, bytes, size);
+    if (ext == ".png") return decodePng(path, bytes, size, maxPixels);
+    if (ext == ".pfm") return decodePfm(path, bytes, size, maxPixels);
+    if (ext == ".exr") return decodeExr(path, bytes, size, maxPixels);
     return fileError(path, "unknown image extension '" + ext + "'; allowed .png, .pfm, .exr");
 }
 

@@ -35,8 +35,9 @@ std::string extensionOf(const std::string& path);
 // file and what is wrong with it.
 Result<Image> readImage(const std::string& path);
 // The same decoders on a file's bytes already in memory; `path` picks the format by its
-// extension and names the file in messages. What the fuzz targets (tests/fuzz) call.
-Result<Image> decodeImage(const std::string& path, const void* data, size_t size);
+// extension and names the file in messages. maxPixels lowers the pixel limit (the fuzz targets
+// of tests/fuzz use a small one so they explore the parsers instead of filling large images).
+Result<Image> decodeImage(const std::string& path, const void* data, size_t size, uint64_t maxPixels = kMaxImagePixels);
 
 // PNG stores [0,1] as 8 bits (values clamped, NaN written as 0); 1-4 channels.
 Status writePng(const std::string& path, const Image& image);
