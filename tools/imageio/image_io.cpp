@@ -4,6 +4,8 @@
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfIO.h>
+#include <ImfVersion.h>
+#include <ImfXdr.h>
 #include <ImfInputFile.h>
 #include <Iex.h>
 #include <ImfOutputFile.h>
@@ -173,18 +175,97 @@ private:
     uint64_t size_, position_ = 0;
 };
 
+// OpenEXR 3.1 allocates each header attribute at the size the file claims before reading it
+// (a 300-byte file claiming a 1.6 GB attribute cost seconds): every attribute of the single
+// header (name, type, int32 size, value; a 0 byte ends the list) must fit in the file.
+// Whether a value of `type` is exactly `length` bytes as OpenEXR 3.1 reads it: fixed-size
+// types by their size, a channel list up to its empty name, a preview by its pixel count.
+// Types read by the size field (strings, vectors, opaque ones) always match.
+bool exrValueMatchesSize(const std::string& type, const uint8_t* value, size_t length) {
+    static const std::pair<const char*, size_t> kFixed[] = {
+        {"box2i", 16}, {"box2f", 16}, {"chromaticities", 32}, {"compression", 1}, {"deepImageState", 1}, {"double", 8},
+        {"envmap", 1}, {"float", 4}, {"int", 4}, {"keycode", 28}, {"lineOrder", 1}, {"m33f", 36}, {"m33d", 72},
+        {"m44f", 64}, {"m44d", 128}, {"rational", 8}, {"tiledesc", 9}, {"timecode", 8}, {"v2i", 8}, {"v2f", 8},
+        {"v2d", 16}, {"v3i", 12}, {"v3f", 12}, {"v3d", 24}};
+    for (const auto& [name, bytes] : kFixed)
+        if (type == name) return length == bytes;
+    if (type == "chlist") {  // (name NUL, 16 bytes of channel)*, then NUL
+        size_t pos = 0;
+        while (pos < length && value[pos] != 0) {
+            const void* end = std::memchr(value + pos, 0, length - pos);
+            if (!end) return false;
+            pos = size_t(static_cast<const uint8_t*>(end) - value) + 1 + 16;
+        }
+        return pos + 1 == length;
+    }
+    if (type == "preview") {  // uint32 width, height, then RGBA8 pixels
+        if (length < 8) return false;
+        auto u32 = [&](size_t at) { return uint64_t(value[at]) | uint64_t(value[at + 1]) << 8 | uint64_t(value[at + 2]) << 16 | uint64_t(value[at + 3]) << 24; };
+        return 8 + u32(0) * u32(4) * 4 == length;
+    }
+    return true;
+}
+
+// Names and types longer than OpenEXR's limit (31 bytes, 255 with the long-names flag) are
+// refused: OpenEXR would stop reading them there, out of step with this walk.
+Status checkExrAttributeSizes(const std::string& path, const uint8_t* data, size_t size, int version) {
+    const size_t maxName = (version & Imf::LONG_NAMES_FLAG) ? 255 : 31;
+    size_t pos = 8;  // magic number and version
+    auto cString = [&](std::string* out) {
+        const void* end = pos < size ? std::memchr(data + pos, 0, std::min(size - pos, maxName + 1)) : nullptr;
+        if (!end) return false;
+        out->assign(reinterpret_cast<const char*>(data + pos), static_cast<const uint8_t*>(end) - (data + pos));
+        pos += out->size() + 1;
+        return true;
+    };
+    while (pos < size && data[pos] != 0) {
+        std::string name, type;
+        if (!cString(&name) || !cString(&type) || size - pos < 4)
+            return fileError(path, "not a readable EXR: a header attribute's name is over " + std::to_string(maxName) + " bytes or cut short");
+        const uint8_t* le = data + pos;  // little endian
+        const int32_t length = int32_t(uint32_t(le[0]) | uint32_t(le[1]) << 8 | uint32_t(le[2]) << 16 | uint32_t(le[3]) << 24);
+        pos += 4;
+        if (length < 0 || uint64_t(length) > size - pos)
+            return fileError(path, "not a readable EXR: attribute '" + name + "' claims " + std::to_string(length) + " bytes; " +
+                                       std::to_string(size - pos) + " are left in the file");
+        // OpenEXR reads the values of the types it knows by their content, not by the size
+        // field: the two must agree, or its reading and this walk part ways.
+        if (!exrValueMatchesSize(type, data + pos, size_t(length)))
+            return fileError(path, "not a readable EXR: attribute '" + name + "' of type " + type + " does not fill its " +
+                                       std::to_string(length) + " bytes");
+        pos += size_t(length);
+    }
+    if (pos >= size) return fileError(path, "not a readable EXR: the header is cut short");
+    return Status::ok();
+}
+
 Result<Image> decodeExr(const std::string& path, const uint8_t* data, size_t size, uint64_t maxPixels) {
     try {
         // OpenEXR refuses headers over this size itself, before it allocates its offset tables.
         Imf::Header::setMaxImageSize(int(kMaxImageSide), int(kMaxImageSide));
         Imf::Header::setMaxTileSize(int(kMaxImageSide), int(kMaxImageSide));
         MemoryIStream stream(path, data, size);
-        Imf::InputFile file(stream);
-        const Imath::Box2i dw = file.header().dataWindow();
+        // The header alone first: OpenEXR sizes its line and tile buffers from it while opening
+        // the file, so the size limit must hold before then (a 300-byte file could claim a
+        // 65536-wide image of 65536-pixel tiles and cost seconds of zero-filling).
+        int magic = 0, version = 0;
+        Imf::Xdr::read<Imf::StreamIO>(stream, magic);
+        Imf::Xdr::read<Imf::StreamIO>(stream, version);
+        if (magic != Imf::MAGIC) return fileError(path, "not a readable EXR: no OpenEXR magic number");
+        if (Imf::isNonImage(version) || Imf::isMultiPart(version))
+            return fileError(path, "deep or multi-part EXR files are not supported");
+        SFX_TRY(checkExrAttributeSizes(path, data, size, version));
+        Imf::Header peek;
+        peek.readFrom(stream, version);
+        const Imath::Box2i dw = peek.dataWindow();
         // In 64 bits: a data window from INT_MIN to INT_MAX overflows int.
         const int64_t w = int64_t(dw.max.x) - dw.min.x + 1, h = int64_t(dw.max.y) - dw.min.y + 1;
         if (w <= 0 || h <= 0) return fileError(path, "EXR has an empty data window");
         SFX_TRY(checkDecodedSize(path, "EXR", uint64_t(w), uint64_t(h), maxPixels));
+        if (peek.hasTileDescription())
+            SFX_TRY(checkDecodedSize(path, "EXR tile", peek.tileDescription().xSize, peek.tileDescription().ySize, maxPixels));
+        stream.seekg(0);
+        Imf::InputFile file(stream);
         std::vector<std::string> names;
         for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) names.push_back(it.name());
         // Conventional orders first; otherwise the channels in the file's (alphabetical) order.
