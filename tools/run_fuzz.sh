@@ -7,7 +7,8 @@
 # (-timeout) or out-of-memory input is copied into tests/fuzz/corpus/<target>/ as
 # regression-<kind>-<hash>, so the corpus replay fails until the bug is fixed; the script
 # then goes on with the next target and exits non-zero. A table of the results is printed
-# at the end and written to build-fuzz/fuzz-results.md (docs/robustness.md quotes it).
+# at the end and written to build-fuzz/fuzz-results.md (every target run so far; docs/robustness.md
+# quotes it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$PWD
@@ -21,11 +22,7 @@ if [ ${#targets[@]} -eq 0 ]; then
   for dir in tests/fuzz/corpus/*/; do targets+=("$(basename "$dir")"); done
 fi
 
-results=build-fuzz/fuzz-results.md
-{
-  echo "| target | executions | exec/s | seconds | corpus (seeds → end) | crashes / hangs |"
-  echo "|---|---:|---:|---:|---|---:|"
-} >"$results"
+# One row per target (build-fuzz/fuzz-result-<target>.md), so runs of different targets add up.
 failed=0
 for target in "${targets[@]}"; do
   binary=build-fuzz/tests/fuzz/fuzz_$target
@@ -57,8 +54,14 @@ for target in "${targets[@]}"; do
     failed=1
     echo "run_fuzz: fuzz_$target failed (exit $status); $found input(s) added to $seeds as regression-*: fix the bug, then rerun"
   fi
-  echo "| $target | ${execs:-?} | ${rate:-?} | $seconds | $nseeds → $(ls "$work" | wc -l) | $found |" >>"$results"
+  echo "| $target | ${execs:-?} | ${rate:-?} | $seconds | $nseeds → $(ls "$work" | wc -l) | $found |" >"build-fuzz/fuzz-result-$target.md"
 done
+results=build-fuzz/fuzz-results.md
+{
+  echo "| target | executions | exec/s | seconds | corpus (seeds → end) | crashes / hangs |"
+  echo "|---|---:|---:|---:|---|---:|"
+  cat build-fuzz/fuzz-result-*.md
+} >"$results"
 echo
 cat "$results"
 exit "$failed"

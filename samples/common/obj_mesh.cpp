@@ -43,15 +43,22 @@ Result<Mesh> parseObj(const std::string& path, const std::string& text) {
             next += count;
         }
     }
-    // The OBJ has no normals: area-weighted smooth vertex normals from the faces.
+    // The OBJ has no normals: area-weighted smooth vertex normals from the faces, summed in
+    // double precision: in float, the cross product of edges near FLT_MAX overflows to
+    // infinity and the normal comes out NaN.
+    std::vector<glm::dvec3> normals(m.vertices.size(), glm::dvec3(0.0));
     for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
-        Vertex &a = m.vertices[m.indices[t]], &b = m.vertices[m.indices[t + 1]], &c = m.vertices[m.indices[t + 2]];
-        const glm::vec3 n = glm::cross(b.position - a.position, c.position - a.position);
-        a.normal += n;
-        b.normal += n;
-        c.normal += n;
+        const uint32_t ia = m.indices[t], ib = m.indices[t + 1], ic = m.indices[t + 2];
+        const glm::dvec3 a(m.vertices[ia].position), b(m.vertices[ib].position), c(m.vertices[ic].position);
+        const glm::dvec3 n = glm::cross(b - a, c - a);
+        normals[ia] += n;
+        normals[ib] += n;
+        normals[ic] += n;
     }
-    for (Vertex& v : m.vertices) v.normal = glm::length(v.normal) > 0 ? glm::normalize(v.normal) : glm::vec3(0, 1, 0);
+    for (size_t i = 0; i < m.vertices.size(); ++i) {
+        const double length = glm::length(normals[i]);
+        m.vertices[i].normal = length > 0 && std::isfinite(length) ? glm::vec3(normals[i] / length) : glm::vec3(0, 1, 0);
+    }
     return m;
 }
 
