@@ -106,8 +106,9 @@ Result<Image> decodePfm(const std::string& path, const uint8_t* data, size_t siz
     in >> magic >> w >> h >> scale;
     if (!in || (magic != "PF" && magic != "Pf"))
         return fileError(path, "not a PFM file (expected 'PF' or 'Pf', width, height and scale)");
-    if (w <= 0 || h <= 0) return fileError(path, "PFM size " + std::to_string(w) + "x" + std::to_string(h) + " is not positive");
-    SFX_TRY(checkDecodedSize(path, "PFM", uint64_t(w), uint64_t(h), maxPixels));
+    // Sides first, so the byte count below cannot overflow.
+    if (w <= 0 || h <= 0 || w > static_cast<long long>(kMaxImageSide) || h > static_cast<long long>(kMaxImageSide))
+        return fileError(path, "PFM size " + std::to_string(w) + "x" + std::to_string(h) + " is outside 1.." + std::to_string(kMaxImageSide));
     if (scale == 0 || !std::isfinite(scale)) return fileError(path, "PFM scale must be a non-zero number");
     in.get();  // the single whitespace character after the scale
     const uint32_t channels = magic == "PF" ? 3 : 1;
@@ -119,6 +120,9 @@ Result<Image> decodePfm(const std::string& path, const uint8_t* data, size_t siz
         return fileError(path, "PFM header says " + std::to_string(w) + "x" + std::to_string(h) + "x" +
                                    std::to_string(channels) + " floats (" + std::to_string(needed) + " bytes) but the file holds " +
                                    std::to_string(std::max<long long>(available, 0)) + " bytes of data");
+    // Uncompressed, so the data check above already bounds the allocation by the file's size;
+    // the limit is the same as for the other formats.
+    SFX_TRY(checkDecodedSize(path, "PFM", uint64_t(w), uint64_t(h), maxPixels));
     Image image(uint32_t(w), uint32_t(h), channels);
     const size_t rowValues = size_t(w) * channels;
     const bool littleEndian = scale < 0;
