@@ -94,7 +94,7 @@ Status GlDevice::beginTimer(TimerHandle h) {
 
 Status GlDevice::endTimer(TimerHandle h) {
     SFX_TRY(timers_.check(h, "timer"));
-    if (!timers_.get(h).begun) return {StatusCode::InvalidArgument, "endTimer: timer was not begun"};
+    if (!timers_.get(h).begun) return validation::fail(validation::Error::TimerNotBegun, {});
     SFX_TRY(enter());
     GL(glFinish);
     GlTimer& t = timers_.get(h);
@@ -108,25 +108,27 @@ Status GlDevice::endTimer(TimerHandle h) {
 Result<TimerReading> GlDevice::readTimer(TimerHandle h) {
     SFX_TRY(timers_.check(h, "timer"));
     const GlTimer& t = timers_.get(h);
-    if (t.lastMs < 0) return Status{StatusCode::InvalidArgument, "readTimer: timer has no finished measurement"};
+    if (t.lastMs < 0) return validation::fail(validation::Error::TimerNoMeasurement, {});
     return TimerReading{t.lastMs, caps_.timing};
 }
 
 // ---- Commands: every check before any GL work, then the encoding ---------------------------
 
 Status GlDevice::renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) {
+    SFX_TRY(validation::renderPass(pass, draws, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
+    for (size_t i = 0; i < draws.size(); ++i)
+        SFX_TRY(checkProgramAlive(pipelines_.get(draws[i].pipeline),
+                                  draws.size() == 1 ? std::string("DrawDesc.pipeline") : "DrawDesc[" + str(i) + "].pipeline"));
     SFX_TRY(enter());
-    PassTargets targets;
-    Status s = checkPass(pass, draws, &targets);
-    if (s) s = encodeRenderPass(pass, draws, targets);
-    return takeDeviceError(s);
+    return takeDeviceError(encodeRenderPass(pass, draws, passTargets(pass)));
 }
 
 Status GlDevice::dispatch(const DispatchDesc& d) {
-    Result<const GlProgram*> program = checkDispatch(d);
-    if (!program) return program.status();
+    SFX_TRY(validation::dispatch(d, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
+    const GlPipeline& pipeline = pipelines_.get(d.pipeline);
+    SFX_TRY(checkProgramAlive(pipeline, "DispatchDesc.pipeline"));
     SFX_TRY(enter());
-    encodeDispatch(*program.value(), d);
+    encodeDispatch(programs_.get(pipeline.program), d);
     return takeDeviceError(Status::ok());
 }
 

@@ -9,6 +9,7 @@ namespace sfx::gl {
 Result<ProgramHandle> GlDevice::createProgram(const CompiledProgram& program) {
     // The shared check names what the device lacks before looking for the dialect's text.
     SFX_TRY(validation::program(program, caps_));
+    SFX_TRY(checkTextureUnits(program));
     SFX_TRY(enter());
     Result<GLuint> linked = linkProgram(program);
     if (!linked) return takeDeviceError(linked.status());
@@ -18,7 +19,7 @@ Result<ProgramHandle> GlDevice::createProgram(const CompiledProgram& program) {
         gl_.glDeleteProgram(name);
         return s;
     }
-    return programs_.insert(GlProgram{program.name, name, program.isCompute(), program.resources});
+    return programs_.insert(GlProgram{validation::programInfo(program), name});
 }
 
 Status GlDevice::destroyProgram(ProgramHandle h) {
@@ -57,8 +58,8 @@ Result<GLuint> GlDevice::compileShader(const std::string& programName, GLenum ty
     GL(glGetShaderInfoLog, shader, GLsizei(log.size()), nullptr, log.data());
     GL(glDeleteShader, shader);
     const char* stage = type == GL_VERTEX_SHADER ? "vertex" : type == GL_FRAGMENT_SHADER ? "fragment" : "compute";
-    return Status{StatusCode::ShaderError, "program '" + programName + "' " + stage + " stage failed to compile (" +
-                                               toString(caps_.dialect) + "): " + log.c_str()};
+    // GL only: Vulkan consumes SPIR-V, checked by SPIRV-Tools instead (vulkan_pipelines.cpp).
+    return validation::fail(validation::Error::ShaderCompile, {programName, stage, toString(caps_.dialect), log.c_str()});
 }
 
 Result<GLuint> GlDevice::buildProgram(const std::string& programName,
@@ -87,8 +88,7 @@ Result<GLuint> GlDevice::buildProgram(const std::string& programName,
     std::string log(size_t(std::max(length, 1)), '\0');
     GL(glGetProgramInfoLog, program, GLsizei(log.size()), nullptr, log.data());
     GL(glDeleteProgram, program);
-    return Status{StatusCode::ShaderError, "program '" + programName + "' failed to link (" +
-                                               toString(caps_.dialect) + "): " + log.c_str()};
+    return validation::fail(validation::Error::ShaderLink, {programName, toString(caps_.dialect), log.c_str()});
 }
 
 // SPIR-V to ESSL 300 / GLSL 330 drops binding qualifiers, so bind by the reflected GL name
@@ -129,12 +129,11 @@ void GlDevice::bindResourcesByName(GLuint program, const std::vector<ShaderResou
 
 Result<PipelineHandle> GlDevice::createGraphicsPipeline(const GraphicsPipelineDesc& desc) {
     SFX_TRY(programs_.check(desc.program, "GraphicsPipelineDesc.program"));
-    if (programs_.get(desc.program).compute)
-        return Status{StatusCode::InvalidArgument, "GraphicsPipelineDesc.program is a compute program"};
-    SFX_TRY(validation::graphicsPipelineShape(desc, caps_));
-    SFX_TRY(validation::graphicsPipelineState(desc, caps_));
+    Result<validation::PipelineInfo> info = validation::graphicsPipeline(desc, programs_.get(desc.program).info, caps_);
+    if (!info) return info.status();
     SFX_TRY(enter());
     GlPipeline p;
+    p.info = std::move(info.value());
     p.program = desc.program;
     p.desc = desc;
     p.desc.debugName = "";
@@ -153,10 +152,10 @@ Result<PipelineHandle> GlDevice::createGraphicsPipeline(const GraphicsPipelineDe
 
 Result<PipelineHandle> GlDevice::createComputePipeline(const ComputePipelineDesc& desc) {
     SFX_TRY(programs_.check(desc.program, "ComputePipelineDesc.program"));
-    if (!programs_.get(desc.program).compute)
-        return Status{StatusCode::InvalidArgument, "ComputePipelineDesc.program is not a compute program"};
+    Result<validation::PipelineInfo> info = validation::computePipeline(programs_.get(desc.program).info);
+    if (!info) return info.status();
     GlPipeline p;
-    p.compute = true;
+    p.info = std::move(info.value());
     p.program = desc.program;
     return pipelines_.insert(std::move(p));
 }
