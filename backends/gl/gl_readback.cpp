@@ -23,7 +23,7 @@ Status GlDevice::readTexture(TextureHandle h, uint32_t mip, void* out, size_t by
 Status GlDevice::readBuffer(BufferHandle h, uint64_t offset, void* out, size_t bytes) {
     SFX_TRY(buffers_.check(h, "buffer"));
     const GlBuffer& b = buffers_.get(h);
-    SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "readBuffer range"));
+    SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "readBuffer(offset, bytes)"));
     SFX_TRY(validation::pointer(out, "out", "room for the bytes read"));
     SFX_TRY(enter());
     // GL ES has no glGetBufferSubData; mapping for reading works on both APIs.

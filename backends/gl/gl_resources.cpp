@@ -92,7 +92,7 @@ Status GlDevice::destroyBuffer(BufferHandle h) {
 Status GlDevice::writeBuffer(BufferHandle h, uint64_t offset, const void* data, size_t bytes) {
     SFX_TRY(buffers_.check(h, "buffer"));
     const GlBuffer& b = buffers_.get(h);
-    SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "writeBuffer range"));
+    SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "writeBuffer(offset, bytes)"));
     SFX_TRY(validation::pointer(data, "data", "the bytes to write"));
     SFX_TRY(enter());
     GL(glBindBuffer, GL_COPY_WRITE_BUFFER, b.name);

@@ -87,7 +87,7 @@ public:
     Status writeBuffer(BufferHandle h, uint64_t offset, const void* data, size_t bytes) override {
         SFX_TRY(buffers_.check(h, "buffer"));
         NullBuffer& b = buffers_.get(h);
-        SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "writeBuffer range"));
+        SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "writeBuffer(offset, bytes)"));
         SFX_TRY(validation::pointer(data, "data", "the bytes to write"));
         std::memcpy(b.bytes.data() + offset, data, bytes);
         return Status::ok();
@@ -95,7 +95,7 @@ public:
     Status readBuffer(BufferHandle h, uint64_t offset, void* out, size_t bytes) override {
         SFX_TRY(buffers_.check(h, "buffer"));
         NullBuffer& b = buffers_.get(h);
-        SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "readBuffer range"));
+        SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "readBuffer(offset, bytes)"));
         SFX_TRY(validation::pointer(out, "out", "room for the bytes read"));
         std::memcpy(out, b.bytes.data() + offset, bytes);
         return Status::ok();
@@ -187,9 +187,11 @@ DeviceCaps defaultCaps(CapabilityCeiling ceiling) {
     c.platform = "null";
     c.apiName = "null";
     c.deviceName = "null device";
-    c.dialect = ShaderDialect::Glsl450;
-    c.ceiling = ceiling;
     const bool full = ceiling == CapabilityCeiling::None;
+    // Under the ceiling the dialect a GL ES 3.0-class desktop GL compiles, as the GL backend does,
+    // so high-tier-only programs are refused the same way.
+    c.dialect = full ? ShaderDialect::Glsl450 : ShaderDialect::Glsl330;
+    c.ceiling = ceiling;
     c.computeShaders = full;
     c.storageBuffers = full;
     c.atomics = full;

@@ -69,7 +69,7 @@ Status VulkanDevice::destroyBuffer(BufferHandle h) {
 Status VulkanDevice::writeBuffer(BufferHandle h, uint64_t offset, const void* data, size_t bytes) {
     SFX_TRY(buffers_.check(h, "buffer"));
     VulkanBuffer& b = buffers_.get(h);
-    SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "writeBuffer range"));
+    SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "writeBuffer(offset, bytes)"));
     SFX_TRY(validation::pointer(data, "data", "the bytes to write"));
     return stageBufferWrite(b, offset, data, bytes);
 }
@@ -77,7 +77,7 @@ Status VulkanDevice::writeBuffer(BufferHandle h, uint64_t offset, const void* da
 Status VulkanDevice::readBuffer(BufferHandle h, uint64_t offset, void* out, size_t bytes) {
     SFX_TRY(buffers_.check(h, "buffer"));
     VulkanBuffer& b = buffers_.get(h);
-    SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "readBuffer range"));
+    SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "readBuffer(offset, bytes)"));
     SFX_TRY(validation::pointer(out, "out", "room for the bytes read"));
     SFX_TRY(noHostCommandBuffer("readBuffer"));
     return readBackBuffer(b, offset, out, bytes);
