@@ -20,16 +20,6 @@ struct MipUse {
     std::string argument;  // who uses it
 };
 
-const char* kindWords(ResourceKind k) {
-    switch (k) {
-    case ResourceKind::UniformBuffer: return "uniform buffer";
-    case ResourceKind::SampledTexture: return "sampled texture";
-    case ResourceKind::StorageBuffer: return "storage buffer";
-    case ResourceKind::StorageImage: return "storage image";
-    }
-    return "resource";
-}
-
 const char* bindingSetField(ResourceKind k) {
     switch (k) {
     case ResourceKind::UniformBuffer: return "uniformBuffers";
@@ -58,7 +48,7 @@ public:
         for (const ShaderResource& r : pipeline_.resources)
             if (r.binding == binding) {
                 if (r.kind != kind)
-                    return fail(Error::BindingKind, {argument, str(binding), pipeline_.programName, kindWords(r.kind),
+                    return fail(Error::BindingKind, {argument, str(binding), pipeline_.programName, toString(r.kind),
                                                      r.name, bindingSetField(r.kind)});
                 return &r;
             }
@@ -72,7 +62,7 @@ public:
         for (const ShaderResource& r : pipeline_.resources)
             if (std::none_of(given_.begin(), given_.end(), [&](const auto& g) { return g.first == r.binding; }))
                 return fail(Error::BindingMissing, {where_, bindingSetField(r.kind), str(r.binding), pipeline_.programName,
-                                                    kindWords(r.kind), r.name});
+                                                    toString(r.kind), r.name});
         return Status::ok();
     }
 
