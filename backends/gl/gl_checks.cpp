@@ -3,8 +3,6 @@
 //   checkTextureUnits  GL uses a sampled texture's binding number as its texture unit, so a
 //                      binding at or past GL_MAX_TEXTURE_IMAGE_UNITS cannot be bound at all. On
 //                      Vulkan a binding number is only a descriptor slot, with no such limit.
-//   checkProgramAlive  a GL pipeline draws with its program's GL object, which destroyProgram
-//                      deletes; a Vulkan pipeline holds its own compiled state and outlives it.
 #include "gl_driver.hpp"
 
 namespace sfx::gl {
@@ -14,12 +12,6 @@ Status GlDevice::checkTextureUnits(const CompiledProgram& program) const {
         if (r.kind == ResourceKind::SampledTexture && r.binding >= caps_.limits.maxTextureBindings)
             return validation::fail(validation::Error::ProgramTextureUnit,
                                     {program.name, r.name, str(r.binding), str(caps_.limits.maxTextureBindings - 1)});
-    return Status::ok();
-}
-
-Status GlDevice::checkProgramAlive(const GlPipeline& pipeline, const std::string& argument) const {
-    if (!programs_.check(pipeline.program, "program"))
-        return validation::fail(validation::Error::PipelineProgramDestroyed, {argument, pipeline.info.programName});
     return Status::ok();
 }
 

@@ -32,6 +32,7 @@ GlDevice::~GlDevice() {
     buffers_.forEachAlive([&](GlBuffer& b) { gl_.glDeleteBuffers(1, &b.name); });
     samplers_.forEachAlive([&](GlSampler& s) { gl_.glDeleteSamplers(1, &s.name); });
     programs_.forEachAlive([&](GlProgram& p) { gl_.glDeleteProgram(p.name); });
+    for (GLuint p : destroyedPrograms_) gl_.glDeleteProgram(p);
     pipelines_.forEachAlive([&](GlPipeline& p) { gl_.glDeleteVertexArrays(1, &p.vao); });
     for (auto& [key, fbo] : fbos_) gl_.glDeleteFramebuffers(1, &fbo);
     if (nearestSampler_) gl_.glDeleteSamplers(1, &nearestSampler_);
@@ -116,19 +117,14 @@ Result<TimerReading> GlDevice::readTimer(TimerHandle h) {
 
 Status GlDevice::renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) {
     SFX_TRY(validation::renderPass(pass, draws, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
-    for (size_t i = 0; i < draws.size(); ++i)
-        SFX_TRY(checkProgramAlive(pipelines_.get(draws[i].pipeline),
-                                  draws.size() == 1 ? std::string("DrawDesc.pipeline") : "DrawDesc[" + str(i) + "].pipeline"));
     SFX_TRY(enter());
     return takeDeviceError(encodeRenderPass(pass, draws, passTargets(pass)));
 }
 
 Status GlDevice::dispatch(const DispatchDesc& d) {
     SFX_TRY(validation::dispatch(d, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
-    const GlPipeline& pipeline = pipelines_.get(d.pipeline);
-    SFX_TRY(checkProgramAlive(pipeline, "DispatchDesc.pipeline"));
     SFX_TRY(enter());
-    encodeDispatch(programs_.get(pipeline.program), d);
+    encodeDispatch(pipelines_.get(d.pipeline).program, d);
     return takeDeviceError(Status::ok());
 }
 

@@ -52,7 +52,7 @@ struct GlProgram {
 };
 struct GlPipeline {
     validation::PipelineInfo info;  // what the shared validation checks draws and dispatches against
-    ProgramHandle program;          // GL links the program into the pipeline: it must stay alive
+    GLuint program = 0;             // the program's GL object, kept until its last pipeline goes
     GraphicsPipelineDesc desc;  // graphics state; program field unused
     GLuint vao = 0;
 };
@@ -148,6 +148,11 @@ private:
     void setSamplerState(GLuint s, const SamplerDesc& d);
 
     // ---- Programs (gl_programs.cpp) -------------------------------------------------------
+    // A GL pipeline draws with its program's GL object, while the HAL lets a program be destroyed
+    // before its pipelines (as a Vulkan pipeline holds its own compiled state): the object is
+    // deleted when the program and the last pipeline using it are both gone.
+    void usePipelineProgram(GLuint program) { ++programUsers_[program]; }
+    void releaseProgramObject(GLuint program, bool programDestroyed);
     // Compiles and links `program`'s text for the device's dialect and binds its resources by name.
     Result<GLuint> linkProgram(const CompiledProgram& program);
     Result<GLuint> compileShader(const std::string& programName, GLenum type, const std::string& source);
@@ -156,7 +161,6 @@ private:
 
     // ---- The checks only GL makes (gl_checks.cpp) -----------------------------------------
     Status checkTextureUnits(const CompiledProgram& program) const;
-    Status checkProgramAlive(const GlPipeline& pipeline, const std::string& argument) const;
 
     // ---- Commands (gl_commands.cpp) -------------------------------------------------------
     // The attachments of a render pass the shared validation accepted, and their one extent.
@@ -166,7 +170,7 @@ private:
     void unbindResources(const BindingSet& b);
     Status encodeRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, const PassTargets& targets);
     void encodeDraw(const DrawDesc& d);
-    void encodeDispatch(const GlProgram& program, const DispatchDesc& d);
+    void encodeDispatch(GLuint program, const DispatchDesc& d);
 
     // ---- Framebuffer cache (gl_framebuffers.cpp) ------------------------------------------
     GLenum depthAttachmentPoint(Format f) const;
@@ -197,6 +201,8 @@ private:
     HandlePool<PipelineTag, GlPipeline> pipelines_;
     HandlePool<TimerTag, GlTimer> timers_;
 
+    std::map<GLuint, uint32_t> programUsers_;  // pipelines per GL program object
+    std::set<GLuint> destroyedPrograms_;       // destroyed programs whose pipelines still draw
     std::map<FboKey, GLuint> fbos_;
     GLuint nearestSampler_ = 0;
     GLuint emptyVao_ = 0;

@@ -26,8 +26,17 @@ Status GlDevice::destroyProgram(ProgramHandle h) {
     SFX_TRY(programs_.check(h, "program"));
     SFX_TRY(enter());
     GlProgram p = programs_.remove(h);
-    GL(glDeleteProgram, p.name);
+    releaseProgramObject(p.name, true);
     return takeDeviceError(Status::ok());
+}
+
+void GlDevice::releaseProgramObject(GLuint program, bool programDestroyed) {
+    if (programDestroyed) destroyedPrograms_.insert(program);
+    auto users = programUsers_.find(program);
+    if (!programDestroyed && users != programUsers_.end() && --users->second == 0) programUsers_.erase(users);
+    if (programUsers_.count(program) || !destroyedPrograms_.count(program)) return;
+    destroyedPrograms_.erase(program);
+    GL(glDeleteProgram, program);
 }
 
 Result<GLuint> GlDevice::linkProgram(const CompiledProgram& program) {
@@ -134,7 +143,7 @@ Result<PipelineHandle> GlDevice::createGraphicsPipeline(const GraphicsPipelineDe
     SFX_TRY(enter());
     GlPipeline p;
     p.info = std::move(info.value());
-    p.program = desc.program;
+    p.program = programs_.get(desc.program).name;
     p.desc = desc;
     p.desc.debugName = "";
     // The VAO holds which attributes are enabled; the buffer is attached per draw.
@@ -147,6 +156,7 @@ Result<PipelineHandle> GlDevice::createGraphicsPipeline(const GraphicsPipelineDe
         gl_.glDeleteVertexArrays(1, &p.vao);
         return s;
     }
+    usePipelineProgram(p.program);
     return pipelines_.insert(std::move(p));
 }
 
@@ -156,7 +166,8 @@ Result<PipelineHandle> GlDevice::createComputePipeline(const ComputePipelineDesc
     if (!info) return info.status();
     GlPipeline p;
     p.info = std::move(info.value());
-    p.program = desc.program;
+    p.program = programs_.get(desc.program).name;
+    usePipelineProgram(p.program);
     return pipelines_.insert(std::move(p));
 }
 
@@ -165,6 +176,7 @@ Status GlDevice::destroyPipeline(PipelineHandle h) {
     SFX_TRY(enter());
     GlPipeline p = pipelines_.remove(h);
     if (p.vao) GL(glDeleteVertexArrays, 1, &p.vao);
+    releaseProgramObject(p.program, false);
     return takeDeviceError(Status::ok());
 }
 

@@ -106,7 +106,6 @@ constexpr ErrorEntry kTable[] = {
     {E::ShaderLink, C::ShaderError, "ShaderLink", "program '{}' failed to link ({}): {}"},
     {E::HostCommandBufferRead, C::UnsupportedFeature, "HostCommandBufferRead", "{} needs a submit, but the device records into a host command buffer; allowed after the host submits it and calls flush()"},
     {E::ProgramTextureUnit, C::InvalidArgument, "ProgramTextureUnit", "program '{}' samples '{}' at binding {}; allowed bindings [0, {}], the texture units of this device"},
-    {E::PipelineProgramDestroyed, C::StaleHandle, "PipelineProgramDestroyed", "{}: the program of the pipeline ('{}') was destroyed; allowed a pipeline whose program is alive"},
     {E::TimerPoolFull, C::InvalidArgument, "TimerPoolFull", "createTimer: all {} timers of the device are in use; allowed after destroying one"},
     {E::TimerHostPending, C::InvalidArgument, "TimerHostPending", "readTimer: the host command buffer holding the timer has not finished; allowed once the host's submit has completed"},
 };

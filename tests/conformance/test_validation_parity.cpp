@@ -49,3 +49,22 @@ TEST_CASE("validation parity: every row reads as a sentence with its code", "[ha
                    m.find("needs") != std::string_view::npos));
     }
 }
+
+TEST_CASE("validation parity: a pipeline outlives its program on every backend", "[hal][validation]") {
+    test::Objects o(test::device());
+    GraphicsPipelineDesc pd;
+    pd.program = test::device().createProgram(test::shaderProgram("copy", Tier::Current)).value();
+    pd.colorFormats = {Format::RGBA8};
+    Result<PipelineHandle> pipeline = test::device().createGraphicsPipeline(pd);
+    REQUIRE(pipeline.isOk());
+    SFX_REQUIRE_OK(test::device().destroyProgram(pd.program));
+    DrawDesc d;
+    d.pipeline = pipeline.value();
+    d.bindings.textures = {{0, o.texture(8, 8, Format::RGBA8, kTextureSampled)}};
+    RenderPassDesc pass;
+    pass.colors = {{o.texture(8, 8, Format::RGBA8, test::kRenderable), 0}};
+    SFX_REQUIRE_OK(test::device().renderPass(pass, {&d, 1}));
+    SFX_REQUIRE_OK(test::device().flush());
+    SFX_REQUIRE_OK(test::device().destroyPipeline(pipeline.value()));
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}

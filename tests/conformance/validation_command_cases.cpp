@@ -427,22 +427,6 @@ std::vector<ValidationCase> pipelineAndCommandCases() {
             return tryProgram(o, p);
         },
         isGl);
-    add("pipeline whose program was destroyed", Error::PipelineProgramDestroyed, {},
-        fixed("DrawDesc.pipeline: the program of the pipeline ('copy') was destroyed; allowed a pipeline whose program is alive"),
-        [](Objects& o) {
-            GraphicsPipelineDesc pd;
-            pd.program = o.dev.createProgram(shaderProgram("copy", Tier::Current)).value();
-            pd.colorFormats = {Format::RGBA8};
-            PipelineHandle pl = o.dev.createGraphicsPipeline(pd).value();
-            (void)o.dev.destroyProgram(pd.program);
-            DrawDesc d;
-            d.pipeline = pl;
-            d.bindings.textures = {{gen::copy::uSource, o.texture(8, 8, Format::RGBA8, kTextureSampled)}};
-            Status s = drawOnce(o, d);
-            (void)o.dev.destroyPipeline(pl);
-            return s;
-        },
-        isGl);
     add("more timers than the query pool holds", Error::TimerPoolFull, {},
         fixed("createTimer: all 256 timers of the device are in use; allowed after destroying one"), [](Objects& o) {
             std::vector<TimerHandle> timers;

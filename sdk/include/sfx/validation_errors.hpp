@@ -107,7 +107,6 @@ enum class Error : uint32_t {
     ShaderLink,
     HostCommandBufferRead,
     ProgramTextureUnit,
-    PipelineProgramDestroyed,
     TimerPoolFull,
     TimerHostPending,
     Count
