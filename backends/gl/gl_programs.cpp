@@ -9,6 +9,7 @@ namespace sfx::gl {
 Result<ProgramHandle> GlDevice::createProgram(const CompiledProgram& program) {
     // The shared check names what the device lacks before looking for the dialect's text.
     SFX_TRY(validation::program(program, caps_));
+    SFX_TRY(checkTextureUnits(program));
     SFX_TRY(enter());
     Result<GLuint> linked = linkProgram(program);
     if (!linked) return takeDeviceError(linked.status());
@@ -18,15 +19,24 @@ Result<ProgramHandle> GlDevice::createProgram(const CompiledProgram& program) {
         gl_.glDeleteProgram(name);
         return s;
     }
-    return programs_.insert(GlProgram{program.name, name, program.isCompute(), program.resources});
+    return programs_.insert(GlProgram{validation::programInfo(program), name});
 }
 
 Status GlDevice::destroyProgram(ProgramHandle h) {
     SFX_TRY(programs_.check(h, "program"));
     SFX_TRY(enter());
     GlProgram p = programs_.remove(h);
-    GL(glDeleteProgram, p.name);
+    releaseProgramObject(p.name, true);
     return takeDeviceError(Status::ok());
+}
+
+void GlDevice::releaseProgramObject(GLuint program, bool programDestroyed) {
+    if (programDestroyed) destroyedPrograms_.insert(program);
+    auto users = programUsers_.find(program);
+    if (!programDestroyed && users != programUsers_.end() && --users->second == 0) programUsers_.erase(users);
+    if (programUsers_.count(program) || !destroyedPrograms_.count(program)) return;
+    destroyedPrograms_.erase(program);
+    GL(glDeleteProgram, program);
 }
 
 Result<GLuint> GlDevice::linkProgram(const CompiledProgram& program) {
@@ -57,8 +67,8 @@ Result<GLuint> GlDevice::compileShader(const std::string& programName, GLenum ty
     GL(glGetShaderInfoLog, shader, GLsizei(log.size()), nullptr, log.data());
     GL(glDeleteShader, shader);
     const char* stage = type == GL_VERTEX_SHADER ? "vertex" : type == GL_FRAGMENT_SHADER ? "fragment" : "compute";
-    return Status{StatusCode::ShaderError, "program '" + programName + "' " + stage + " stage failed to compile (" +
-                                               toString(caps_.dialect) + "): " + log.c_str()};
+    // GL only: Vulkan consumes SPIR-V, checked by SPIRV-Tools instead (vulkan_pipelines.cpp).
+    return validation::fail(validation::Error::ShaderCompile, {programName, stage, toString(caps_.dialect), log.c_str()});
 }
 
 Result<GLuint> GlDevice::buildProgram(const std::string& programName,
@@ -87,8 +97,7 @@ Result<GLuint> GlDevice::buildProgram(const std::string& programName,
     std::string log(size_t(std::max(length, 1)), '\0');
     GL(glGetProgramInfoLog, program, GLsizei(log.size()), nullptr, log.data());
     GL(glDeleteProgram, program);
-    return Status{StatusCode::ShaderError, "program '" + programName + "' failed to link (" +
-                                               toString(caps_.dialect) + "): " + log.c_str()};
+    return validation::fail(validation::Error::ShaderLink, {programName, toString(caps_.dialect), log.c_str()});
 }
 
 // SPIR-V to ESSL 300 / GLSL 330 drops binding qualifiers, so bind by the reflected GL name
@@ -129,13 +138,12 @@ void GlDevice::bindResourcesByName(GLuint program, const std::vector<ShaderResou
 
 Result<PipelineHandle> GlDevice::createGraphicsPipeline(const GraphicsPipelineDesc& desc) {
     SFX_TRY(programs_.check(desc.program, "GraphicsPipelineDesc.program"));
-    if (programs_.get(desc.program).compute)
-        return Status{StatusCode::InvalidArgument, "GraphicsPipelineDesc.program is a compute program"};
-    SFX_TRY(validation::graphicsPipelineShape(desc, caps_));
-    SFX_TRY(validation::graphicsPipelineState(desc, caps_));
+    Result<validation::PipelineInfo> info = validation::graphicsPipeline(desc, programs_.get(desc.program).info, caps_);
+    if (!info) return info.status();
     SFX_TRY(enter());
     GlPipeline p;
-    p.program = desc.program;
+    p.info = std::move(info.value());
+    p.program = programs_.get(desc.program).name;
     p.desc = desc;
     p.desc.debugName = "";
     // The VAO holds which attributes are enabled; the buffer is attached per draw.
@@ -148,16 +156,18 @@ Result<PipelineHandle> GlDevice::createGraphicsPipeline(const GraphicsPipelineDe
         gl_.glDeleteVertexArrays(1, &p.vao);
         return s;
     }
+    usePipelineProgram(p.program);
     return pipelines_.insert(std::move(p));
 }
 
 Result<PipelineHandle> GlDevice::createComputePipeline(const ComputePipelineDesc& desc) {
     SFX_TRY(programs_.check(desc.program, "ComputePipelineDesc.program"));
-    if (!programs_.get(desc.program).compute)
-        return Status{StatusCode::InvalidArgument, "ComputePipelineDesc.program is not a compute program"};
+    Result<validation::PipelineInfo> info = validation::computePipeline(programs_.get(desc.program).info);
+    if (!info) return info.status();
     GlPipeline p;
-    p.compute = true;
-    p.program = desc.program;
+    p.info = std::move(info.value());
+    p.program = programs_.get(desc.program).name;
+    usePipelineProgram(p.program);
     return pipelines_.insert(std::move(p));
 }
 
@@ -166,6 +176,7 @@ Status GlDevice::destroyPipeline(PipelineHandle h) {
     SFX_TRY(enter());
     GlPipeline p = pipelines_.remove(h);
     if (p.vao) GL(glDeleteVertexArrays, 1, &p.vao);
+    releaseProgramObject(p.program, false);
     return takeDeviceError(Status::ok());
 }
 

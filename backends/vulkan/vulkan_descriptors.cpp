@@ -1,19 +1,15 @@
 // Descriptors: set and pipeline layouts from a program's reflection, descriptor pools and sets,
-// and a BindingSet resolved into descriptor writes (its checks are in vulkan_checks.cpp).
-#include <algorithm>
-
+// and a BindingSet resolved into descriptor writes (checked before by the shared validation).
 #include "sfx/hal_validation.hpp"
-#include "vulkan_checks.hpp"
 #include "vulkan_device_impl.hpp"
 #include "vulkan_formats.hpp"
 
 namespace sfx::vulkan {
 
-Status VulkanDevice::resolveBindings(const BindingSet& set, const VulkanPipeline& pl, const char* what,
-                                     std::vector<ImageUse>& uses, ResolvedBindings& out) {
+Status VulkanDevice::resolveBindings(const BindingSet& set, std::vector<ImageUse>& uses, ResolvedBindings& out) {
+    // Reserved up front: the writes point into images and buffers.
     out.images.reserve(set.textures.size() + set.storageImages.size());
     out.buffers.reserve(set.uniformBuffers.size() + set.storageBuffers.size());
-    ReflectionMatch reflection(pl);
     auto write = [&](uint32_t binding, VkDescriptorType type) {
         VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         w.dstBinding = binding;
@@ -22,19 +18,9 @@ Status VulkanDevice::resolveBindings(const BindingSet& set, const VulkanPipeline
         out.writes.push_back(w);
         return &out.writes.back();
     };
-    (void)what;
-
     for (const TextureBinding& tb : set.textures) {
-        SFX_TRY(textures_.check(tb.texture, "TextureBinding.texture"));
         VulkanTexture& t = textures_.get(tb.texture);
-        SFX_TRY(validation::textureBinding(t.desc, tb));
-        VkSampler sampler = defaultSampler_;
-        if (!tb.sampler.isNull()) {
-            SFX_TRY(samplers_.check(tb.sampler, "TextureBinding.sampler"));
-            sampler = samplers_.get(tb.sampler);
-        }
-        Result<const ShaderResource*> r = reflection.claim(tb.binding, ResourceKind::SampledTexture, "TextureBinding");
-        if (!r) return r.status();
+        const VkSampler sampler = tb.sampler.isNull() ? defaultSampler_ : samplers_.get(tb.sampler);
         Result<VkImageView> view = sampledView(t, tb.baseMip, tb.mipCount);
         if (!view) return view.status();
         out.images.push_back({sampler, view.value(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
@@ -42,37 +28,23 @@ Status VulkanDevice::resolveBindings(const BindingSet& set, const VulkanPipeline
         uses.push_back({&t, tb.baseMip, tb.mipCount, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
     }
     for (const StorageImageBinding& sb : set.storageImages) {
-        SFX_TRY(textures_.check(sb.texture, "StorageImageBinding.texture"));
         VulkanTexture& t = textures_.get(sb.texture);
-        SFX_TRY(validation::mipRange(t.desc, sb.mip, "StorageImageBinding.mip"));
-        Result<const ShaderResource*> r = reflection.claim(sb.binding, ResourceKind::StorageImage, "StorageImageBinding");
-        if (!r) return r.status();
-        SFX_TRY(checkStorageImageUsage(t.desc));
         Result<VkImageView> view = storageView(t, sb.mip);
         if (!view) return view.status();
         out.images.push_back({VK_NULL_HANDLE, view.value(), VK_IMAGE_LAYOUT_GENERAL});
         write(sb.binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE)->pImageInfo = &out.images.back();
         uses.push_back({&t, sb.mip, 1, VK_IMAGE_LAYOUT_GENERAL});
     }
-    auto buffers = [&](const std::vector<BufferBinding>& list, ResourceKind kind, uint32_t usageBit,
-                       uint64_t alignment, uint64_t maxRange) -> Status {
+    auto buffers = [&](const std::vector<BufferBinding>& list, ResourceKind kind) {
         for (const BufferBinding& bb : list) {
-            SFX_TRY(buffers_.check(bb.buffer, "BufferBinding.buffer"));
             const VulkanBuffer& b = buffers_.get(bb.buffer);
-            Result<const ShaderResource*> r = reflection.claim(bb.binding, kind, "BufferBinding");
-            if (!r) return r.status();
-            Result<uint64_t> size = checkBufferBinding(b.desc, bb, kind, usageBit, *r.value(), alignment, maxRange);
-            if (!size) return size.status();
-            out.buffers.push_back({b.buffer, bb.offset, size.value()});
+            out.buffers.push_back({b.buffer, bb.offset, validation::boundSize(bb, b.desc)});
             write(bb.binding, toVkDescriptor(kind))->pBufferInfo = &out.buffers.back();
         }
-        return Status::ok();
     };
-    SFX_TRY(buffers(set.uniformBuffers, ResourceKind::UniformBuffer, kBufferUniform,
-                    props_.limits.minUniformBufferOffsetAlignment, props_.limits.maxUniformBufferRange));
-    SFX_TRY(buffers(set.storageBuffers, ResourceKind::StorageBuffer, kBufferStorage,
-                    props_.limits.minStorageBufferOffsetAlignment, props_.limits.maxStorageBufferRange));
-    return reflection.allClaimed();
+    buffers(set.uniformBuffers, ResourceKind::UniformBuffer);
+    buffers(set.storageBuffers, ResourceKind::StorageBuffer);
+    return Status::ok();
 }
 
 Result<VkDescriptorSet> VulkanDevice::allocateSet(VkDescriptorSetLayout layout) {
@@ -108,7 +80,7 @@ Result<VkDescriptorSet> VulkanDevice::allocateSet(VkDescriptorSetLayout layout) 
 }
 
 Result<VkDescriptorSet> VulkanDevice::writeSet(const VulkanPipeline& pl, ResolvedBindings& resolved) {
-    if (pl.resources.empty()) return VkDescriptorSet(VK_NULL_HANDLE);
+    if (pl.info.resources.empty()) return VkDescriptorSet(VK_NULL_HANDLE);
     Result<VkDescriptorSet> set = allocateSet(pl.setLayout);
     if (!set) return set.status();
     for (VkWriteDescriptorSet& w : resolved.writes) w.dstSet = set.value();

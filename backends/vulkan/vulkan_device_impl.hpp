@@ -137,8 +137,8 @@ private:
     void barrier(VkCommandBuffer cb, const std::vector<ImageUse>& uses);
 
     // vulkan_descriptors.cpp
-    Status resolveBindings(const BindingSet& set, const VulkanPipeline& pipeline, const char* what,
-                           std::vector<ImageUse>& uses, ResolvedBindings& out);
+    // Descriptor writes and image uses of a BindingSet the shared validation accepted.
+    Status resolveBindings(const BindingSet& set, std::vector<ImageUse>& uses, ResolvedBindings& out);
     Result<VkDescriptorSet> allocateSet(VkDescriptorSetLayout layout);
     // A set of the pipeline's layout holding `resolved`; VK_NULL_HANDLE for a pipeline without resources.
     Result<VkDescriptorSet> writeSet(const VulkanPipeline& pipeline, ResolvedBindings& resolved);
@@ -146,10 +146,13 @@ private:
 
     // vulkan_pipelines.cpp
     Result<ProgramHandle> makeProgram(const CompiledProgram& program);
-    Result<PipelineHandle> makeGraphicsPipeline(const GraphicsPipelineDesc& desc, const VulkanProgram& prog);
-    Result<PipelineHandle> makeComputePipeline(const ComputePipelineDesc& desc, const VulkanProgram& prog);
-    // The program's reflection and the layouts made from it; on failure `p` is retired.
-    Status startPipeline(const VulkanProgram& prog, bool compute, VulkanPipeline& p);
+    Result<PipelineHandle> makeGraphicsPipeline(const GraphicsPipelineDesc& desc, const VulkanProgram& prog,
+                                                validation::PipelineInfo info);
+    Result<PipelineHandle> makeComputePipeline(const ComputePipelineDesc& desc, const VulkanProgram& prog,
+                                               validation::PipelineInfo info);
+    // The pipeline's checked description and the layouts made from its reflection; on failure
+    // `p` is retired.
+    Status startPipeline(validation::PipelineInfo info, VulkanPipeline& p);
     // Inserts `p` once created (r is VK_SUCCESS); otherwise retires it and names the program.
     Result<PipelineHandle> finishPipeline(VulkanPipeline& p, VkResult r, const char* call, const char* debugName);
 
@@ -157,6 +160,8 @@ private:
     Result<VkCommandBuffer> recording();
     Status submitAndWait();
     Status noHostCommandBuffer(const char* call) const;
+    // The attachments of a render pass the shared validation accepted: size, formats, layouts.
+    PassTargets passTargets(const RenderPassDesc& pass);
     Status recordRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, const PassTargets& targets,
                             std::vector<ResolvedBindings>& resolved);
     Status recordDispatch(const DispatchDesc& d, const VulkanPipeline& pl, const std::vector<ImageUse>& uses,

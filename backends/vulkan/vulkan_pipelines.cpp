@@ -7,7 +7,8 @@
 
 namespace sfx::vulkan {
 
-// SPIR-V that the driver would choke on is refused here, with SPIRV-Tools' words.
+// SPIR-V that the driver would choke on is refused here, with SPIRV-Tools' words. Vulkan only:
+// the GL backends consume GLSL text, whose errors are the compiler's (gl_programs.cpp).
 Status validateSpirv(const CompiledProgram& program, const StageCode& stage) {
     spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_1);
     std::string errors;
@@ -15,16 +16,13 @@ Status validateSpirv(const CompiledProgram& program, const StageCode& stage) {
         errors += "  word " + std::to_string(pos.index) + ": " + message + "\n";
     });
     if (!tools.Validate(stage.spirv))
-        return {StatusCode::ShaderError, "program '" + program.name + "' " + toString(stage.stage) +
-                                             " stage: invalid SPIR-V:\n" + errors};
+        return validation::fail(validation::Error::ShaderInvalidSpirv, {program.name, toString(stage.stage), errors});
     return Status::ok();
 }
 
 Result<ProgramHandle> VulkanDevice::makeProgram(const CompiledProgram& program) {
     VulkanProgram p;
-    p.name = program.name;
-    p.compute = program.isCompute();
-    p.resources = program.resources;
+    p.info = validation::programInfo(program);
     auto cleanup = [&]() {
         for (auto& m : p.modules) vk_.vkDestroyShaderModule(device_, m.second, nullptr);
     };
@@ -44,18 +42,16 @@ Result<ProgramHandle> VulkanDevice::makeProgram(const CompiledProgram& program) 
 }
 
 
-Status VulkanDevice::startPipeline(const VulkanProgram& prog, bool compute, VulkanPipeline& p) {
-    p.compute = compute;
-    p.resources = prog.resources;
-    p.programName = prog.name;
-    Status s = createLayouts(prog.resources, compute, p);
+Status VulkanDevice::startPipeline(validation::PipelineInfo info, VulkanPipeline& p) {
+    p.info = std::move(info);
+    Status s = createLayouts(p.info.resources, p.info.compute, p);
     if (!s) retire(p);
     return s;
 }
 
 Result<PipelineHandle> VulkanDevice::finishPipeline(VulkanPipeline& p, VkResult r, const char* call, const char* debugName) {
     if (r != VK_SUCCESS) {
-        const std::string program = p.programName;
+        const std::string program = p.info.programName;
         retire(p);
         return Status{StatusCode::ShaderError, "program '" + program + "': " + call + " failed: " + vkResultName(r)};
     }
@@ -63,13 +59,10 @@ Result<PipelineHandle> VulkanDevice::finishPipeline(VulkanPipeline& p, VkResult 
     return pipelines_.insert(std::move(p));
 }
 
-Result<PipelineHandle> VulkanDevice::makeGraphicsPipeline(const GraphicsPipelineDesc& desc, const VulkanProgram& prog) {
+Result<PipelineHandle> VulkanDevice::makeGraphicsPipeline(const GraphicsPipelineDesc& desc, const VulkanProgram& prog,
+                                                          validation::PipelineInfo info) {
     VulkanPipeline p;
-    p.colorFormats = desc.colorFormats;
-    p.depthFormat = desc.depthFormat;
-    p.usesVertexBuffer = desc.vertexLayout.stride > 0;
-    p.vertexLayout = desc.vertexLayout;
-    SFX_TRY(startPipeline(prog, false, p));
+    SFX_TRY(startPipeline(std::move(info), p));
 
     std::vector<VkPipelineShaderStageCreateInfo> stages;
     for (const auto& [stage, module] : prog.modules) {
@@ -88,7 +81,7 @@ Result<PipelineHandle> VulkanDevice::makeGraphicsPipeline(const GraphicsPipeline
         attributes.push_back({a.location, 0, f, a.offset});
     }
     VkPipelineVertexInputStateCreateInfo vi{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    if (p.usesVertexBuffer) {
+    if (p.usesVertexBuffer()) {
         vi.vertexBindingDescriptionCount = 1;
         vi.pVertexBindingDescriptions = &vb;
         vi.vertexAttributeDescriptionCount = uint32_t(attributes.size());
@@ -156,9 +149,10 @@ Result<PipelineHandle> VulkanDevice::makeGraphicsPipeline(const GraphicsPipeline
     return finishPipeline(p, r, "vkCreateGraphicsPipelines", desc.debugName);
 }
 
-Result<PipelineHandle> VulkanDevice::makeComputePipeline(const ComputePipelineDesc& desc, const VulkanProgram& prog) {
+Result<PipelineHandle> VulkanDevice::makeComputePipeline(const ComputePipelineDesc& desc, const VulkanProgram& prog,
+                                                         validation::PipelineInfo info) {
     VulkanPipeline p;
-    SFX_TRY(startPipeline(prog, true, p));
+    SFX_TRY(startPipeline(std::move(info), p));
     VkComputePipelineCreateInfo pci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     pci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     pci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;

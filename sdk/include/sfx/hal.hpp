@@ -222,6 +222,11 @@ struct DeviceLimits {
     uint64_t maxBufferSize = 0;
     uint32_t maxComputeWorkGroupInvocations = 0;  // 0 without compute
     uint32_t maxTextureBindings = 0;
+    // A uniform / storage BufferBinding's offset is a multiple of these (Vulkan
+    // minUniformBufferOffsetAlignment / minStorageBufferOffsetAlignment, GL's
+    // UNIFORM_BUFFER_OFFSET_ALIGNMENT / SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT); at least 1.
+    uint64_t minUniformBufferOffsetAlignment = 1;
+    uint64_t minStorageBufferOffsetAlignment = 1;
 };
 
 struct DeviceCaps {
