@@ -67,7 +67,8 @@ int runRender(const RenderFlags& f) {
     if (!result) return fail(cmd, result.status());
     if (Status st = render::writeRendered(f.outPath, result->color, "--out"); !st) return fail(cmd, st);
     if (!f.aoOutPath.empty())
-        if (Status st = render::writeRendered(f.aoOutPath, *result->ao, "--ao-out"); !st) return fail(cmd, st);
+        // Visibility is data, not a picture: stored as is in every format (PNG: 8 bits, linear).
+        if (Status st = io::writeImage(f.aoOutPath, *result->ao); !st) return fail(cmd, st);
     for (const std::string& w : result->warnings) std::cerr << "sfx render: warning: " << w << "\n";
     std::cout << "sfx render: " << f.scenePath << " on " << dev.caps().summary() << ", tier " << toString(opened->tier.tier) << ", "
               << renderer.value()->width() << "x" << renderer.value()->height() << ", ao " << f.ao << " -> " << f.outPath
@@ -89,7 +90,7 @@ Command addRenderCommand(CLI::App& app) {
     c.app->add_option("--height", flags->height, "height in pixels; 0 = the scene's")->capture_default_str();
     c.app->add_option("--ao", flags->ao, "off | alchemy | scalable | crease")->capture_default_str();
     c.app->add_option("--ao-radius", flags->aoRadius, "AO world-space radius, [1e-4, 1000]")->capture_default_str();
-    c.app->add_option("--ao-out", flags->aoOutPath, "also write the AO visibility buffer (.pfm, .exr or .png)");
+    c.app->add_option("--ao-out", flags->aoOutPath, "also write the AO visibility buffer (.pfm, .exr or .png; values as they are, no sRGB)");
     c.app->add_option("--ao-layers", flags->aoLayers, "opaque depth layers AO tests (multilayer AO); 1 = the visible layer")
         ->capture_default_str();
     c.app->add_option("--oit", flags->oit, "auto (transparent objects through OIT) | off (not drawn)")->capture_default_str();

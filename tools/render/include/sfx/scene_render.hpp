@@ -35,7 +35,7 @@ struct RenderOptions {
     uint32_t maxLayers = 16;         // K: fragments kept exact per pixel by the transparency resolve
     uint32_t nodes = 4;              // M: nodes of a compressed list
 };
-// InvalidArgument naming the field and its allowed values.
+// InvalidArgument naming the field (by its `sfx render` flag, e.g. "--ao-radius") and its allowed values.
 Status validateOptions(const RenderOptions& options);
 
 // One line of the plan: a pass, a resource, a host step, or something left out, and why.
