@@ -68,7 +68,7 @@ elif [ "$mode" = subdirectory ]; then
         { cat "$work/subdirectory.log"; fail "configure with add_subdirectory"; }
     ! grep -q '^glslang_DIR\|^SPIRV-Tools_DIR\|^spirv_cross_core_DIR' "$work/subdirectory/CMakeCache.txt" ||
         fail "add_subdirectory with an outside sfxc still looked for the shader compiler's libraries"
-    cmake --build "$work/subdirectory" -j2 >"$work/subdirectory-build.log" ||
+    cmake --build "$work/subdirectory" --target sfx_consumer -j2 >"$work/subdirectory-build.log" ||
         { cat "$work/subdirectory-build.log"; fail "build through add_subdirectory"; }
     [ ! -e "$work/subdirectory/scalablefx/tools/sfxc" ] || fail "sfxc was built although SFX_SFXC_EXECUTABLE names one"
     run "$work/subdirectory/sfx_consumer"
