@@ -45,6 +45,9 @@ GlDevice::~GlDevice() {
     gl_.glFinish();
     platform_->release();
     if (gCurrentPlatform == platform_.get()) gCurrentPlatform = nullptr;
+    // Messages nobody took go to the host's log callback (DeviceOptions::log).
+    for (const std::string& m : takeValidationMessages())
+        if (options_.log) options_.log(LogSeverity::Error, "sfx gl: untaken validation message at teardown: " + m);
 }
 
 bool GlDevice::makeCurrent() {

@@ -35,7 +35,7 @@ struct InstanceSetup {
     bool debugUtils = false;
 };
 
-// vulkan_pipelines.cpp: SPIR-V that the driver would choke on is refused, with SPIRV-Tools' words.
+// vulkan_pipelines.cpp: SPIR-V whose structure a driver would walk off is refused.
 Status validateSpirv(const CompiledProgram& program, const StageCode& stage);
 
 class VulkanDevice final : public Device {
@@ -45,9 +45,9 @@ public:
                      timers_(serial_, "timer") {}
     ~VulkanDevice() override {
         shutdown();
-        // Messages nobody took (teardown ones included) can only be told on stderr now.
+        // Messages nobody took (teardown ones included) go to the host's log callback.
         for (const std::string& m : takeValidationMessages())
-            std::fprintf(stderr, "sfx vulkan: untaken validation message at teardown: %s\n", m.c_str());
+            if (log_) log_(LogSeverity::Error, "sfx vulkan: untaken validation message at teardown: " + m);
     }
 
     // vulkan_platform.cpp: own instance and device, or the host's objects.
@@ -199,6 +199,7 @@ public:  // set up by the factory functions
     uint32_t queueFamily_ = 0;
     bool ownsDevice_ = false;
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    LogCallback log_;  // DeviceOptions::log
 
 private:
     Functions& vk_ = setup_.fns;

@@ -398,7 +398,7 @@ std::vector<ValidationCase> pipelineAndCommandCases() {
         });
 
     // ---- Checks only one API makes (the call succeeds on the others) --------------------------
-    add("SPIR-V that SPIRV-Tools refuses", Error::ShaderInvalidSpirv, {}, fixed(""), [](Objects& o) {
+    add("SPIR-V whose structure is broken", Error::ShaderInvalidSpirv, {}, fixed(""), [](Objects& o) {
         CompiledProgram p = shaderProgram("copy", Tier::Current);
         for (size_t i = 5; i < p.stages[0].spirv.size(); ++i) p.stages[0].spirv[i] = 0xdeadbeefu;
         return tryProgram(o, p);

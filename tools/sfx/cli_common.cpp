@@ -11,6 +11,8 @@ void DeviceFlags::add(CLI::App& app) {
     app.add_option("--backend", backend, "auto | vulkan | gles | gl | gl-egl | gl-osmesa")->capture_default_str();
     app.add_option("--tier", tier, "auto, or a tier (" + tierNameList() + "; a lower tier runs under its capability ceiling)")
         ->capture_default_str();
+    app.add_flag("--validate", validate,
+                 "API validation (Vulkan validation layer, GL error checks); messages go to stderr");
 }
 
 Result<OpenedDevice> openDevice(const DeviceFlags& flags) {
@@ -22,7 +24,10 @@ Result<OpenedDevice> openDevice(const DeviceFlags& flags) {
         tier = t;
     }
     DeviceOptions options;
-    options.validation = false;
+    options.validation = flags.validate;
+    // The tool, not the library, prints: validation messages reach stderr through the log callback
+    // when the device is destroyed.
+    options.log = [](LogSeverity, std::string_view message) { std::cerr << "sfx: " << message << "\n"; };
     options.ceiling = tier ? tiers::row(*tier).ceiling : CapabilityCeiling::None;
     OpenedDevice out;
     if (flags.backend == "auto") {

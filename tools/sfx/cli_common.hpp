@@ -16,10 +16,11 @@
 
 namespace sfx::cli {
 
-// --backend auto|vulkan|gles|gl|gl-egl|gl-osmesa and --tier auto|current|high.
+// --backend auto|vulkan|gles|gl|gl-egl|gl-osmesa, --tier auto|current|high and --validate.
 struct DeviceFlags {
     std::string backend = "auto";
     std::string tier = "auto";
+    bool validate = false;  // API validation; its messages are printed on stderr
     void add(CLI::App& app);
 };
 

@@ -14,9 +14,11 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "sfx/handle.hpp"
@@ -257,9 +259,24 @@ struct DeviceCaps {
     std::string summary() const;  // one line for logs: backend, API, device, ceiling
 };
 
+// How bad a message the library hands the host is.
+enum class LogSeverity : uint32_t { Info, Warning, Error };
+// The library prints nothing: what it has to say beyond a Status goes to this callback. It is
+// called on the thread making the SDK call (or destroying the device) that produced the
+// message, never concurrently for one device; it must not call back into that device.
+using LogCallback = std::function<void(LogSeverity severity, std::string_view message)>;
+
 struct DeviceOptions {
     CapabilityCeiling ceiling = CapabilityCeiling::None;
-    bool validation = true;  // Vulkan: VK_LAYER_KHRONOS_validation; GL: glGetError after every call
+    // API validation, only when the host asks: Vulkan enables VK_LAYER_KHRONOS_validation
+    // (own device) and the SDK's debug messenger; GL checks glGetError after every call and
+    // turns on KHR_debug output. It multiplies the CPU cost of a dispatch (about 7.5x on
+    // Vulkan), so it is off by default; the tests, the samples and `sfx --validate` turn it on.
+    bool validation = false;
+    // Where the library's own diagnostics go; empty: they are dropped. Validation messages
+    // are also kept for Device::takeValidationMessages(); the ones still untaken when the
+    // device is destroyed go here (LogSeverity::Error) so none is lost silently.
+    LogCallback log;
 };
 
 class Device {
