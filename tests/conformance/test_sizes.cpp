@@ -97,3 +97,35 @@ TEST_CASE("sizes: above the device's maximum texture size is a named error", "[s
     CHECK(m.status().code() == StatusCode::InvalidArgument);
     CHECK(m.status().message().find("height") != std::string::npos);
 }
+
+TEST_CASE("sizes: large and odd sizes run every effect with finite output", "[sizes]") {
+    if (drawsNothing()) SFX_SKIP("the null backend draws nothing: GPU results are not compared on " << test::label());
+    // 641x359 (odd, prime width) every technique; 3840x2160 one technique per effect, to keep
+    // the suite short. Only finiteness here: the small sizes above compare with the references.
+    struct Run {
+        Size size;
+        std::vector<AoTechnique> techniques;
+    };
+    const Run runs[] = {{{641, 359}, {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}},
+                        {{3840, 2160}, {AoTechnique::Scalable}}};
+    for (const Run& r : runs) {
+        const uint32_t w = r.size.w, h = r.size.h;
+        INFO(test::label() << " " << w << "x" << h);
+        const samples::AnalyticScene scene = samples::cornerScene(w, h, 1.0);
+        for (AoTechnique t : r.techniques) {
+            const test::GpuAo gpu = test::runAo(test::device(), test::tierProfile(), scene, test::aoTestSettings(t));
+            size_t nonFinite = 0;
+            for (double v : gpu.visibility.values) nonFinite += std::isfinite(v) ? 0 : 1;
+            INFO(toString(t));
+            CHECK(nonFinite == 0);
+        }
+        ColorGrid c(w, h, {0.5, 0.25, 0.75, 1.0});
+        VelocityGrid vel(w, h, {40.0, -7.0});
+        const ColorGrid out = test::runMotionBlur(test::device(), test::tierProfile(), c, scene.linearDepth, &vel, {});
+        size_t nonFinite = 0;
+        for (const auto& px : out.values)
+            for (double ch : px) nonFinite += std::isfinite(ch) ? 0 : 1;
+        CHECK(nonFinite == 0);
+    }
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
