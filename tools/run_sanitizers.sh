@@ -27,7 +27,14 @@ cmake --build build-asan -j"$JOBS" --target "${TARGETS[@]}"
 conformance=()
 for backend in $BACKENDS; do conformance+=("conformance\\.$backend\\."); done
 pattern="^($(IFS='|'; echo "${conformance[*]}"))"
-(cd build-asan && ctest --output-on-failure -j"$JOBS" -L unit "$@" && ctest --output-on-failure -j"$JOBS" -R "$pattern" "$@")
+# The unit tests (null backend, references, readers, validation) run with leak checking. The
+# GPU conformance runs keep every ASan and UBSan check fatal but not the exit-time leak check:
+# lavapipe and llvmpipe keep JIT-compiled shaders and context state until the process ends and
+# unload their modules first, so LeakSanitizer reports 100+ MB from "<unknown module>" that no
+# suppression can name. Leaks in the SDK's own code are caught by the unit run, which drives the
+# effects, the validation and the handle pools through the null backend.
+(cd build-asan && ctest --output-on-failure -j"$JOBS" -L unit "$@" &&
+  ASAN_OPTIONS="$ASAN_OPTIONS:detect_leaks=0" ctest --output-on-failure -j"$JOBS" -R "$pattern" "$@")
 echo "run_sanitizers: ASan+UBSan unit and conformance ($BACKENDS) clean after $((SECONDS - start)) s"
 
 # ---- 2. libFuzzer targets: replay the seed corpora -------------------------------------------
