@@ -22,13 +22,13 @@
 #include <sstream>
 
 #include "bench_device.hpp"
+#include "copy_pass.hpp"
 #include "scene.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/backends.hpp"
 #include "sfx/image_io.hpp"
 #include "sfx/reference/ao_reference.hpp"
 #include "sfx/tiers.hpp"
-#include "sfx_shaders.hpp"
 
 using namespace sfx;
 
@@ -207,54 +207,6 @@ struct Row {
 
 double ratio(double ms, double copyMs) { return copyMs > 0 ? ms / copyMs : 0.0; }
 
-// The copy baseline: one full-screen pass reading a texture of the AO output's format.
-struct CopyPass {
-    explicit CopyPass(Device& device) : dev(device) {}
-    CopyPass(const CopyPass&) = delete;
-    CopyPass& operator=(const CopyPass&) = delete;
-    Device& dev;
-    TextureHandle src, dst;
-    ProgramHandle program;
-    PipelineHandle pipeline;
-    Status record() {
-        RenderPassDesc rp;
-        rp.colors = {ColorAttachment{dst, 0, LoadOp::DontCare, {}}};
-        rp.debugName = "bench-copy";
-        DrawDesc dr;
-        dr.pipeline = pipeline;
-        dr.bindings.textures = {TextureBinding{gen::copy::uSource, src, 0, 1, {}}};
-        return dev.renderPass(rp, std::span<const DrawDesc>(&dr, 1));
-    }
-    ~CopyPass() {
-        if (!pipeline.isNull()) (void)dev.destroyPipeline(pipeline);
-        if (!program.isNull()) (void)dev.destroyProgram(program);
-        for (TextureHandle t : {src, dst})
-            if (!t.isNull()) (void)dev.destroyTexture(t);
-    }
-};
-
-Result<std::unique_ptr<CopyPass>> makeCopyPass(Device& dev, Tier tier, uint32_t w, uint32_t h, Format format) {
-    auto copy = std::make_unique<CopyPass>(dev);
-    Result<TextureHandle> src = dev.createTexture({w, h, 1, format, kTextureSampled | kTextureRenderTarget, "bench-copy-src"});
-    if (!src) return src.status();
-    copy->src = src.value();
-    Result<TextureHandle> dst = dev.createTexture({w, h, 1, format, kTextureSampled | kTextureRenderTarget, "bench-copy-dst"});
-    if (!dst) return dst.status();
-    copy->dst = dst.value();
-    Result<const CompiledProgram*> compiled = shaders::find(gen::copy::kName, tier);
-    if (!compiled) return compiled.status();
-    Result<ProgramHandle> program = dev.createProgram(*compiled.value());
-    if (!program) return program.status();
-    copy->program = program.value();
-    GraphicsPipelineDesc pd;
-    pd.program = copy->program;
-    pd.colorFormats = {format};
-    Result<PipelineHandle> pipeline = dev.createGraphicsPipeline(pd);
-    if (!pipeline) return pipeline.status();
-    copy->pipeline = pipeline.value();
-    return copy;
-}
-
 void printRow(const Row& r) {
     std::printf("  %-6s %-7s %-8s %-7s r=%-4.2f  %7.3f ms = x%-6.1f", r.backend.c_str(), r.tier.c_str(), r.technique.c_str(),
                 r.scene.c_str(), r.radius, r.totalMs, ratio(r.totalMs, r.copyMs));
@@ -411,7 +363,7 @@ int main(int argc, char** argv) {
                 continue;
             }
             const Format outFormat = samples::aoOutputFormat(dev);
-            Result<std::unique_ptr<CopyPass>> copy = makeCopyPass(dev, tier, o.width, o.height, outFormat);
+            Result<std::unique_ptr<samples::CopyPass>> copy = samples::makeCopyPass(dev, tier, o.width, o.height, outFormat);
             if (!copy) {
                 std::cout << "bench_ao: copy pass: " << copy.status().toString() << std::endl;
                 continue;

@@ -37,7 +37,7 @@ struct Options {
     std::string backend = "vulkan";
     std::vector<std::string> techniques{"alchemy", "scalable", "crease"};
     std::string cacheDir = "build/truth-cache", outDir = "docs";
-    uint32_t refinements = 4;  // levels of the fine search (its step halves at each)
+    uint32_t refinements = 5;  // levels of the fine search (its step halves at each)
 };
 
 std::string fixed(double v, int digits) {
@@ -97,7 +97,7 @@ struct Parameter {
 std::vector<Parameter> parametersOf(AoTechnique t) {
     std::vector<Parameter> p{{"intensity", &AoSettings::intensity, nullptr, 0.05, 20.0, true},
                              {"contrast", &AoSettings::contrast, nullptr, 0.1, 10.0, true}};
-    if (t == AoTechnique::Alchemy) p.push_back({"bias", &AoSettings::bias, nullptr, 1e-5, 0.3, true});
+    if (t == AoTechnique::Alchemy) p.push_back({"bias", &AoSettings::bias, nullptr, 1e-7, 0.3, true});
     if (t == AoTechnique::Scalable) p.push_back({"bias", &AoSettings::bias, nullptr, 0.0, 0.5, false});
     if (t == AoTechnique::Crease) {
         // crease.averager divides what intensity multiplies: searching both would be searching one.
@@ -182,48 +182,63 @@ private:
 };
 
 // Coarse to fine: first each parameter in turn over 5 points spanning its whole range (in log
-// space where marked), then `refinements` levels of a pattern search: +-step on each parameter,
-// repeated in a direction while it improves, the step halving from 1/8 of the range each level.
-Result<AoSettings> fit(Evaluator& ev, AoSettings best, const std::vector<Case>& training, const Options& o, const std::string& label) {
-    const std::vector<Parameter> params = parametersOf(best.technique);
-    Result<Score> first = ev.score(best, training);
+// space where marked), then `refinements` levels of a Hooke-Jeeves pattern search in the unit
+// cube of the parameters: +-step on each in turn, then a jump along the move just made (the
+// intensity-contrast ridge is diagonal), the step halving from 1/8 of the range each level.
+Result<AoSettings> fit(Evaluator& ev, const AoSettings& start, const std::vector<Case>& training, const Options& o, const std::string& label) {
+    const std::vector<Parameter> params = parametersOf(start.technique);
+    auto settingsAt = [&](const std::vector<double>& u) {
+        AoSettings s = start;
+        for (size_t i = 0; i < params.size(); ++i) params[i].of(s) = float(params[i].fromUnit(u[i]));
+        return s;
+    };
+    std::vector<double> best;
+    for (const Parameter& p : params) best.push_back(p.toUnit(p.of(start)));
+    Result<Score> first = ev.score(start, training);
     if (!first) return first.status();
     double bestObjective = first->objective();
-    // Scores `value` for p; keeps it when better. *improved says whether it was kept.
-    auto tryValue = [&](const Parameter& p, double value, bool* improved) -> Status {
-        AoSettings s = best;
-        p.of(s) = float(value);
+    // Scores the point u (clamped to the cube); keeps it when better. *improved says so.
+    auto tryPoint = [&](std::vector<double> u, bool* improved) -> Status {
+        for (double& x : u) x = std::clamp(x, 0.0, 1.0);
         *improved = false;
-        if (p.of(s) == p.of(best)) return Status::ok();  // at a bound: nothing new
-        Result<Score> r = ev.score(s, training);
+        if (u == best) return Status::ok();  // at a bound: nothing new
+        Result<Score> r = ev.score(settingsAt(u), training);
         if (!r) return r.status();
-        if (r->objective() > bestObjective + 1e-6) bestObjective = r->objective(), best = s, *improved = true;
+        if (r->objective() > bestObjective + 1e-6) bestObjective = r->objective(), best = u, *improved = true;
         return Status::ok();
     };
     auto progress = [&](const std::string& stage) {
-        std::cout << "  " << label << " " << stage << ": " << describe(best) << " -> training objective " << fixed(bestObjective, 2)
+        std::cout << "  " << label << " " << stage << ": " << describe(settingsAt(best)) << " -> training objective " << fixed(bestObjective, 2)
                   << " dB (" << ev.evaluations() << " evaluations)" << std::endl;
     };
     progress("start");
     bool improved = false;
-    for (const Parameter& p : params)
-        for (int i = 0; i <= 4; ++i) SFX_TRY(tryValue(p, p.fromUnit(i / 4.0), &improved));
+    for (size_t i = 0; i < params.size(); ++i)
+        for (int k = 0; k <= 4; ++k) {
+            std::vector<double> u = best;
+            u[i] = k / 4.0;
+            SFX_TRY(tryPoint(u, &improved));
+        }
     progress("coarse");
     double step = 1.0 / 8.0;
     for (uint32_t level = 0; level < o.refinements; ++level, step *= 0.5) {
-        for (const Parameter& p : params)
-            for (double direction : {1.0, -1.0}) {
-                bool moved = false;
-                for (int k = 0; k < 4; ++k) {
-                    SFX_TRY(tryValue(p, p.fromUnit(p.toUnit(p.of(best)) + direction * step), &improved));
-                    if (!improved) break;
-                    moved = true;
+        for (int round = 0; round < 4; ++round) {
+            const std::vector<double> base = best;
+            for (size_t i = 0; i < params.size(); ++i)
+                for (double direction : {1.0, -1.0}) {
+                    std::vector<double> u = best;
+                    u[i] += direction * step;
+                    SFX_TRY(tryPoint(u, &improved));
+                    if (improved) break;  // the other direction goes back
                 }
-                if (moved) break;  // the other direction cannot be better from here
-            }
+            if (best == base) break;
+            std::vector<double> jump = best;
+            for (size_t i = 0; i < jump.size(); ++i) jump[i] += best[i] - base[i];
+            SFX_TRY(tryPoint(jump, &improved));
+        }
         progress("fine, step " + fixed(step, 4));
     }
-    return best;
+    return settingsAt(best);
 }
 
 struct FitRow {
