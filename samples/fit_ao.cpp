@@ -24,7 +24,7 @@
 #include "sfx/tiers.hpp"
 #include "sfx/truth_metrics.hpp"
 #include "trade_views.hpp"
-#include "truth_cache.hpp"
+#include "ao_scoring.hpp"
 
 using namespace sfx;
 
@@ -45,37 +45,6 @@ std::string fixed(double v, int digits) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.*f", digits, v);
     return buf;
-}
-
-// One view at one radius, with its truth.
-struct Case {
-    size_t view;  // index into the view list
-    double radius;
-    truth::Image truth;
-};
-
-// Mean scores over a set of cases (PSNR averaged in dB; non-finite values, which only an exact
-// answer gives, are left out of the mean and counted).
-struct Score {
-    double psnr = 0, psnrOccluded = 0, signedOccluded = 0;
-    double worstPsnr = 1e9, worstPsnrOccluded = 1e9;  // the worst single case
-    size_t cases = 0;
-    double objective() const { return psnr + psnrOccluded; }
-};
-
-Score summarise(const std::vector<truth::Comparison>& errors) {
-    Score s;
-    size_t nf = 0, no = 0;
-    for (const truth::Comparison& e : errors) {
-        if (std::isfinite(e.psnr)) s.psnr += e.psnr, s.worstPsnr = std::min(s.worstPsnr, e.psnr), ++nf;
-        if (std::isfinite(e.psnrOccluded)) {
-            s.psnrOccluded += e.psnrOccluded, s.worstPsnrOccluded = std::min(s.worstPsnrOccluded, e.psnrOccluded);
-            s.signedOccluded += e.meanSignedErrorOccluded, ++no;
-        }
-    }
-    s.psnr /= double(std::max<size_t>(nf, 1)), s.psnrOccluded /= double(std::max<size_t>(no, 1)), s.signedOccluded /= double(std::max<size_t>(no, 1));
-    s.cases = errors.size();
-    return s;
 }
 
 // A searched parameter: a field of AoSettings, its range and whether the search steps in log space.
@@ -123,69 +92,11 @@ std::string describe(const AoSettings& s) {
     return o.str();
 }
 
-// Renders and scores settings on one tier's device, every case of a set.
-class Evaluator {
-public:
-    Evaluator(Device& dev, Tier tier, const Options& o) : dev_(dev), tier_(tier), o_(o) {}
-    Status prepare(const std::vector<samples::TradeView>& views) {
-        Result<tiers::TierChoice> choice = tiers::choose(dev_.caps(), tier_);
-        if (!choice) return choice.status();
-        profile_ = choice->profile;
-        format_ = samples::aoOutputFormat(dev_);
-        Result<TextureHandle> out = dev_.createTexture({o_.width, o_.height, 1, format_, kTextureSampled | kTextureRenderTarget, "fit-ao-out"});
-        if (!out) return out.status();
-        out_ = out.value();
-        for (const samples::TradeView& v : views) {
-            Result<std::unique_ptr<samples::ViewInputs>> in = samples::ViewInputs::create(dev_, tier_, v, o_.width, o_.height);
-            if (!in) return in.status();
-            inputs_.push_back(std::move(in.value()));
-        }
-        return Status::ok();
-    }
-    ~Evaluator() {
-        if (!out_.isNull()) (void)dev_.destroyTexture(out_);
-    }
-    Result<std::vector<truth::Comparison>> run(AoSettings s, const std::vector<Case>& cases) {
-        std::vector<truth::Comparison> errors;
-        for (const Case& c : cases) {
-            const samples::ViewInputs& in = *inputs_[c.view];
-            s.radius = float(c.radius);
-            Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev_, {o_.width, o_.height, profile_, s, in.depthKind()});
-            if (!ao) return ao.status();
-            SFX_TRY(ao.value()->dispatch({DepthSource{in.depth(), in.depthKind(), in.camera()}, in.normals(), out_}));
-            SFX_TRY(dev_.flush());
-            Result<reference::Grid> vis = samples::readVisibility(dev_, out_, format_, o_.width, o_.height);
-            if (!vis) return vis.status();
-            Result<truth::Comparison> e = truth::compare(c.truth, vis->values);
-            if (!e) return e.status();
-            errors.push_back(e.value());
-        }
-        ++evaluations_;
-        return errors;
-    }
-    Result<Score> score(const AoSettings& s, const std::vector<Case>& cases) {
-        Result<std::vector<truth::Comparison>> e = run(s, cases);
-        if (!e) return e.status();
-        return summarise(e.value());
-    }
-    size_t evaluations() const { return evaluations_; }
-
-private:
-    Device& dev_;
-    Tier tier_;
-    const Options& o_;
-    TierProfile profile_;
-    Format format_ = Format::Undefined;
-    TextureHandle out_;
-    std::vector<std::unique_ptr<samples::ViewInputs>> inputs_;
-    size_t evaluations_ = 0;
-};
-
 // Coarse to fine: first each parameter in turn over 5 points spanning its whole range (in log
 // space where marked), then `refinements` levels of a Hooke-Jeeves pattern search in the unit
 // cube of the parameters: +-step on each in turn, then a jump along the move just made (the
 // intensity-contrast ridge is diagonal), the step halving from 1/8 of the range each level.
-Result<AoSettings> fit(Evaluator& ev, const AoSettings& start, const std::vector<Case>& training, const Options& o, const std::string& label) {
+Result<AoSettings> fit(samples::AoEvaluator& ev, const AoSettings& start, const std::vector<samples::AoCase>& training, const Options& o, const std::string& label) {
     const std::vector<Parameter> params = parametersOf(start.technique);
     auto settingsAt = [&](const std::vector<double>& u) {
         AoSettings s = start;
@@ -194,7 +105,7 @@ Result<AoSettings> fit(Evaluator& ev, const AoSettings& start, const std::vector
     };
     std::vector<double> best;
     for (const Parameter& p : params) best.push_back(p.toUnit(p.of(start)));
-    Result<Score> first = ev.score(start, training);
+    Result<samples::AoScore> first = ev.score(start, training);
     if (!first) return first.status();
     double bestObjective = first->objective();
     // Scores the point u (clamped to the cube); keeps it when better. *improved says so.
@@ -202,7 +113,7 @@ Result<AoSettings> fit(Evaluator& ev, const AoSettings& start, const std::vector
         for (double& x : u) x = std::clamp(x, 0.0, 1.0);
         *improved = false;
         if (u == best) return Status::ok();  // at a bound: nothing new
-        Result<Score> r = ev.score(settingsAt(u), training);
+        Result<samples::AoScore> r = ev.score(settingsAt(u), training);
         if (!r) return r.status();
         if (r->objective() > bestObjective + 1e-6) bestObjective = r->objective(), best = u, *improved = true;
         return Status::ok();
@@ -244,10 +155,10 @@ Result<AoSettings> fit(Evaluator& ev, const AoSettings& start, const std::vector
 struct FitRow {
     std::string tier, technique, fitted;
     AoSettings settings;
-    Score before, trainingScore, heldOut;
+    samples::AoScore before, trainingScore, heldOut;
 };
 
-std::string markdown(const Options& o, const std::vector<FitRow>& rows, const std::map<std::string, Score>& none,
+std::string markdown(const Options& o, const std::vector<FitRow>& rows, const std::map<std::string, samples::AoScore>& none,
                      const std::vector<samples::TradeView>& training, const std::vector<samples::TradeView>& heldOut, const std::string& machine) {
     std::ostringstream md;
     auto list = [](const std::vector<samples::TradeView>& views) {
@@ -298,33 +209,16 @@ int main(int argc, char** argv) {
     const std::vector<samples::TradeView> trainingViews = samples::trainingViews(), heldOutViews = samples::heldOutViews();
     std::vector<samples::TradeView> views = trainingViews;
     views.insert(views.end(), heldOutViews.begin(), heldOutViews.end());
-    std::vector<Case> training, heldOut;
-    std::map<std::string, std::vector<truth::Comparison>> noneErrors;
-    for (size_t v = 0; v < views.size(); ++v) {
-        Result<samples::TruthScene> scene = samples::viewTruthScene(views[v], o.width, o.height);
-        if (!scene) {
-            std::cerr << "fit_ao: " << views[v].name() << ": " << scene.status().toString() << "\n";
-            return 1;
-        }
-        const bool isTraining = v < trainingViews.size();
-        for (double radius : isTraining ? o.trainingRadii : o.heldOutRadii) {
-            truth::Settings ts;
-            ts.radius = radius;
-            ts.samples = o.samples;
-            double seconds = 0;
-            Result<truth::Image> t = samples::cachedTruth(o.cacheDir, scene.value(), ts, &seconds);
-            if (!t) {
-                std::cerr << "fit_ao: truth of " << views[v].name() << ": " << t.status().toString() << "\n";
-                return 1;
-            }
-            noneErrors[isTraining ? "training" : "held-out"].push_back(
-                truth::compare(t.value(), std::vector<double>(t->visibility.size(), 1.0)).value());
-            std::cout << "[" << elapsed() << " s] truth " << views[v].name() << " r=" << radius << ": "
-                      << (seconds > 0 ? fixed(seconds, 2) + " s" : "cached") << (isTraining ? " (training)" : " (held out)") << std::endl;
-            (isTraining ? training : heldOut).push_back({v, radius, std::move(t.value())});
-        }
+    auto progress = [&](const std::string& line) { std::cout << "[" << elapsed() << " s] " << line << std::endl; };
+    const samples::TruthSettings truthSettings{o.width, o.height, o.samples, o.cacheDir};
+    Result<std::vector<samples::AoCase>> training = samples::loadCases(views, 0, trainingViews.size(), o.trainingRadii, truthSettings, progress);
+    Result<std::vector<samples::AoCase>> heldOut =
+        training ? samples::loadCases(views, trainingViews.size(), views.size(), o.heldOutRadii, truthSettings, progress) : training;
+    if (!heldOut) {
+        std::cerr << "fit_ao: " << heldOut.status().toString() << "\n";
+        return 1;
     }
-    std::map<std::string, Score> none{{"training", summarise(noneErrors["training"])}, {"held-out", summarise(noneErrors["held-out"])}};
+    std::map<std::string, samples::AoScore> none{{"training", samples::noAoScore(training.value())}, {"held-out", samples::noAoScore(heldOut.value())}};
 
     BackendConfig config;
     if (!parseBackendConfig(o.backend, &config)) {
@@ -341,7 +235,7 @@ int main(int argc, char** argv) {
         }
         if (machine.empty()) machine = dev.value()->caps().deviceName;
         std::cout << "[" << elapsed() << " s] " << dev.value()->caps().summary() << ", tier " << toString(tier) << std::endl;
-        Evaluator ev(*dev.value(), tier, o);
+        samples::AoEvaluator ev(*dev.value(), tier, o.width, o.height);
         if (Status st = ev.prepare(views); !st) {
             std::cerr << "fit_ao: " << st.toString() << "\n";
             return 1;
@@ -354,10 +248,10 @@ int main(int argc, char** argv) {
             }
             const std::string label = std::string(toString(tier)) + "/" + name;
             const AoSettings start = startingSettings(technique);
-            Result<AoSettings> fitted = fit(ev, start, training, o, label);
-            Result<Score> before = fitted ? ev.score(start, heldOut) : Result<Score>(fitted.status());
-            Result<Score> trained = before ? ev.score(fitted.value(), training) : Result<Score>(before.status());
-            Result<Score> held = trained ? ev.score(fitted.value(), heldOut) : Result<Score>(trained.status());
+            Result<AoSettings> fitted = fit(ev, start, training.value(), o, label);
+            Result<samples::AoScore> before = fitted ? ev.score(start, heldOut.value()) : Result<samples::AoScore>(fitted.status());
+            Result<samples::AoScore> trained = before ? ev.score(fitted.value(), training.value()) : Result<samples::AoScore>(before.status());
+            Result<samples::AoScore> held = trained ? ev.score(fitted.value(), heldOut.value()) : Result<samples::AoScore>(trained.status());
             if (!held) {
                 std::cerr << "fit_ao: " << label << ": " << held.status().toString() << "\n";
                 return 1;
