@@ -7,7 +7,7 @@ namespace sfx::samples {
 Result<std::unique_ptr<Device>> openForTier(const BackendConfig& config, Tier tier) {
     DeviceOptions options;
     options.validation = false;
-    options.ceiling = tier == Tier::Current ? CapabilityCeiling::GLES30 : CapabilityCeiling::None;
+    options.ceiling = tiers::row(tier).ceiling;  // the current tier under the GL ES 3.0 ceiling
     Result<std::unique_ptr<Device>> device = openDevice(config, options);
     if (!device) return device.status();
     Result<tiers::TierChoice> choice = tiers::choose(device.value()->caps(), tier);

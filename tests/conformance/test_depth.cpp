@@ -2,11 +2,13 @@
 // reference. Tolerances are documented in docs/conformance.md.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "scene.hpp"
 #include "sfx/depth.hpp"
+#include "sfx/tiers.hpp"
 #include "sfx/null_device.hpp"
 #include "sfx/reference/depth_reference.hpp"
 #include "sfx_shared.h"
@@ -40,7 +42,7 @@ std::vector<float> readLevel(Device& device, TextureHandle texture, uint32_t w, 
     return values;
 }
 
-uint32_t levelsFor(Tier tier) { return tier == Tier::High ? uint32_t(shared::SFX_DEPTH_MIP_MAX_LEVELS) : 1u; }
+uint32_t levelsFor(Tier tier) { return tiers::profile(tier).aoDepthMipLevels; }
 
 }  // namespace
 
@@ -314,7 +316,7 @@ TEST_CASE("depth passes stay finite and within bounds at the extremes", "[depth]
         reference::Grid expected = reference::linearizeDepth(storedGrid, rec);
         TextureHandle src = device.createTexture({W, H, 1, Format::R32F, kTextureSampled}).value();
         SFX_REQUIRE_OK(device.writeTexture(src, 0, stored.data(), stored.size() * 4));
-        auto linear = LinearDepth::create(device, {W, H, test::tier(), test::tier() == Tier::High ? 3u : 1u});
+        auto linear = LinearDepth::create(device, {W, H, test::tier(), std::min(3u, levelsFor(test::tier()))});
         REQUIRE(linear.isOk());
         SFX_REQUIRE_OK(linear.value()->dispatch({src, DepthKind::Hardware, cam}));
         std::vector<float> got = readLevel(device, linear.value()->texture(), W, H, 0);
@@ -330,7 +332,7 @@ TEST_CASE("depth passes stay finite and within bounds at the extremes", "[depth]
     // Extreme sizes: one texel, and one texel thin; the pyramid only where the size allows.
     for (auto [w, h] : {std::pair<uint32_t, uint32_t>{1, 1}, {1, 129}, {257, 1}}) {
         INFO(test::label() << " " << w << "x" << h);
-        const uint32_t levels = test::tier() == Tier::High ? std::min(3u, maxMipLevels(w, h)) : 1u;
+        const uint32_t levels = std::min({3u, maxMipLevels(w, h), levelsFor(test::tier())});
         auto linear = LinearDepth::create(device, {w, h, test::tier(), levels});
         REQUIRE(linear.isOk());
         std::vector<float> depths(size_t(w) * h, 5.0f);

@@ -4,12 +4,15 @@
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdlib>
 #include <map>
 
 #include "sfx/backends.hpp"
 #include "sfx/depth.hpp"
+#include "sfx/tiers.hpp"
 #include "sfx_shared.h"
 
 using namespace sfx;
@@ -28,7 +31,7 @@ std::vector<Opened> openAll(Tier tier) {
     for (const BackendConfig& config : compiledBackends()) {
         DeviceOptions options;
         options.validation = true;
-        options.ceiling = tier == Tier::Current ? CapabilityCeiling::GLES30 : CapabilityCeiling::None;
+        options.ceiling = tiers::row(tier).ceiling;
         Result<std::unique_ptr<Device>> device = openDevice(config, options);
         if (!device) {
             WARN("backend " << toString(config) << " skipped: " << device.status().toString());
@@ -58,7 +61,7 @@ TEST_CASE("linear depth and its pyramid agree across backends", "[cross-backend]
             continue;
         }
         const uint32_t W = 45, H = 29;
-        const uint32_t levels = tier == Tier::High ? 4u : 1u;
+        const uint32_t levels = std::min(4u, tiers::profile(tier).aoDepthMipLevels);  // the tier's pyramid, up to 4
         PerspectiveDesc pd;
         pd.aspect = double(W) / H;
         pd.reversedZ = true;

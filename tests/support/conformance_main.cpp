@@ -45,10 +45,10 @@ constexpr int kSkipped = 77;
 int main(int argc, char** argv) {
     using namespace sfx;
     Catch::Session session;
-    std::string backendName = "vulkan", tierName = "high";
+    std::string backendName = "vulkan", tierName = kTierNames[kTierCount - 1];  // the highest tier
     using namespace Catch::clara;
     auto cli = session.cli() | Opt(backendName, "backend")["--backend"]("vulkan, gles, gl-egl, gl-osmesa, null") |
-               Opt(tierName, "tier")["--tier"]("high, or current (opened under the GL ES 3.0 ceiling)");
+               Opt(tierName, "tier")["--tier"]("a tier: " + tierNameList() + " (a lower one is opened under its capability ceiling)");
     session.cli(cli);
     if (int rc = session.applyCommandLine(argc, argv); rc != 0) return rc;
 
@@ -57,12 +57,12 @@ int main(int argc, char** argv) {
         return 2;
     }
     if (!parseTier(tierName, &test::gTier)) {
-        std::cerr << "--tier '" << tierName << "' is unknown; allowed high, current\n";
+        std::cerr << "--tier '" << tierName << "' is unknown; allowed " << tierNameList() << "\n";
         return 2;
     }
     DeviceOptions options;
     options.validation = true;
-    options.ceiling = test::gTier == Tier::Current ? CapabilityCeiling::GLES30 : CapabilityCeiling::None;
+    options.ceiling = tiers::row(test::gTier).ceiling;
     Result<std::unique_ptr<Device>> device = openDevice(test::gConfig, options);
     if (!device) {
         const bool required = std::getenv("SFX_REQUIRE_ALL_BACKENDS") != nullptr;

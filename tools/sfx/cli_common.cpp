@@ -9,7 +9,7 @@ namespace sfx::cli {
 
 void DeviceFlags::add(CLI::App& app) {
     app.add_option("--backend", backend, "auto | vulkan | gles | gl | gl-egl | gl-osmesa")->capture_default_str();
-    app.add_option("--tier", tier, "auto | current | high (current runs under the GL ES 3.0 ceiling)")
+    app.add_option("--tier", tier, "auto, or a tier (" + tierNameList() + "; a lower tier runs under its capability ceiling)")
         ->capture_default_str();
 }
 
@@ -18,12 +18,12 @@ Result<OpenedDevice> openDevice(const DeviceFlags& flags) {
     if (flags.tier != "auto") {
         Tier t;
         if (!parseTier(flags.tier, &t))
-            return invalidArgument("--tier", "'" + flags.tier + "'", "auto, current or high");
+            return invalidArgument("--tier", "'" + flags.tier + "'", "auto or " + tierNameList());
         tier = t;
     }
     DeviceOptions options;
     options.validation = false;
-    options.ceiling = tier == Tier::Current ? CapabilityCeiling::GLES30 : CapabilityCeiling::None;
+    options.ceiling = tier ? tiers::row(*tier).ceiling : CapabilityCeiling::None;
     OpenedDevice out;
     if (flags.backend == "auto") {
         Result<DeviceSelection> sel = openBestDevice(options);

@@ -110,12 +110,12 @@ int main(int argc, char** argv) {
         "  sfxc --manifest shader_src/programs.txt --check\n",
         "sfxc"};
     std::vector<std::string> files;
-    std::string target = "spirv", tierName = "high", output, manifest, outHeader, outSource;
+    std::string target = "spirv", tierName = kTierNames[kTierCount - 1], output, manifest, outHeader, outSource;
     std::vector<std::string> includes, defines;
     bool reflectFlag = false, check = false, verbose = false;
     app.add_option("files", files, "shader files (.vert .frag .comp) to compile one by one");
     app.add_option("--target,-t", target, "spirv | essl300 | essl310 | glsl330 | glsl450")->capture_default_str();
-    app.add_option("--tier", tierName, "current | high: defines SFX_TIER_CURRENT or SFX_TIER_HIGH")->capture_default_str();
+    app.add_option("--tier", tierName, "the tier (" + tierNameList() + "): defines what the tier table generates for it, e.g. SFX_TIER_HIGH")->capture_default_str();
     app.add_option("-o,--output", output, "output file (one input file); default: GLSL to stdout");
     app.add_option("-I,--include", includes, "include directory (repeatable)");
     app.add_option("-D,--define", defines, "NAME or NAME=VALUE (repeatable)");
@@ -146,7 +146,7 @@ int main(int argc, char** argv) {
     }
     Tier tier;
     if (!parseTier(tierName, &tier)) {
-        std::cerr << "sfxc: error: --tier '" << tierName << "' is unknown; allowed current, high\n";
+        std::cerr << "sfxc: error: --tier '" << tierName << "' is unknown; allowed " << tierNameList() << "\n";
         return 2;
     }
     if (!output.empty() && files.size() != 1) {

@@ -1,5 +1,7 @@
 #include "sfx/shader_compiler.hpp"
 
+#include "sfx/tiers.hpp"
+
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
@@ -119,8 +121,7 @@ Result<std::vector<uint32_t>> glslToSpirv(const StageSource& src, const CompileO
     shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
 
     std::string preamble = "#extension GL_GOOGLE_include_directive : require\n";
-    preamble += opts.tier == Tier::High ? "#define SFX_TIER_HIGH 1\n#define SFX_TIER 1\n"
-                                        : "#define SFX_TIER_CURRENT 1\n#define SFX_TIER 0\n";
+    for (const tiers::ShaderDefine& d : tiers::shaderDefines(opts.tier)) preamble += "#define " + d.name + " " + d.value + "\n";
     for (const auto& [k, v] : opts.defines) preamble += "#define " + k + " " + (v.empty() ? "1" : v) + "\n";
     shader.setPreamble(preamble.c_str());
     shader.setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientVulkan, 100);
@@ -242,9 +243,12 @@ Status reflect(const std::vector<uint32_t>& spirv, ShaderStage stage, const std:
 
 Result<CompiledProgram> compileProgram(const std::string& name, const std::vector<StageSource>& stages,
                                        const CompileOptions& options) {
+    if (uint32_t(options.tier) >= kTierCount)
+        return invalidArgument("CompileOptions.tier", std::to_string(uint32_t(options.tier)), tierNameList());
     CompiledProgram program;
     program.name = name;
     program.tier = options.tier;
+    const std::vector<ShaderDialect>& glDialects = tiers::row(options.tier).glDialects;
     std::string errors;
     for (const StageSource& src : stages) {
         Result<std::vector<uint32_t>> spirv = glslToSpirv(src, options);
@@ -257,10 +261,8 @@ Result<CompiledProgram> compileProgram(const std::string& name, const std::vecto
         code.spirv = std::move(spirv.value());
         SFX_TRY(reflect(code.spirv, src.stage, src.path, &program.resources));
         for (const DialectTarget& t : kGlTargets) {
-            // High-tier programs run only where the device has ESSL 3.1 / GLSL 4.3+; a
-            // current-tier program runs on any device, so it gets every dialect.
-            if (options.tier == Tier::High && (t.dialect == ShaderDialect::Essl300 || t.dialect == ShaderDialect::Glsl330))
-                continue;
+            // Only the dialects of devices that can run the tier (its row of the tier table).
+            if (std::find(glDialects.begin(), glDialects.end(), t.dialect) == glDialects.end()) continue;
             std::vector<std::pair<uint32_t, std::string>> blockNames;
             Result<std::string> text = spirvToGlsl(code.spirv, t, src.path, &blockNames);
             if (!text) return text.status();
@@ -286,6 +288,8 @@ Result<std::vector<ManifestEntry>> parseManifest(const std::string& path) {
     std::string line;
     int lineNo = 0;
     std::set<std::string> names;
+    std::string allTiers;  // "current,high": the manifest's spelling of every tier
+    for (uint32_t t = 0; t < kTierCount; ++t) allTiers += std::string(t ? "," : "") + kTierNames[t];
     while (std::getline(in, line)) {
         ++lineNo;
         if (auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
@@ -295,7 +299,7 @@ Result<std::vector<ManifestEntry>> parseManifest(const std::string& path) {
         if (w.empty()) continue;
         const std::string where = path + ":" + std::to_string(lineNo) + ": error: ";
         if (w.size() < 3)
-            return Status{StatusCode::FileError, where + "expected 'name tiers file...', e.g. 'blur current,high fullscreen.vert blur.frag'"};
+            return Status{StatusCode::FileError, where + "expected 'name tiers file...', e.g. 'blur " + allTiers + " fullscreen.vert blur.frag'"};
         ManifestEntry e;
         e.name = w[0];
         e.line = lineNo;
@@ -303,7 +307,7 @@ Result<std::vector<ManifestEntry>> parseManifest(const std::string& path) {
         std::istringstream tiers(w[1]);
         for (std::string t; std::getline(tiers, t, ',');) {
             Tier tier;
-            if (!parseTier(t, &tier)) return Status{StatusCode::FileError, where + "unknown tier '" + t + "'; allowed current, high"};
+            if (!parseTier(t, &tier)) return Status{StatusCode::FileError, where + "unknown tier '" + t + "'; allowed " + tierNameList()};
             e.tiers.push_back(tier);
         }
         for (size_t i = 2; i < w.size(); ++i) {

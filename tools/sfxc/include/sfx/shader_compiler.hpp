@@ -18,7 +18,7 @@ struct StageSource {
 };
 
 struct CompileOptions {
-    Tier tier = Tier::High;  // defines SFX_TIER_CURRENT or SFX_TIER_HIGH, and SFX_TIER (0 or 1)
+    Tier tier = Tier::High;  // gets the defines tiers::shaderDefines generates from its row (e.g. SFX_TIER_HIGH)
     std::vector<std::string> includeDirs;
     std::vector<std::pair<std::string, std::string>> defines;
 };
