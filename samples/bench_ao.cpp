@@ -26,6 +26,7 @@
 #include "scene.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/backends.hpp"
+#include "sfx/budget.hpp"
 #include "sfx/image_io.hpp"
 #include "sfx/reference/ao_reference.hpp"
 #include "sfx/tiers.hpp"
@@ -92,30 +93,6 @@ double median(std::vector<double> v) {
 
 bool contains(const std::vector<std::string>& list, const std::string& item) {
     return std::find(list.begin(), list.end(), item) != list.end();
-}
-
-// Median of `runs` timed recordings (after one warm-up run that compiles pipelines and warms
-// caches), each flushed on its own so a reading covers exactly one recording.
-Result<TimerReading> timeMedian(Device& dev, uint32_t runs, const std::function<Status()>& record) {
-    Result<TimerHandle> timer = dev.createTimer();
-    if (!timer) return timer.status();
-    std::vector<double> ms;
-    TimerReading last;
-    Status status = Status::ok();
-    for (uint32_t i = 0; i < runs + 1 && status; ++i) {
-        status = dev.beginTimer(timer.value());
-        if (status) status = record();
-        if (status) status = dev.endTimer(timer.value());
-        if (status) status = dev.flush();
-        if (!status) break;
-        Result<TimerReading> r = dev.readTimer(timer.value());
-        if (!r) status = r.status();
-        else if (i > 0) ms.push_back(r->milliseconds), last = r.value();
-    }
-    (void)dev.destroyTimer(timer.value());
-    if (!status) return status;
-    last.milliseconds = median(ms);
-    return last;
 }
 
 // One median per planned pass, from the effect's own profiling (plan() order).
@@ -369,7 +346,7 @@ int main(int argc, char** argv) {
                 continue;
             }
             // The copy is every ratio's denominator and costs little: give it more runs.
-            Result<TimerReading> copyTime = timeMedian(dev, 4 * o.runs, [&] { return copy.value()->record(); });
+            Result<TimerReading> copyTime = budget::timeMedian(dev, 4 * o.runs, [&] { return copy.value()->record(); });
             const double copyMs = copyTime ? copyTime->milliseconds : 0.0;
             std::cout << "  copy pass " << copyMs << " ms (" << toString(dev.caps().timing) << ")" << std::endl;
             Result<TextureHandle> outTex = dev.createTexture({o.width, o.height, 1, outFormat, kTextureSampled | kTextureRenderTarget, "bench-ao-out"});
@@ -410,7 +387,7 @@ int main(int argc, char** argv) {
                             continue;
                         }
                         const AoInputs in{DepthSource{g->depth, DepthKind::Hardware, g->camera}, g->normals, outTex.value()};
-                        Result<TimerReading> total = timeMedian(dev, o.runs, [&] { return ao.value()->dispatch(in); });
+                        Result<TimerReading> total = budget::timeMedian(dev, o.runs, [&] { return ao.value()->dispatch(in); });
                         Result<std::vector<PassCost>> passes = total ? profilePasses(dev, *ao.value(), in, o.runs)
                                                                      : Result<std::vector<PassCost>>(total.status());
                         if (!passes) {

@@ -76,13 +76,15 @@ std::vector<Parameter> parametersOf(AoTechnique t) {
     return p;
 }
 
-// Today's defaults with the bias made explicit, so the search starts from them.
+// The papers' look (every tier's default before the calibration), made explicit: the search
+// starts from it and "before the fit" scores it.
 AoSettings startingSettings(AoTechnique t) {
     AoSettings s;
     s.technique = t;
     s.normals = AoNormals::FromTexture;  // the G-buffer's normals, as a deferred renderer would
-    if (t == AoTechnique::Alchemy) s.bias = kAoAlchemyDefaultBias;
-    if (t == AoTechnique::Scalable) s.bias = kAoScalableDefaultBias;
+    s.intensity = 1.0f, s.contrast = 1.0f;
+    s.bias = t == AoTechnique::Alchemy ? kAoAlchemyDefaultBias : t == AoTechnique::Scalable ? kAoScalableDefaultBias : 0.0f;
+    s.crease.range = 1.0f, s.crease.bias = 0.25f;
     return s;
 }
 
