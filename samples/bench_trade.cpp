@@ -29,6 +29,8 @@ using namespace sfx;
 
 namespace {
 
+using samples::fixed;
+
 struct Options {
     uint32_t width = 320, height = 180, samples = 256;
     double radius = 0.5;
@@ -42,13 +44,6 @@ struct Truth {
     double seconds = 0;       // 0 when read from the cache
     double measuredStdError;  // from a second, independently seeded trace
 };
-
-std::string fixed(double v, int digits) {
-    if (std::isinf(v)) return "inf";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
-}
 
 // The truth for one scene and seed, from the cache or traced (and then cached).
 Result<truth::Image> cachedTruth(const Options& o, const samples::TruthScene& scene, uint32_t seed, double* seconds) {
@@ -236,25 +231,15 @@ int main(int argc, char** argv) {
         truths.emplace(name, std::move(t.value()));
     }
     std::string machine;
-    for (const std::string& backend : o.backends)
-        for (Tier tier : {Tier::High, Tier::Current}) {
-            BackendConfig config;
-            if (!parseBackendConfig(backend, &config)) {
-                std::cerr << "bench_trade: --backends: unknown backend '" << backend << "'\n";
-                return 1;
-            }
-            Result<std::unique_ptr<Device>> dev = samples::openForTier(config, tier);
-            if (!dev) {
-                std::cout << "bench_trade: skipping " << backend << "/" << toString(tier) << ": " << dev.status().toString() << std::endl;
-                continue;
-            }
-            if (machine.empty()) machine = dev.value()->caps().deviceName;
-            std::cout << "[" << elapsed() << " s] " << dev.value()->caps().summary() << ", tier " << toString(tier) << std::endl;
-            if (Status st = runDevice(*dev.value(), backend, tier, o, truths, rows); !st) {
-                std::cerr << "bench_trade: " << backend << "/" << toString(tier) << ": " << st.toString() << "\n";
-                return 1;
-            }
-        }
+    const Status run = samples::forEachDevice(o.backends, {Tier::High, Tier::Current}, "bench_trade", [&](Device& dev, const std::string& backend, Tier tier) {
+        if (machine.empty()) machine = dev.caps().deviceName;
+        std::cout << "[" << elapsed() << " s] " << dev.caps().summary() << ", tier " << toString(tier) << std::endl;
+        return runDevice(dev, backend, tier, o, truths, rows);
+    });
+    if (!run) {
+        std::cerr << "bench_trade: " << run.toString() << "\n";
+        return 1;
+    }
     std::filesystem::create_directories(o.outDir);
     std::ofstream csv(o.outDir + "/trade.csv");
     csv << "scene,width,height,radius,truth_samples,backend,tier,technique,blur,psnr_db,psnr_occluded_db,occluded_pixels,"

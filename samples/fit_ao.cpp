@@ -30,6 +30,8 @@ using namespace sfx;
 
 namespace {
 
+using samples::fixed;
+
 struct Options {
     uint32_t width = 320, height = 180, samples = 256;
     std::vector<double> trainingRadii{0.25, 0.7, 2.0};
@@ -39,13 +41,6 @@ struct Options {
     std::string cacheDir = "build/truth-cache", outDir = "docs";
     uint32_t refinements = 5;  // levels of the fine search (its step halves at each)
 };
-
-std::string fixed(double v, int digits) {
-    if (std::isinf(v)) return "inf";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
-}
 
 // A searched parameter: a field of AoSettings, its range and whether the search steps in log space.
 struct Parameter {

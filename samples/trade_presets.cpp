@@ -31,6 +31,8 @@ using namespace sfx;
 
 namespace {
 
+using samples::fixed;
+
 struct Options {
     std::vector<std::string> backends{"vulkan", "gles"};
     uint32_t costWidth = 1280, costHeight = 720, runs = 5, instants = 64;
@@ -39,13 +41,6 @@ struct Options {
     std::string costView = "contact";
     std::string outDir = "docs";
 };
-
-std::string fixed(double v, int digits) {
-    if (std::isinf(v)) return "inf";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
-}
 
 struct Row {
     std::string backend, tier, preset, effect, technique;  // technique "-" for motion blur
@@ -227,25 +222,15 @@ int main(int argc, char** argv) {
     std::map<Tier, std::map<std::string, double>> mbScores;
     std::vector<Row> rows;
     std::string machine;
-    for (const std::string& backend : o.backends)
-        for (Tier tier : {Tier::High, Tier::Current}) {
-            BackendConfig config;
-            if (!parseBackendConfig(backend, &config)) {
-                std::cerr << "trade_presets: --backends: unknown backend '" << backend << "'\n";
-                return 1;
-            }
-            Result<std::unique_ptr<Device>> dev = samples::openForTier(config, tier);
-            if (!dev) {
-                std::cout << "trade_presets: skipping " << backend << "/" << toString(tier) << ": " << dev.status().toString() << std::endl;
-                continue;
-            }
-            if (machine.empty()) machine = dev.value()->caps().deviceName;
-            std::cout << "[" << elapsed() << " s] " << dev.value()->caps().summary() << ", tier " << toString(tier) << std::endl;
-            if (Status st = runDevice(*dev.value(), backend, tier, o, views, cases.value(), aoScores[tier], mbScores[tier], rows); !st) {
-                std::cerr << "trade_presets: " << backend << "/" << toString(tier) << ": " << st.toString() << "\n";
-                return 1;
-            }
-        }
+    const Status run = samples::forEachDevice(o.backends, {Tier::High, Tier::Current}, "trade_presets", [&](Device& dev, const std::string& backend, Tier tier) {
+        if (machine.empty()) machine = dev.caps().deviceName;
+        std::cout << "[" << elapsed() << " s] " << dev.caps().summary() << ", tier " << toString(tier) << std::endl;
+        return runDevice(dev, backend, tier, o, views, cases.value(), aoScores[tier], mbScores[tier], rows);
+    });
+    if (!run) {
+        std::cerr << "trade_presets: " << run.toString() << "\n";
+        return 1;
+    }
     std::filesystem::create_directories(o.outDir);
     std::ofstream csv(o.outDir + "/trade_presets.csv");
     csv << "backend,tier,preset,effect,technique,taps,blur_or_max_radius_px,cost_width,cost_height,ms,copy_passes,psnr_db,psnr_occluded_db\n";

@@ -1,5 +1,7 @@
 #include "markdown_section.hpp"
 
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 
@@ -15,6 +17,13 @@ Status replaceMarkdownSection(const std::string& path, const std::string& name, 
     std::ofstream out(path);
     out << text;
     return out ? Status::ok() : Status{StatusCode::FileError, path + ": cannot write"};
+}
+
+std::string fixed(double v, int digits) {
+    if (std::isinf(v)) return "inf";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
 }
 
 }  // namespace sfx::samples

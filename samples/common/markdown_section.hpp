@@ -12,4 +12,7 @@ namespace sfx::samples {
 // with `text` when they are missing, creating the file when it is). FileError when unwritable.
 Status replaceMarkdownSection(const std::string& path, const std::string& name, const std::string& text);
 
+// A table cell: v with `digits` decimals, "inf" for an infinity (an exact PSNR).
+std::string fixed(double v, int digits);
+
 }  // namespace sfx::samples

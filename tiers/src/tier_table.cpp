@@ -114,20 +114,20 @@ Preset variant(const char* name, TierProfile p, uint32_t alchemy, uint32_t scala
 // samples/trade_presets (tools/run_trade.sh) on llvmpipe; the figures of docs/trade.md.
 std::vector<Preset> currentPresets() {
     const TierProfile d = currentDefault();
-    return {{kDefaultPreset, d, {{0, 0, 0}, 0}},
-            variant("low", d, 3, 2, 1, 5, 8.0f, {{0, 0, 0}, 0}),
-            variant("medium", d, 6, 4, 2, 7, 10.0f, {{0, 0, 0}, 0}),
-            variant("high", d, 10, 6, 3, 9, 14.0f, {{0, 0, 0}, 0}),
-            variant("ultra", d, 16, 10, 4, 13, 18.0f, {{0, 0, 0}, 0})};
+    return {{kDefaultPreset, d, {{26.95, 23.82, 22.45}, 31.05}},
+            variant("low", d, 3, 2, 1, 5, 8.0f, {{25.62, 23.20, 22.35}, 28.69}),
+            variant("medium", d, 6, 4, 2, 7, 10.0f, {{26.95, 23.82, 22.45}, 31.05}),
+            variant("high", d, 10, 6, 3, 9, 14.0f, {{27.13, 24.24, 22.54}, 33.79}),
+            variant("ultra", d, 16, 10, 4, 13, 18.0f, {{27.08, 23.68, 22.76}, 34.77})};
 }
 
 std::vector<Preset> highPresets() {
     const TierProfile d = highDefault();
-    return {{kDefaultPreset, d, {{0, 0, 0}, 0}},
-            variant("low", d, 4, 4, 2, 5, 10.0f, {{0, 0, 0}, 0}),
-            variant("medium", d, 8, 6, 4, 7, 14.0f, {{0, 0, 0}, 0}),
-            variant("high", d, 12, 9, 6, 9, 18.0f, {{0, 0, 0}, 0}),
-            variant("ultra", d, 24, 16, 8, 15, 24.0f, {{0, 0, 0}, 0})};
+    return {{kDefaultPreset, d, {{26.98, 25.53, 23.21}, 34.38}},
+            variant("low", d, 4, 4, 2, 5, 10.0f, {{26.76, 25.58, 22.10}, 30.49}),
+            variant("medium", d, 8, 6, 4, 7, 14.0f, {{27.11, 26.09, 22.77}, 32.77}),
+            variant("high", d, 12, 9, 6, 9, 18.0f, {{26.98, 25.53, 23.21}, 34.38}),
+            variant("ultra", d, 24, 16, 8, 15, 24.0f, {{26.77, 25.17, 23.36}, 34.67})};
 }
 
 std::vector<TierRow> makeTable() {
