@@ -22,13 +22,14 @@
 #include <sstream>
 
 #include "bench_device.hpp"
+#include "copy_pass.hpp"
 #include "scene.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/backends.hpp"
+#include "sfx/budget.hpp"
 #include "sfx/image_io.hpp"
 #include "sfx/reference/ao_reference.hpp"
 #include "sfx/tiers.hpp"
-#include "sfx_shaders.hpp"
 
 using namespace sfx;
 
@@ -92,30 +93,6 @@ double median(std::vector<double> v) {
 
 bool contains(const std::vector<std::string>& list, const std::string& item) {
     return std::find(list.begin(), list.end(), item) != list.end();
-}
-
-// Median of `runs` timed recordings (after one warm-up run that compiles pipelines and warms
-// caches), each flushed on its own so a reading covers exactly one recording.
-Result<TimerReading> timeMedian(Device& dev, uint32_t runs, const std::function<Status()>& record) {
-    Result<TimerHandle> timer = dev.createTimer();
-    if (!timer) return timer.status();
-    std::vector<double> ms;
-    TimerReading last;
-    Status status = Status::ok();
-    for (uint32_t i = 0; i < runs + 1 && status; ++i) {
-        status = dev.beginTimer(timer.value());
-        if (status) status = record();
-        if (status) status = dev.endTimer(timer.value());
-        if (status) status = dev.flush();
-        if (!status) break;
-        Result<TimerReading> r = dev.readTimer(timer.value());
-        if (!r) status = r.status();
-        else if (i > 0) ms.push_back(r->milliseconds), last = r.value();
-    }
-    (void)dev.destroyTimer(timer.value());
-    if (!status) return status;
-    last.milliseconds = median(ms);
-    return last;
 }
 
 // One median per planned pass, from the effect's own profiling (plan() order).
@@ -206,54 +183,6 @@ struct Row {
 };
 
 double ratio(double ms, double copyMs) { return copyMs > 0 ? ms / copyMs : 0.0; }
-
-// The copy baseline: one full-screen pass reading a texture of the AO output's format.
-struct CopyPass {
-    explicit CopyPass(Device& device) : dev(device) {}
-    CopyPass(const CopyPass&) = delete;
-    CopyPass& operator=(const CopyPass&) = delete;
-    Device& dev;
-    TextureHandle src, dst;
-    ProgramHandle program;
-    PipelineHandle pipeline;
-    Status record() {
-        RenderPassDesc rp;
-        rp.colors = {ColorAttachment{dst, 0, LoadOp::DontCare, {}}};
-        rp.debugName = "bench-copy";
-        DrawDesc dr;
-        dr.pipeline = pipeline;
-        dr.bindings.textures = {TextureBinding{gen::copy::uSource, src, 0, 1, {}}};
-        return dev.renderPass(rp, std::span<const DrawDesc>(&dr, 1));
-    }
-    ~CopyPass() {
-        if (!pipeline.isNull()) (void)dev.destroyPipeline(pipeline);
-        if (!program.isNull()) (void)dev.destroyProgram(program);
-        for (TextureHandle t : {src, dst})
-            if (!t.isNull()) (void)dev.destroyTexture(t);
-    }
-};
-
-Result<std::unique_ptr<CopyPass>> makeCopyPass(Device& dev, Tier tier, uint32_t w, uint32_t h, Format format) {
-    auto copy = std::make_unique<CopyPass>(dev);
-    Result<TextureHandle> src = dev.createTexture({w, h, 1, format, kTextureSampled | kTextureRenderTarget, "bench-copy-src"});
-    if (!src) return src.status();
-    copy->src = src.value();
-    Result<TextureHandle> dst = dev.createTexture({w, h, 1, format, kTextureSampled | kTextureRenderTarget, "bench-copy-dst"});
-    if (!dst) return dst.status();
-    copy->dst = dst.value();
-    Result<const CompiledProgram*> compiled = shaders::find(gen::copy::kName, tier);
-    if (!compiled) return compiled.status();
-    Result<ProgramHandle> program = dev.createProgram(*compiled.value());
-    if (!program) return program.status();
-    copy->program = program.value();
-    GraphicsPipelineDesc pd;
-    pd.program = copy->program;
-    pd.colorFormats = {format};
-    Result<PipelineHandle> pipeline = dev.createGraphicsPipeline(pd);
-    if (!pipeline) return pipeline.status();
-    copy->pipeline = pipeline.value();
-    return copy;
-}
 
 void printRow(const Row& r) {
     std::printf("  %-6s %-7s %-8s %-7s r=%-4.2f  %7.3f ms = x%-6.1f", r.backend.c_str(), r.tier.c_str(), r.technique.c_str(),
@@ -411,13 +340,13 @@ int main(int argc, char** argv) {
                 continue;
             }
             const Format outFormat = samples::aoOutputFormat(dev);
-            Result<std::unique_ptr<CopyPass>> copy = makeCopyPass(dev, tier, o.width, o.height, outFormat);
+            Result<std::unique_ptr<samples::CopyPass>> copy = samples::makeCopyPass(dev, tier, o.width, o.height, outFormat);
             if (!copy) {
                 std::cout << "bench_ao: copy pass: " << copy.status().toString() << std::endl;
                 continue;
             }
             // The copy is every ratio's denominator and costs little: give it more runs.
-            Result<TimerReading> copyTime = timeMedian(dev, 4 * o.runs, [&] { return copy.value()->record(); });
+            Result<TimerReading> copyTime = budget::timeMedian(dev, 4 * o.runs, [&] { return copy.value()->record(); });
             const double copyMs = copyTime ? copyTime->milliseconds : 0.0;
             std::cout << "  copy pass " << copyMs << " ms (" << toString(dev.caps().timing) << ")" << std::endl;
             Result<TextureHandle> outTex = dev.createTexture({o.width, o.height, 1, outFormat, kTextureSampled | kTextureRenderTarget, "bench-ao-out"});
@@ -458,7 +387,7 @@ int main(int argc, char** argv) {
                             continue;
                         }
                         const AoInputs in{DepthSource{g->depth, DepthKind::Hardware, g->camera}, g->normals, outTex.value()};
-                        Result<TimerReading> total = timeMedian(dev, o.runs, [&] { return ao.value()->dispatch(in); });
+                        Result<TimerReading> total = budget::timeMedian(dev, o.runs, [&] { return ao.value()->dispatch(in); });
                         Result<std::vector<PassCost>> passes = total ? profilePasses(dev, *ao.value(), in, o.runs)
                                                                      : Result<std::vector<PassCost>>(total.status());
                         if (!passes) {

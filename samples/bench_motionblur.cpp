@@ -32,6 +32,7 @@
 #include "sfx/motion_blur.hpp"
 #include "sfx/reference/motion_blur_reference.hpp"
 #include "bench_device.hpp"
+#include "motion_cases.hpp"
 #include "scene.hpp"
 
 using namespace sfx;
@@ -39,163 +40,12 @@ using namespace sfx::reference;
 
 namespace {
 
-struct NamedScene {
-    std::string name;
-    Scene scene;
-};
-
-// Scenes laid out in fractions of the picture, so every size shows the same thing; velocities
-// scale with the height as the tier radii do. At 180 rows the displacements (8-10 px, a blur
-// radius of 4-5 px) sit at the high tier's radius (4.5 px there) and beyond the current
-// tier's (2.5 px): the current tier is expected to clamp, the high tier barely.
-std::vector<NamedScene> makeScenes(uint32_t w, uint32_t h) {
-    const double s = h / 180.0;  // pixels per "design pixel" (designed at 320x180)
-    std::vector<NamedScene> out;
-    {
-        // A ball flying across a still textured wall.
-        Scene sc{w, h, {}};
-        SceneLayer wall;
-        wall.depth = 20, wall.cell = 10 * s, wall.colorA = {0.55, 0.5, 0.45, 1}, wall.colorB = {0.25, 0.3, 0.35, 1};
-        SceneLayer ball;
-        ball.shape = SceneLayer::Shape::Disc, ball.depth = 6, ball.centre = {w * 0.45, h * 0.5}, ball.halfSize = {28 * s, 0};
-        ball.cell = 7 * s, ball.colorA = {1.0, 0.85, 0.2, 1}, ball.colorB = {0.9, 0.2, 0.1, 1}, ball.velocityPx = {10 * s, 2 * s};
-        sc.layers = {wall, ball};
-        out.push_back({"ball", sc});
-    }
-    {
-        // A camera pan: the background slides, a post tracked by the camera stays still in front,
-        // and a box moves against the pan behind the post.
-        Scene sc{w, h, {}};
-        SceneLayer bg;
-        bg.depth = 40, bg.cell = 12 * s, bg.colorA = {0.2, 0.45, 0.7, 1}, bg.colorB = {0.8, 0.85, 0.9, 1}, bg.velocityPx = {-8 * s, 0};
-        SceneLayer box;
-        box.shape = SceneLayer::Shape::Rect, box.depth = 15, box.centre = {w * 0.55, h * 0.45}, box.halfSize = {30 * s, 22 * s};
-        box.cell = 6 * s, box.colorA = {0.9, 0.3, 0.3, 1}, box.colorB = {0.3, 0.1, 0.1, 1}, box.velocityPx = {9 * s, -3 * s};
-        SceneLayer post;
-        post.shape = SceneLayer::Shape::Rect, post.depth = 4, post.centre = {w * 0.5, h * 0.5}, post.halfSize = {7 * s, h * 0.6};
-        post.cell = 5 * s, post.colorA = {0.2, 0.8, 0.3, 1}, post.colorB = {0.1, 0.4, 0.15, 1};
-        sc.layers = {bg, box, post};
-        out.push_back({"pan", sc});
-    }
-    {
-        // Two discs crossing at different depths, both moving, over a still floor.
-        Scene sc{w, h, {}};
-        SceneLayer floor;
-        floor.depth = 25, floor.cell = 8 * s, floor.colorA = {0.4, 0.4, 0.4, 1}, floor.colorB = {0.6, 0.6, 0.6, 1};
-        SceneLayer a;
-        a.shape = SceneLayer::Shape::Disc, a.depth = 8, a.centre = {w * 0.42, h * 0.48}, a.halfSize = {24 * s, 0};
-        a.colorA = {0.95, 0.6, 0.1, 1}, a.velocityPx = {8 * s, 0};
-        SceneLayer b = a;
-        b.depth = 12, b.centre = {w * 0.56, h * 0.55}, b.colorA = {0.2, 0.3, 0.95, 1}, b.cell = 6 * s, b.colorB = {0.9, 0.9, 1, 1};
-        b.velocityPx = {-6 * s, -4 * s};
-        sc.layers = {floor, b, a};
-        out.push_back({"crossing", sc});
-    }
-    return out;
-}
-
 io::Image toImage(const ColorGrid& g) {
     io::Image img(g.width, g.height, 3);
     for (uint32_t y = 0; y < g.height; ++y)
         for (uint32_t x = 0; x < g.width; ++x)
             for (uint32_t c = 0; c < 3; ++c) img.at(x, y, c) = float(g.at(x, y)[c]);
     return img;
-}
-
-struct Errors {
-    double rmse = 0, rmseSilhouette = 0;
-};
-Errors errorsOf(const ColorGrid& a, const ColorGrid& truth, const std::vector<bool>& mask) {
-    double all = 0, sil = 0;
-    size_t nSil = 0;
-    for (size_t i = 0; i < a.values.size(); ++i) {
-        double e = 0;
-        for (int c = 0; c < 3; ++c) e += std::pow(a.values[i][c] - truth.values[i][c], 2);
-        all += e;
-        if (mask[i]) sil += e, ++nSil;
-    }
-    return {std::sqrt(all / (3.0 * a.values.size())), nSil ? std::sqrt(sil / (3.0 * nSil)) : 0.0};
-}
-
-struct Run {
-    ColorGrid output;
-    double medianMs = 0;
-    TimingSource source = TimingSource::GpuTimestamps;
-};
-
-// Uploads a colour grid as RGBA32F (the bench's colorFormat: no rounding before the effect).
-Result<TextureHandle> uploadColor(Device& device, const ColorGrid& color, const char* name) {
-    std::vector<float> c;
-    c.reserve(color.values.size() * 4);
-    for (const auto& px : color.values)
-        for (double ch : px) c.push_back(float(ch));
-    Result<TextureHandle> t = device.createTexture({color.width, color.height, 1, Format::RGBA32F, kTextureSampled, name});
-    if (!t) return t.status();
-    Status s = device.writeTexture(t.value(), 0, c.data(), c.size() * 4);
-    if (!s) {
-        (void)device.destroyTexture(t.value());
-        return s;
-    }
-    return t;
-}
-
-// Dispatches the effect on `in` `runs` times after one warm-up (which compiles and fills
-// caches) and reads the last output back. Shared by the 2.5D and the 3D cases so both are
-// timed the same way.
-Result<Run> timeEffect(Device& device, Tier tier, uint32_t w, uint32_t h, const MotionBlurInputs& in, uint32_t runs) {
-    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(device, {w, h, tiers::profile(tier), Format::RGBA32F, in.depth.kind});
-    if (!mb) return mb.status();
-    Result<TimerHandle> timer = device.createTimer();
-    if (!timer) return timer.status();
-    std::vector<double> times;
-    Run run;
-    for (uint32_t i = 0; i <= runs; ++i) {
-        SFX_TRY(device.beginTimer(timer.value()));
-        SFX_TRY(mb.value()->dispatch(in));
-        SFX_TRY(device.endTimer(timer.value()));
-        SFX_TRY(device.flush());
-        Result<TimerReading> r = device.readTimer(timer.value());
-        if (!r) return r.status();
-        run.source = r->source;
-        if (i > 0) times.push_back(r->milliseconds);
-    }
-    std::sort(times.begin(), times.end());
-    run.medianMs = times[times.size() / 2];
-    std::vector<float> out(size_t(w) * h * 4);
-    SFX_TRY(device.readTexture(mb.value()->output(), 0, out.data(), out.size() * 4));
-    run.output = ColorGrid(w, h);
-    for (size_t i = 0; i < run.output.values.size(); ++i)
-        for (int ch = 0; ch < 4; ++ch) run.output.values[i][ch] = out[i * 4 + size_t(ch)];
-    (void)device.destroyTimer(timer.value());
-    return run;
-}
-
-// The 2.5D scenes: colour, linear depth and velocity are uploaded exactly as rendered.
-Result<Run> runEffect(Device& device, Tier tier, const SceneFrame& f, const CameraProjection& cam, uint32_t runs) {
-    const uint32_t w = f.color.width, h = f.color.height;
-    std::vector<float> z, v;
-    for (double d : f.depth.values) z.push_back(float(d));
-    for (const auto& e : f.velocity.values) v.push_back(float(e[0])), v.push_back(float(e[1]));
-    Result<TextureHandle> ct = uploadColor(device, f.color, "bench-color");
-    if (!ct) return ct.status();
-    Result<TextureHandle> zt = device.createTexture({w, h, 1, Format::R32F, kTextureSampled, "bench-depth"});
-    Result<TextureHandle> vt = device.createTexture({w, h, 1, Format::RG32F, kTextureSampled, "bench-velocity"});
-    auto dispatch = [&]() -> Result<Run> {
-        if (!zt) return zt.status();
-        if (!vt) return vt.status();
-        SFX_TRY(device.writeTexture(zt.value(), 0, z.data(), z.size() * 4));
-        SFX_TRY(device.writeTexture(vt.value(), 0, v.data(), v.size() * 4));
-        MotionBlurInputs in;
-        in.color = ct.value();
-        in.depth = {zt.value(), DepthKind::Linear, cam};
-        in.velocity = vt.value();
-        return timeEffect(device, tier, w, h, in, runs);
-    };
-    Result<Run> run = dispatch();
-    (void)device.destroyTexture(ct.value());
-    if (zt) (void)device.destroyTexture(zt.value());
-    if (vt) (void)device.destroyTexture(vt.value());
-    return run;
 }
 
 // ---- The 3D sample scenes (samples/common/scene.hpp) -----------------------------------------
@@ -329,16 +179,16 @@ std::vector<bool> sceneSilhouetteMask(const ShadedFrame& f, uint32_t radius) {
 
 // The effect on the G-buffer as a host would run it: its D32F hardware depth and RG16F
 // velocity directly, or (camera) no velocity and the camera's matrices.
-Result<Run> runOnGBuffer(Device& device, Tier tier, const samples::GBuffer& g, const ColorGrid& color, const CameraMotion* camera,
+Result<samples::MotionBlurRun> runOnGBuffer(Device& device, Tier tier, const samples::GBuffer& g, const ColorGrid& color, const CameraMotion* camera,
                          uint32_t runs) {
-    Result<TextureHandle> ct = uploadColor(device, color, "bench-scene-color");
+    Result<TextureHandle> ct = samples::uploadColor(device, color, "bench-scene-color");
     if (!ct) return ct.status();
     MotionBlurInputs in;
     in.color = ct.value();
     in.depth = {g.depth, DepthKind::Hardware, g.camera};
     if (camera) in.camera = *camera;
     else in.velocity = g.velocity;
-    Result<Run> run = timeEffect(device, tier, g.width, g.height, in, runs);
+    Result<samples::MotionBlurRun> run = samples::timeMotionBlur(device, tiers::profile(tier), {}, g.width, g.height, in, runs);
     (void)device.destroyTexture(ct.value());
     return run;
 }
@@ -382,7 +232,7 @@ Status runSceneCases(Device& device, const std::string& backend, Tier tier, cons
             Result<ShadedFrame> frame = readFrame(device, g.value());
             if (!frame) return frame.status();
             const std::vector<bool> mask = sceneSilhouetteMask(frame.value(), 4 + o.height / 60);
-            const Errors input = errorsOf(frame->color, truth.value(), mask);
+            const samples::ColorErrors input = samples::colorErrors(frame->color, truth.value(), mask);
             double maxSpeed = 0;
             for (const auto& v : frame->velocity.values) maxSpeed = std::max(maxSpeed, std::hypot(v[0], v[1]));
             std::cout << "  input (no blur): rmse " << input.rmse << ", near moving silhouettes " << input.rmseSilhouette
@@ -412,14 +262,14 @@ Status runSceneCases(Device& device, const std::string& backend, Tier tier, cons
                             diff += std::hypot(v.values[i][0] - frame->velocity.values[i][0], v.values[i][1] - frame->velocity.values[i][1]), ++n;
                     std::cout << "  camera-only velocity vs the G-buffer's: mean difference " << (n ? diff / n : 0.0) << " px\n";
                 }
-                Result<Run> run = runOnGBuffer(device, tier, g.value(), frame->color, c.cameraOnly ? &motion : nullptr, o.runs);
+                Result<samples::MotionBlurRun> run = runOnGBuffer(device, tier, g.value(), frame->color, c.cameraOnly ? &motion : nullptr, o.runs);
                 if (!run) {
                     std::cout << "  " << c.name << " " << backend << "/" << toString(tier) << ": FAILED " << run.status().toString() << "\n";
                     continue;
                 }
                 const ColorGrid ref = motionBlur(frame->color, frame->linearDepth, v, p).color;
-                const Errors e = errorsOf(run->output, truth.value(), mask);
-                const Errors vsRef = errorsOf(run->output, ref, std::vector<bool>(mask.size(), false));
+                const samples::ColorErrors e = samples::colorErrors(run->output, truth.value(), mask);
+                const samples::ColorErrors vsRef = samples::colorErrors(run->output, ref, std::vector<bool>(mask.size(), false));
                 const char* velocity = c.cameraOnly ? "camera" : "buffer";
                 std::printf("  %-15s %-10s %-7s %u taps r=%u px: %8.3f ms (%s), rmse %.4f, silhouettes %.4f, vs reference %.5f\n",
                             c.name.c_str(), backend.c_str(), toString(tier), p.taps, p.radiusPx, run->medianMs, timingLabel(run->source),
@@ -440,7 +290,7 @@ Status runSceneCases(Device& device, const std::string& backend, Tier tier, cons
 }
 
 Status writeInputs(const std::string& dir, uint32_t w, uint32_t h) {
-    const Scene scene = makeScenes(w, h)[0].scene;
+    const Scene scene = samples::makeMotionScenes(w, h)[0].scene;
     const SceneFrame f = scene.render(0);
     io::Image color(w, h, 3), depth(w, h, 1), vel(w, h, 2), vel3(w, h, 3);
     for (uint32_t y = 0; y < h; ++y)
@@ -514,12 +364,12 @@ int main(int argc, char** argv) {
     pd.aspect = double(width) / height;
     const CameraProjection cam = makePerspective(pd).value();
 
-    for (const NamedScene& ns : makeScenes(width, height)) {
+    for (const samples::NamedMotionScene& ns : samples::makeMotionScenes(width, height)) {
         std::cout << "[" << ns.name << "] ground truth from " << instants << " instants at " << width << "x" << height << "...\n" << std::flush;
         const ColorGrid truth = ns.scene.groundTruth(instants);
         const SceneFrame frame = ns.scene.render(0);
         const std::vector<bool> mask = movingSilhouetteMask(frame, ns.scene, 4 + height / 60);
-        const Errors input = errorsOf(frame.color, truth, mask);
+        const samples::ColorErrors input = samples::colorErrors(frame.color, truth, mask);
         std::cout << "  input (no blur): rmse " << input.rmse << ", near moving silhouettes " << input.rmseSilhouette << "\n";
         if (!imagesDir.empty()) {
             (void)io::writePng(imagesDir + "/mb_" + ns.name + "_input.png", toImage(frame.color));
@@ -528,7 +378,7 @@ int main(int argc, char** argv) {
         for (Tier tier : {Tier::Current, Tier::High}) {
             const MotionBlurParams p = resolveMotionBlur(tiers::profile(tier), {}, height).value();
             const ColorGrid ref = motionBlur(frame.color, frame.depth, frame.velocity, p).color;
-            const Errors refErr = errorsOf(ref, truth, mask);
+            const samples::ColorErrors refErr = samples::colorErrors(ref, truth, mask);
             std::cout << "  reference " << toString(tier) << ": rmse " << refErr.rmse << ", silhouettes " << refErr.rmseSilhouette << "\n";
             // The tier picture is the GPU output of the first backend that runs; the CPU
             // reference is written (named as such) only when none does.
@@ -539,13 +389,13 @@ int main(int argc, char** argv) {
                     std::cout << "  " << toString(config) << "/" << toString(tier) << ": skipped (" << device.status().toString() << ")\n";
                     continue;
                 }
-                Result<Run> run = runEffect(*device.value(), tier, frame, cam, runs);
+                Result<samples::MotionBlurRun> run = samples::runMotionBlur(*device.value(), tiers::profile(tier), {}, frame, cam, runs);
                 if (!run) {
                     std::cout << "  " << toString(config) << "/" << toString(tier) << ": FAILED " << run.status().toString() << "\n";
                     continue;
                 }
-                const Errors e = errorsOf(run->output, truth, mask);
-                const Errors vsRef = errorsOf(run->output, ref, std::vector<bool>(mask.size(), false));
+                const samples::ColorErrors e = samples::colorErrors(run->output, truth, mask);
+                const samples::ColorErrors vsRef = samples::colorErrors(run->output, ref, std::vector<bool>(mask.size(), false));
                 const char* source = timingLabel(run->source);
                 std::printf("  %-10s %-7s %u taps r=%u px: %8.3f ms (%s), rmse %.4f, silhouettes %.4f, vs reference %.5f\n",
                             toString(config).c_str(), toString(tier), p.taps, p.radiusPx, run->medianMs, source, e.rmse,

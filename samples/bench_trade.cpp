@@ -18,20 +18,18 @@
 #include <sstream>
 
 #include "bench_device.hpp"
+#include "markdown_section.hpp"
 #include "scene.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/tiers.hpp"
-#include "sfx/truth_file.hpp"
 #include "sfx/truth_metrics.hpp"
-#include "truth_scenes.hpp"
+#include "truth_cache.hpp"
 
 using namespace sfx;
 
 namespace {
 
-// Bumped when the tracer's definition or the scenes' geometry change, so stale cached truth
-// images are not read.
-constexpr int kTruthVersion = 1;
+using samples::fixed;
 
 struct Options {
     uint32_t width = 320, height = 180, samples = 256;
@@ -47,39 +45,13 @@ struct Truth {
     double measuredStdError;  // from a second, independently seeded trace
 };
 
-std::string fixed(double v, int digits) {
-    if (std::isinf(v)) return "inf";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
-}
-
 // The truth for one scene and seed, from the cache or traced (and then cached).
 Result<truth::Image> cachedTruth(const Options& o, const samples::TruthScene& scene, uint32_t seed, double* seconds) {
-    std::ostringstream key;
-    key << o.cacheDir << "/v" << kTruthVersion << "_" << scene.name << "_" << o.width << "x" << o.height << "_r" << o.radius << "_n"
-        << o.samples << "_s" << seed << ".exr";
-    *seconds = 0;
-    if (std::filesystem::exists(key.str())) {
-        Result<truth::Image> cached = truth::readImageFile(key.str());
-        if (cached && cached->width == o.width && cached->height == o.height) {
-            cached->samples = o.samples;
-            return cached;
-        }
-    }
-    const auto start = std::chrono::steady_clock::now();
-    Result<std::unique_ptr<truth::Tracer>> tracer = truth::Tracer::create(scene.geometry);
-    if (!tracer) return tracer.status();
     truth::Settings s;
     s.radius = o.radius;
     s.samples = o.samples;
     s.seed = seed;
-    Result<truth::Image> image = tracer.value()->trace(scene.camera, s);
-    if (!image) return image.status();
-    *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::filesystem::create_directories(o.cacheDir);
-    SFX_TRY(truth::writeImageFile(key.str(), image.value()));
-    return image;
+    return samples::cachedTruth(o.cacheDir, scene, s, seconds);
 }
 
 Result<Truth> truthFor(const Options& o, const std::string& name) {
@@ -226,19 +198,6 @@ std::string markdown(const Options& o, const std::vector<Row>& rows, const std::
     return md.str();
 }
 
-// Replaces what lies between the markers of <out-dir>/trade.md (or writes the file with them).
-Status writeMarkdown(const std::string& path, const std::string& table) {
-    const std::string begin = "<!-- bench_trade: begin -->\n", end = "<!-- bench_trade: end -->";
-    std::string text;
-    if (std::ifstream in(path); in) text.assign(std::istreambuf_iterator<char>(in), {});
-    const size_t b = text.find(begin), e = text.find(end);
-    if (b == std::string::npos || e == std::string::npos || e < b) text += "\n" + begin + table + end + "\n";
-    else text = text.substr(0, b + begin.size()) + table + text.substr(e);
-    std::ofstream out(path);
-    out << text;
-    return out ? Status::ok() : Status{StatusCode::FileError, path + ": cannot write"};
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -272,25 +231,15 @@ int main(int argc, char** argv) {
         truths.emplace(name, std::move(t.value()));
     }
     std::string machine;
-    for (const std::string& backend : o.backends)
-        for (Tier tier : {Tier::High, Tier::Current}) {
-            BackendConfig config;
-            if (!parseBackendConfig(backend, &config)) {
-                std::cerr << "bench_trade: --backends: unknown backend '" << backend << "'\n";
-                return 1;
-            }
-            Result<std::unique_ptr<Device>> dev = samples::openForTier(config, tier);
-            if (!dev) {
-                std::cout << "bench_trade: skipping " << backend << "/" << toString(tier) << ": " << dev.status().toString() << std::endl;
-                continue;
-            }
-            if (machine.empty()) machine = dev.value()->caps().deviceName;
-            std::cout << "[" << elapsed() << " s] " << dev.value()->caps().summary() << ", tier " << toString(tier) << std::endl;
-            if (Status st = runDevice(*dev.value(), backend, tier, o, truths, rows); !st) {
-                std::cerr << "bench_trade: " << backend << "/" << toString(tier) << ": " << st.toString() << "\n";
-                return 1;
-            }
-        }
+    const Status run = samples::forEachDevice(o.backends, {Tier::High, Tier::Current}, "bench_trade", [&](Device& dev, const std::string& backend, Tier tier) {
+        if (machine.empty()) machine = dev.caps().deviceName;
+        std::cout << "[" << elapsed() << " s] " << dev.caps().summary() << ", tier " << toString(tier) << std::endl;
+        return runDevice(dev, backend, tier, o, truths, rows);
+    });
+    if (!run) {
+        std::cerr << "bench_trade: " << run.toString() << "\n";
+        return 1;
+    }
     std::filesystem::create_directories(o.outDir);
     std::ofstream csv(o.outDir + "/trade.csv");
     csv << "scene,width,height,radius,truth_samples,backend,tier,technique,blur,psnr_db,psnr_occluded_db,occluded_pixels,"
@@ -301,7 +250,7 @@ int main(int argc, char** argv) {
             << fixed(r.error.psnrOccluded, 3) << "," << r.error.occludedPixels << "," << fixed(r.error.meanSignedError, 5) << ","
             << fixed(r.error.meanSignedErrorOccluded, 5) << "," << fixed(r.error.worstError, 4) << "," << r.error.worstX << ","
             << r.error.worstY << "\n";
-    if (Status st = writeMarkdown(o.outDir + "/trade.md", markdown(o, rows, truths, machine.empty() ? "no device" : machine)); !st) {
+    if (Status st = samples::replaceMarkdownSection(o.outDir + "/trade.md", "bench_trade", markdown(o, rows, truths, machine.empty() ? "no device" : machine)); !st) {
         std::cerr << "bench_trade: " << st.toString() << "\n";
         return 1;
     }

@@ -1,5 +1,7 @@
 #include "bench_device.hpp"
 
+#include <iostream>
+
 #include "sfx/tiers.hpp"
 
 namespace sfx::samples {
@@ -13,6 +15,23 @@ Result<std::unique_ptr<Device>> openForTier(const BackendConfig& config, Tier ti
     Result<tiers::TierChoice> choice = tiers::choose(device.value()->caps(), tier);
     if (!choice) return choice.status();
     return device;
+}
+
+Status forEachDevice(const std::vector<std::string>& backends, const std::vector<Tier>& tierList, const std::string& program,
+                     const std::function<Status(Device&, const std::string& backend, Tier)>& run) {
+    for (const std::string& backend : backends)
+        for (Tier tier : tierList) {
+            BackendConfig config;
+            if (!parseBackendConfig(backend, &config)) return invalidArgument("--backends", "'" + backend + "'", "vulkan, gles, gl, gl-egl, gl-osmesa");
+            Result<std::unique_ptr<Device>> dev = openForTier(config, tier);
+            if (!dev) {
+                std::cout << program << ": skipping " << backend << "/" << toString(tier) << ": " << dev.status().toString() << std::endl;
+                continue;
+            }
+            if (Status st = run(*dev.value(), backend, tier); !st)
+                return Status{st.code(), backend + "/" + toString(tier) + ": " + st.message()};
+        }
+    return Status::ok();
 }
 
 Format aoOutputFormat(const Device& device) {

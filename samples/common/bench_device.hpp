@@ -2,7 +2,10 @@
 // and reading an AO output back.
 #pragma once
 
+#include <functional>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "sfx/backends.hpp"
 #include "sfx/reference/depth_reference.hpp"
@@ -13,6 +16,12 @@ namespace sfx::samples {
 // GL ES 3.0 ceiling, so its cost is the one a GL ES 3.0 class device would pay for the same
 // shaders. UnsupportedTier when the device cannot run the tier.
 Result<std::unique_ptr<Device>> openForTier(const BackendConfig& config, Tier tier);
+
+// Opens every backend (by name, e.g. "vulkan") x tier with openForTier and calls run on each
+// device; one that cannot run the tier is skipped with a line on stdout saying why. An unknown
+// backend name is InvalidArgument; the first error of run stops the loop, named by backend/tier.
+Status forEachDevice(const std::vector<std::string>& backends, const std::vector<Tier>& tiers, const std::string& program,
+                     const std::function<Status(Device&, const std::string& backend, Tier)>& run);
 
 // The format an AO output gets on `device`: R32F where renderable, else RGBA8.
 Format aoOutputFormat(const Device& device);

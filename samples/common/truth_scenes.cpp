@@ -39,6 +39,20 @@ truth::Geometry worldGeometry(const AnalyticSceneDesc& scene) {
     return g;
 }
 
+Result<TruthScene> makeTruthScene(const Scene& scene, uint32_t width, uint32_t height) {
+    if (width == 0 || height == 0) return invalidArgument("width/height", std::to_string(width) + "x" + std::to_string(height), "at least 1x1");
+    TruthScene t;
+    t.name = scene.name;
+    t.camera.width = width;
+    t.camera.height = height;
+    t.geometry = worldGeometry(scene);
+    t.camera.view = scene.view(0.0);
+    Result<CameraProjection> projection = scene.projection(width, height, ClipDepthRange::ZeroToOne);
+    if (!projection) return projection.status();
+    t.camera.projection = projection.value();
+    return t;
+}
+
 Result<TruthScene> makeTruthScene(const std::string& name, uint32_t width, uint32_t height) {
     if (width == 0 || height == 0) return invalidArgument("width/height", std::to_string(width) + "x" + std::to_string(height), "at least 1x1");
     TruthScene t;
@@ -54,12 +68,7 @@ Result<TruthScene> makeTruthScene(const std::string& name, uint32_t width, uint3
             return t;
         }
     } else if (Result<Scene> scene = makeScene(name); scene) {
-        t.geometry = worldGeometry(scene.value());
-        t.camera.view = scene->view(0.0);
-        Result<CameraProjection> projection = scene->projection(width, height, ClipDepthRange::ZeroToOne);
-        if (!projection) return projection.status();
-        t.camera.projection = projection.value();
-        return t;
+        return makeTruthScene(scene.value(), width, height);
     } else if (scene.status().code() != StatusCode::InvalidArgument) {
         return scene.status();  // the bunny's file
     }

@@ -22,6 +22,8 @@ struct TruthScene {
 std::vector<std::string> truthSceneNames();
 // InvalidArgument naming the known scenes; FileError from the bunny's loader.
 Result<TruthScene> makeTruthScene(const std::string& name, uint32_t width, uint32_t height);
+// A rasterised scene as given (e.g. with its camera moved); the truth scene takes its name.
+Result<TruthScene> makeTruthScene(const Scene& scene, uint32_t width, uint32_t height);
 
 // Every mesh's triangles moved by its model matrix (t = 0, as the benchmarks render).
 truth::Geometry worldGeometry(const Scene& scene);

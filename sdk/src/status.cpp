@@ -16,6 +16,7 @@ const char* toString(StatusCode code) {
     case StatusCode::BackendUnavailable: return "BackendUnavailable";
     case StatusCode::DeviceError: return "DeviceError";
     case StatusCode::FileError: return "FileError";
+    case StatusCode::OverBudget: return "OverBudget";
     }
     return "Unknown";
 }

@@ -76,7 +76,11 @@ AoSettings aoTestSettings(AoTechnique t, double scale) {
     AoSettings s;
     s.technique = t;
     s.radius = float(0.5 * scale);
-    if (t == AoTechnique::Scalable) s.intensity = 2.0f;
+    // The papers' look, not the tier's calibrated one, which would move the analytic expectations.
+    s.intensity = t == AoTechnique::Scalable ? 2.0f : 1.0f;
+    s.contrast = 1.0f;
+    s.bias = t == AoTechnique::Alchemy ? kAoAlchemyDefaultBias : t == AoTechnique::Scalable ? kAoScalableDefaultBias : -1.0f;
+    s.crease.bias = 0.25f;
     s.crease.range = float(scale);
     s.crease.fadeStart = float(50 * scale);
     s.crease.fadeEnd = float(100 * scale);

@@ -28,7 +28,11 @@ AoConfig configFor(AoTechnique t, Tier tier, double scale = 1.0, bool blur = tru
     s.radius = float(radius * scale);
     s.blur = blur;
     // Scalable's squared sum makes faint occlusion fainter; 2 keeps the contact shadow measurable.
-    if (t == AoTechnique::Scalable) s.intensity = 2.0f;
+    // The papers' look (the tier's calibrated one would move the analytic expectations).
+    s.intensity = t == AoTechnique::Scalable ? 2.0f : 1.0f;
+    s.contrast = 1.0f;
+    s.bias = t == AoTechnique::Alchemy ? kAoAlchemyDefaultBias : t == AoTechnique::Scalable ? kAoScalableDefaultBias : -1.0f;
+    s.crease.bias = 0.25f;
     s.crease.range = float(1.0 * scale);
     s.crease.fadeStart = float(50 * scale);
     s.crease.fadeEnd = float(100 * scale);
@@ -111,6 +115,24 @@ TEST_CASE("ao settings resolve to the tier table", "[ao]") {
     // The blur's depth source is a profile field, matching ao_blur.frag's tier variants.
     CHECK(tiers::profile(Tier::Current).aoPackedDepthTarget);
     CHECK_FALSE(tiers::profile(Tier::High).aoPackedDepthTarget);
+    // The look fields default to -1: the tier preset's calibrated AoLook; a value set wins.
+    for (Tier tier : kTiers)
+        for (AoTechnique t : kTechniques) {
+            const AoLook& look = tiers::profile(tier).aoLook[uint32_t(t)];
+            AoSettings d;
+            d.technique = t;
+            const AoConfig c = resolveAoConfig(d, tiers::profile(tier), 5).value();
+            CHECK(c.intensity == Approx(look.intensity));
+            CHECK(c.contrast == Approx(look.contrast));
+            if (t != AoTechnique::Crease) CHECK(c.bias == Approx(look.bias));
+            CHECK(c.crease.range == Approx(look.creaseRange));
+            CHECK(c.crease.bias == Approx(look.creaseBias));
+            d.intensity = 3.0f, d.contrast = 2.0f, d.crease.range = 0.7f;
+            const AoConfig set = resolveAoConfig(d, tiers::profile(tier), 5).value();
+            CHECK(set.intensity == Approx(3.0));
+            CHECK(set.contrast == Approx(2.0));
+            CHECK(set.crease.range == Approx(0.7));
+        }
     const AoConfig aHigh = configFor(AoTechnique::Alchemy, Tier::High);
     CHECK(aHigh.samples == 12);
     CHECK(aHigh.bias == Approx(1e-4));

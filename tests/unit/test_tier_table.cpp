@@ -62,7 +62,7 @@ TEST_CASE("tier table: a row per tier, in order, each with its default preset fi
                 CHECK(std::any_of(row.requirements.begin(), row.requirements.end(),
                                   [&](const tiers::Requirement& r) { return std::string(r.what) == lower.what; }));
     }
-    Result<TierProfile> unknown = tiers::preset(Tier::Current, "ultra");
+    Result<TierProfile> unknown = tiers::preset(Tier::Current, "no-such-preset");
     CHECK(unknown.status().code() == StatusCode::InvalidArgument);
     CHECK(unknown.status().message().find(tiers::kDefaultPreset) != std::string::npos);
 }

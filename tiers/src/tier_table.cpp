@@ -67,6 +67,11 @@ TierProfile currentDefault() {
     p.aoDepthMipLevels = 1;
     p.aoAlchemySamples = 6;
     p.aoBlurRadiusPx = 2;  // 5-tap separable bilateral
+    // The look fitted against ray-traced truth (samples/fit_ao, docs/trade.md); before the
+    // calibration every tier had the papers' 1, 1, 1e-4 / 0.02, range 1, bias 0.25.
+    p.aoLook[0] = {.intensity = 0.755f, .contrast = 0.750f, .bias = 2.5e-4f};                             // alchemy
+    p.aoLook[1] = {.intensity = 4.47f, .contrast = 2.55f, .bias = 0.281f};                                // scalable
+    p.aoLook[2] = {.intensity = 4.07f, .contrast = 3.40f, .bias = 0, .creaseRange = 0.430f, .creaseBias = 0.25f};  // crease
     p.aoPackedDepthTarget = true;  // ao_blur.frag reads the key packed in the RGBA8 AO target
     p.mbTaps = 7;                  // 6 samples + centre
     p.mbMaxRadiusPx = 10.0f;
@@ -85,6 +90,9 @@ TierProfile highDefault() {
     p.aoDepthMipLevels = uint32_t(shared::SFX_DEPTH_MIP_MAX_LEVELS);
     p.aoAlchemySamples = 12;  // the paper's 12 samples per pixel
     p.aoBlurRadiusPx = 6;     // 13-tap, as Alchemy's filter
+    p.aoLook[0] = {.intensity = 0.755f, .contrast = 0.806f, .bias = 1e-5f};                               // alchemy
+    p.aoLook[1] = {.intensity = 4.47f, .contrast = 1.78f, .bias = 0.102f};                                // scalable
+    p.aoLook[2] = {.intensity = 18.2f, .contrast = 0.604f, .bias = 0, .creaseRange = 0.467f, .creaseBias = 0.25f};  // crease
     p.aoPackedDepthTarget = false;  // RG16F AO target; the blur reads the linear depth texture
     p.mbTaps = 9;                   // 8 samples + centre
     p.mbMaxRadiusPx = 18.0f;
@@ -93,15 +101,44 @@ TierProfile highDefault() {
     return p;
 }
 
+// A preset of a tier: its default with other tap counts, blur width and motion blur radius
+// (uniforms only: the structure, and so the shaders, stay the default's).
+Preset variant(const char* name, TierProfile p, uint32_t alchemy, uint32_t scalable, uint32_t blur, uint32_t mbTaps, float mbRadius,
+               PresetAccuracy accuracy) {
+    p.aoAlchemySamples = alchemy, p.aoScalableTaps = scalable, p.aoBlurRadiusPx = blur;
+    p.mbTaps = mbTaps, p.mbMaxRadiusPx = mbRadius;
+    return {name, p, accuracy};
+}
+
+// Accuracy: PSNR in dB of alchemy, scalable, crease AO and of motion blur, measured by
+// samples/trade_presets (tools/run_trade.sh) on llvmpipe; the figures of docs/trade.md.
+std::vector<Preset> currentPresets() {
+    const TierProfile d = currentDefault();
+    return {{kDefaultPreset, d, {{26.95, 23.82, 22.45}, 31.05}},
+            variant("low", d, 3, 2, 1, 5, 8.0f, {{25.62, 23.20, 22.35}, 28.69}),
+            variant("medium", d, 6, 4, 2, 7, 10.0f, {{26.95, 23.82, 22.45}, 31.05}),
+            variant("high", d, 10, 6, 3, 9, 14.0f, {{27.13, 24.24, 22.54}, 33.79}),
+            variant("ultra", d, 16, 10, 4, 13, 18.0f, {{27.08, 23.68, 22.76}, 34.77})};
+}
+
+std::vector<Preset> highPresets() {
+    const TierProfile d = highDefault();
+    return {{kDefaultPreset, d, {{26.98, 25.53, 23.21}, 34.38}},
+            variant("low", d, 4, 4, 2, 5, 10.0f, {{26.76, 25.58, 22.10}, 30.49}),
+            variant("medium", d, 8, 6, 4, 7, 14.0f, {{27.11, 26.09, 22.77}, 32.77}),
+            variant("high", d, 12, 9, 6, 9, 18.0f, {{26.98, 25.53, 23.21}, 34.38}),
+            variant("ultra", d, 24, 16, 8, 15, 24.0f, {{26.77, 25.17, 23.36}, 34.67})};
+}
+
 std::vector<TierRow> makeTable() {
     std::vector<TierRow> rows;
     rows.push_back({Tier::Current, "GL ES 3.0-class: fragment passes only, no storage buffers or atomics", currentRules(),
                     CapabilityCeiling::GLES30,
                     {ShaderDialect::Essl300, ShaderDialect::Essl310, ShaderDialect::Glsl330, ShaderDialect::Glsl450},
-                    {{kDefaultPreset, currentDefault()}}});
+                    currentPresets()});
     rows.push_back({Tier::High, "Vulkan / GL ES 3.1+ / GL 4.3+: storage buffers, atomics, compute", highRules(),
                     CapabilityCeiling::None, {ShaderDialect::Essl310, ShaderDialect::Glsl450},
-                    {{kDefaultPreset, highDefault()}}});
+                    highPresets()});
     return rows;
 }
 

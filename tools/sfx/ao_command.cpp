@@ -16,7 +16,7 @@ struct AoFlags {
     std::string technique = "scalable";
     std::string normalsPath;
     std::string outPath;
-    float radius = 0.5f, intensity = 1.0f, contrast = 1.0f, bias = -1.0f;
+    float radius = 0.5f, intensity = -1.0f, contrast = -1.0f, bias = -1.0f;
     uint32_t samples = 0, blurRadius = 0;
     bool noBlur = false;
     bool showPlan = false;
@@ -114,9 +114,9 @@ Command addAoCommand(CLI::App& app) {
     c.app->add_option("--normals", flags->normalsPath,
                       "view-space normals file (x right, y up, camera looking down -z; signed float xyz in PFM/EXR)");
     c.app->add_option("--radius", flags->radius, "world-space radius, [1e-4, 1000]")->capture_default_str();
-    c.app->add_option("--intensity", flags->intensity, "occlusion scale, [0, 100]")->capture_default_str();
-    c.app->add_option("--contrast", flags->contrast, "visibility exponent, [0.1, 10]")->capture_default_str();
-    c.app->add_option("--bias", flags->bias, "[0, 1]; -1 = the technique's default")->capture_default_str();
+    c.app->add_option("--intensity", flags->intensity, "occlusion scale, [0, 100]; -1 = the tier's calibrated value")->capture_default_str();
+    c.app->add_option("--contrast", flags->contrast, "visibility exponent, [0.1, 10]; -1 = the tier's calibrated value")->capture_default_str();
+    c.app->add_option("--bias", flags->bias, "[0, 1]; -1 = the tier's calibrated value")->capture_default_str();
     c.app->add_option("--samples", flags->samples, "taps per pixel; 0 = tier default")->capture_default_str();
     c.app->add_option("--blur-radius", flags->blurRadius, "bilateral half-width in px; 0 = tier default")->capture_default_str();
     c.app->add_flag("--no-blur", flags->noBlur, "skip the bilateral blur");

@@ -1,14 +1,23 @@
 #include <algorithm>
+#include <cstdio>
 #include <iostream>
 #include <ostream>
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "sfx/budget.hpp"
 
 namespace sfx::cli {
 namespace {
 
 std::string yesNo(bool b) { return b ? "yes" : "no"; }
+
+std::string look(const AoLook& l, bool crease) {
+    char buf[96];
+    if (crease) std::snprintf(buf, sizeof buf, "%g, %g, %g, %g", l.intensity, l.contrast, l.creaseRange, l.creaseBias);
+    else std::snprintf(buf, sizeof buf, "%g, %g, %g", l.intensity, l.contrast, l.bias);
+    return buf;
+}
 
 // One printed parameter of a preset: its label and how its value reads.
 struct ParameterRow {
@@ -27,6 +36,9 @@ const ParameterRow kParameterRows[] = {
      [](const TierProfile& p) {
          return std::string(p.aoPackedDepthTarget ? "key packed in the RGBA8 AO target" : "linear depth texture (RG16F AO target)");
      }},
+    {"alchemy AO look (intensity, contrast, bias)", [](const TierProfile& p) { return look(p.aoLook[0], false); }},
+    {"scalable AO look (intensity, contrast, bias)", [](const TierProfile& p) { return look(p.aoLook[1], false); }},
+    {"crease AO look (intensity, contrast, range, bias)", [](const TierProfile& p) { return look(p.aoLook[2], true); }},
     {"motion blur taps (centre included)", [](const TierProfile& p) { return std::to_string(p.mbTaps); }},
     {"motion blur max radius (px at 720 rows)", [](const TierProfile& p) { return std::to_string(int(p.mbMaxRadiusPx)); }},
     {"motion blur jitter", [](const TierProfile& p) { return std::string(p.mbJitterSize == 2 ? "checkerboard" : "4x4 randomised"); }},
@@ -87,6 +99,47 @@ void printRules(std::ostream& out) {
     }
 }
 
+struct BudgetFlags {
+    double budgetMs = 0;  // 0: no budget asked for
+    std::string size = "1920x1080", effect = "ao", cacheDir = "sfx-cost-cache";
+    bool recalibrate = false;
+};
+
+// --budget: the calibrated cost table of the best device and the most accurate preset that fits.
+int printBudgetChoice(const BudgetFlags& f) {
+    const std::string cmd = "info";
+    uint32_t w = 0, h = 0;
+    if (std::sscanf(f.size.c_str(), "%ux%u", &w, &h) != 2 || w == 0 || h == 0)
+        return fail(cmd, invalidArgument("--size", "'" + f.size + "'", "WIDTHxHEIGHT, e.g. 1920x1080"));
+    budget::Effect effect;
+    if (!budget::parseEffect(f.effect, &effect)) return fail(cmd, invalidArgument("--effect", "'" + f.effect + "'", "ao or motion-blur"));
+    DeviceOptions deviceOptions;
+    deviceOptions.validation = false;  // it would be timed too
+    Result<DeviceSelection> best = openBestDevice(deviceOptions);
+    if (!best) return fail(cmd, best.status());
+    Device& dev = *best->device;
+    std::cout << "device: " << dev.caps().summary() << "\n";
+    budget::CalibrationOptions options;
+    options.cacheDir = f.cacheDir;
+    options.recalibrate = f.recalibrate;
+    Result<budget::CostTable> table = budget::costTable(dev, effect, w, h, options);
+    if (!table) return fail(cmd, table.status());
+    std::cout << "cost table (" << budget::toString(effect) << ", " << w << "x" << h << ", tier " << toString(table->tier)
+              << "; measured on this device, cached in " << budget::costTablePath(f.cacheDir, dev.caps().deviceName, effect, w, h) << "):\n";
+    for (const budget::CostEntry& e : table->entries) {
+        char line[160];
+        std::snprintf(line, sizeof line, "  %-20s %9.3f ms  PSNR %6.2f dB\n", e.candidate.name().c_str(), e.milliseconds, e.candidate.psnrDb);
+        std::cout << line;
+    }
+    Result<budget::Choice> choice = budget::choose(table.value(), f.budgetMs);
+    if (!choice) return fail(cmd, choice.status());
+    char line[200];
+    std::snprintf(line, sizeof line, "choice within %.3f ms: %s (%.3f ms, PSNR %.2f dB)\n", f.budgetMs, choice->chosen.candidate.name().c_str(),
+                  choice->chosen.milliseconds, choice->chosen.candidate.psnrDb);
+    std::cout << line;
+    return 0;
+}
+
 }  // namespace
 
 Command addInfoCommand(CLI::App& app) {
@@ -94,11 +147,18 @@ Command addInfoCommand(CLI::App& app) {
     c.app = app.add_subcommand("info", "List the backends of this build, what each device can do, and the tier it gets");
     static bool rules = false;
     c.app->add_flag("--rules", rules, "print the tier rules and per-tier parameters as a Markdown table and exit");
+    static BudgetFlags budgetFlags;
+    c.app->add_option("--budget", budgetFlags.budgetMs, "a cost budget in ms: print the most accurate preset that fits on the best device, and the table");
+    c.app->add_option("--size", budgetFlags.size, "with --budget: the frame size, WIDTHxHEIGHT")->capture_default_str();
+    c.app->add_option("--effect", budgetFlags.effect, "with --budget: ao or motion-blur")->capture_default_str();
+    c.app->add_option("--cache-dir", budgetFlags.cacheDir, "with --budget: where measured cost tables are cached")->capture_default_str();
+    c.app->add_flag("--recalibrate", budgetFlags.recalibrate, "with --budget: measure the costs again");
     c.run = [] {
         if (rules) {
             printRules(std::cout);
             return 0;
         }
+        if (budgetFlags.budgetMs != 0) return printBudgetChoice(budgetFlags);
         for (const BackendConfig& config : compiledBackends()) {
             for (CapabilityCeiling ceiling : {CapabilityCeiling::None, CapabilityCeiling::GLES30}) {
                 DeviceOptions options;

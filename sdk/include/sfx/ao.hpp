@@ -36,25 +36,26 @@ enum class AoNormals : uint32_t {
 inline constexpr float kAoMinRadius = 1e-4f;
 
 struct AoCreaseSettings {
-    float range = 1.0f;           // [1e-4, 1000] world distance at which a tap's influence reaches 0
-    float bias = 0.25f;           // (0, 100]  scales (cos - minimumCrease) before saturating
+    float range = -1.0f;          // [1e-4, 1000] world distance at which a tap's influence reaches 0; -1 = the tier's (AoLook)
+    float bias = -1.0f;           // (0, 100]  scales (cos - minimumCrease) before saturating; -1 = the tier's (AoLook)
     float averager = 10.0f;       // (0, 1000] divisor of the summed 24 taps
     float minimumCrease = 0.3f;   // [-1, 1)   cosine below which a tap adds nothing (stops radial banding)
     float fadeStart = 50.0f;      // [0, inf)  linear depth where the distance fade begins
     float fadeEnd = 100.0f;       // (fadeStart, inf] linear depth where crease shading is gone
 };
 
-// Every knob of the effect. Defaults are the papers' nominal values
-// (docs/algorithms.md); ranges are enforced:
+// Every knob of the effect. The look (intensity, contrast, bias, crease range and bias) defaults
+// to -1: the tier preset's calibrated AoLook (fitted against ray-traced truth, docs/trade.md);
+// the rest default to the papers' nominal values (docs/algorithms.md). Ranges are enforced:
 // a value outside its range is InvalidArgument naming the field ("AoSettings.radius").
 struct AoSettings {
     AoTechnique technique = AoTechnique::Scalable;
     float radius = 0.5f;     // [1e-4, 1000] world-space sampling radius (Alchemy, Scalable)
-    float intensity = 1.0f;  // [0, 100]  sigma: scales occlusion (all techniques)
-    float contrast = 1.0f;   // [0.1, 10] k: visibility = max(0, 1 - occlusion)^k (all techniques)
-    // [0, 1], or -1 for the technique's default. Alchemy: beta, a distance per unit of depth
-    // (the term v.n + z_C beta; default 1e-4 as in the paper). Scalable: subtracted from the
-    // cosine of each tap (default 0.02).
+    float intensity = -1.0f; // [0, 100], or -1 for the tier's: sigma, scales occlusion (all techniques)
+    float contrast = -1.0f;  // [0.1, 10], or -1 for the tier's: k, visibility = max(0, 1 - occlusion)^k
+    // [0, 1], or -1 for the tier's. Alchemy: beta, a distance per unit of depth (the term
+    // v.n + z_C beta; the paper's 1e-4 is kAoAlchemyDefaultBias). Scalable: subtracted from the
+    // cosine of each tap (the paper's 0.02 is kAoScalableDefaultBias).
     float bias = -1.0f;
     float epsilon = 1e-4f;   // [1e-8, 1] guards divisions; in units of radius^2 (scale-invariant)
     uint32_t samples = 0;    // 0 = tier default; Alchemy [1, 64]; Scalable [1, 64] (even on the
@@ -65,6 +66,7 @@ struct AoSettings {
     AoCreaseSettings crease;
 };
 
+// The papers' nominal values (the look before the calibration of issue 10).
 inline constexpr float kAoAlchemyDefaultBias = 1e-4f;
 inline constexpr float kAoScalableDefaultBias = 0.02f;
 

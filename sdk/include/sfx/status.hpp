@@ -23,6 +23,7 @@ enum class StatusCode : uint32_t {
     BackendUnavailable,  // the backend's API, driver or platform is absent on this machine
     DeviceError,         // the graphics API reported a failure
     FileError,           // a file could not be read, written or parsed
+    OverBudget,          // nothing fits the cost budget asked for (message states the cheapest cost)
 };
 
 const char* toString(StatusCode code);

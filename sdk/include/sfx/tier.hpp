@@ -29,6 +29,16 @@ bool parseTier(const std::string& text, Tier* out);
 // The tier names for a message's allowed values: "current or high".
 std::string tierNameList();
 
+// The default look of one AO technique on a tier: the values AoSettings' -1 ("the tier's") fields
+// resolve to, calibrated against ray-traced ground truth by samples/fit_ao (docs/trade.md).
+struct AoLook {
+    float intensity = 1.0f;    // sigma
+    float contrast = 1.0f;     // k
+    float bias = 0.0f;         // Alchemy: beta; Scalable: the cosine bias; unused by crease
+    float creaseRange = 1.0f;  // crease only (world units)
+    float creaseBias = 0.25f;  // crease only
+};
+
 // The parameters effects read: one quality preset of one tier. The values live in the tier
 // table (tiers/src/tier_table.cpp); shaders get the structural ones (which passes and bindings
 // exist) as defines generated from it, the rest through their uniform blocks.
@@ -42,6 +52,7 @@ struct TierProfile {
     uint32_t aoDepthMipLevels = 0;     // levels of that pyramid (level 0 included)
     uint32_t aoAlchemySamples = 0;     // default Alchemy sample count
     uint32_t aoBlurRadiusPx = 0;       // bilateral blur half-width
+    AoLook aoLook[3];                  // per technique, indexed by AoTechnique (alchemy, scalable, crease)
     // With blur, where the blur finds each pixel's depth. true (current tier): the raw AO goes to
     // an RGBA8 target with a 16-bit depth key packed in b, a (one fetch per tap, 8-bit targets
     // only). false (high): an RG16F target, and the blur reads the linear depth texture. The

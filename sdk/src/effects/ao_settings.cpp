@@ -15,6 +15,10 @@ std::string num(double v) {
 }
 
 // NaN fails every comparison, so each check is written as "inside the range" negated.
+// The value of an AoSettings look field that means "the tier preset's AoLook".
+constexpr float kTierValue = -1.0f;
+float orTier(float value, float tierValue) { return value == kTierValue ? tierValue : value; }
+
 Status checkRange(const char* field, double v, double lo, bool loOpen, double hi, bool hiOpen, const char* allowed) {
     const bool aboveLo = loOpen ? v > lo : v >= lo;
     const bool belowHi = hiOpen ? v < hi : v <= hi;
@@ -61,9 +65,9 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
     // The lower bound keeps epsilon * r^2 a normal float (>= 1e-16 with epsilon >= 1e-8): smaller
     // radii underflow it to 0 on the GPU and a tap on the centre pixel would divide 0 by 0.
     SFX_TRY(checkRange("AoSettings.radius", s.radius, kAoMinRadius, false, 1000, false, "[1e-4, 1000]"));
-    SFX_TRY(checkRange("AoSettings.intensity", s.intensity, 0, false, 100, false, "[0, 100]"));
-    SFX_TRY(checkRange("AoSettings.contrast", s.contrast, 0.1, false, 10, false, "[0.1, 10]"));
-    if (s.bias != -1.0f) SFX_TRY(checkRange("AoSettings.bias", s.bias, 0, false, 1, false, "[0, 1], or -1 for the technique's default"));
+    if (s.intensity != kTierValue) SFX_TRY(checkRange("AoSettings.intensity", s.intensity, 0, false, 100, false, "[0, 100], or -1 for the tier's"));
+    if (s.contrast != kTierValue) SFX_TRY(checkRange("AoSettings.contrast", s.contrast, 0.1, false, 10, false, "[0.1, 10], or -1 for the tier's"));
+    if (s.bias != kTierValue) SFX_TRY(checkRange("AoSettings.bias", s.bias, 0, false, 1, false, "[0, 1], or -1 for the tier's"));
     // The bound is the float nearest 1e-8 (just below it): the documented minimum must be settable.
     SFX_TRY(checkRange("AoSettings.epsilon", s.epsilon, double(1e-8f), false, 1, false, "[1e-8, 1]"));
     const uint32_t maxSamples = uint32_t(shared::SFX_AO_MAX_SAMPLES);
@@ -81,8 +85,8 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
                                "[0, " + std::to_string(shared::SFX_AO_MAX_BLUR_RADIUS) + "] (0 = tier default)");
     if (uint32_t(s.normals) > 1) return invalidArgument("AoSettings.normals", std::to_string(uint32_t(s.normals)), "FromDepth or FromTexture");
     const AoCreaseSettings& c = s.crease;
-    SFX_TRY(checkRange("AoSettings.crease.range", c.range, kAoMinRadius, false, 1000, false, "[1e-4, 1000]"));
-    SFX_TRY(checkRange("AoSettings.crease.bias", c.bias, 0, true, 100, false, "(0, 100]"));
+    if (c.range != kTierValue) SFX_TRY(checkRange("AoSettings.crease.range", c.range, kAoMinRadius, false, 1000, false, "[1e-4, 1000], or -1 for the tier's"));
+    if (c.bias != kTierValue) SFX_TRY(checkRange("AoSettings.crease.bias", c.bias, 0, true, 100, false, "(0, 100], or -1 for the tier's"));
     SFX_TRY(checkRange("AoSettings.crease.averager", c.averager, 0, true, 1000, false, "(0, 1000]"));
     SFX_TRY(checkRange("AoSettings.crease.minimumCrease", c.minimumCrease, -1, false, 1, true, "[-1, 1)"));
     if (!(c.fadeStart >= 0) || std::isinf(c.fadeStart)) return invalidArgument("AoSettings.crease.fadeStart", num(c.fadeStart), "[0, inf)");
@@ -95,19 +99,22 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
     AoConfig c;
     c.technique = s.technique;
     c.radius = s.radius;
-    c.intensity = s.intensity;
-    c.contrast = s.contrast;
+    const AoLook& look = profile.aoLook[uint32_t(s.technique)];
+    c.intensity = orTier(s.intensity, look.intensity);
+    c.contrast = orTier(s.contrast, look.contrast);
     c.epsilon = s.epsilon;
     c.normals = s.normals;
     c.crease = s.crease;
+    c.crease.range = orTier(s.crease.range, look.creaseRange);
+    c.crease.bias = orTier(s.crease.bias, look.creaseBias);
     c.blurRadius = s.blur ? (s.blurRadius ? s.blurRadius : profile.aoBlurRadiusPx) : 0;
     switch (s.technique) {
         case AoTechnique::Alchemy:
-            c.bias = s.bias == -1.0f ? kAoAlchemyDefaultBias : s.bias;
+            c.bias = orTier(s.bias, look.bias);
             c.samples = s.samples ? s.samples : profile.aoAlchemySamples;
             break;
         case AoTechnique::Scalable:
-            c.bias = s.bias == -1.0f ? kAoScalableDefaultBias : s.bias;
+            c.bias = orTier(s.bias, look.bias);
             c.samples = s.samples ? s.samples : profile.aoScalableTaps;
             c.mirrored = profile.aoScalableMirrored;
             c.spiralTurns = c.mirrored ? shared::SFX_AO_SPIRAL_TURNS_MIRRORED : shared::SFX_AO_SPIRAL_TURNS_SPIRAL;

@@ -1,0 +1,26 @@
+// The cost unit of the benchmarks: one full-screen pass copying a texture of the AO output's
+// format, timed on the same device at the same size, so costs read as "copy passes" and compare
+// across backends and machines.
+#pragma once
+
+#include <memory>
+
+#include "sfx/hal.hpp"
+
+namespace sfx::samples {
+
+struct CopyPass {
+    explicit CopyPass(Device& device) : dev(device) {}
+    CopyPass(const CopyPass&) = delete;
+    CopyPass& operator=(const CopyPass&) = delete;
+    Device& dev;
+    TextureHandle src, dst;
+    ProgramHandle program;
+    PipelineHandle pipeline;
+    Status record();  // one copy, recorded (flush to run it)
+    ~CopyPass();
+};
+
+Result<std::unique_ptr<CopyPass>> makeCopyPass(Device& dev, Tier tier, uint32_t w, uint32_t h, Format format);
+
+}  // namespace sfx::samples

@@ -1,0 +1,250 @@
+// trade_presets: the measured Pareto front of the quality presets (issue 10, items 4 and 6). For
+// every backend x tier x preset of the tier table (x technique for AO):
+//   - cost at --cost-size (median of HAL-timed runs, as ms and as copy passes of that size on
+//     the same device): AO on the G-buffer of one sample view, motion blur on the "pan" scene;
+//   - accuracy: AO's PSNR against the ray-traced truth on the held-out views of fit_ao (radii
+//     0.25-2, 320x180; computed on the first backend, the backends agree), motion blur's PSNR
+//     against its temporally supersampled truth on the 2.5D scenes.
+// Writes <out-dir>/trade_presets.csv, one SVG Pareto plot per backend and effect under
+// <out-dir>/images/ and the tables into <out-dir>/trade.md between its markers. A program, not a test.
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "ao_scoring.hpp"
+#include "bench_device.hpp"
+#include "copy_pass.hpp"
+#include "markdown_section.hpp"
+#include "motion_cases.hpp"
+#include "sfx/budget.hpp"
+#include "sfx/tiers.hpp"
+#include "svg_plot.hpp"
+
+using namespace sfx;
+
+namespace {
+
+using samples::fixed;
+
+struct Options {
+    std::vector<std::string> backends{"vulkan", "gles"};
+    uint32_t costWidth = 1280, costHeight = 720, runs = 5, instants = 64;
+    std::vector<double> radii{0.25, 0.5, 1.0, 2.0};
+    samples::TruthSettings truth;
+    std::string costView = "contact";
+    std::string outDir = "docs";
+};
+
+struct Row {
+    std::string backend, tier, preset, effect, technique;  // technique "-" for motion blur
+    uint32_t taps = 0, blurOrRadius = 0;                    // AO: taps, blur half-width; MB: taps, max radius px
+    double ms = 0, copyPasses = 0, psnr = 0, psnrOccluded = 0;
+};
+
+uint32_t aoTaps(const TierProfile& p, AoTechnique t) {
+    return t == AoTechnique::Alchemy ? p.aoAlchemySamples : t == AoTechnique::Scalable ? p.aoScalableTaps : 24u;
+}
+
+// AO accuracy of every preset x technique of a tier on the held-out views: key "preset/technique".
+Result<std::map<std::string, samples::AoScore>> aoAccuracy(Device& dev, Tier tier, const Options& o, const std::vector<samples::TradeView>& views,
+                                                           const std::vector<samples::AoCase>& cases) {
+    samples::AoEvaluator ev(dev, tier, o.truth.width, o.truth.height);
+    SFX_TRY(ev.prepare(views));
+    std::map<std::string, samples::AoScore> out;
+    for (const tiers::Preset& preset : tiers::row(tier).presets)
+        for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}) {
+            ev.setProfile(preset.params);
+            AoSettings s;
+            s.technique = t;
+            s.normals = AoNormals::FromTexture;
+            Result<samples::AoScore> score = ev.score(s, cases);
+            if (!score) return score.status();
+            out[preset.name + "/" + toString(t)] = score.value();
+            std::cout << "  " << toString(tier) << "/" << preset.name << "/" << toString(t) << ": held-out PSNR " << fixed(score->psnr, 2)
+                      << " dB, occluded " << fixed(score->psnrOccluded, 2) << " dB" << std::endl;
+        }
+    return out;
+}
+
+// Motion blur PSNR (mean over the 2.5D scenes of 20 log10(1 / RMSE)) per preset of a tier.
+Result<std::map<std::string, double>> motionAccuracy(Device& dev, Tier tier, const Options& o) {
+    PerspectiveDesc pd;
+    pd.aspect = double(o.truth.width) / o.truth.height;
+    const CameraProjection cam = makePerspective(pd).value();
+    std::map<std::string, double> out;
+    for (const samples::NamedMotionScene& ns : samples::makeMotionScenes(o.truth.width, o.truth.height)) {
+        const reference::ColorGrid truth = ns.scene.groundTruth(o.instants);
+        const reference::SceneFrame frame = ns.scene.render(0);
+        for (const tiers::Preset& preset : tiers::row(tier).presets) {
+            Result<samples::MotionBlurRun> run = samples::runMotionBlur(dev, preset.params, {}, frame, cam, 1);
+            if (!run) return run.status();
+            const samples::ColorErrors e = samples::colorErrors(run->output, truth, std::vector<bool>(truth.values.size(), false));
+            out[preset.name] += -20.0 * std::log10(std::max(e.rmse, 1e-12)) / 3.0;
+        }
+    }
+    return out;
+}
+
+Status runDevice(Device& dev, const std::string& backend, Tier tier, const Options& o, const std::vector<samples::TradeView>& views,
+                 const std::vector<samples::AoCase>& cases, std::map<std::string, samples::AoScore>& aoScores, std::map<std::string, double>& mbScores,
+                 std::vector<Row>& rows) {
+    const Format outFormat = samples::aoOutputFormat(dev);
+    Result<std::unique_ptr<samples::CopyPass>> copy = samples::makeCopyPass(dev, tier, o.costWidth, o.costHeight, outFormat);
+    if (!copy) return copy.status();
+    Result<TimerReading> copyTime = budget::timeMedian(dev, 4 * o.runs, [&] { return copy.value()->record(); });
+    if (!copyTime) return copyTime.status();
+    const double copyMs = copyTime->milliseconds;
+    std::cout << "  copy pass at " << o.costWidth << "x" << o.costHeight << ": " << fixed(copyMs, 3) << " ms" << std::endl;
+    if (aoScores.empty()) {  // accuracy from the first backend: the backends compute the same shaders
+        Result<std::map<std::string, samples::AoScore>> a = aoAccuracy(dev, tier, o, views, cases);
+        if (!a) return a.status();
+        aoScores = a.value();
+        Result<std::map<std::string, double>> m = motionAccuracy(dev, tier, o);
+        if (!m) return m.status();
+        mbScores = m.value();
+    }
+    // AO cost on one view's G-buffer at the cost size.
+    Result<std::unique_ptr<samples::ViewInputs>> in =
+        samples::ViewInputs::create(dev, tier, samples::TradeView{o.costView, false, 0, 1, 0}, o.costWidth, o.costHeight);
+    if (!in) return in.status();
+    Result<TextureHandle> out = dev.createTexture({o.costWidth, o.costHeight, 1, outFormat, kTextureSampled | kTextureRenderTarget, "trade-cost-out"});
+    if (!out) return out.status();
+    Status status = Status::ok();
+    for (const tiers::Preset& preset : tiers::row(tier).presets) {
+        for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}) {
+            AoSettings s;
+            s.technique = t;
+            s.normals = AoNormals::FromTexture;
+            Result<std::unique_ptr<AmbientObscurance>> ao =
+                AmbientObscurance::create(dev, {o.costWidth, o.costHeight, preset.params, s, in.value()->depthKind()});
+            if (!ao) return ao.status();
+            const AoInputs inputs{DepthSource{in.value()->depth(), in.value()->depthKind(), in.value()->camera()}, in.value()->normals(), out.value()};
+            Result<TimerReading> r = budget::timeMedian(dev, o.runs, [&] { return ao.value()->dispatch(inputs); });
+            if (!r) {
+                status = r.status();
+                break;
+            }
+            const samples::AoScore& score = aoScores.at(preset.name + "/" + toString(t));
+            rows.push_back({backend, toString(tier), preset.name, "ao", toString(t), aoTaps(preset.params, t), preset.params.aoBlurRadiusPx,
+                            r->milliseconds, r->milliseconds / copyMs, score.psnr, score.psnrOccluded});
+            std::cout << "  " << backend << "/" << toString(tier) << "/" << preset.name << "/" << toString(t) << ": " << fixed(r->milliseconds, 2)
+                      << " ms = " << fixed(rows.back().copyPasses, 1) << " copy passes, PSNR " << fixed(score.psnr, 2) << " dB" << std::endl;
+        }
+        if (!status) break;
+        // Motion blur cost on the "pan" scene at the cost size.
+        PerspectiveDesc pd;
+        pd.aspect = double(o.costWidth) / o.costHeight;
+        const reference::SceneFrame frame = samples::makeMotionScenes(o.costWidth, o.costHeight)[1].scene.render(0);
+        Result<samples::MotionBlurRun> mb = samples::runMotionBlur(dev, preset.params, {}, frame, makePerspective(pd).value(), o.runs);
+        if (!mb) {
+            status = mb.status();
+            break;
+        }
+        const MotionBlurParams p = resolveMotionBlur(preset.params, {}, o.costHeight).value();
+        rows.push_back({backend, toString(tier), preset.name, "motion-blur", "-", p.taps, p.radiusPx, mb->medianMs, mb->medianMs / copyMs,
+                        mbScores.at(preset.name), 0});
+        std::cout << "  " << backend << "/" << toString(tier) << "/" << preset.name << "/motion blur: " << fixed(mb->medianMs, 2) << " ms = "
+                  << fixed(rows.back().copyPasses, 1) << " copy passes, PSNR " << fixed(mbScores.at(preset.name), 2) << " dB" << std::endl;
+    }
+    (void)dev.destroyTexture(out.value());
+    return status;
+}
+
+std::string markdown(const Options& o, const std::vector<Row>& rows, const std::string& machine) {
+    std::ostringstream md;
+    md << "Measured by `build/samples/trade_presets` on " << machine << ". Cost at " << o.costWidth << "x" << o.costHeight
+       << " (median of " << o.runs << " HAL-timed runs; copy passes = that cost over one full-screen copy of the same size on the same device); AO PSNR "
+          "over the held-out views of the fit at radii 0.25-2 ("
+       << o.truth.width << "x" << o.truth.height << "), motion blur PSNR against " << o.instants
+       << " supersampled instants on the 2.5D scenes.\n\n";
+    for (const std::string& backend : o.backends) {
+        md << "![Pareto plot, AO, " << backend << "](images/pareto_ao_" << backend << ".svg)\n\n";
+        md << "![Pareto plot, motion blur, " << backend << "](images/pareto_mb_" << backend << ".svg)\n\n";
+    }
+    md << "| backend | tier | preset | effect | technique | taps | blur px / max radius px | ms | copy passes | PSNR | PSNR occluded |\n"
+          "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    for (const Row& r : rows)
+        md << "| " << r.backend << " | " << r.tier << " | " << r.preset << " | " << r.effect << " | " << r.technique << " | " << r.taps << " | "
+           << r.blurOrRadius << " | " << fixed(r.ms, 2) << " | " << fixed(r.copyPasses, 1) << " | " << fixed(r.psnr, 2) << " | "
+           << (r.effect == "ao" ? fixed(r.psnrOccluded, 2) : "-") << " |\n";
+    return md.str();
+}
+
+Status writePlots(const Options& o, const std::vector<Row>& rows) {
+    std::filesystem::create_directories(o.outDir + "/images");
+    for (const std::string& backend : o.backends)
+        for (const std::string effect : {"ao", "motion-blur"}) {
+            samples::Plot plot;
+            plot.title = (effect == "ao" ? "AO" : "Motion blur") + std::string(" presets on ") + backend + " at " + std::to_string(o.costWidth) + "x" +
+                         std::to_string(o.costHeight);
+            plot.xLabel = "cost, copy passes";
+            plot.yLabel = effect == "ao" ? "PSNR against ray-traced truth, dB (held-out views)" : "PSNR against supersampled truth, dB";
+            for (const Row& r : rows)
+                if (r.backend == backend && r.effect == effect)
+                    plot.points.push_back({r.copyPasses, r.psnr, r.tier + "/" + r.preset,
+                                           effect == "ao" ? r.technique + " (" + r.tier + ")" : r.tier});
+            SFX_TRY(samples::writeSvg(o.outDir + "/images/pareto_" + (effect == "ao" ? "ao_" : "mb_") + backend + ".svg", plot));
+        }
+    return Status::ok();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Options o;
+    CLI::App app{"trade_presets - cost and accuracy of every tier preset, Pareto plots", "trade_presets"};
+    app.add_option("--backends", o.backends, "comma-separated: vulkan, gles, gl, gl-egl, gl-osmesa")->delimiter(',')->capture_default_str();
+    app.add_option("--cost-width", o.costWidth, "pixels of the timed runs")->capture_default_str();
+    app.add_option("--cost-height", o.costHeight, "pixels of the timed runs")->capture_default_str();
+    app.add_option("--runs", o.runs, "timed runs per configuration (median)")->capture_default_str();
+    app.add_option("--instants", o.instants, "instants of the motion blur truth")->capture_default_str();
+    app.add_option("--cache-dir", o.truth.cacheDir, "where truth images are cached")->capture_default_str();
+    app.add_option("--out-dir", o.outDir, "trade_presets.csv, images/pareto_*.svg and trade.md")->capture_default_str();
+    CLI11_PARSE(app, argc, argv);
+    const auto started = std::chrono::steady_clock::now();
+    auto elapsed = [&] { return fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(), 1); };
+
+    const std::vector<samples::TradeView> views = samples::heldOutViews();
+    Result<std::vector<samples::AoCase>> cases =
+        samples::loadCases(views, 0, views.size(), o.radii, o.truth, [&](const std::string& line) { std::cout << "[" << elapsed() << " s] " << line << std::endl; });
+    if (!cases) {
+        std::cerr << "trade_presets: " << cases.status().toString() << "\n";
+        return 1;
+    }
+    std::map<Tier, std::map<std::string, samples::AoScore>> aoScores;
+    std::map<Tier, std::map<std::string, double>> mbScores;
+    std::vector<Row> rows;
+    std::string machine;
+    const Status run = samples::forEachDevice(o.backends, {Tier::High, Tier::Current}, "trade_presets", [&](Device& dev, const std::string& backend, Tier tier) {
+        if (machine.empty()) machine = dev.caps().deviceName;
+        std::cout << "[" << elapsed() << " s] " << dev.caps().summary() << ", tier " << toString(tier) << std::endl;
+        return runDevice(dev, backend, tier, o, views, cases.value(), aoScores[tier], mbScores[tier], rows);
+    });
+    if (!run) {
+        std::cerr << "trade_presets: " << run.toString() << "\n";
+        return 1;
+    }
+    std::filesystem::create_directories(o.outDir);
+    std::ofstream csv(o.outDir + "/trade_presets.csv");
+    csv << "backend,tier,preset,effect,technique,taps,blur_or_max_radius_px,cost_width,cost_height,ms,copy_passes,psnr_db,psnr_occluded_db\n";
+    for (const Row& r : rows)
+        csv << r.backend << "," << r.tier << "," << r.preset << "," << r.effect << "," << r.technique << "," << r.taps << "," << r.blurOrRadius << ","
+            << o.costWidth << "," << o.costHeight << "," << fixed(r.ms, 3) << "," << fixed(r.copyPasses, 2) << "," << fixed(r.psnr, 3) << ","
+            << fixed(r.psnrOccluded, 3) << "\n";
+    Status st = writePlots(o, rows);
+    if (st) st = samples::replaceMarkdownSection(o.outDir + "/trade.md", "trade_presets", markdown(o, rows, machine.empty() ? "no device" : machine));
+    if (!st) {
+        std::cerr << "trade_presets: " << st.toString() << "\n";
+        return 1;
+    }
+    std::cout << "trade_presets: " << rows.size() << " rows -> " << o.outDir << "/trade_presets.csv, images/pareto_*.svg, trade.md in " << elapsed()
+              << " s" << std::endl;
+    return rows.empty() ? 1 : 0;
+}

@@ -1,0 +1,84 @@
+// Settings chosen by a cost budget (issue 10): given a device, an effect, a size and a budget in
+// milliseconds, the most accurate preset whose cost measured on THIS device fits. Accuracy is
+// each candidate's PSNR against ground truth, measured offline (tools/run_trade.sh) and kept
+// beside the presets in the tier table; cost comes from a short calibration run of every
+// candidate on the device, cached in a file per device name, effect and size.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "sfx/ao.hpp"
+#include "sfx/hal.hpp"
+
+namespace sfx::budget {
+
+enum class Effect : uint32_t { AmbientObscurance, MotionBlur };
+const char* toString(Effect effect);  // "ao", "motion-blur"
+bool parseEffect(const std::string& text, Effect* out);
+
+// One way to run an effect: a preset of the device's tier (and, for AO, a technique).
+struct Candidate {
+    Effect effect = Effect::AmbientObscurance;
+    std::string preset;                              // a preset name of the tier's row
+    AoTechnique technique = AoTechnique::Alchemy;    // AO only
+    double psnrDb = 0;                               // accuracy against the truth, higher is better
+    std::string name() const;                        // "medium/alchemy" (AO), "medium" (motion blur)
+};
+
+struct CostEntry {
+    Candidate candidate;
+    double milliseconds = 0;  // median of the calibration runs on the device
+};
+
+struct CostTable {
+    std::string device;  // DeviceCaps::deviceName
+    Tier tier = Tier::Current;
+    Effect effect = Effect::AmbientObscurance;
+    uint32_t width = 0, height = 0;
+    std::vector<CostEntry> entries;
+};
+
+struct Choice {
+    CostEntry chosen;
+    double budgetMs = 0;
+    CostTable table;  // the figures the choice was made from
+};
+
+// The candidates of `effect` on `tier`: every preset of the tier's row (x technique for AO), with
+// the PSNR the table records for it.
+std::vector<Candidate> candidates(Effect effect, Tier tier);
+
+// The most accurate entry whose cost is within budgetMs (equal accuracy: the cheaper one).
+// InvalidArgument naming budgetMs when it is not a positive finite number, or naming the table
+// when it is empty; OverBudget stating the cheapest entry and its cost when none fits.
+Result<Choice> choose(const CostTable& table, double budgetMs);
+
+struct CalibrationOptions {
+    std::string cacheDir;      // where cost tables are cached; empty = no cache (always measure)
+    bool recalibrate = false;  // measure again even when a cached table exists
+    uint32_t runs = 5;         // timed runs per candidate (median), after one warm-up
+};
+
+// The cost table of `effect` at width x height on `device` (on its highest tier): read from the
+// cache when one for this device name, effect, size and candidate list exists, else measured
+// (every candidate rendered on synthetic inputs, timed with the HAL's timers) and cached.
+Result<CostTable> costTable(Device& device, Effect effect, uint32_t width, uint32_t height, const CalibrationOptions& options);
+
+// costTable, then choose.
+Result<Choice> chooseForBudget(Device& device, Effect effect, uint32_t width, uint32_t height, double budgetMs,
+                               const CalibrationOptions& options);
+
+// Median of `runs` timed recordings (after one warm-up that compiles pipelines and warms caches),
+// each flushed on its own so a reading covers exactly one recording: the calibration's clock,
+// which the benchmarks share. InvalidArgument naming runs when it is 0.
+Result<TimerReading> timeMedian(Device& device, uint32_t runs, const std::function<Status()>& record);
+
+// The cache file of a table, and the file's text form (one entry per line); readCostTable is
+// FileError when the file is missing or not a cost table of these candidates.
+std::string costTablePath(const std::string& cacheDir, const std::string& device, Effect effect, uint32_t width, uint32_t height);
+Status writeCostTable(const std::string& path, const CostTable& table);
+Result<CostTable> readCostTable(const std::string& path, const std::vector<Candidate>& expected);
+
+}  // namespace sfx::budget

@@ -1,0 +1,31 @@
+// The trade's Pareto plots (samples/common/svg_plot.*): which points are non-dominated, and that
+// the SVG carries every point, the front's line and escaped labels.
+#include <catch2/catch.hpp>
+
+#include "svg_plot.hpp"
+
+using namespace sfx::samples;
+
+TEST_CASE("svg plot: the Pareto front is the points no other beats for no more cost", "[trade]") {
+    const std::vector<PlotPoint> points = {
+        {10, 25, "a", "s"}, {5, 20, "b", "s"}, {12, 24, "c", "s"},  // c: a is more accurate for less
+        {20, 28, "d", "t"}, {5, 19, "e", "t"},                       // e: b is as cheap and more accurate
+        {20, 27, "f", "t"},                                          // f: d costs the same, more accurate
+    };
+    const std::vector<size_t> front = paretoFront(points);
+    CHECK(front == std::vector<size_t>{1, 0, 3});
+    CHECK(paretoFront({}).empty());
+}
+
+TEST_CASE("svg plot: the document has every point, the front and escaped text", "[trade]") {
+    Plot plot{"A & B <test>", "cost", "PSNR", {{1, 20, "low", "alchemy"}, {2, 25, "high", "alchemy"}, {3, 22, "x", "crease"}}};
+    const std::string svg = renderSvg(plot);
+    CHECK(svg.rfind("<svg", 0) == 0);
+    CHECK(svg.find("</svg>") != std::string::npos);
+    size_t circles = 0;
+    for (size_t at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1)) ++circles;
+    CHECK(circles == 3 + 2);  // the points and one legend mark per series
+    CHECK(svg.find("<polyline") != std::string::npos);
+    CHECK(svg.find("A &amp; B &lt;test&gt;") != std::string::npos);
+    CHECK(svg.find("<test>") == std::string::npos);
+}

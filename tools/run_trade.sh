@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Regenerates the trade page (docs/trade.md, issue 10) from a checkout: builds the three programs,
+# then
+#   1. fit_ao        - fits each technique's look per tier on the training views and scores the
+#                      held-out ones (docs/ao_fit.csv, the fit table of docs/trade.md);
+#   2. bench_trade   - every technique x tier x blur x backend at its defaults against the truth
+#                      (docs/trade.csv, the error tables);
+#   3. trade_presets - cost and accuracy of every tier preset, AO and motion blur, and the Pareto
+#                      plots (docs/trade_presets.csv, docs/images/pareto_*.svg, the preset table).
+# Truth images are traced once and cached by scene, view, size, radius, sample count and seed
+# under $SFX_TRUTH_CACHE (default build/truth-cache): a second run only renders the effects.
+# The fitted looks are data of the tier table: fit_ao prints them, and adopting them is an edit of
+# tiers/src/tier_table.cpp (with the preset accuracies trade_presets prints), then a rerun.
+# Usage: tools/run_trade.sh [--backends vulkan,gles]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD_DIR=${SFX_BUILD_DIR:-build}
+CACHE=${SFX_TRUTH_CACHE:-$BUILD_DIR/truth-cache}
+BACKENDS=vulkan,gles
+if [ "${1:-}" = "--backends" ] && [ -n "${2:-}" ]; then BACKENDS=$2; fi
+start=$(date +%s)
+step() { echo "== [$(( $(date +%s) - start )) s] $*"; }
+export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
+
+step "configure and build bench_trade, fit_ao, trade_presets"
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake --build "$BUILD_DIR" -j"$(nproc)" --target bench_trade fit_ao trade_presets sfx_cli >/dev/null
+step "fit_ao: the looks, fitted on the training views, scored on the held-out ones"
+"$BUILD_DIR"/samples/fit_ao --cache-dir "$CACHE" --out-dir docs --backend "${BACKENDS%%,*}"
+step "bench_trade: the defaults against the truth, every backend"
+"$BUILD_DIR"/samples/bench_trade --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS"
+step "trade_presets: cost and accuracy of every preset, Pareto plots"
+"$BUILD_DIR"/samples/trade_presets --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS"
+step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg"
