@@ -92,6 +92,8 @@ Status GlDevice::init(CapabilityCeiling ceiling) {
     c.limits.maxBufferSize = uint64_t(1) << 30;  // GL has no query; generous for screen-space buffers
     c.limits.maxComputeWorkGroupInvocations = full ? geti(GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS) : 0;
     c.limits.maxTextureBindings = geti(GL_MAX_TEXTURE_IMAGE_UNITS);
+    // GL ES 3.1 may offer storage to compute only (its minimum fragment counts are 0).
+    c.fragmentStoresAndAtomics = full && geti(GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS) > 0 && geti(GL_MAX_FRAGMENT_IMAGE_UNIFORMS) > 0;
     uniformOffsetAlignment_ = std::max<uint32_t>(1, geti(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT));
     storageOffsetAlignment_ = modern ? std::max<uint32_t>(1, geti(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT)) : 1;
 

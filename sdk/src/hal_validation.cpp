@@ -89,6 +89,10 @@ Status program(const CompiledProgram& p, const DeviceCaps& caps) {
         if (r.kind == ResourceKind::StorageImage && !caps.storageImages)
             return {StatusCode::UnsupportedFeature, "program '" + p.name + "' uses storage image '" + r.name +
                                                         "'; the device has no storage images" + under};
+        const bool storage = r.kind == ResourceKind::StorageBuffer || r.kind == ResourceKind::StorageImage;
+        if (storage && (r.stages & stageBit(ShaderStage::Fragment)) && !caps.fragmentStoresAndAtomics)
+            return {StatusCode::UnsupportedFeature, "program '" + p.name + "' uses '" + r.name +
+                                                        "' from its fragment stage; the device has no fragment stores and atomics" + under};
     }
     for (const StageCode& s : p.stages) {
         if (caps.dialect == ShaderDialect::Spirv) {
@@ -161,6 +165,10 @@ Status graphicsPipelineState(const GraphicsPipelineDesc& d, const DeviceCaps&) {
         return invalidArgument("GraphicsPipelineDesc.blend.src", str(uint32_t(d.blend.src)), factors);
     if (uint32_t(d.blend.dst) > uint32_t(BlendFactor::OneMinusDstAlpha))
         return invalidArgument("GraphicsPipelineDesc.blend.dst", str(uint32_t(d.blend.dst)), factors);
+    if (d.blend.separateAlpha && uint32_t(d.blend.srcAlpha) > uint32_t(BlendFactor::OneMinusDstAlpha))
+        return invalidArgument("GraphicsPipelineDesc.blend.srcAlpha", str(uint32_t(d.blend.srcAlpha)), factors);
+    if (d.blend.separateAlpha && uint32_t(d.blend.dstAlpha) > uint32_t(BlendFactor::OneMinusDstAlpha))
+        return invalidArgument("GraphicsPipelineDesc.blend.dstAlpha", str(uint32_t(d.blend.dstAlpha)), factors);
     // Integer attachments do not blend: Vulkan's validation refuses it, GL ignores it silently.
     if (d.blend.enable)
         for (size_t i = 0; i < d.colorFormats.size(); ++i)
