@@ -94,6 +94,8 @@ Status GlDevice::init(CapabilityCeiling ceiling) {
     c.limits.maxTextureBindings = geti(GL_MAX_TEXTURE_IMAGE_UNITS);
     c.limits.minUniformBufferOffsetAlignment = std::max<uint32_t>(1, geti(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT));
     c.limits.minStorageBufferOffsetAlignment = modern ? std::max<uint32_t>(1, geti(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT)) : 1;
+    // GL ES 3.1 may offer storage to compute only (its minimum fragment counts are 0).
+    c.fragmentStoresAndAtomics = full && geti(GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS) > 0 && geti(GL_MAX_FRAGMENT_IMAGE_UNIFORMS) > 0;
 
     // Float colour targets are core in desktop GL and GL ES 3.2; GL ES 3.0/3.1 (and a
     // device under the ES 3.0 ceiling) have them only through EXT_color_buffer_float.

@@ -98,7 +98,14 @@ Status GlDevice::encodeRenderPass(const RenderPassDesc& pass, std::span<const Dr
         else
             GL(glClearBufferfv, GL_DEPTH, 0, &pass.depth.clearDepth);
     }
+    // Draws with storage side effects (fragment stores and atomics): earlier writes visible to
+    // them, and theirs to every later pass or dispatch, as Vulkan's barrier between commands does.
+    const bool storage = std::any_of(draws.begin(), draws.end(), [](const DrawDesc& d) {
+        return !d.bindings.storageBuffers.empty() || !d.bindings.storageImages.empty();
+    });
+    if (storage) GL(glMemoryBarrier, GL_ALL_BARRIER_BITS);
     for (const DrawDesc& d : draws) encodeDraw(d);
+    if (storage) GL(glMemoryBarrier, GL_ALL_BARRIER_BITS);
     GL(glBindVertexArray, 0);
     GL(glUseProgram, 0);
     GL(glBindFramebuffer, GL_FRAMEBUFFER, 0);
@@ -122,7 +129,9 @@ void GlDevice::encodeDraw(const DrawDesc& d) {
     GL(glDepthMask, pd.depth.write ? GL_TRUE : GL_FALSE);
     if (pd.blend.enable) {
         GL(glEnable, GL_BLEND);
-        GL(glBlendFunc, blendFactor(pd.blend.src), blendFactor(pd.blend.dst));
+        const BlendState& b = pd.blend;
+        GL(glBlendFuncSeparate, blendFactor(b.src), blendFactor(b.dst), blendFactor(b.separateAlpha ? b.srcAlpha : b.src),
+           blendFactor(b.separateAlpha ? b.dstAlpha : b.dst));
     } else {
         GL(glDisable, GL_BLEND);
     }

@@ -38,6 +38,7 @@ namespace sfx::gl {
     X(PFNGLDEPTHMASKPROC, glDepthMask)                                  \
     X(PFNGLDEPTHFUNCPROC, glDepthFunc)                                  \
     X(PFNGLBLENDFUNCPROC, glBlendFunc)                                  \
+    X(PFNGLBLENDFUNCSEPARATEPROC, glBlendFuncSeparate)                  \
     X(PFNGLCULLFACEPROC, glCullFace)                                    \
     X(PFNGLFRONTFACEPROC, glFrontFace)                                  \
     X(PFNGLCLEARBUFFERFVPROC, glClearBufferfv)                          \

@@ -196,6 +196,7 @@ DeviceCaps defaultCaps(CapabilityCeiling ceiling) {
     c.storageBuffers = full;
     c.atomics = full;
     c.storageImages = full;
+    c.fragmentStoresAndAtomics = full;
     c.floatRenderTargets = true;
     c.float32Filterable = true;
     c.timing = TimingSource::WallClockAfterFinish;

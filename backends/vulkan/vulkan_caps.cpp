@@ -22,6 +22,7 @@ void VulkanDevice::fillCaps(const DeviceOptions& options) {
     c.storageBuffers = fullFeatures_;
     c.atomics = fullFeatures_;
     c.storageImages = fullFeatures_;
+    c.fragmentStoresAndAtomics = fullFeatures_ && fragmentStoresAndAtomics_;
     c.timing = timestampValidBits_ > 0 ? TimingSource::GpuTimestamps : TimingSource::WallClockAfterFinish;
     c.clipDepth = ClipDepthRange::ZeroToOne;
     c.origin = FramebufferOrigin::UpperLeft;

@@ -207,6 +207,7 @@ private:
     VkPhysicalDeviceMemoryProperties memProps_{};
     uint32_t timestampValidBits_ = 0;
     bool fullFeatures_ = true;  // no ceiling
+    bool fragmentStoresAndAtomics_ = false;  // the device feature, enabled when present
 
     VkCommandPool commandPool_ = VK_NULL_HANDLE;
     VkCommandBuffer commandBuffer_ = VK_NULL_HANDLE;

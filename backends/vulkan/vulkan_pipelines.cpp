@@ -119,8 +119,10 @@ Result<PipelineHandle> VulkanDevice::makeGraphicsPipeline(const GraphicsPipeline
     for (size_t i = 0; i < desc.colorFormats.size(); ++i) {
         VkPipelineColorBlendAttachmentState b{};
         b.blendEnable = desc.blend.enable;
-        b.srcColorBlendFactor = b.srcAlphaBlendFactor = toVk(desc.blend.src);
-        b.dstColorBlendFactor = b.dstAlphaBlendFactor = toVk(desc.blend.dst);
+        b.srcColorBlendFactor = toVk(desc.blend.src);
+        b.dstColorBlendFactor = toVk(desc.blend.dst);
+        b.srcAlphaBlendFactor = toVk(desc.blend.separateAlpha ? desc.blend.srcAlpha : desc.blend.src);
+        b.dstAlphaBlendFactor = toVk(desc.blend.separateAlpha ? desc.blend.dstAlpha : desc.blend.dst);
         b.colorBlendOp = b.alphaBlendOp = VK_BLEND_OP_ADD;
         b.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
         blends.push_back(b);

@@ -148,6 +148,7 @@ Status VulkanDevice::createLogicalDevice(bool needsKhrDynamicRendering) {
     vk_.vkGetPhysicalDeviceFeatures(physical_, &supported);
     VkPhysicalDeviceFeatures enabled{};
     enabled.fragmentStoresAndAtomics = supported.fragmentStoresAndAtomics;
+    fragmentStoresAndAtomics_ = supported.fragmentStoresAndAtomics == VK_TRUE;
     enabled.vertexPipelineStoresAndAtomics = supported.vertexPipelineStoresAndAtomics;
     enabled.shaderStorageImageWriteWithoutFormat = supported.shaderStorageImageWriteWithoutFormat;
     enabled.shaderStorageImageReadWithoutFormat = supported.shaderStorageImageReadWithoutFormat;

@@ -139,6 +139,7 @@ std::string DeviceCaps::summary() const {
     s += ", compute " + std::string(computeShaders ? "yes" : "no");
     s += ", storage buffers " + std::string(storageBuffers ? "yes" : "no");
     s += ", atomics " + std::string(atomics ? "yes" : "no");
+    s += ", fragment stores " + std::string(fragmentStoresAndAtomics ? "yes" : "no");
     s += ", float targets " + std::string(floatRenderTargets ? "yes" : "no");
     s += ", clip depth " + std::string(clipDepth == ClipDepthRange::ZeroToOne ? "[0,1]" : "[-1,1]");
     s += ", timing: " + std::string(toString(timing));

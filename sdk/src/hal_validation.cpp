@@ -73,6 +73,9 @@ Status program(const CompiledProgram& p, const DeviceCaps& caps) {
             return fail(Error::ProgramStorageBufferUnsupported, {p.name, r.name, under});
         if (r.kind == ResourceKind::StorageImage && !caps.storageImages)
             return fail(Error::ProgramStorageImageUnsupported, {p.name, r.name, under});
+        const bool storage = r.kind == ResourceKind::StorageBuffer || r.kind == ResourceKind::StorageImage;
+        if (storage && (r.stages & stageBit(ShaderStage::Fragment)) && !caps.fragmentStoresAndAtomics)
+            return fail(Error::ProgramFragmentStorageUnsupported, {p.name, r.name, under});
     }
     for (const StageCode& s : p.stages) {
         if (caps.dialect == ShaderDialect::Spirv) {
@@ -133,6 +136,10 @@ Status graphicsPipelineState(const GraphicsPipelineDesc& d, const DeviceCaps&) {
         return fail(Error::PipelineBlendFactor, {"src", str(uint32_t(d.blend.src))});
     if (uint32_t(d.blend.dst) > uint32_t(BlendFactor::OneMinusDstAlpha))
         return fail(Error::PipelineBlendFactor, {"dst", str(uint32_t(d.blend.dst))});
+    if (d.blend.separateAlpha && uint32_t(d.blend.srcAlpha) > uint32_t(BlendFactor::OneMinusDstAlpha))
+        return fail(Error::PipelineBlendFactor, {"srcAlpha", str(uint32_t(d.blend.srcAlpha))});
+    if (d.blend.separateAlpha && uint32_t(d.blend.dstAlpha) > uint32_t(BlendFactor::OneMinusDstAlpha))
+        return fail(Error::PipelineBlendFactor, {"dstAlpha", str(uint32_t(d.blend.dstAlpha))});
     // Integer attachments do not blend: Vulkan's validation refuses it, GL ignores it silently.
     if (d.blend.enable)
         for (size_t i = 0; i < d.colorFormats.size(); ++i)

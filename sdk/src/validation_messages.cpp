@@ -42,6 +42,7 @@ constexpr ErrorEntry kTable[] = {
     {E::ProgramComputeUnsupported, C::UnsupportedFeature, "ProgramComputeUnsupported", "program '{}' is a compute program, but this device has no compute shaders{}"},
     {E::ProgramStorageBufferUnsupported, C::UnsupportedFeature, "ProgramStorageBufferUnsupported", "program '{}' uses storage buffer '{}', but this device has no storage buffers{}"},
     {E::ProgramStorageImageUnsupported, C::UnsupportedFeature, "ProgramStorageImageUnsupported", "program '{}' uses storage image '{}', but this device has no storage images{}"},
+    {E::ProgramFragmentStorageUnsupported, C::UnsupportedFeature, "ProgramFragmentStorageUnsupported", "program '{}' uses '{}' from its fragment stage, but this device has no fragment-stage stores and atomics{}"},
     {E::ProgramNoSpirv, C::ShaderError, "ProgramNoSpirv", "program '{}' has no valid SPIR-V module for its {} stage (empty, or a bad magic number)"},
     {E::ProgramHighTierDialect, C::UnsupportedTier, "ProgramHighTierDialect", "program '{}' is built for the high tier; a device on {} runs only current-tier programs"},
     {E::ProgramNoSource, C::ShaderError, "ProgramNoSource", "program '{}' has no {} source for its {} stage"},

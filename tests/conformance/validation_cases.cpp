@@ -234,6 +234,14 @@ std::vector<ValidationCase> makeCases() {
             p.resources.push_back({"Extra", "Extra", ResourceKind::StorageBuffer, 5, stageBit(ShaderStage::Fragment), 16});
             return tryProgram(o, p);
         });
+    add("fragment-stage storage without fragment stores", Error::ProgramFragmentStorageUnsupported,
+        [](const Caps& c) { return c.storageBuffers && !c.fragmentStoresAndAtomics; },
+        [](const Caps& c) { return "program 'copy' uses 'uNodes' from its fragment stage, but this device has no fragment-stage stores and atomics" + ceiling(c); },
+        [](Objects& o) {
+            CompiledProgram p = copyProgram();
+            p.resources.push_back({"uNodes", "uNodes", ResourceKind::StorageBuffer, 5, stageBit(ShaderStage::Fragment), 0});
+            return tryProgram(o, p);
+        });
     add("storage image without storage images", Error::ProgramStorageImageUnsupported, [](const Caps& c) { return !c.storageImages; },
         [](const Caps& c) { return "program 'copy' uses storage image 'uExtra', but this device has no storage images" + ceiling(c); },
         [](Objects& o) {
@@ -341,7 +349,10 @@ std::vector<DeviceCaps> craftedNullCaps() {
     DeviceCaps vulkanLike = null::defaultCaps();
     vulkanLike.dialect = ShaderDialect::Spirv;
     vulkanLike.limits.maxStorageBufferSize = 1u << 20;  // below maxBufferSize, as on real devices
-    return {lacking, vulkanLike, null::defaultCaps(CapabilityCeiling::GLES30)};
+    // Storage for compute only, as GL ES 3.1 may offer (its fragment-stage minimums are 0).
+    DeviceCaps computeOnlyStorage = null::defaultCaps();
+    computeOnlyStorage.fragmentStoresAndAtomics = false;
+    return {lacking, vulkanLike, computeOnlyStorage, null::defaultCaps(CapabilityCeiling::GLES30)};
 }
 
 // Rows that need a host's own Vulkan command buffer; tests/vulkan/test_vulkan_external.cpp

@@ -113,8 +113,13 @@ struct DepthState {
 };
 struct BlendState {
     bool enable = false;
-    BlendFactor src = BlendFactor::One;  // colour and alpha use the same factors, op add
+    BlendFactor src = BlendFactor::One;  // colour (and alpha, unless separateAlpha) factors, op add
     BlendFactor dst = BlendFactor::Zero;
+    // Alpha with its own factors (weighted blended OIT: colour sums, alpha multiplies down).
+    // One state for every attachment either way (GL ES 3.0 has no per-target blend state).
+    bool separateAlpha = false;
+    BlendFactor srcAlpha = BlendFactor::One;
+    BlendFactor dstAlpha = BlendFactor::Zero;
 };
 
 struct GraphicsPipelineDesc {
@@ -244,6 +249,12 @@ struct DeviceCaps {
     bool storageBuffers = false;
     bool atomics = false;             // atomic operations on storage buffers
     bool storageImages = false;
+    // Storage buffer and storage image writes and atomics (atomicAdd on buffers,
+    // imageAtomicExchange on R32UI storage images) from fragment shaders, so a render pass can
+    // have side effects beyond its attachments (the A-buffer fill). A pass may then have no
+    // colour attachment (depth only). Every render pass and dispatch is ordered after all
+    // earlier commands' storage writes: a later pass sees what an earlier one wrote.
+    bool fragmentStoresAndAtomics = false;
     bool floatRenderTargets = false;  // R32F, RG16F, RGBA16F colour-renderable
     bool float32Filterable = false;
     TimingSource timing = TimingSource::WallClockAfterFinish;

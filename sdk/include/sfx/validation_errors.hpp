@@ -43,6 +43,7 @@ enum class Error : uint32_t {
     ProgramComputeUnsupported,
     ProgramStorageBufferUnsupported,
     ProgramStorageImageUnsupported,
+    ProgramFragmentStorageUnsupported,
     ProgramNoSpirv,
     ProgramHighTierDialect,
     ProgramNoSource,

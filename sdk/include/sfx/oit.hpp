@@ -1,0 +1,155 @@
+// Order-independent transparency (docs/oit.md): translucent draws composited over the host's
+// opaque colour, whatever order they are drawn in.
+//
+// High tier (TierProfile::abufferOit and caps.fragmentStoresAndAtomics): an A-buffer after Bauer
+// et al. 2013. Passes: clear (compute: heads to end-of-list, counter to 0), fill (one geometry
+// pass, depth-tested against the opaque depth without writing it, early depth tests; each
+// fragment takes a node of the pool with one atomicAdd and swaps itself in as its pixel's list
+// head with one imageAtomicExchange; no locks, no waits), resolve (per pixel: the nearest K
+// fragments by (depth, draw id, primitive id) exact, those behind folded into one tail layer in
+// sorted order, over the opaque colour). The output never depends on the draw order.
+//
+// Current tier: weighted blended OIT (McGuire and Bavoil 2013) into two RGBA16F targets through
+// one blend state, then a resolve; an approximation whose weight assumes view depths of about
+// 0.1 to 500 units (sfx_shared_oit.h) and that errs most for high opacities and layers far apart
+// (docs/oit.md gives the measured error).
+//
+// The pool (high tier) follows the scene: each render() reads the previous frame's counter (the
+// fragments that passed the depth test) and, if the pool was too small or is far too large,
+// resizes it to that count times kOitPoolHeadroom. A frame whose fragments exceed the pool:
+//   - stores exactly `capacity` of them and counts the rest (TransparencyStats::dropped);
+//   - never writes or reads outside the pool, never waits;
+//   - a pixel that lost none of its fragments is exact; a pixel that lost some composites the
+//     ones it kept in the right order, so its front layers are right when they were among the
+//     stored (which of the frame's fragments are stored is decided by the rasteriser's order
+//     and is not guaranteed);
+//   - the next render() grows the pool so the same scene is exact again.
+// Nothing is allocated until a render() has a transparent draw; render() with no draw copies
+// nothing and output() is then the opaque colour itself.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <memory>
+#include <span>
+
+#include "sfx/hal.hpp"
+#include "sfx/plan.hpp"
+#include "sfx/tier.hpp"
+
+namespace sfx {
+
+// The pool holds this many times the fragments the scene last produced.
+inline constexpr double kOitPoolHeadroom = 1.5;
+// Nodes per pixel of the first frame's pool, before any count is known.
+inline constexpr uint32_t kOitInitialNodesPerPixel = 4;
+// Bytes per A-buffer node (sfx_shared_oit.h's 8 words).
+inline constexpr uint32_t kOitNodeBytes = 32;
+
+// One vertex of a transparent mesh: object-space position and normal (12 + 12 bytes).
+struct TransparentVertex {
+    float position[3];
+    float normal[3];
+};
+
+// One transparent draw: a non-indexed triangle list of TransparentVertex.
+struct TransparentDraw {
+    BufferHandle vertices;      // kBufferVertex
+    uint32_t vertexCount = 0;   // a positive multiple of 3
+    glm::mat4 model{1.0f};      // object to world
+    glm::vec3 color{1.0f};      // straight linear RGB, each in [0, 1e4]
+    float opacity = 1.0f;       // [0, 1]
+    // Orders this draw's fragments against other draws' at exactly equal depth; give every
+    // draw its own id, stable from frame to frame, so the result ignores draw order. [0, 2^31)
+    uint32_t id = 0;
+};
+
+struct TransparencyInputs {
+    TextureHandle opaqueColor;  // the desc's colorFormat, sampled, output size
+    // The opaque pass's depth attachment (the desc's depthFormat, kTextureRenderTarget), output
+    // size: tested against, never written.
+    TextureHandle opaqueDepth;
+    glm::mat4 view{1.0f};        // world to view (camera looks down -z)
+    glm::mat4 projection{1.0f};  // the same projection the opaque pass used
+    std::span<const TransparentDraw> draws;
+};
+
+enum class TransparencyQuality : uint32_t {
+    Standard,  // K = 16 fragments per pixel kept exactly
+    High,      // K = 32
+};
+
+struct TransparencyDesc {
+    uint32_t width = 0, height = 0;  // [1, caps.limits.maxTextureSize]
+    TierProfile profile;             // tiers::profile(tier) or tiers::choose(caps)->profile
+    Format colorFormat = Format::RGBA16F;  // RGBA8, RGBA16F or RGBA32F: opaque colour and output
+    Format depthFormat = Format::D32F;     // D16, D24S8 or D32F: the opaque depth
+    TransparencyQuality quality = TransparencyQuality::Standard;
+    // Nodes of the first frame's pool, before any count is known; 0 = kOitInitialNodesPerPixel
+    // per pixel. Later frames size it from the scene.
+    uint64_t initialPoolNodes = 0;
+};
+
+// What the last flushed frame did (high tier; zeros on the current tier, which has no pool).
+struct TransparencyStats {
+    uint64_t fragments = 0;   // that passed the depth test (stored + dropped)
+    uint64_t stored = 0;
+    uint64_t dropped = 0;
+    uint64_t poolNodes = 0;   // the pool's capacity that frame
+    uint64_t poolBytes = 0;
+};
+
+uint32_t keptLayers(TransparencyQuality quality);  // K: 16 or 32
+
+class Transparency {
+public:
+    // UnsupportedFeature when the profile asks for the A-buffer and the device has no fragment
+    // stores and atomics; UnsupportedFormat when the current tier's RGBA16F targets or
+    // colorFormat cannot be rendered.
+    static Result<std::unique_ptr<Transparency>> create(Device& device, const TransparencyDesc& desc);
+    ~Transparency();
+    Transparency(const Transparency&) = delete;
+    Transparency& operator=(const Transparency&) = delete;
+
+    // Records the passes; the result is in output() once the device flushes. Reads the previous
+    // frame's counter first (a device read, which flushes what was recorded before).
+    Status render(const TransparencyInputs& inputs);
+    // The composited colour (colorFormat); the opaque colour itself after a frame with no draw.
+    TextureHandle output() const { return output_; }
+    // The last frame's counts; a device read (flushes).
+    Result<TransparencyStats> stats();
+    bool usesAbuffer() const { return abuffer_; }
+    const TransparencyDesc& desc() const { return desc_; }
+    // Passes and resources of a frame with `hasTransparentDraws`, each saying why it exists.
+    Plan plan(bool hasTransparentDraws = true) const;
+
+private:
+    Transparency(Device& device, const TransparencyDesc& desc);
+    Status ensurePrograms();
+    Status ensureTargets();
+    Status ensurePool(uint64_t nodes);
+    Status sizePoolFromLastFrame();
+    uint64_t maxPoolNodes() const;
+    Status uploadDraws(const TransparencyInputs& inputs);
+    std::vector<DrawDesc> geometryDraws(const TransparencyInputs& inputs, PipelineHandle pipeline, uint32_t paramsBinding,
+                                        const BindingSet& shared) const;
+    Status renderAbuffer(const TransparencyInputs& inputs);
+    Status renderWeighted(const TransparencyInputs& inputs);
+    Result<uint32_t> readCounter();
+    void release();
+
+    Device& device_;
+    TransparencyDesc desc_;
+    bool abuffer_ = false;
+    TextureHandle output_;  // ownedOutput_, or the host's opaque colour after a frame with no draw
+    TextureHandle ownedOutput_, heads_, accum_, weight_;
+    BufferHandle pool_, resolveParams_;
+    uint64_t poolNodes_ = 0;
+    bool poolUsed_ = false;  // a fill has run since the pool was made: its counter is the scene's
+    std::vector<BufferHandle> drawParams_;
+    ProgramHandle clearProgram_, fillProgram_, resolveProgram_, accumProgram_, weightedResolveProgram_;
+    PipelineHandle clearPipeline_, fillPipeline_, resolvePipeline_, accumPipeline_, weightedResolvePipeline_;
+    TransparencyStats last_;
+};
+
+}  // namespace sfx
