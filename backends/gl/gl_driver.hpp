@@ -120,6 +120,7 @@ public:
     Status flush() override;
 
     std::vector<std::string> takeValidationMessages() override;
+    DeviceStats stats() const override;  // gl_resources.cpp
 
 private:
     // ---- Context (gl_device.cpp) ----------------------------------------------------------
@@ -209,6 +210,11 @@ private:
     HandlePool<TimerTag, GlTimer> timers_;
 
     std::map<FboKey, GLuint> fbos_;
+    // For stats(): texture and buffer storage (the textures readTexture copies depth through
+    // included, and counted again as readback copies), framebuffer objects, and the bytes of
+    // the HAL's textures and buffers alive.
+    ObjectCount storage_, readbackCopies_, framebufferCount_;
+    uint64_t bytesHeld_ = 0;
     GLuint nearestSampler_ = 0;
     GLuint emptyVao_ = 0;
     GLuint depthCopyProgram_ = 0;

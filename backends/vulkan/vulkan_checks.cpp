@@ -103,7 +103,9 @@ Status checkAttachments(const RenderPassDesc& pass, HandlePool<TextureTag, Vulka
             return invalidArgument("RenderPassDesc.colors[].load", std::to_string(uint32_t(c.load)), "Clear, Load or DontCare");
         SFX_TRY(extent(t, c.mip));
         out.colorFormats.push_back(t.desc.format);
-        out.uses.push_back({&t, c.mip, 1, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
+        out.uses.images.push_back({&t, c.mip, 1, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                   VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, true});
     }
     if (!pass.depth.texture.isNull()) {
         SFX_TRY(textures.check(pass.depth.texture, "RenderPassDesc.depth.texture"));
@@ -116,7 +118,10 @@ Status checkAttachments(const RenderPassDesc& pass, HandlePool<TextureTag, Vulka
         SFX_TRY(extent(*depth, 0));
         out.depth = depth;
         out.depthFormat = depth->desc.format;
-        out.uses.push_back({depth, 0, 1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL});
+        out.uses.images.push_back({depth, 0, 1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                                   VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+                                   VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                                   true});
     }
     return Status::ok();
 }

@@ -40,8 +40,7 @@ Status VulkanDevice::submitAndWait() {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - recordStart_).count();
     SFX_VK(vk_.vkResetFences(device_, 1, &fence_));
     SFX_VK(vk_.vkResetCommandBuffer(commandBuffer_, 0));
-    for (VkDescriptorPool p : descriptorPools_) vk_.vkResetDescriptorPool(device_, p, 0);
-    currentPool_ = 0;
+    recycleStaging(stagingOwn_);
     releaseGarbage(pending_);
     markEndedTimersFlushed(false, wallMs);
     return Status::ok();
@@ -49,11 +48,9 @@ Status VulkanDevice::submitAndWait() {
 
 Status VulkanDevice::flush() {
     if (hostCommandBuffer_) {
-        // The host ends and submits its command buffer; what it used lives until it is done.
+        // The host ends and submits its command buffer; what it used (garbage, staging blocks)
+        // lives until it is done, which the next setCommandBuffer may assume.
         hostCommandBuffer_ = VK_NULL_HANDLE;
-        for (VkDescriptorPool p : descriptorPools_) hostPending_.descriptorPools.push_back(p);
-        descriptorPools_.clear();
-        currentPool_ = 0;
         markEndedTimersFlushed(true, 0);
         return Status::ok();
     }
@@ -66,6 +63,7 @@ Status VulkanDevice::setHostCommandBuffer(VkCommandBuffer cb) {
     SFX_TRY(submitAndWait());
     // The previous host command buffer has finished by now (documented contract).
     releaseGarbage(hostPending_);
+    recycleStaging(stagingHost_);
     hostCommandBuffer_ = cb;
     return Status::ok();
 }
@@ -95,7 +93,7 @@ Status VulkanDevice::recordRenderPass(const RenderPassDesc& pass, std::span<cons
     Result<VkCommandBuffer> cbr = recording();
     if (!cbr) return cbr.status();
     VkCommandBuffer cb = cbr.value();
-    barrier(cb, targets.uses);
+    barriers(cb, targets.uses);
 
     auto loadOp = [](LoadOp op) {
         return op == LoadOp::Clear ? VK_ATTACHMENT_LOAD_OP_CLEAR
@@ -157,7 +155,7 @@ Status VulkanDevice::recordRenderPass(const RenderPassDesc& pass, std::span<cons
     return Status::ok();
 }
 
-Status VulkanDevice::recordDispatch(const DispatchDesc& d, const VulkanPipeline& pl, const std::vector<ImageUse>& uses,
+Status VulkanDevice::recordDispatch(const DispatchDesc& d, const VulkanPipeline& pl, const Uses& uses,
                                     ResolvedBindings& resolved) {
     Result<VkDescriptorSet> s = writeSet(pl, resolved);
     if (!s) return s.status();
@@ -165,7 +163,7 @@ Status VulkanDevice::recordDispatch(const DispatchDesc& d, const VulkanPipeline&
     Result<VkCommandBuffer> cbr = recording();
     if (!cbr) return cbr.status();
     VkCommandBuffer cb = cbr.value();
-    barrier(cb, uses);
+    barriers(cb, uses);
     vk_.vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pl.pipeline);
     if (set) vk_.vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pl.layout, 0, 1, &set, 0, nullptr);
     vk_.vkCmdDispatch(cb, d.groupsX, d.groupsY, d.groupsZ);

@@ -1,5 +1,10 @@
-// Descriptors: set and pipeline layouts from a program's reflection, descriptor pools and sets,
-// and a BindingSet resolved into descriptor writes (its checks are in vulkan_checks.cpp).
+// Descriptors: set and pipeline layouts from a program's reflection, a BindingSet resolved into
+// descriptor writes (its checks are in vulkan_checks.cpp), and the descriptor-set cache: a set is
+// written once per distinct (set layout, descriptors) and reused by every later draw or dispatch
+// that binds the same, so a steady frame allocates and updates none. A cached set is never
+// written again, so command buffers still in flight may keep using it. The cache is cleared
+// (its pools destroyed once the GPU is done) when a texture, buffer, sampler or pipeline it may
+// name is destroyed, or when it grows past kMaxCachedSets.
 #include <algorithm>
 
 #include "sfx/hal_validation.hpp"
@@ -9,8 +14,12 @@
 
 namespace sfx::vulkan {
 
+namespace {
+constexpr size_t kMaxCachedSets = 4096;
+}
+
 Status VulkanDevice::resolveBindings(const BindingSet& set, const VulkanPipeline& pl, const char* what,
-                                     std::vector<ImageUse>& uses, ResolvedBindings& out) {
+                                     Uses& uses, ResolvedBindings& out) {
     out.images.reserve(set.textures.size() + set.storageImages.size());
     out.buffers.reserve(set.uniformBuffers.size() + set.storageBuffers.size());
     ReflectionMatch reflection(pl);
@@ -39,7 +48,8 @@ Status VulkanDevice::resolveBindings(const BindingSet& set, const VulkanPipeline
         if (!view) return view.status();
         out.images.push_back({sampler, view.value(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
         write(tb.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER)->pImageInfo = &out.images.back();
-        uses.push_back({&t, tb.baseMip, tb.mipCount, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+        uses.images.push_back({&t, tb.baseMip, tb.mipCount, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                               shaderStages(r.value()->stages, pl.compute), VK_ACCESS_SHADER_READ_BIT, false});
     }
     for (const StorageImageBinding& sb : set.storageImages) {
         SFX_TRY(textures_.check(sb.texture, "StorageImageBinding.texture"));
@@ -52,19 +62,25 @@ Status VulkanDevice::resolveBindings(const BindingSet& set, const VulkanPipeline
         if (!view) return view.status();
         out.images.push_back({VK_NULL_HANDLE, view.value(), VK_IMAGE_LAYOUT_GENERAL});
         write(sb.binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE)->pImageInfo = &out.images.back();
-        uses.push_back({&t, sb.mip, 1, VK_IMAGE_LAYOUT_GENERAL});
+        uses.images.push_back({&t, sb.mip, 1, VK_IMAGE_LAYOUT_GENERAL, shaderStages(r.value()->stages, pl.compute),
+                               VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, true});
     }
     auto buffers = [&](const std::vector<BufferBinding>& list, ResourceKind kind, uint32_t usageBit,
                        uint64_t alignment, uint64_t maxRange) -> Status {
         for (const BufferBinding& bb : list) {
             SFX_TRY(buffers_.check(bb.buffer, "BufferBinding.buffer"));
-            const VulkanBuffer& b = buffers_.get(bb.buffer);
+            VulkanBuffer& b = buffers_.get(bb.buffer);
             Result<const ShaderResource*> r = reflection.claim(bb.binding, kind, "BufferBinding");
             if (!r) return r.status();
             Result<uint64_t> size = checkBufferBinding(b.desc, bb, kind, usageBit, *r.value(), alignment, maxRange);
             if (!size) return size.status();
             out.buffers.push_back({b.buffer, bb.offset, size.value()});
             write(bb.binding, toVkDescriptor(kind))->pBufferInfo = &out.buffers.back();
+            const bool storage = kind == ResourceKind::StorageBuffer;
+            uses.buffers.push_back({&b, shaderStages(r.value()->stages, pl.compute),
+                                    storage ? VkAccessFlags(VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT)
+                                            : VkAccessFlags(VK_ACCESS_UNIFORM_READ_BIT),
+                                    storage});
         }
         return Status::ok();
     };
@@ -92,6 +108,7 @@ Result<VkDescriptorSet> VulkanDevice::allocateSet(VkDescriptorSetLayout layout) 
             VkDescriptorPool pool;
             SFX_VK(vk_.vkCreateDescriptorPool(device_, &pci, nullptr, &pool));
             descriptorPools_.push_back(pool);
+            descriptorPoolCount_.add();
         }
         VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
         ai.descriptorPool = descriptorPools_[currentPool_];
@@ -99,7 +116,10 @@ Result<VkDescriptorSet> VulkanDevice::allocateSet(VkDescriptorSetLayout layout) 
         ai.pSetLayouts = &layout;
         VkDescriptorSet set;
         VkResult r = vk_.vkAllocateDescriptorSets(device_, &ai, &set);
-        if (r == VK_SUCCESS) return set;
+        if (r == VK_SUCCESS) {
+            descriptorSetCount_.add();
+            return set;
+        }
         // A new pool that cannot hold one set never will: stop rather than loop.
         if (fresh || (r != VK_ERROR_OUT_OF_POOL_MEMORY && r != VK_ERROR_FRAGMENTED_POOL))
             return vkError("vkAllocateDescriptorSets", r);
@@ -107,12 +127,40 @@ Result<VkDescriptorSet> VulkanDevice::allocateSet(VkDescriptorSetLayout layout) 
     }
 }
 
+void VulkanDevice::clearSetCache() {
+    Garbage& g = currentGarbage();
+    g.descriptorPools.insert(g.descriptorPools.end(), descriptorPools_.begin(), descriptorPools_.end());
+    g.descriptorSets += setCache_.size();
+    descriptorPools_.clear();
+    currentPool_ = 0;
+    setCache_.clear();
+}
+
 Result<VkDescriptorSet> VulkanDevice::writeSet(const VulkanPipeline& pl, ResolvedBindings& resolved) {
     if (pl.resources.empty()) return VkDescriptorSet(VK_NULL_HANDLE);
+    // The key: the set layout and every descriptor, in binding order of the writes.
+    setKey_.clear();
+    setKey_.push_back(uint64_t(pl.setLayout));
+    for (const VkWriteDescriptorSet& w : resolved.writes) {
+        setKey_.push_back((uint64_t(w.dstBinding) << 32) | uint64_t(w.descriptorType));
+        if (w.pImageInfo) {
+            setKey_.push_back(uint64_t(w.pImageInfo->sampler));
+            setKey_.push_back(uint64_t(w.pImageInfo->imageView));
+            setKey_.push_back(uint64_t(w.pImageInfo->imageLayout));
+        } else {
+            setKey_.push_back(uint64_t(w.pBufferInfo->buffer));
+            setKey_.push_back(w.pBufferInfo->offset);
+            setKey_.push_back(w.pBufferInfo->range);
+        }
+    }
+    auto it = setCache_.find(setKey_);
+    if (it != setCache_.end()) return it->second;
+    if (setCache_.size() >= kMaxCachedSets) clearSetCache();
     Result<VkDescriptorSet> set = allocateSet(pl.setLayout);
     if (!set) return set.status();
     for (VkWriteDescriptorSet& w : resolved.writes) w.dstSet = set.value();
     vk_.vkUpdateDescriptorSets(device_, uint32_t(resolved.writes.size()), resolved.writes.data(), 0, nullptr);
+    setCache_.emplace(setKey_, set.value());
     return set.value();
 }
 

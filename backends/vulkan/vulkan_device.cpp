@@ -17,6 +17,7 @@ Result<TextureHandle> VulkanDevice::createTexture(const TextureDesc& desc) {
 Status VulkanDevice::destroyTexture(TextureHandle h) {
     SFX_TRY(textures_.check(h, "texture"));
     VulkanTexture t = textures_.remove(h);
+    clearSetCache();  // sets may name its views
     retire(t);
     releaseIdleGarbage();
     return Status::ok();
@@ -46,6 +47,7 @@ Result<SamplerHandle> VulkanDevice::createSampler(const SamplerDesc& desc) {
 
 Status VulkanDevice::destroySampler(SamplerHandle h) {
     SFX_TRY(samplers_.check(h, "sampler"));
+    clearSetCache();
     currentGarbage().samplers.push_back(samplers_.remove(h));
     releaseIdleGarbage();
     return Status::ok();
@@ -61,6 +63,7 @@ Result<BufferHandle> VulkanDevice::createBuffer(const BufferDesc& desc) {
 Status VulkanDevice::destroyBuffer(BufferHandle h) {
     SFX_TRY(buffers_.check(h, "buffer"));
     VulkanBuffer b = buffers_.remove(h);
+    clearSetCache();
     retire(b, currentGarbage());
     releaseIdleGarbage();
     return Status::ok();
@@ -119,6 +122,7 @@ Result<PipelineHandle> VulkanDevice::createComputePipeline(const ComputePipeline
 Status VulkanDevice::destroyPipeline(PipelineHandle h) {
     SFX_TRY(pipelines_.check(h, "pipeline"));
     VulkanPipeline p = pipelines_.remove(h);
+    clearSetCache();  // sets of its set layout
     retire(p);
     releaseIdleGarbage();
     return Status::ok();
@@ -142,15 +146,19 @@ Status VulkanDevice::renderPass(const RenderPassDesc& pass, std::span<const Draw
         const BufferDesc* indexBuffer = nullptr;
         if (pl.usesVertexBuffer || !d.vertexBuffer.isNull()) {
             SFX_TRY(buffers_.check(d.vertexBuffer, "DrawDesc.vertexBuffer"));
-            vertexBuffer = &buffers_.get(d.vertexBuffer).desc;
+            VulkanBuffer& b = buffers_.get(d.vertexBuffer);
+            vertexBuffer = &b.desc;
+            targets.uses.buffers.push_back({&b, VK_PIPELINE_STAGE_VERTEX_INPUT_BIT, VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT, false});
         }
         if (!d.indexBuffer.isNull()) {
             SFX_TRY(buffers_.check(d.indexBuffer, "DrawDesc.indexBuffer"));
-            indexBuffer = &buffers_.get(d.indexBuffer).desc;
+            VulkanBuffer& b = buffers_.get(d.indexBuffer);
+            indexBuffer = &b.desc;
+            targets.uses.buffers.push_back({&b, VK_PIPELINE_STAGE_VERTEX_INPUT_BIT, VK_ACCESS_INDEX_READ_BIT, false});
         }
         SFX_TRY(validation::drawRange(d, pl.vertexLayout, vertexBuffer, indexBuffer));
     }
-    SFX_TRY(checkLayoutConflicts(targets.uses));
+    SFX_TRY(checkLayoutConflicts(targets.uses.images));
     return recordRenderPass(pass, draws, targets, resolved);
 }
 
@@ -159,10 +167,10 @@ Status VulkanDevice::dispatch(const DispatchDesc& d) {
     SFX_TRY(pipelines_.check(d.pipeline, "DispatchDesc.pipeline"));
     const VulkanPipeline& pl = pipelines_.get(d.pipeline);
     if (!pl.compute) return invalidArgument("DispatchDesc.pipeline", "a graphics pipeline", "a compute pipeline");
-    std::vector<ImageUse> uses;
+    Uses uses;
     ResolvedBindings resolved;
     SFX_TRY(resolveBindings(d.bindings, pl, "DispatchDesc.bindings", uses, resolved));
-    SFX_TRY(checkLayoutConflicts(uses));
+    SFX_TRY(checkLayoutConflicts(uses.images));
     return recordDispatch(d, pl, uses, resolved);
 }
 

@@ -254,8 +254,53 @@ struct DeviceCaps {
 
 struct DeviceOptions {
     CapabilityCeiling ceiling = CapabilityCeiling::None;
-    bool validation = true;  // Vulkan: VK_LAYER_KHRONOS_validation; GL: glGetError after every call
+    // Vulkan: VK_LAYER_KHRONOS_validation with synchronization validation; GL: glGetError after
+    // every call.
+    bool validation = true;
 };
+
+// How many objects of one kind exist now and how many were ever made.
+struct ObjectCount {
+    uint64_t live = 0;
+    uint64_t created = 0;
+    void add(uint64_t n = 1) { live += n; created += n; }
+    void remove(uint64_t n = 1) { live -= n < live ? n : live; }
+    bool operator==(const ObjectCount&) const = default;
+};
+
+// What a device has made, for a host's profiler and for the tests that check that a steady
+// frame makes nothing: compare two readings taken a frame (or many) apart. The HAL kinds count
+// what the Device calls made; the backend kinds count what the backend made behind them
+// (0 where a backend has no such thing: GL has no descriptor sets, the null backend no memory).
+struct DeviceStats {
+    ObjectCount textures, buffers, samplers, programs, pipelines, timers;
+    ObjectCount memoryAllocations;  // Vulkan: vkAllocateMemory; GL: texture and buffer storage
+    ObjectCount stagingBuffers;     // Vulkan: blocks of the upload/readback ring; GL: readback copies
+    ObjectCount descriptorSets;     // Vulkan: sets in the cache (made once per distinct binding set)
+    ObjectCount descriptorPools;    // Vulkan
+    ObjectCount imageViews;         // Vulkan: sampled, storage and attachment views
+    ObjectCount framebuffers;       // GL: framebuffer objects (Vulkan renders without any)
+    uint64_t deviceMemoryBytes = 0; // bytes of GPU (or, null: host) memory the device holds now
+    bool operator==(const DeviceStats&) const = default;
+};
+// The counts of a device's HandlePool (sfx/handle.hpp).
+template <class Pool>
+ObjectCount objectCount(const Pool& pool) {
+    return {uint64_t(pool.aliveCount()), pool.createdCount()};
+}
+// The HAL kinds of DeviceStats from a backend's six pools; the backend adds its own kinds.
+template <class Textures, class Buffers, class Samplers, class Programs, class Pipelines, class Timers>
+DeviceStats halObjectStats(const Textures& textures, const Buffers& buffers, const Samplers& samplers,
+                           const Programs& programs, const Pipelines& pipelines, const Timers& timers) {
+    DeviceStats s;
+    s.textures = objectCount(textures);
+    s.buffers = objectCount(buffers);
+    s.samplers = objectCount(samplers);
+    s.programs = objectCount(programs);
+    s.pipelines = objectCount(pipelines);
+    s.timers = objectCount(timers);
+    return s;
+}
 
 class Device {
 public:
@@ -306,6 +351,9 @@ public:
     // The time between the timer's begin and end of the last flushed use.
     virtual Result<TimerReading> readTimer(TimerHandle timer) = 0;
 
+    // Counts of what the device made (see DeviceStats); cheap, callable every frame.
+    virtual DeviceStats stats() const = 0;
+
     // Messages from the API's validation since the last call: Vulkan validation-layer
     // messages, GL errors caught by the per-call checks and GL debug output. Tests fail on any.
     virtual std::vector<std::string> takeValidationMessages() { return {}; }
@@ -313,6 +361,7 @@ public:
 
 // Byte size of one mip level of a texture.
 uint64_t mipLevelBytes(const TextureDesc& desc, uint32_t mip);
+uint64_t textureBytes(const TextureDesc& desc);  // all its mip levels
 uint32_t mipExtent(uint32_t base, uint32_t mip);  // max(1, base >> mip)
 uint32_t maxMipLevels(uint32_t width, uint32_t height);
 
