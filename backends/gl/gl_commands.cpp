@@ -87,9 +87,8 @@ Status GlDevice::encodeRenderPass(const RenderPassDesc& pass, std::span<const Dr
 
 void GlDevice::encodeDraw(const DrawDesc& d) {
     const GlPipeline& p = pipelines_.get(d.pipeline);
-    const GlProgram& program = programs_.get(p.program);
     const GraphicsPipelineDesc& pd = p.desc;
-    GL(glUseProgram, program.name);
+    GL(glUseProgram, programOf(p));
     bindResources(d.bindings);
 
     if (pd.depth.test || pd.depth.write) {
@@ -136,8 +135,8 @@ void GlDevice::encodeDraw(const DrawDesc& d) {
     unbindResources(d.bindings);
 }
 
-void GlDevice::encodeDispatch(const GlProgram& program, const DispatchDesc& d) {
-    GL(glUseProgram, program.name);
+void GlDevice::encodeDispatch(GLuint program, const DispatchDesc& d) {
+    GL(glUseProgram, program);
     bindResources(d.bindings);
     // Earlier passes' writes visible to the dispatch, and its writes to what follows.
     GL(glMemoryBarrier, GL_ALL_BARRIER_BITS);

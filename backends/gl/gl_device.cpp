@@ -32,7 +32,10 @@ GlDevice::~GlDevice() {
     buffers_.forEachAlive([&](GlBuffer& b) { gl_.glDeleteBuffers(1, &b.name); });
     samplers_.forEachAlive([&](GlSampler& s) { gl_.glDeleteSamplers(1, &s.name); });
     programs_.forEachAlive([&](GlProgram& p) { gl_.glDeleteProgram(p.name); });
-    pipelines_.forEachAlive([&](GlPipeline& p) { gl_.glDeleteVertexArrays(1, &p.vao); });
+    pipelines_.forEachAlive([&](GlPipeline& p) {
+        gl_.glDeleteVertexArrays(1, &p.vao);
+        if (p.specialized) gl_.glDeleteProgram(p.specialized);
+    });
     for (auto& [key, fbo] : fbos_) gl_.glDeleteFramebuffers(1, &fbo);
     if (nearestSampler_) gl_.glDeleteSamplers(1, &nearestSampler_);
     if (emptyVao_) gl_.glDeleteVertexArrays(1, &emptyVao_);
@@ -126,7 +129,7 @@ Status GlDevice::dispatch(const DispatchDesc& d) {
     Result<const GlProgram*> program = checkDispatch(d);
     if (!program) return program.status();
     SFX_TRY(enter());
-    encodeDispatch(*program.value(), d);
+    encodeDispatch(programOf(pipelines_.get(d.pipeline)), d);
     return takeDeviceError(Status::ok());
 }
 

@@ -46,17 +46,22 @@ struct GlSampler {
     SamplerDesc desc;
     GLuint name = 0;
 };
+// Stage type and text, as compiled: kept so a pipeline with specialisation constants can
+// compile its own copy with the values in place.
+using GlSources = std::vector<std::pair<GLenum, std::string>>;
 struct GlProgram {
     std::string label;
     GLuint name = 0;
     bool compute = false;
     std::vector<ShaderResource> resources;
+    GlSources sources;
 };
 struct GlPipeline {
     bool compute = false;
     ProgramHandle program;
     GraphicsPipelineDesc desc;  // graphics state; program field unused
     GLuint vao = 0;
+    GLuint specialized = 0;  // the program compiled with the pipeline's constants; 0: the program's
 };
 struct GlTimer {
     bool begun = false, ended = false;
@@ -153,6 +158,14 @@ private:
     // ---- Programs (gl_programs.cpp) -------------------------------------------------------
     // Compiles and links `program`'s text for the device's dialect and binds its resources by name.
     Result<GLuint> linkProgram(const CompiledProgram& program);
+    static GlSources sourcesOf(const CompiledProgram& program, ShaderDialect dialect);
+    Result<GLuint> linkSources(const std::string& programName, const GlSources& sources,
+                               const std::vector<ShaderResource>& resources);
+    // The program of `pipeline` specialised with its constants (0 when it has none).
+    Result<GLuint> specialize(const GlProgram& program, const std::vector<SpecializationConstant>& constants);
+    GLuint programOf(const GlPipeline& pipeline) const {
+        return pipeline.specialized ? pipeline.specialized : programs_.get(pipeline.program).name;
+    }
     Result<GLuint> compileShader(const std::string& programName, GLenum type, const std::string& source);
     Result<GLuint> buildProgram(const std::string& programName, const std::vector<std::pair<GLenum, std::string>>& sources);
     void bindResourcesByName(GLuint program, const std::vector<ShaderResource>& resources);
@@ -177,7 +190,7 @@ private:
     void unbindResources(const BindingSet& b);
     Status encodeRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, const PassTargets& targets);
     void encodeDraw(const DrawDesc& d);
-    void encodeDispatch(const GlProgram& program, const DispatchDesc& d);
+    void encodeDispatch(GLuint program, const DispatchDesc& d);
 
     // ---- Framebuffer cache (gl_framebuffers.cpp) ------------------------------------------
     GLenum depthAttachmentPoint(Format f) const;

@@ -135,6 +135,7 @@ public:
         SFX_TRY(programs_.check(desc.program, "ComputePipelineDesc.program"));
         if (!programs_.get(desc.program).compute)
             return Status{StatusCode::InvalidArgument, "ComputePipelineDesc.program is not a compute program"};
+        SFX_TRY(validation::specializationConstants(desc.constants, "ComputePipelineDesc"));
         return pipelines_.insert(NullPipeline{true, {}});
     }
     Status destroyPipeline(PipelineHandle h) override {

@@ -116,6 +116,7 @@ Result<PipelineHandle> VulkanDevice::createComputePipeline(const ComputePipeline
     SFX_TRY(programs_.check(desc.program, "ComputePipelineDesc.program"));
     const VulkanProgram& prog = programs_.get(desc.program);
     if (!prog.compute) return Status{StatusCode::InvalidArgument, "ComputePipelineDesc.program is not a compute program"};
+    SFX_TRY(validation::specializationConstants(desc.constants, "ComputePipelineDesc"));
     return makeComputePipeline(desc, prog);
 }
 

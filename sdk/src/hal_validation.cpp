@@ -106,7 +106,17 @@ Status program(const CompiledProgram& p, const DeviceCaps& caps) {
     return Status::ok();
 }
 
+Status specializationConstants(const std::vector<SpecializationConstant>& constants, const char* where) {
+    for (size_t i = 0; i < constants.size(); ++i)
+        for (size_t j = 0; j < i; ++j)
+            if (constants[j].id == constants[i].id)
+                return invalidArgument(std::string(where) + ".constants[" + str(i) + "].id", str(constants[i].id),
+                                       "an id not given before (constants[" + str(j) + "] has it)");
+    return Status::ok();
+}
+
 Status graphicsPipelineShape(const GraphicsPipelineDesc& d, const DeviceCaps& caps) {
+    SFX_TRY(specializationConstants(d.constants, "GraphicsPipelineDesc"));
     if (d.colorFormats.size() > caps.limits.maxColorAttachments)
         return invalidArgument("GraphicsPipelineDesc.colorFormats.size()", str(d.colorFormats.size()),
                                "[0, " + str(caps.limits.maxColorAttachments) + "]");

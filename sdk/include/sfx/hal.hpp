@@ -115,6 +115,17 @@ struct BlendState {
     BlendFactor dst = BlendFactor::Zero;
 };
 
+// A specialisation constant of a pipeline's program: the shader declares
+// `layout(constant_id = id) const int NAME = default;` and the pipeline fixes the value, so the
+// driver compiles loop bounds and branches that depend on it as constants, once, when the
+// pipeline is made (a uniform value there may make a driver recompile at draw time). Vulkan
+// specialises the SPIR-V; GL compiles the program's text with the value in place. Ids a program
+// does not declare are ignored.
+struct SpecializationConstant {
+    uint32_t id = 0;
+    int32_t value = 0;
+};
+
 struct GraphicsPipelineDesc {
     ProgramHandle program;
     VertexLayout vertexLayout;
@@ -124,11 +135,13 @@ struct GraphicsPipelineDesc {
     std::vector<Format> colorFormats; // one per colour attachment, [0, caps.limits.maxColorAttachments]
     Format depthFormat = Format::Undefined;
     const char* debugName = "";
+    std::vector<SpecializationConstant> constants;  // distinct ids
 };
 
 struct ComputePipelineDesc {
     ProgramHandle program;
     const char* debugName = "";
+    std::vector<SpecializationConstant> constants;  // distinct ids
 };
 
 // Resources for one draw or dispatch, by the binding numbers the shader reflection reports

@@ -15,6 +15,9 @@ Status program(const CompiledProgram& program, const DeviceCaps& caps);
 // location below kMaxVertexAttributes (64-bit sums, so a huge offset cannot wrap past the check).
 Status graphicsPipelineShape(const GraphicsPipelineDesc& desc, const DeviceCaps& caps);
 
+// Specialisation constants with distinct ids; `where` names the desc ("GraphicsPipelineDesc").
+Status specializationConstants(const std::vector<SpecializationConstant>& constants, const char* where);
+
 // Attribute locations every API offers (Vulkan maxVertexInputAttributes and GL_MAX_VERTEX_ATTRIBS
 // are at least 16), and the smallest stride limit among them (maxVertexInputBindingStride and
 // GL_MAX_VERTEX_ATTRIB_STRIDE are at least 2048).
