@@ -21,6 +21,7 @@
 #include <map>
 #include <sstream>
 
+#include "bench_device.hpp"
 #include "scene.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/backends.hpp"
@@ -186,21 +187,6 @@ AoConfig convergedConfig(const AoSettings& settings, uint32_t samples) {
     c.depthMipLevels = 1;
     c.maxRadiusPx = 0;
     return c;
-}
-
-Result<reference::Grid> readVisibility(Device& dev, TextureHandle texture, Format format, uint32_t w, uint32_t h) {
-    const size_t n = size_t(w) * h;
-    reference::Grid out(w, h);
-    if (format == Format::R32F) {
-        std::vector<float> px(n);
-        SFX_TRY(dev.readTexture(texture, 0, px.data(), px.size() * sizeof(float)));
-        for (size_t i = 0; i < n; ++i) out.values[i] = px[i];
-    } else {
-        std::vector<uint8_t> px(n * 4);
-        SFX_TRY(dev.readTexture(texture, 0, px.data(), px.size()));
-        for (size_t i = 0; i < n; ++i) out.values[i] = px[i * 4] / 255.0;
-    }
-    return out;
 }
 
 io::Image toImage(const reference::Grid& g) {
@@ -406,10 +392,7 @@ int main(int argc, char** argv) {
                 std::cout << "bench_ao: unknown backend " << backendName << std::endl;
                 continue;
             }
-            DeviceOptions dopt;
-            dopt.validation = false;  // validation would be timed too
-            dopt.ceiling = tier == Tier::Current ? CapabilityCeiling::GLES30 : CapabilityCeiling::None;
-            Result<std::unique_ptr<Device>> opened = openDevice(bc, dopt);
+            Result<std::unique_ptr<Device>> opened = samples::openForTier(bc, tier);
             if (!opened) {
                 std::cout << "bench_ao: skipping " << backendName << ": " << opened.status().toString() << std::endl;
                 continue;
@@ -427,7 +410,7 @@ int main(int argc, char** argv) {
                 std::cout << "bench_ao: scene renderer: " << renderer.status().toString() << std::endl;
                 continue;
             }
-            const Format outFormat = dev.caps().renderableFormat[size_t(Format::R32F)] ? Format::R32F : Format::RGBA8;
+            const Format outFormat = samples::aoOutputFormat(dev);
             Result<std::unique_ptr<CopyPass>> copy = makeCopyPass(dev, tier, o.width, o.height, outFormat);
             if (!copy) {
                 std::cout << "bench_ao: copy pass: " << copy.status().toString() << std::endl;
@@ -486,7 +469,7 @@ int main(int argc, char** argv) {
                               total->milliseconds, passes.value(), copyMs};
                         if (radius == kErrorRadius) {
                             // The last profiled dispatch left its output: identical to an unprofiled one (conformance).
-                            Result<reference::Grid> gpu = readVisibility(dev, outTex.value(), outFormat, o.width, o.height);
+                            Result<reference::Grid> gpu = samples::readVisibility(dev, outTex.value(), outFormat, o.width, o.height);
                             if (!gpu) {
                                 std::cout << "  error: " << gpu.status().toString() << std::endl;
                                 continue;

@@ -30,6 +30,7 @@
 #include "sfx/image_io.hpp"
 #include "sfx/motion_blur.hpp"
 #include "sfx/reference/motion_blur_reference.hpp"
+#include "bench_device.hpp"
 #include "scene.hpp"
 
 using namespace sfx;
@@ -352,19 +353,6 @@ const char* timingLabel(TimingSource source) {
     return source == TimingSource::GpuTimestamps ? "gpu-timestamps" : "wall-clock-after-finish";
 }
 
-// A device for `tier`: the current tier under the GL ES 3.0 ceiling, as the conformance tests
-// run it, so its cost is the one a GL ES 3.0 class device would pay for the same shaders.
-Result<std::unique_ptr<Device>> openFor(const BackendConfig& config, Tier tier) {
-    DeviceOptions options;
-    options.validation = false;
-    options.ceiling = tier == Tier::Current ? CapabilityCeiling::GLES30 : CapabilityCeiling::None;
-    Result<std::unique_ptr<Device>> device = openDevice(config, options);
-    if (!device) return device.status();
-    Result<tiers::TierChoice> choice = tiers::choose(device.value()->caps(), tier);
-    if (!choice) return choice.status();
-    return device;
-}
-
 // The 3D cases on one device: per scene the ground truth and the t = 0 frame are rendered by
 // this device's rasteriser, so the input, the truth and the effect agree on every edge.
 // Pictures are written for the first device that gets to each (the first backend).
@@ -536,7 +524,7 @@ int main(int argc, char** argv) {
             // reference is written (named as such) only when none does.
             bool imageWritten = false;
             for (const BackendConfig& config : configs) {
-                Result<std::unique_ptr<Device>> device = openFor(config, tier);
+                Result<std::unique_ptr<Device>> device = samples::openForTier(config, tier);
                 if (!device) {
                     std::cout << "  " << toString(config) << "/" << toString(tier) << ": skipped (" << device.status().toString() << ")\n";
                     continue;
@@ -571,7 +559,7 @@ int main(int argc, char** argv) {
         std::set<std::string> imagesDone;
         for (const BackendConfig& config : configs)
             for (Tier tier : {Tier::Current, Tier::High}) {
-                Result<std::unique_ptr<Device>> device = openFor(config, tier);
+                Result<std::unique_ptr<Device>> device = samples::openForTier(config, tier);
                 if (!device) {
                     std::cout << "[3D] " << toString(config) << "/" << toString(tier) << ": skipped (" << device.status().toString() << ")\n";
                     continue;

@@ -14,6 +14,7 @@
 #include "sfx/ao.hpp"
 #include "sfx/depth.hpp"
 #include "sfx/motion_blur.hpp"
+#include "sfx/tiers.hpp"
 #include "sfx/image_io.hpp"
 #include "sfx_shared.h"
 
@@ -128,7 +129,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> scenes = samples::sceneNames();
     app.add_option("--out", outDir, "output folder")->capture_default_str();
     app.add_option("--backend", backendName, "auto | vulkan | gles | gl-egl | gl-osmesa")->capture_default_str();
-    app.add_option("--tier", tierName, "auto | current | high")->capture_default_str();
+    app.add_option("--tier", tierName, "auto or a tier: " + tierNameList())->capture_default_str();
     app.add_option("--width", width, "width in pixels")->capture_default_str();
     app.add_option("--height", height, "height in pixels")->capture_default_str();
     app.add_option("--scenes", scenes, "scenes to render")->capture_default_str();
@@ -137,12 +138,12 @@ int main(int argc, char** argv) {
     std::optional<Tier> forcedTier;
     if (tierName != "auto") {
         Tier t;
-        if (!parseTier(tierName, &t)) return fail(invalidArgument("--tier", tierName, "auto, current or high"));
+        if (!parseTier(tierName, &t)) return fail(invalidArgument("--tier", tierName, "auto or " + tierNameList()));
         forcedTier = t;
     }
     DeviceOptions options;
     options.validation = false;
-    options.ceiling = forcedTier == Tier::Current ? CapabilityCeiling::GLES30 : CapabilityCeiling::None;
+    options.ceiling = forcedTier ? tiers::row(*forcedTier).ceiling : CapabilityCeiling::None;
 
     // 1. The device: best by capability score, or the one asked for.
     std::unique_ptr<Device> device;

@@ -3,23 +3,19 @@
 // weight falls to 0 as its depth departs from the centre's by SFX_AO_BLUR_DEPTH_TOLERANCE of it,
 // so occlusion never crosses a depth discontinuity. Crease keeps a second, moderate-width blur
 // in g and the final pass blends both (the article's two-blur look).
+#define SFX_AO_BLUR_PASS 1
 #include "sfx_shared_ao.h"
 
-#ifdef SFX_TIER_HIGH
+// SFX_AO_PACKED_DEPTH_TARGET comes from the tier table (TierProfile::aoPackedDepthTarget).
+#ifndef SFX_AO_PACKED_DEPTH_TARGET
 layout(set = 0, binding = 0) uniform sampler2D uDepth;  // linear depth (the AO target is RG16F)
 #endif
-layout(set = 0, binding = 1) uniform sampler2D uSource;  // current tier: depth key packed in b, a
-// Mirrors BlurParams in sdk/src/effects/ao.cpp (std140).
-layout(set = 0, binding = 2, std140) uniform BlurParams {
-    ivec2 direction;
-    int radius, moderateRadius;
-    int crease, finalPass, pad0, pad1;
-    float maxDepth, keyNear, keyLog2Range, pad2;
-} params;
+layout(set = 0, binding = 1) uniform sampler2D uSource;  // packed target: depth key in b, a
+// BlurParams (binding 2): sfx_shared_ao.h.
 layout(location = 0) out vec4 outAo;
 
 float blurDepth(ivec2 q, vec4 s) {
-#ifdef SFX_TIER_HIGH
+#ifndef SFX_AO_PACKED_DEPTH_TARGET
     // uDepth may be the host's linear depth itself (LinearDepth passing through): clamp on fetch.
     return sfxLinearDepthOrFar(texelFetch(uDepth, q, 0).r, params.maxDepth);
 #else

@@ -16,7 +16,10 @@ void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     ivec2 size = textureSize(uDepth, 0);
     float z = aoDepth(p);
-    if (!(z < params.maxDepth)) { aoWrite(1.0, z, true); return; }
+    // Sky is unoccluded. Its pixels still run the loop below (and discard the sum) rather than
+    // returning here: with the depth MIP each tap's level varies per pixel, and lavapipe fetched
+    // wrong texels for the other pixels of a SIMD block when one of its lanes had left early.
+    bool sky = !(z < params.maxDepth);
     vec3 C = aoPosition(p, z);
     vec3 n = aoNormal(p, C, z, size);
     float screenRadius = params.radius * params.pixelsPerUnit / z;
@@ -31,7 +34,7 @@ void main() {
         float theta = SFX_AO_TWO_PI * alpha * params.spiralTurns + phi;
         vec2 offset = h * vec2(cos(theta), sin(theta));
         int level = 0;
-#ifdef SFX_TIER_HIGH
+#ifdef SFX_AO_DEPTH_MIP  // generated from the tier table (TierProfile::aoUsesDepthMip)
         if (params.mipLevels > 1 && h >= 1.0)
             level = clamp(int(floor(log2(h))) - SFX_AO_MIP_LEVEL_OFFSET, 0, params.mipLevels - 1);
 #endif
@@ -39,5 +42,5 @@ void main() {
         if (params.mirrored != 0) sum += scalableTap(p, -offset, level, size, C, n);
     }
     float a = 2.0 * params.intensity / float(params.samples) * sum;
-    aoWrite(aoFinish(a * a), z, false);
+    aoWrite(sky ? 1.0 : aoFinish(a * a), z, sky);
 }

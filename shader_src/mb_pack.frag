@@ -4,20 +4,13 @@
 // fp16 hi/lo pair (hi = z to 11 significant bits, lo = z - hi), so one fetch gives both at ~22 bits of depth.
 // The velocity is the host's (pixels across the shutter interval) or, in camera-only mode,
 // the reprojection of this pixel's depth by the previous view-projection.
+#define SFX_WANT_MB_PACK_PARAMS 1
 #include "sfx_shared.h"
 #include "sfx_shared_mb.h"
 
 layout(set = 0, binding = 0) uniform sampler2D uLinearDepth;
 layout(set = 0, binding = 1) uniform sampler2D uVelocity;  // unused in camera-only mode
-layout(set = 0, binding = 2, std140) uniform MbPackParams {
-    mat4 reprojection;     // previous view-projection * inverse(current view-projection)
-    vec4 clipFromView;     // x = P[2][2], y = P[3][2]: clip z of view depth -z; zw = 2/W, 2/H
-    vec4 target;           // x = W, y = H
-    float radius;          // k: maximum blur radius in pixels at this size
-    float velocityScale;   // 0.5 * exposure: displacement across the shutter -> blur radius
-    float cameraOnly;      // 1: velocity from depth and the camera motion
-    float maxDepth;        // far plane, or SFX_SKY_DEPTH: out-of-range linear depth becomes this
-} params;
+// params: the uniform block declared in sfx_shared_mb.h.
 
 layout(location = 0) out vec4 outPacked;
 

@@ -4,22 +4,14 @@
 // by the soft depth comparison, the background / foreground cones and the both-moving test of
 // sfx_shared_mb.h; weights summed and normalised. Pixels with nothing moving near them return
 // their colour untouched.
+#define SFX_WANT_MB_RECONSTRUCT_PARAMS 1
 #include "sfx_shared.h"
 #include "sfx_shared_mb.h"
 
 layout(set = 0, binding = 0) uniform sampler2D uColor;
 layout(set = 0, binding = 1) uniform sampler2D uPacked;
 layout(set = 0, binding = 2) uniform sampler2D uNeighborMax;
-layout(set = 0, binding = 3, std140) uniform MbReconstructParams {
-    float radius;        // k, pixels: decodes the [0,1] velocities
-    float softExtent;    // soft depth comparison extent, scene units
-    float centreWeight;  // MotionBlurSettings.centreWeight
-    float pad0;
-    int tileSize;        // N: pixel -> tile of the neighbour-max texture
-    int pairs;           // sample pairs: (taps - 1) / 2
-    int jitterSize;      // 2 = checkerboard, 4 = 4x4 randomised
-    int pad1;
-} params;
+// params: the uniform block declared in sfx_shared_mb.h.
 
 layout(location = 0) out vec4 outColor;
 

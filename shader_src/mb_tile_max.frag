@@ -2,14 +2,12 @@
 // Motion blur pass 2: per N x N tile (N = the maximum radius), the velocity of largest
 // magnitude. Magnitudes are compared on the decoded (centred) value, never on the [0,1] code.
 // Ties keep the first in row-major scan order, as the CPU reference does.
+#define SFX_WANT_MB_TILE_PARAMS 1
 #include "sfx_shared.h"
 #include "sfx_shared_mb.h"
 
 layout(set = 0, binding = 0) uniform sampler2D uPacked;
-layout(set = 0, binding = 1, std140) uniform MbTileParams {
-    int tileSize;  // N, [1, SFX_MB_MAX_RADIUS_LIMIT_PX]
-    int pad0, pad1, pad2;
-} params;
+// params: the uniform block declared in sfx_shared_mb.h.
 
 layout(location = 0) out vec2 outTileMax;
 

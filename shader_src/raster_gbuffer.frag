@@ -3,14 +3,8 @@
 //          1 = velocity in pixels across the shutter interval (x toward increasing column,
 //              y toward increasing memory row), the convention of sfx/motion_blur.hpp;
 //          2 = albedo: a checker on the object's own coordinates, so motion shows.
-layout(set = 0, binding = 0, std140) uniform RasterParams {
-    mat4 modelView;
-    mat4 projection;
-    mat4 normalMatrix;
-    mat4 shutterOpenClip;
-    mat4 shutterCloseClip;
-    vec4 viewportSize;
-} raster;
+#define SFX_WANT_RASTER_PARAMS 1
+#include "sfx_shared_raster.h"  // RasterParams raster (binding 0)
 
 layout(location = 0) in vec3 vNormal;
 layout(location = 1) in vec3 vViewPosition;

@@ -1,14 +1,8 @@
 #version 450
 // Rasterises scene meshes into hardware depth, view-space normals, screen-space velocity and
 // a textured albedo (the sample scenes' G-buffer).
-layout(set = 0, binding = 0, std140) uniform RasterParams {
-    mat4 modelView;
-    mat4 projection;
-    mat4 normalMatrix;             // inverse transpose of modelView (upper 3x3 used)
-    mat4 shutterOpenClip;          // projection * view * model at the start of the shutter interval
-    mat4 shutterCloseClip;         // ... and at its end; the frame itself is mid-shutter
-    vec4 viewportSize;             // width, height in pixels
-} raster;
+#define SFX_WANT_RASTER_PARAMS 1
+#include "sfx_shared_raster.h"  // RasterParams raster (binding 0)
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;

@@ -20,19 +20,24 @@ reference::AoInput AnalyticScene::aoInput(bool withNormals) const {
     return in;
 }
 
-AnalyticScene castScene(const std::string& name, uint32_t width, uint32_t height, const std::vector<AnalyticShape>& shapes,
-                        double scale, const AnalyticCamera& cam) {
+CameraProjection AnalyticCamera::projection(uint32_t width, uint32_t height) const {
+    PerspectiveDesc p;
+    p.fovYRadians = fovYDegrees * 3.14159265358979323846 / 180.0;
+    p.aspect = double(width) / double(height);
+    p.nearPlane = nearPlane;
+    p.farPlane = farPlane;
+    p.rowZeroIsTop = true;
+    return makePerspective(p).value();  // the scenes' cameras are valid by construction
+}
+
+AnalyticScene castScene(const AnalyticSceneDesc& desc, uint32_t width, uint32_t height, double scale) {
+    const std::vector<AnalyticShape>& shapes = desc.shapes;
+    const AnalyticCamera& cam = desc.camera;
     AnalyticScene s;
-    s.name = name;
+    s.name = desc.name;
     s.width = width;
     s.height = height;
-    PerspectiveDesc p;
-    p.fovYRadians = cam.fovYDegrees * 3.14159265358979323846 / 180.0;
-    p.aspect = double(width) / double(height);
-    p.nearPlane = cam.nearPlane;
-    p.farPlane = cam.farPlane;
-    p.rowZeroIsTop = true;
-    s.camera = makePerspective(p).value();
+    s.camera = cam.projection(width, height);
     s.reconstruction = makeDepthReconstruction(s.camera, width, height).value();
     s.linearDepth = reference::Grid(width, height, s.reconstruction.maxDepth);
     s.normals.assign(size_t(width) * height, glm::dvec3(0, 0, 1));
@@ -76,38 +81,40 @@ AnalyticScene castScene(const std::string& name, uint32_t width, uint32_t height
     return s;
 }
 
-AnalyticScene facingPlaneScene(uint32_t w, uint32_t h, double scale) {
-    return castScene("facing_plane", w, h, {{AnalyticShape::Plane, {0, 0, -4}, {0, 0, 1}, 0}}, scale);
+std::vector<std::string> analyticSceneNames() { return {"facing_plane", "tilted_plane", "corner", "contact", "columns"}; }
+
+Result<AnalyticSceneDesc> analyticSceneDesc(const std::string& name) {
+    AnalyticSceneDesc d;
+    d.name = name;
+    if (name == "facing_plane") {
+        d.shapes = {{AnalyticShape::Plane, {0, 0, -4}, {0, 0, 1}, 0}};
+    } else if (name == "tilted_plane") {
+        const double a = 50.0 * 3.14159265358979323846 / 180.0;
+        d.shapes = {{AnalyticShape::Plane, {0, 0, -4}, {0, std::sin(a), std::cos(a)}, 0}};
+    } else if (name == "corner") {
+        d.shapes = {{AnalyticShape::Plane, kCornerCrease, kCornerNormalA, 0}, {AnalyticShape::Plane, kCornerCrease, kCornerNormalB, 0}};
+    } else if (name == "contact") {
+        d.shapes = {{AnalyticShape::Plane, kSphereContactPoint, kContactFloorNormal, 0},
+                    {AnalyticShape::Sphere, kSphereContactPoint + kContactSphereRadius * kContactFloorNormal, {}, kContactSphereRadius}};
+    } else if (name == "columns") {
+        d.shapes = {{AnalyticShape::Plane, {0, -1, 0}, {0, 1, 0}, 0}};
+        for (int i = 0; i < 4; ++i) d.shapes.push_back({AnalyticShape::Sphere, {-1.8 + 1.2 * i, -0.55, -4.0 - 0.8 * i}, {}, 0.45});
+        // A wall that stops at the horizon is not a plane; a second, far floor-like plane is not
+        // needed: above the horizon there is sky (infinite far plane).
+        d.camera.farPlane = std::numeric_limits<double>::infinity();
+    } else {
+        std::string known;
+        for (const auto& n : analyticSceneNames()) known += (known.empty() ? "" : ", ") + n;
+        return invalidArgument("analytic scene", "'" + name + "'", known);
+    }
+    return d;
 }
 
-AnalyticScene tiltedPlaneScene(uint32_t w, uint32_t h, double scale) {
-    const double a = 50.0 * 3.14159265358979323846 / 180.0;
-    return castScene("tilted_plane", w, h, {{AnalyticShape::Plane, {0, 0, -4}, {0, std::sin(a), std::cos(a)}, 0}}, scale);
-}
-
-AnalyticScene cornerScene(uint32_t w, uint32_t h, double scale) {
-    return castScene("corner", w, h,
-                     {{AnalyticShape::Plane, kCornerCrease, kCornerNormalA, 0}, {AnalyticShape::Plane, kCornerCrease, kCornerNormalB, 0}},
-                     scale);
-}
-
-AnalyticScene sphereOnPlaneScene(uint32_t w, uint32_t h, double scale) {
-    return castScene("contact", w, h,
-                     {{AnalyticShape::Plane, kSphereContactPoint, kContactFloorNormal, 0},
-                      {AnalyticShape::Sphere, kSphereContactPoint + kContactSphereRadius * kContactFloorNormal, {}, kContactSphereRadius}},
-                     scale);
-}
-
-AnalyticScene columnsScene(uint32_t w, uint32_t h, double scale) {
-    std::vector<AnalyticShape> shapes{{AnalyticShape::Plane, {0, -1, 0}, {0, 1, 0}, 0}};
-    for (int i = 0; i < 4; ++i)
-        shapes.push_back({AnalyticShape::Sphere, {-1.8 + 1.2 * i, -0.55, -4.0 - 0.8 * i}, {}, 0.45});
-    // A wall that stops at the horizon is not a plane; a second, far floor-like plane is not
-    // needed: above the horizon there is sky (infinite far plane).
-    AnalyticCamera cam;
-    cam.farPlane = std::numeric_limits<double>::infinity();
-    return castScene("columns", w, h, shapes, scale, cam);
-}
+AnalyticScene facingPlaneScene(uint32_t w, uint32_t h, double scale) { return castScene(analyticSceneDesc("facing_plane").value(), w, h, scale); }
+AnalyticScene tiltedPlaneScene(uint32_t w, uint32_t h, double scale) { return castScene(analyticSceneDesc("tilted_plane").value(), w, h, scale); }
+AnalyticScene cornerScene(uint32_t w, uint32_t h, double scale) { return castScene(analyticSceneDesc("corner").value(), w, h, scale); }
+AnalyticScene sphereOnPlaneScene(uint32_t w, uint32_t h, double scale) { return castScene(analyticSceneDesc("contact").value(), w, h, scale); }
+AnalyticScene columnsScene(uint32_t w, uint32_t h, double scale) { return castScene(analyticSceneDesc("columns").value(), w, h, scale); }
 
 }  // namespace sfx::samples
 

@@ -37,11 +37,24 @@ struct AnalyticCamera {
     double fovYDegrees = 60.0;
     double nearPlane = 0.1;
     double farPlane = 100.0;  // may be +infinity (sky then lies at SFX_SKY_DEPTH)
+    // The projection castScene traces a width x height picture with (row 0 = top, clip [0,1]).
+    CameraProjection projection(uint32_t width, uint32_t height) const;
 };
 
-// Ray-casts shapes, all scaled by `scale` about the eye (positions and radii).
-AnalyticScene castScene(const std::string& name, uint32_t width, uint32_t height, const std::vector<AnalyticShape>& shapes,
-                        double scale = 1.0, const AnalyticCamera& camera = {});
+// A named analytic scene: its shapes (view space, camera at the origin looking down -z) and
+// camera. The ray-traced truth (samples/common/truth_scenes.hpp) reads the same description.
+struct AnalyticSceneDesc {
+    std::string name;
+    std::vector<AnalyticShape> shapes;
+    AnalyticCamera camera;
+};
+// "facing_plane", "tilted_plane", "corner", "contact", "columns" (the scenes below).
+std::vector<std::string> analyticSceneNames();
+// InvalidArgument naming the known scenes for any other name.
+Result<AnalyticSceneDesc> analyticSceneDesc(const std::string& name);
+
+// Ray-casts the shapes, all scaled by `scale` about the eye (positions and radii).
+AnalyticScene castScene(const AnalyticSceneDesc& desc, uint32_t width, uint32_t height, double scale = 1.0);
 
 // A plane facing the camera at distance 4 (open: nothing occludes it).
 AnalyticScene facingPlaneScene(uint32_t w, uint32_t h, double scale = 1.0);

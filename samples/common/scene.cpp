@@ -1,13 +1,12 @@
 #include "scene.hpp"
 
-#include <tiny_obj_loader.h>
-
 #include <cmath>
-#include <filesystem>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 #include "sfx/half.hpp"
-#include "sfx_shaders.hpp"
+#include "sfx_sample_shaders.hpp"
+#include "sfx_shared_raster.h"
 
 namespace sfx::samples {
 namespace {
@@ -15,26 +14,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 const char* kBunnyPath = "/usr/share/glmark2/models/bunny.obj";
 
-void addQuad(Mesh& m, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
-    const glm::vec3 n = glm::normalize(glm::cross(b - a, d - a));
-    const uint32_t base = uint32_t(m.vertices.size());
-    for (glm::vec3 p : {a, b, c, d}) m.vertices.push_back({p, n});
-    m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
-}
+using scene::addQuad;
 
-// An axis-aligned box from lo to hi, faces outward.
-Mesh box(glm::vec3 lo, glm::vec3 hi) {
-    Mesh m;
-    const glm::vec3 p[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z},
-                            {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
-    addQuad(m, p[4], p[5], p[6], p[7]);  // +z
-    addQuad(m, p[1], p[0], p[3], p[2]);  // -z
-    addQuad(m, p[5], p[1], p[2], p[6]);  // +x
-    addQuad(m, p[0], p[4], p[7], p[3]);  // -x
-    addQuad(m, p[7], p[6], p[2], p[3]);  // +y
-    addQuad(m, p[0], p[1], p[5], p[4]);  // -y
-    return m;
-}
+Mesh box(glm::vec3 lo, glm::vec3 hi) { return scene::boxMesh(lo, hi); }
 
 Mesh floorPlane(float halfSize, float y = 0.0f) {
     Mesh m;
@@ -42,23 +24,7 @@ Mesh floorPlane(float halfSize, float y = 0.0f) {
     return m;
 }
 
-Mesh sphere(glm::vec3 centre, float radius, int slices = 48, int stacks = 24) {
-    Mesh m;
-    for (int i = 0; i <= stacks; ++i) {
-        const double v = double(i) / stacks, phi = v * kPi;
-        for (int j = 0; j <= slices; ++j) {
-            const double u = double(j) / slices, theta = u * 2.0 * kPi;
-            const glm::vec3 n(float(std::sin(phi) * std::cos(theta)), float(std::cos(phi)), float(std::sin(phi) * std::sin(theta)));
-            m.vertices.push_back({centre + radius * n, n});
-        }
-    }
-    for (int i = 0; i < stacks; ++i)
-        for (int j = 0; j < slices; ++j) {
-            const uint32_t a = uint32_t(i * (slices + 1) + j), b = a + uint32_t(slices + 1);
-            m.indices.insert(m.indices.end(), {a, a + 1, b, a + 1, b + 1, b});
-        }
-    return m;
-}
+Mesh sphere(glm::vec3 centre, float radius) { return scene::sphereMesh(centre, radius); }
 
 Mesh cylinder(glm::vec3 base, float radius, float height, int slices = 32) {
     Mesh m;
@@ -76,27 +42,9 @@ Mesh cylinder(glm::vec3 base, float radius, float height, int slices = 32) {
 }
 
 Result<Mesh> loadObj(const std::string& path) {
-    if (!std::filesystem::exists(path))
-        return Status{StatusCode::FileError, path + ": no such file (install Debian's glmark2-data)"};
-    tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(path)) return Status{StatusCode::FileError, path + ": " + reader.Error()};
-    const auto& attrib = reader.GetAttrib();
-    Mesh m;
-    m.vertices.resize(attrib.vertices.size() / 3);
-    for (size_t i = 0; i < m.vertices.size(); ++i)
-        m.vertices[i] = {{attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]}, glm::vec3(0)};
-    for (const auto& shape : reader.GetShapes())
-        for (const auto& idx : shape.mesh.indices) m.indices.push_back(uint32_t(idx.vertex_index));
-    // The OBJ has no normals: area-weighted smooth vertex normals from the faces.
-    for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
-        Vertex &a = m.vertices[m.indices[t]], &b = m.vertices[m.indices[t + 1]], &c = m.vertices[m.indices[t + 2]];
-        const glm::vec3 n = glm::cross(b.position - a.position, c.position - a.position);
-        a.normal += n;
-        b.normal += n;
-        c.normal += n;
-    }
-    for (Vertex& v : m.vertices) v.normal = glm::length(v.normal) > 0 ? glm::normalize(v.normal) : glm::vec3(0, 1, 0);
-    return m;
+    Result<scene::TriangleMesh> mesh = scene::loadObjMesh(path);
+    if (!mesh) return Status{mesh.status().code(), mesh.status().message() + " (install Debian's glmark2-data)"};
+    return Mesh(std::move(mesh.value()));
 }
 
 }  // namespace
@@ -104,6 +52,17 @@ Result<Mesh> loadObj(const std::string& path) {
 glm::dmat4 Scene::view(double time) const {
     const glm::dvec3 shift = eyeVelocity * time;
     return glm::lookAt(eye + shift, target + shift, glm::dvec3(0, 1, 0));
+}
+
+Result<CameraProjection> Scene::projection(uint32_t width, uint32_t height, ClipDepthRange clipDepth) const {
+    PerspectiveDesc pd;
+    pd.fovYRadians = fovYDegrees * kPi / 180.0;
+    pd.aspect = double(width) / double(height);
+    pd.nearPlane = nearPlane;
+    pd.farPlane = farPlane;
+    pd.clipDepth = clipDepth;
+    pd.rowZeroIsTop = true;
+    return makePerspective(pd);
 }
 
 std::vector<std::string> sceneNames() { return {"corner", "steps", "columns", "contact", "bunny"}; }
@@ -163,15 +122,20 @@ Result<Scene> makeScene(const std::string& name) {
     return s;
 }
 
-// Mirrors RasterParams in shader_src/raster_gbuffer.vert (std140).
-struct RasterParams {
-    glm::mat4 modelView, projection, normalMatrix, shutterOpenClip, shutterCloseClip;
-    glm::vec4 viewportSize;
-};
+// The raster pass's uniform block, declared once in sfx_shared_raster.h for GLSL and C++.
+using shared::RasterParams;
+
+namespace {
+// A column-major matrix into a block's mat4 member.
+void store(float (&dst)[16], const glm::dmat4& m) {
+    const glm::mat4 f(m);
+    std::memcpy(dst, glm::value_ptr(f), sizeof dst);
+}
+}  // namespace
 
 Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Device& device, Tier tier) {
     std::unique_ptr<SceneRenderer> r(new SceneRenderer(device));
-    Result<const CompiledProgram*> program = shaders::find(gen::raster_gbuffer::kName, tier);
+    Result<const CompiledProgram*> program = sample_shaders::find(gen::raster_gbuffer::kName, tier);
     if (!program) return program.status();
     Result<ProgramHandle> handle = device.createProgram(*program.value());
     if (!handle) return handle.status();
@@ -238,14 +202,7 @@ Result<GBuffer> SceneRenderer::render(const Scene& scene, uint32_t width, uint32
     GBuffer g;
     g.width = width;
     g.height = height;
-    PerspectiveDesc pd;
-    pd.fovYRadians = scene.fovYDegrees * kPi / 180.0;
-    pd.aspect = double(width) / double(height);
-    pd.nearPlane = scene.nearPlane;
-    pd.farPlane = scene.farPlane;
-    pd.clipDepth = device_.caps().clipDepth;
-    pd.rowZeroIsTop = true;
-    Result<CameraProjection> camera = makePerspective(pd);
+    Result<CameraProjection> camera = scene.projection(width, height, device_.caps().clipDepth);
     if (!camera) return camera.status();
     g.camera = camera.value();
 
@@ -269,13 +226,14 @@ Result<GBuffer> SceneRenderer::render(const Scene& scene, uint32_t width, uint32
         for (const GpuMesh& m : meshes_) {
             auto modelAt = [&](double t) { return glm::translate(glm::dmat4(1.0), m.source->velocity * t) * m.source->model; };
             const glm::dmat4 modelView = scene.view(time) * modelAt(time);
-            RasterParams p;
-            p.modelView = glm::mat4(modelView);
-            p.projection = glm::mat4(g.camera.projection);
-            p.normalMatrix = glm::mat4(glm::transpose(glm::inverse(modelView)));
-            p.shutterOpenClip = glm::mat4(g.camera.projection * scene.view(time - 0.5) * modelAt(time - 0.5));
-            p.shutterCloseClip = glm::mat4(g.camera.projection * scene.view(time + 0.5) * modelAt(time + 0.5));
-            p.viewportSize = glm::vec4(float(width), float(height), 0, 0);
+            RasterParams p{};
+            store(p.modelView, modelView);
+            store(p.projection, g.camera.projection);
+            store(p.normalMatrix, glm::transpose(glm::inverse(modelView)));
+            store(p.shutterOpenClip, g.camera.projection * scene.view(time - 0.5) * modelAt(time - 0.5));
+            store(p.shutterCloseClip, g.camera.projection * scene.view(time + 0.5) * modelAt(time + 0.5));
+            p.viewportSize[0] = float(width);
+            p.viewportSize[1] = float(height);
             SFX_TRY(device_.writeBuffer(m.params, 0, &p, sizeof p));
             DrawDesc d;
             d.pipeline = pipeline_;

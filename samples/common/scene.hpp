@@ -10,17 +10,16 @@
 
 #include "sfx/camera.hpp"
 #include "sfx/hal.hpp"
+#include "sfx/mesh_primitives.hpp"
 
 namespace sfx::samples {
 
-struct Vertex {
-    glm::vec3 position;
-    glm::vec3 normal;
-};
+using Vertex = scene::Vertex;
 
-struct Mesh {
-    std::vector<Vertex> vertices;
-    std::vector<uint32_t> indices;  // triangles
+// Triangles (vertices, indices) placed in the world, possibly moving.
+struct Mesh : scene::TriangleMesh {
+    Mesh() = default;
+    Mesh(scene::TriangleMesh triangles) : scene::TriangleMesh(std::move(triangles)) {}
     glm::dmat4 model{1.0};
     glm::dvec3 velocity{0.0};       // world units per shutter interval (for moving-object demos)
 };
@@ -35,6 +34,8 @@ struct Scene {
     double nearPlane = 0.1;
     double farPlane = 100.0;
     glm::dmat4 view(double time = 0.0) const;  // camera at `time` shutter intervals from t = 0
+    // The projection render() draws a width x height picture with (row 0 = top).
+    Result<CameraProjection> projection(uint32_t width, uint32_t height, ClipDepthRange clipDepth) const;
 };
 
 // "corner", "steps", "columns", "contact", "bunny". FileError when the bunny's OBJ is missing

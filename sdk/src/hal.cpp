@@ -15,12 +15,22 @@ uint16_t nextDeviceSerial() {
     return uint16_t(s);
 }
 
-const char* toString(Tier tier) { return tier == Tier::High ? "high" : "current"; }
+const char* toString(Tier tier) { return uint32_t(tier) < kTierCount ? kTierNames[uint32_t(tier)] : "unknown"; }
 
 bool parseTier(const std::string& text, Tier* out) {
-    if (text == "current") { *out = Tier::Current; return true; }
-    if (text == "high") { *out = Tier::High; return true; }
+    for (uint32_t i = 0; i < kTierCount; ++i)
+        if (text == kTierNames[i]) {
+            *out = Tier(i);
+            return true;
+        }
     return false;
+}
+
+std::string tierNameList() {
+    std::string s;
+    for (uint32_t i = 0; i < kTierCount; ++i)
+        s += std::string(i == 0 ? "" : i + 1 == kTierCount ? " or " : ", ") + kTierNames[i];
+    return s;
 }
 
 const char* toString(BackendKind kind) {

@@ -7,6 +7,7 @@
 #define SFX_SHARED_H
 
 #ifdef __cplusplus
+#include <cstddef>
 #include <cstdint>
 namespace sfx::shared {
 struct vec2 { float x, y; };
@@ -31,6 +32,34 @@ struct ivec2 { int x, y; };
 #define SFX_UINT uint
 #endif
 
+// ---- Uniform blocks, written once for both languages --------------------------------------
+// SFX_BLOCK(Name, binding) <members> SFX_BLOCK_END(instance) declares, in GLSL, the std140
+// uniform block `Name` at (set 0, binding) named `instance` in the shader, and in C++ a struct
+// `Name` of the same layout, which the effect fills and uploads (Name::kBinding is the binding).
+// Members: SFX_M_MAT4 / SFX_M_VEC4 (16-byte aligned), SFX_M_IVEC2 (8-byte aligned), SFX_M_FLOAT
+// and SFX_M_INT (4 bytes). C++ aligns each member as std140 does, and every block is padded to
+// a multiple of 16 bytes by explicit members, so sizeof(Name) is the GLSL block's size; the
+// static_asserts after each block check the offsets the shaders rely on. (No vec3 or arrays of
+// scalars: std140 pads those differently from C++.) In GLSL a block is declared only by the
+// shader that asks for it (SFX_WANT_<block>), so one header can hold the blocks of many passes.
+#ifdef __cplusplus
+#define SFX_BLOCK(name, b) struct name { static constexpr uint32_t kBinding = b;
+#define SFX_BLOCK_END(instance) };
+#define SFX_M_MAT4(n) alignas(16) float n[16];
+#define SFX_M_VEC4(n) alignas(16) float n[4];
+#define SFX_M_IVEC2(n) alignas(8) int32_t n[2];
+#define SFX_M_FLOAT(n) float n;
+#define SFX_M_INT(n) int32_t n;
+#else
+#define SFX_BLOCK(name, b) layout(set = 0, binding = b, std140) uniform name {
+#define SFX_BLOCK_END(instance) } instance;
+#define SFX_M_MAT4(n) mat4 n;
+#define SFX_M_VEC4(n) vec4 n;
+#define SFX_M_IVEC2(n) ivec2 n;
+#define SFX_M_FLOAT(n) float n;
+#define SFX_M_INT(n) int n;
+#endif
+
 // ---- Depth -------------------------------------------------------------------------------
 // Linear depth is the positive eye-space distance along the view axis, in scene units.
 // Pixels at or beyond SFX_SKY_DEPTH (the far plane of an infinite projection, or a cleared
@@ -52,6 +81,21 @@ SFX_FN SFX_REAL sfxLinearDepthOrFar(SFX_REAL z, SFX_REAL maxDepth) { return (z >
 SFX_FN SFX_REAL sfxLinearizeDepth(SFX_REAL d, SFX_REAL ndcScale, SFX_REAL denomOffset, SFX_REAL numerator, SFX_REAL maxDepth) {
     return sfxLinearDepthOrFar(numerator / (d * ndcScale + denomOffset), maxDepth);
 }
+
+// Parameters of the linearisation pass (linearize_depth.frag), filled by LinearDepth.
+#if defined(__cplusplus) || defined(SFX_WANT_LINEARIZE_PARAMS)
+SFX_BLOCK(LinearizeParams, 1)
+    SFX_M_FLOAT(ndcScale)     // 1 for [0,1] clip depth, 2 for [-1,1]
+    SFX_M_FLOAT(denomOffset)  // ndcOffset + A
+    SFX_M_FLOAT(numerator)    // B
+    SFX_M_FLOAT(maxDepth)     // far plane, or SFX_SKY_DEPTH for an infinite projection
+    SFX_M_FLOAT(linearInput)  // 1: the source already holds linear depth; only the clamp applies
+    SFX_M_FLOAT(pad0) SFX_M_FLOAT(pad1) SFX_M_FLOAT(pad2)
+SFX_BLOCK_END(params)
+#endif
+#ifdef __cplusplus
+static_assert(sizeof(LinearizeParams) == 32 && offsetof(LinearizeParams, linearInput) == 16);
+#endif
 
 // The depth MIP pyramid of the high tier holds at most this many levels (level 0 included).
 SFX_CONST(int, SFX_DEPTH_MIP_MAX_LEVELS, 5)
@@ -82,20 +126,8 @@ vec3 reconstructViewPosition(vec2 pixelCentre, float z, vec4 projInfo) {
 }
 #endif
 
-// ---- Tier parameters (docs/tiers.md's parameter table; tiers/ selects among them) ---------
-SFX_CONST(int, SFX_AO_SCALABLE_TAPS_CURRENT, 4)      // mirrored: 2 offsets, each also negated
-SFX_CONST(int, SFX_AO_SCALABLE_TAPS_HIGH, 9)         // spiral taps reading the depth MIP
-SFX_CONST(float, SFX_AO_RADIUS_CLAMP_PX_CURRENT, 20.0)
-SFX_CONST(int, SFX_AO_ALCHEMY_SAMPLES_CURRENT, 6)
-SFX_CONST(int, SFX_AO_ALCHEMY_SAMPLES_HIGH, 12)      // the paper's 12 samples per pixel
-SFX_CONST(int, SFX_AO_BLUR_RADIUS_CURRENT, 2)        // 5-tap separable bilateral
-SFX_CONST(int, SFX_AO_BLUR_RADIUS_HIGH, 6)           // 13-tap, as Alchemy's filter
-SFX_CONST(int, SFX_MB_TAPS_CURRENT, 7)               // 6 samples + centre
-SFX_CONST(int, SFX_MB_TAPS_HIGH, 9)                  // 8 samples + centre
-SFX_CONST(float, SFX_MB_MAX_RADIUS_PX_CURRENT, 10.0)
-SFX_CONST(float, SFX_MB_MAX_RADIUS_PX_HIGH, 18.0)
-SFX_CONST(int, SFX_MB_JITTER_SIZE_CURRENT, 2)        // checkerboard
-SFX_CONST(int, SFX_MB_JITTER_SIZE_HIGH, 4)           // 4x4 randomised
+// The per-tier parameters (tap counts, radii, jitter) are not here: they are rows of the tier
+// table (tiers/src/tier_table.cpp), reaching the shaders as generated defines and uniforms.
 
 #ifdef __cplusplus
 }  // namespace sfx::shared

@@ -7,14 +7,22 @@
 #include "sfx_shared.h"
 
 #ifdef __cplusplus
+#include <glm/glm.hpp>
+
 #include <algorithm>
 #include <cmath>
 namespace sfx::shared {
+using glm::cross;
+using glm::dot;
+using glm::length;
 using std::abs;
 using std::clamp;
 using std::exp;
 using std::max;
 using std::sqrt;
+#define SFX_AO_VEC3 glm::dvec3
+#else
+#define SFX_AO_VEC3 vec3
 #endif
 
 SFX_CONST(float, SFX_AO_TWO_PI, 6.28318530717958647692)
@@ -25,7 +33,7 @@ SFX_CONST(float, SFX_AO_TWO_PI, 6.28318530717958647692)
 // taps line up). The current tier uses 2 offsets, each also negated (4 taps): with an integer
 // number of turns both offsets would lie on one line through the centre; 1.5 turns puts them
 // at 135 and 45 degrees, so the 4 taps form an X at two radii.
-SFX_CONST(float, SFX_AO_SPIRAL_TURNS_HIGH, 7.0)
+SFX_CONST(float, SFX_AO_SPIRAL_TURNS_SPIRAL, 7.0)
 SFX_CONST(float, SFX_AO_SPIRAL_TURNS_MIRRORED, 1.5)
 // A tap at screen distance h reads depth MIP level clamp(floor(log2(h)) - Q, 0, levels - 1).
 SFX_CONST(int, SFX_AO_MIP_LEVEL_OFFSET, 3)
@@ -102,6 +110,28 @@ SFX_FN SFX_REAL aoBlurEdgeWeight(SFX_REAL zq, SFX_REAL z0) {
     return max(0.0, 1.0 - abs(zq - z0) / (SFX_REAL(SFX_AO_BLUR_DEPTH_TOLERANCE) * z0));
 }
 
+// ---- Normal from depth (no host normals) --------------------------------------------------
+// The one rule of the shaders (aoDerivedNormal below) and the reference (normalsFromDepth):
+// - Every depth it reads, the centre's and each neighbour's, goes through sfxLinearDepthOrFar
+//   first, so a non-finite (NaN, +-inf), non-positive or overflowing neighbour is sky: the far
+//   plane, maxDepth. Positions, and so the normal, are then always finite.
+// - On each axis the tangent runs to the neighbour whose depth is closer to the centre's; ties
+//   (two sky neighbours, say) take the lower index; at the image border the only in-bounds one.
+//   A sky neighbour is thus used only when the other is as far from the centre or absent.
+// - normal = normalize(cross(dx, dy)), facing the camera; a zero cross product gives +z.
+// aoNormalUsesNext: along an axis of `size` pixels, at index i, whether the next neighbour
+// (i + 1) is the one, given the (clamped) depths zPrev, zNext and the centre's z.
+SFX_FN bool aoNormalUsesNext(int i, int size, SFX_REAL zPrev, SFX_REAL zNext, SFX_REAL z) {
+    return i == 0 || (i < size - 1 && abs(zNext - z) < abs(zPrev - z));
+}
+// The unit normal of tangents dx, dy at view position C, turned to face the eye (C is the ray).
+SFX_FN SFX_AO_VEC3 aoFacingNormal(SFX_AO_VEC3 dx, SFX_AO_VEC3 dy, SFX_AO_VEC3 C) {
+    SFX_AO_VEC3 n = cross(dx, dy);
+    SFX_REAL len = length(n);
+    n = len > 0.0 ? n / len : SFX_AO_VEC3(0.0, 0.0, 1.0);
+    return dot(n, C) > 0.0 ? -n : n;
+}
+
 // ---- Per-pixel rotation --------------------------------------------------------------------
 // An integer hash of the pixel, so the GPU (32-bit float) and the reference (double) rotate
 // each pixel's pattern by the same angle: phi = (hash & 0xFFFF) * 2 pi / 65536. The low 16 bits
@@ -142,6 +172,36 @@ float aoUnpackDepthKey(vec2 ba) {
 }
 #endif
 
+// ---- Uniform blocks of the AO passes (SFX_BLOCK: one declaration for GLSL and C++) ----------
+// The obscurance passes (ao_alchemy/ao_scalable/ao_crease.frag), filled by AmbientObscurance.
+#if defined(__cplusplus) || defined(SFX_AO_PASS)
+SFX_BLOCK(AoParams, 2)
+    SFX_M_VEC4(projInfo)
+    SFX_M_FLOAT(radius) SFX_M_FLOAT(intensity) SFX_M_FLOAT(contrast) SFX_M_FLOAT(bias)
+    SFX_M_FLOAT(epsilon) SFX_M_FLOAT(pixelsPerUnit) SFX_M_FLOAT(maxRadiusPx) SFX_M_FLOAT(maxDepth)
+    SFX_M_INT(samples) SFX_M_INT(mirrored) SFX_M_INT(mipLevels)
+    SFX_M_INT(normalSource)  // 0 derived from depth, 1 signed float, 2 unorm8
+    SFX_M_FLOAT(spiralTurns) SFX_M_FLOAT(keyNear) SFX_M_FLOAT(keyInvLog2Range) SFX_M_FLOAT(packDepth)
+    SFX_M_FLOAT(creaseRange) SFX_M_FLOAT(creaseBias) SFX_M_FLOAT(creaseAverager) SFX_M_FLOAT(creaseMinimum)
+    SFX_M_FLOAT(fadeStart) SFX_M_FLOAT(invFadeRange) SFX_M_FLOAT(pad0) SFX_M_FLOAT(pad1)
+SFX_BLOCK_END(params)
+#endif
+// The separable bilateral blur (ao_blur.frag, one direction per pass).
+#if defined(__cplusplus) || defined(SFX_AO_BLUR_PASS)
+SFX_BLOCK(BlurParams, 2)
+    SFX_M_IVEC2(direction)
+    SFX_M_INT(radius) SFX_M_INT(moderateRadius)
+    SFX_M_INT(crease) SFX_M_INT(finalPass) SFX_M_INT(pad0) SFX_M_INT(pad1)
+    SFX_M_FLOAT(maxDepth) SFX_M_FLOAT(keyNear) SFX_M_FLOAT(keyLog2Range) SFX_M_FLOAT(pad2)
+SFX_BLOCK_END(params)
+#endif
+#ifdef __cplusplus
+static_assert(sizeof(AoParams) == 112 && offsetof(AoParams, radius) == 16 && offsetof(AoParams, samples) == 48 &&
+              offsetof(AoParams, spiralTurns) == 64 && offsetof(AoParams, fadeStart) == 96);
+static_assert(sizeof(BlurParams) == 48 && offsetof(BlurParams, radius) == 8 && offsetof(BlurParams, crease) == 16 &&
+              offsetof(BlurParams, maxDepth) == 32);
+#endif
+
 #ifdef __cplusplus
 }  // namespace sfx::shared
 #endif
@@ -150,16 +210,7 @@ float aoUnpackDepthKey(vec2 ba) {
 #if !defined(__cplusplus) && defined(SFX_AO_PASS)
 layout(set = 0, binding = 0) uniform sampler2D uDepth;    // linear depth (+ MIP levels for Scalable, high tier)
 layout(set = 0, binding = 1) uniform sampler2D uNormals;  // host normals; the depth again when derived
-// Mirrors AoParams in sdk/src/effects/ao.cpp (std140).
-layout(set = 0, binding = 2, std140) uniform AoParams {
-    vec4 projInfo;
-    float radius, intensity, contrast, bias;
-    float epsilon, pixelsPerUnit, maxRadiusPx, maxDepth;
-    int samples, mirrored, mipLevels, normalSource;  // normalSource: 0 derived, 1 signed float, 2 unorm8
-    float spiralTurns, keyNear, keyInvLog2Range, packDepth;
-    float creaseRange, creaseBias, creaseAverager, creaseMinimum;
-    float fadeStart, invFadeRange, pad0, pad1;
-} params;
+// AoParams (binding 2) is declared above, with the C++ side.
 layout(location = 0) out vec4 outAo;
 
 // uDepth may be the host's linear depth itself (LinearDepth passing through): clamp on fetch.
@@ -169,24 +220,18 @@ vec3 aoPosition(ivec2 q, float z) { return reconstructViewPosition(vec2(q) + 0.5
 // The pixel a tap lands on: floor(centre + offset), clamped to the image (as the reference).
 ivec2 aoTap(ivec2 p, vec2 offset, ivec2 size) { return clamp(ivec2(floor(vec2(p) + 0.5 + offset)), ivec2(0), size - 1); }
 
-// Normal from depth: on each axis the neighbour whose depth is closer to the centre's (the only
-// in-bounds one at the border; ties take the lower index), oriented toward the camera.
+// Normal from depth by the rule above (aoDepth applies sfxLinearDepthOrFar to every fetch).
 vec3 aoDerivedNormal(ivec2 p, vec3 C, float z, ivec2 size) {
     vec3 dx = vec3(1.0, 0.0, 0.0), dy = vec3(0.0, 1.0, 0.0);
     if (size.x > 1) {
         float zl = p.x > 0 ? aoDepth(p - ivec2(1, 0)) : 0.0, zr = p.x < size.x - 1 ? aoDepth(p + ivec2(1, 0)) : 0.0;
-        bool useRight = p.x == 0 || (p.x < size.x - 1 && abs(zr - z) < abs(zl - z));
-        dx = useRight ? aoPosition(p + ivec2(1, 0), zr) - C : C - aoPosition(p - ivec2(1, 0), zl);
+        dx = aoNormalUsesNext(p.x, size.x, zl, zr, z) ? aoPosition(p + ivec2(1, 0), zr) - C : C - aoPosition(p - ivec2(1, 0), zl);
     }
     if (size.y > 1) {
         float zd = p.y > 0 ? aoDepth(p - ivec2(0, 1)) : 0.0, zu = p.y < size.y - 1 ? aoDepth(p + ivec2(0, 1)) : 0.0;
-        bool useNext = p.y == 0 || (p.y < size.y - 1 && abs(zu - z) < abs(zd - z));
-        dy = useNext ? aoPosition(p + ivec2(0, 1), zu) - C : C - aoPosition(p - ivec2(0, 1), zd);
+        dy = aoNormalUsesNext(p.y, size.y, zd, zu, z) ? aoPosition(p + ivec2(0, 1), zu) - C : C - aoPosition(p - ivec2(0, 1), zd);
     }
-    vec3 n = cross(dx, dy);
-    float len = length(n);
-    n = len > 0.0 ? n / len : vec3(0.0, 0.0, 1.0);
-    return dot(n, C) > 0.0 ? -n : n;
+    return aoFacingNormal(dx, dy, C);
 }
 
 vec3 aoNormal(ivec2 p, vec3 C, float z, ivec2 size) {

@@ -48,7 +48,7 @@ SFX_CONST(float, SFX_MB_STILL_PX, 0.5)
 // Packed depth is stored as an fp16 hi/lo pair; fp16 ends at 65504, so depth is clamped here.
 // Anything this far is "very far" for the soft comparisons; sky (SFX_SKY_DEPTH) lands here too.
 SFX_CONST(float, SFX_MB_MAX_PACKED_DEPTH, 65000.0)
-// Reference resolution of the tier radii: SFX_MB_MAX_RADIUS_PX_* are pixels at 720 rows.
+// Reference resolution of the tier radii: TierProfile::mbMaxRadiusPx is pixels at 720 rows.
 SFX_CONST(float, SFX_MB_REFERENCE_ROWS, 720.0)
 // Largest radius (output pixels, after resolution scaling) the shaders loop over: tile max
 // reads N x N texels with N = radius, so this bounds its cost.
@@ -146,6 +146,46 @@ SFX_MB_FN SFX_MB_REAL mbSampleScale(int pairs) { return SFX_MB_REAL(SFX_MB_WEIGH
 SFX_MB_FN SFX_MB_REAL mbCentreWeight(SFX_MB_REAL centreWeight, SFX_MB_REAL centreSpeed) {
     return centreWeight / max(centreSpeed, 1.0);
 }
+
+// ---- Uniform blocks of the motion blur passes (SFX_BLOCK: one declaration for GLSL and C++) ----
+// Pass 1, mb_pack.frag.
+#if defined(__cplusplus) || defined(SFX_WANT_MB_PACK_PARAMS)
+SFX_BLOCK(MbPackParams, 2)
+    SFX_M_MAT4(reprojection)     // previous view-projection * inverse(current view-projection)
+    SFX_M_VEC4(clipFromView)     // x = P[2][2], y = P[3][2]: clip z of view depth -z; zw = 2/W, 2/H
+    SFX_M_VEC4(target)           // x = W, y = H
+    SFX_M_FLOAT(radius)          // k: maximum blur radius in pixels at this size
+    SFX_M_FLOAT(velocityScale)   // 0.5 * exposure: displacement across the shutter -> blur radius
+    SFX_M_FLOAT(cameraOnly)      // 1: velocity from depth and the camera motion
+    SFX_M_FLOAT(maxDepth)        // far plane, or SFX_SKY_DEPTH: out-of-range linear depth becomes this
+SFX_BLOCK_END(params)
+#endif
+// Pass 2, mb_tile_max.frag.
+#if defined(__cplusplus) || defined(SFX_WANT_MB_TILE_PARAMS)
+SFX_BLOCK(MbTileParams, 1)
+    SFX_M_INT(tileSize)  // N, [1, SFX_MB_MAX_RADIUS_LIMIT_PX]
+    SFX_M_INT(pad0) SFX_M_INT(pad1) SFX_M_INT(pad2)
+SFX_BLOCK_END(params)
+#endif
+// Pass 4, mb_reconstruct.frag.
+#if defined(__cplusplus) || defined(SFX_WANT_MB_RECONSTRUCT_PARAMS)
+SFX_BLOCK(MbReconstructParams, 3)
+    SFX_M_FLOAT(radius)        // k, pixels: decodes the [0,1] velocities
+    SFX_M_FLOAT(softExtent)    // soft depth comparison extent, scene units
+    SFX_M_FLOAT(centreWeight)  // MotionBlurSettings.centreWeight
+    SFX_M_FLOAT(pad0)
+    SFX_M_INT(tileSize)        // N: pixel -> tile of the neighbour-max texture
+    SFX_M_INT(pairs)           // sample pairs: (taps - 1) / 2
+    SFX_M_INT(jitterSize)      // 2 = checkerboard, 4 = 4x4 randomised
+    SFX_M_INT(pad1)
+SFX_BLOCK_END(params)
+#endif
+#ifdef __cplusplus
+static_assert(sizeof(MbPackParams) == 112 && offsetof(MbPackParams, clipFromView) == 64 &&
+              offsetof(MbPackParams, target) == 80 && offsetof(MbPackParams, radius) == 96);
+static_assert(sizeof(MbTileParams) == 16);
+static_assert(sizeof(MbReconstructParams) == 32 && offsetof(MbReconstructParams, tileSize) == 16);
+#endif
 
 #ifdef __cplusplus
 }  // namespace sfx::shared

@@ -3,10 +3,13 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 
 #include "analytic_scenes.hpp"
+#include "effect_runs.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/reference/ao_reference.hpp"
+#include "skips.hpp"
 #include "test_device.hpp"
 
 using namespace sfx;
@@ -14,107 +17,50 @@ using reference::Grid;
 
 namespace {
 
+// The worst pixel against the reference, per tier (docs/ao.md states them beside the measured
+// worst values): high, RG16F output (11-bit mantissa) plus float-vs-double taps; current, two
+// 8-bit roundings of the AO (before and after the blur, 2 x 1/510) on top of that.
+constexpr double kAoWorstPixelHigh = 0.005, kAoWorstPixelCurrent = 0.01;
+// The mean signed error over occluded pixels: rounding averages out; a biased term does not.
+constexpr double kAoOccludedBiasBound = 0.002;
+
 const AoTechnique kTechniques[] = {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease};
 
 bool drawsNothing() { return test::device().caps().backend == BackendKind::Null; }
 
-struct GpuAo {
-    Grid visibility;
-    AoConfig config;
-    Plan plan;
-};
+using test::GpuAo;
 
-Format pickFormat(std::initializer_list<Format> wanted, bool renderable) {
-    const DeviceCaps& caps = test::device().caps();
-    for (Format f : wanted)
-        if (renderable ? caps.renderableFormat[size_t(f)] : caps.sampledFormat[size_t(f)]) return f;
-    return Format::RGBA8;
-}
-
-// descInput: what the context is told it will get. The scenes' depth is linear, so Linear reads
-// it where it lies (no linearisation pass unless a MIP is built); Hardware copies it first.
 GpuAo runAo(const samples::AnalyticScene& scene, const AoSettings& settings, DepthKind descInput = DepthKind::Linear) {
-    Device& dev = test::device();
-    AoDesc desc{scene.width, scene.height, test::tierProfile(), settings, descInput};
-    Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev, desc);
-    INFO(ao.status().toString());
-    REQUIRE(ao.isOk());
-
-    std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
-    TextureHandle depthTex = dev.createTexture({scene.width, scene.height, 1, Format::R32F, kTextureSampled, "ao-test-depth"}).value();
-    SFX_REQUIRE_OK(dev.writeTexture(depthTex, 0, depth.data(), depth.size() * sizeof(float)));
-    TextureHandle normalTex;
-    if (settings.normals == AoNormals::FromTexture) {
-        const Format nf = pickFormat({Format::RGBA32F, Format::RGBA16F}, false);
-        normalTex = dev.createTexture({scene.width, scene.height, 1, nf, kTextureSampled, "ao-test-normals"}).value();
-        if (nf == Format::RGBA32F) {
-            std::vector<float> n;
-            for (const glm::dvec3& v : scene.normals) n.insert(n.end(), {float(v.x), float(v.y), float(v.z), 0.0f});
-            SFX_REQUIRE_OK(dev.writeTexture(normalTex, 0, n.data(), n.size() * sizeof(float)));
-        } else {
-            std::vector<uint8_t> n;
-            for (const glm::dvec3& v : scene.normals)
-                for (double c : {v.x, v.y, v.z, 1.0}) n.push_back(uint8_t(std::lround((c * 0.5 + 0.5) * 255.0)));
-            SFX_REQUIRE_OK(dev.writeTexture(normalTex, 0, n.data(), n.size()));
-        }
-    }
-    const Format of = pickFormat({Format::R32F, Format::R16F, Format::RGBA8}, true);
-    TextureHandle outTex = dev.createTexture({scene.width, scene.height, 1, of, kTextureSampled | kTextureRenderTarget, "ao-test-out"}).value();
-
-    AoInputs in;
-    in.depth = DepthSource{depthTex, DepthKind::Linear, scene.camera};
-    in.normals = normalTex;
-    in.output = outTex;
-    SFX_REQUIRE_OK(ao.value()->dispatch(in));
-    SFX_REQUIRE_OK(dev.flush());
-    GpuAo result{Grid(scene.width, scene.height), ao.value()->config(), ao.value()->plan()};
-    const size_t n = size_t(scene.width) * scene.height;
-    if (of == Format::R32F) {
-        std::vector<float> px(n);
-        SFX_REQUIRE_OK(dev.readTexture(outTex, 0, px.data(), px.size() * sizeof(float)));
-        for (size_t i = 0; i < n; ++i) result.visibility.values[i] = px[i];
-    } else if (of == Format::RGBA8) {
-        std::vector<uint8_t> px(n * 4);
-        SFX_REQUIRE_OK(dev.readTexture(outTex, 0, px.data(), px.size()));
-        for (size_t i = 0; i < n; ++i) result.visibility.values[i] = px[i * 4] / 255.0;
-    } else {
-        std::vector<uint16_t> px(n);
-        SFX_REQUIRE_OK(dev.readTexture(outTex, 0, px.data(), px.size() * 2));
-        for (size_t i = 0; i < n; ++i) {  // half -> double
-            const uint16_t h = px[i];
-            const int e = (h >> 10) & 31, m = h & 1023;
-            result.visibility.values[i] = e == 0 ? std::ldexp(m, -24) : std::ldexp(1024 + m, e - 25);
-        }
-    }
-    for (TextureHandle t : {depthTex, normalTex, outTex})
-        if (!t.isNull()) SFX_REQUIRE_OK(dev.destroyTexture(t));
+    GpuAo result = test::runAo(test::device(), test::tierProfile(), scene, settings, descInput);
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
     return result;
 }
 
-AoSettings settingsFor(AoTechnique t, double scale = 1.0) {
-    AoSettings s;
-    s.technique = t;
-    s.radius = float(0.5 * scale);
-    if (t == AoTechnique::Scalable) s.intensity = 2.0f;
-    s.crease.range = float(scale);
-    s.crease.fadeStart = float(50 * scale);
-    s.crease.fadeEnd = float(100 * scale);
-    return s;
-}
+// GPU-vs-reference bounds per tier, lowest first (the current tier's 4 mirrored taps and 6
+// Alchemy samples average fewer taps, so one moved tap weighs more).
+struct Tolerance {
+    double rmse;   // whole image
+    double pixel;  // per pixel: at most 1% of pixels may be off by more
+    double worst;  // the worst pixel
+};
+const Tolerance kTolerance[kTierCount] = {{0.02, 0.05, kAoWorstPixelCurrent}, {0.01, 0.03, kAoWorstPixelHigh}};
+const Tolerance& tolerance() { return kTolerance[size_t(test::tier())]; }
+
+AoSettings settingsFor(AoTechnique t, double scale = 1.0) { return test::aoTestSettings(t, scale); }
 
 }  // namespace
 
 TEST_CASE("ao: each technique matches its CPU reference", "[ao]") {
-    if (drawsNothing()) {
-        WARN("null backend draws nothing: GPU results are not compared on " << test::label());
-        return;
-    }
-    const bool current = test::tier() == Tier::Current;
+    if (drawsNothing()) SFX_SKIP("the null backend draws nothing: GPU results are not compared on " << test::label());
     // Float vs double tap positions move a rare tap to the neighbouring pixel (docs/ao.md):
-    // an RMSE bound plus a bound on the share of pixels off by more than `pixelTol`.
-    const double rmseTol = current ? 0.02 : 0.01;
-    const double pixelTol = current ? 0.05 : 0.03;
+    // an RMSE bound, a bound on the share of pixels off by more than `pixelTol`, a bound on the
+    // worst pixel, and a bound on the mean signed error over the occluded pixels (reference
+    // below 1), which the many unoccluded pixels cannot dilute and which catches a bias.
+    const double rmseTol = tolerance().rmse;
+    const double pixelTol = tolerance().pixel;
+    const double worstTol = tolerance().worst;
+    const double biasTol = kAoOccludedBiasBound;
+    double worstSeen = 0, worstBias = 0;
     for (AoTechnique t : kTechniques)
         for (bool blur : {false, true})
             for (bool gbuffer : {false, true})
@@ -126,8 +72,8 @@ TEST_CASE("ao: each technique matches its CPU reference", "[ao]") {
                     INFO(test::label() << " " << toString(t) << " " << scene.name << (blur ? " blur" : "") << (gbuffer ? " gbuffer-normals" : ""));
                     const GpuAo gpu = runAo(scene, s);
                     const Grid ref = reference::ambientVisibility(scene.aoInput(gbuffer), gpu.config);
-                    double sq = 0, maxErr = 0;
-                    size_t off = 0;
+                    double sq = 0, maxErr = 0, occludedSigned = 0;
+                    size_t off = 0, occluded = 0;
                     for (size_t i = 0; i < ref.values.size(); ++i) {
                         const double g = gpu.visibility.values[i];
                         REQUIRE(std::isfinite(g));
@@ -137,19 +83,29 @@ TEST_CASE("ao: each technique matches its CPU reference", "[ao]") {
                         sq += e * e;
                         maxErr = std::max(maxErr, e);
                         off += e > pixelTol;
+                        if (ref.values[i] < 1.0 - 1e-6) {
+                            occludedSigned += g - ref.values[i];
+                            ++occluded;
+                        }
                     }
                     const double rmse = std::sqrt(sq / double(ref.values.size()));
-                    INFO("rmse " << rmse << " max " << maxErr << " pixels off " << off);
+                    const double bias = occluded ? occludedSigned / double(occluded) : 0.0;
+                    worstSeen = std::max(worstSeen, maxErr);
+                    worstBias = std::max(worstBias, std::abs(bias));
+                    INFO("rmse " << rmse << " worst pixel " << maxErr << " pixels off " << off << " mean signed error over "
+                                 << occluded << " occluded pixels " << bias);
                     CHECK(rmse < rmseTol);
                     CHECK(double(off) < 0.01 * double(ref.values.size()));
+                    CHECK(maxErr <= worstTol);
+                    CHECK(std::abs(bias) <= biasTol);
                 }
+    // The measured worst values, for docs/ao.md and docs/conformance.md beside the bounds.
+    WARN(test::label() << ": worst pixel " << worstSeen << " (bound " << worstTol << "), worst |mean signed error| "
+                       << worstBias << " (bound " << biasTol << ")");
 }
 
 TEST_CASE("ao: at the smallest radius and epsilon the GPU matches the reference, no NaN", "[ao][bad-input]") {
-    if (drawsNothing()) {
-        WARN("null backend draws nothing: GPU results are not compared on " << test::label());
-        return;
-    }
+    if (drawsNothing()) SFX_SKIP("the null backend draws nothing: GPU results are not compared on " << test::label());
     // Nearly every tap lands on the centre pixel: the guard !(|v|^2 > epsilon r^2) must drop it
     // on the GPU (float) exactly as in the reference (double), never dividing 0 by 0.
     for (AoTechnique t : kTechniques)
@@ -174,11 +130,55 @@ TEST_CASE("ao: at the smallest radius and epsilon the GPU matches the reference,
         }
 }
 
-TEST_CASE("ao: linear depth read in place gives the same output as the copy, one pass fewer", "[ao][plan]") {
-    if (drawsNothing()) {
-        WARN("null backend draws nothing: GPU results are not compared on " << test::label());
-        return;
+TEST_CASE("ao: non-finite and out-of-range depth neighbours follow the reference's normal rule", "[ao][bad-input]") {
+    if (drawsNothing()) SFX_SKIP("the null backend draws nothing: GPU results are not compared on " << test::label());
+    // The host's linear depth read in place, with NaN, +-inf, 0, negative and past-the-far-plane
+    // texels: the shader and the reference both read them as sky (sfx_shared_ao.h), so the derived
+    // normals of their neighbours, and the obscurance there, agree. Those pixels themselves are sky.
+    samples::AnalyticScene scene = samples::cornerScene(64, 48, 1.0);
+    const double bad[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                          -std::numeric_limits<double>::infinity(), 0.0, -1.0, 1e30};
+    std::vector<std::pair<uint32_t, uint32_t>> poked;
+    for (uint32_t k = 0; k < 24; ++k) {
+        const uint32_t x = 5 + (k % 6) * 9, y = 6 + (k / 6) * 10;
+        scene.linearDepth.at(x, y) = bad[k % std::size(bad)];
+        poked.push_back({x, y});
     }
+    for (AoTechnique t : kTechniques) {
+        AoSettings s = settingsFor(t);
+        s.blur = false;
+        s.normals = AoNormals::FromDepth;
+        INFO(test::label() << " " << toString(t));
+        const GpuAo gpu = runAo(scene, s);
+        const Grid ref = reference::ambientVisibility(scene.aoInput(false), gpu.config);
+        for (size_t i = 0; i < ref.values.size(); ++i) {
+            REQUIRE(std::isfinite(gpu.visibility.values[i]));
+            REQUIRE(std::isfinite(ref.values[i]));
+        }
+        double worstNeighbour = 0;
+        std::string worstAt;
+        for (auto [px, py] : poked) {
+            CHECK(gpu.visibility.at(px, py) == 1.0);  // sky: unoccluded
+            CHECK(ref.at(px, py) == 1.0);
+            for (auto [dx, dy] : {std::pair{-1, 0}, std::pair{1, 0}, std::pair{0, -1}, std::pair{0, 1}}) {
+                const uint32_t x = uint32_t(int(px) + dx), y = uint32_t(int(py) + dy);
+                const double e = std::abs(gpu.visibility.at(x, y) - ref.at(x, y));
+                if (e > worstNeighbour)
+                    worstAt = "(" + std::to_string(x) + ", " + std::to_string(y) + ") next to depth " +
+                              std::to_string(scene.linearDepth.at(px, py)) + ": gpu " + std::to_string(gpu.visibility.at(x, y)) +
+                              " reference " + std::to_string(ref.at(x, y));
+                worstNeighbour = std::max(worstNeighbour, e);
+            }
+        }
+        // The neighbours' normals come from the other side on both; what remains is the float-vs-
+        // double tap rounding the technique test bounds per pixel (its pixelTol).
+        INFO("worst error next to a non-finite depth " << worstNeighbour << " at " << worstAt);
+        CHECK(worstNeighbour < tolerance().pixel);
+    }
+}
+
+TEST_CASE("ao: linear depth read in place gives the same output as the copy, one pass fewer", "[ao][plan]") {
+    if (drawsNothing()) SFX_SKIP("the null backend draws nothing: GPU results are not compared on " << test::label());
     const samples::AnalyticScene scene = samples::sphereOnPlaneScene(64, 48);
     for (AoTechnique t : kTechniques)
         for (bool blur : {false, true}) {
@@ -197,10 +197,7 @@ TEST_CASE("ao: linear depth read in place gives the same output as the copy, one
 }
 
 TEST_CASE("ao: analytic properties hold on the GPU", "[ao]") {
-    if (drawsNothing()) {
-        WARN("null backend draws nothing: analytic checks skipped on " << test::label());
-        return;
-    }
+    if (drawsNothing()) SFX_SKIP("the null backend draws nothing: no analytic checks on " << test::label());
     const std::vector<double> creaseEdges{0.0, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.6, 0.9};
     for (AoTechnique t : kTechniques) {
         INFO(test::label() << " " << toString(t));
@@ -234,7 +231,7 @@ TEST_CASE("ao: plan holds a depth MIP only for high-tier Scalable, blur targets 
                 mip |= p.name.rfind("depth_mip", 0) == 0;
                 blurPass |= p.name.find("blur") != std::string::npos;
             }
-            CHECK(mip == (t == AoTechnique::Scalable && test::tier() == Tier::High));
+            CHECK(mip == (t == AoTechnique::Scalable && test::tierProfile().aoUsesDepthMip));
             CHECK(blurPass == blur);
             CHECK(plan.bytesOf("ao") > 0);
         }

@@ -1,15 +1,15 @@
 // GL backend conformance: exact readback of full-screen passes in every colour class, uploads,
 // uniform blocks bound by name, mip-to-mip rendering, indexed depth-tested draws with depth
 // readback, compute under both tiers, the ceiling's dialect, context switching between two GL
-// devices in one process, and shader errors. Skipped on non-GL backends.
+// devices in one process, and shader errors. Tagged [gl]: conformance_main runs them only on
+// GL backends, so they are never counted as passes on Vulkan.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <cstring>
 #include <vector>
 
-#include "sfx_shaders.hpp"
-#include "test_device.hpp"
+#include "hal_fixture.hpp"
 
 #if __has_include("sfx/gl_device.hpp") && __has_include(<EGL/egl.h>) && __has_include(<GL/osmesa.h>)
 #define SFX_TEST_GL_WRAP 1
@@ -24,20 +24,7 @@
 namespace sfx {
 namespace {
 
-bool isGl(const Device& d) { return d.caps().backend == BackendKind::GLES || d.caps().backend == BackendKind::GL; }
-
-#define SFX_GL_ONLY()                                       \
-    if (!isGl(test::device())) {                            \
-        SUCCEED("not a GL backend");                        \
-        return;                                             \
-    }
-
-const CompiledProgram& program(const char* name) {
-    Result<const CompiledProgram*> p = shaders::find(name, test::tier());
-    INFO(name << ": " << p.status().toString());
-    REQUIRE(p.isOk());
-    return *p.value();
-}
+using test::program;
 
 struct FullScreen {
     ProgramHandle program;
@@ -124,7 +111,6 @@ void checkPattern(Device& dev, Format format, uint32_t w, uint32_t h) {
 }
 
 TEST_CASE("gl: full-screen pass writes gl_FragCoord patterns exactly", "[hal][gl]") {
-    SFX_GL_ONLY();
     Device& dev = test::device();
     checkPattern(dev, Format::RGBA8, 16, 8);
     checkPattern(dev, Format::R32UI, 16, 8);
@@ -136,7 +122,6 @@ TEST_CASE("gl: full-screen pass writes gl_FragCoord patterns exactly", "[hal][gl
 }
 
 TEST_CASE("gl: caps and the dialect under the ceiling", "[hal][gl]") {
-    SFX_GL_ONLY();
     const DeviceCaps& c = test::device().caps();
     const bool es = c.backend == BackendKind::GLES;
     CHECK(c.platform == test::backendConfig().platform);
@@ -157,7 +142,6 @@ TEST_CASE("gl: caps and the dialect under the ceiling", "[hal][gl]") {
 }
 
 TEST_CASE("gl: two GL devices in one process switch contexts", "[hal][gl]") {
-    SFX_GL_ONLY();
     Device& a = test::device();
     // The other platform: EGL GL ES beside OSMesa, OSMesa beside either EGL device.
     const BackendConfig other = test::backendConfig().platform == "osmesa" ? BackendConfig{BackendKind::GLES, "egl"}
@@ -166,8 +150,7 @@ TEST_CASE("gl: two GL devices in one process switch contexts", "[hal][gl]") {
     options.ceiling = a.caps().ceiling;
     Result<std::unique_ptr<Device>> opened = openDevice(other, options);
     if (!opened) {
-        WARN("second GL device unavailable: " << opened.status().toString());
-        return;
+        SFX_SKIP("second GL device unavailable: " << opened.status().toString());
     }
     Device& b = *opened.value();
     FullScreen fa = makeFullScreen(a, "hal_gltest_pattern", Format::RGBA8);
@@ -206,7 +189,6 @@ TEST_CASE("gl: two GL devices in one process switch contexts", "[hal][gl]") {
 
 #ifdef SFX_TEST_GL_WRAP
 TEST_CASE("gl: a host's current context wrapped as a device", "[hal][gl]") {
-    SFX_GL_ONLY();
     Device& host = test::device();
     SFX_REQUIRE_OK(host.flush());  // the test device's context is now current: play the host
     const bool osmesa = test::backendConfig().platform == "osmesa";
@@ -267,7 +249,6 @@ TEST_CASE("gl: a host's current context wrapped as a device", "[hal][gl]") {
 }
 
 TEST_CASE("gl: an API the platform lacks is BackendUnavailable", "[hal][gl]") {
-    SFX_GL_ONLY();
     Result<std::unique_ptr<Device>> es = gl::createDevice(gl::Platform::OSMesa, gl::Api::GLES, {});
     CHECK(es.status().code() == StatusCode::BackendUnavailable);
     CHECK(es.status().message().find("OSMesa") != std::string::npos);

@@ -1,20 +1,37 @@
-// The backends compared with each other: the same inputs through every backend this machine
-// has, at both tiers, must give the same outputs within the sum of their reference tolerances
-// (and exactly where the pass is a pure copy).
-#define CATCH_CONFIG_MAIN
+// The backends compared with each other: the same inputs through every pair of backends this
+// machine has, at each tier (current: under the GL ES 3.0 ceiling), must give the same output
+// of every effect - linear depth and its pyramid, AO per technique with and without blur,
+// motion blur - with the worst pixel within a stated bound (docs/conformance.md). Fewer than
+// two backends at a tier is a skip (CTest "skipped"), or a failure under
+// SFX_REQUIRE_ALL_BACKENDS=1.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <map>
 
+#include "effect_runs.hpp"
 #include "sfx/backends.hpp"
 #include "sfx/depth.hpp"
+#include "sfx/tiers.hpp"
 #include "sfx_shared.h"
+#include "skips.hpp"
 
 using namespace sfx;
 
 namespace {
+
+// Worst-pixel bounds between two backends (docs/conformance.md gives the measured worst).
+// AO: every backend evaluates the same float taps on the same float inputs, so only the order
+// of float operations may differ: a few ulps of a visibility in [0, 1]. A tap that rounds to
+// another pixel, a wrong MIP level or a missed blur weight moves a pixel by 1e-3 or more and
+// fails. (Measured: 1.8e-7, lavapipe vs llvmpipe.)
+constexpr double kAoPairWorst = 1e-5;
+// Motion blur: the output is fp16, so operation order can move a channel by one fp16 ulp
+// below 1 (2^-11); two ulps allowed. A different tap or weight decision moves it far more.
+// (Measured: 0.)
+constexpr double kMotionBlurPairWorst = 2.0 / 2048.0;
 
 struct Opened {
     std::string name;
@@ -28,11 +45,11 @@ std::vector<Opened> openAll(Tier tier) {
     for (const BackendConfig& config : compiledBackends()) {
         DeviceOptions options;
         options.validation = true;
-        options.ceiling = tier == Tier::Current ? CapabilityCeiling::GLES30 : CapabilityCeiling::None;
+        options.ceiling = tiers::row(tier).ceiling;
         Result<std::unique_ptr<Device>> device = openDevice(config, options);
         if (!device) {
-            WARN("backend " << toString(config) << " skipped: " << device.status().toString());
-            if (std::getenv("SFX_REQUIRE_ALL_BACKENDS")) FAIL("every backend is required here");
+            WARN("backend " << toString(config) << " could not be opened: " << device.status().toString());
+            if (test::requireAllBackends()) FAIL("SFX_REQUIRE_ALL_BACKENDS is set: every backend is required here");
             continue;
         }
         out.push_back({toString(config), std::move(device.value())});
@@ -48,17 +65,106 @@ void requireNoValidation(std::vector<Opened>& devices) {
     }
 }
 
+// Every pair of backends' outputs (one value per channel and pixel): the worst difference is
+// within `bound`; the measured worst is printed so the bound stays honest.
+void requirePairsWithin(const std::map<std::string, std::vector<double>>& results, double bound, const std::string& what) {
+    for (auto a = results.begin(); a != results.end(); ++a)
+        for (auto b = std::next(a); b != results.end(); ++b) {
+            REQUIRE(a->second.size() == b->second.size());
+            double worst = 0;
+            size_t worstAt = 0;
+            for (size_t i = 0; i < a->second.size(); ++i) {
+                REQUIRE(std::isfinite(a->second[i]));
+                REQUIRE(std::isfinite(b->second[i]));
+                const double d = std::abs(a->second[i] - b->second[i]);
+                if (d > worst) worst = d, worstAt = i;
+            }
+            INFO(what << ": " << a->first << " vs " << b->first << ": worst difference " << worst << " at value " << worstAt
+                      << " (bound " << bound << ")");
+            CHECK(worst <= bound);
+            WARN(what << ": " << a->first << " vs " << b->first << ": worst " << worst << " (bound " << bound << ")");
+        }
+}
+
+// The backends at `tier`, or a skip when fewer than two opened: there is nothing to compare.
+#define SFX_OPEN_AT_LEAST_TWO(devices, tier)                                                             \
+    std::vector<Opened> devices = openAll(tier);                                                         \
+    if (devices.size() < 2) SFX_SKIP("fewer than two backends at tier " << toString(tier) << ": nothing to compare")
+
+void compareAo(Tier tier) {
+    SFX_OPEN_AT_LEAST_TWO(devices, tier);
+    const samples::AnalyticScene scene = samples::columnsScene(96, 64, 1.0);
+    for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease})
+        for (bool blur : {false, true}) {
+            AoSettings s = test::aoTestSettings(t);
+            s.blur = blur;
+            std::map<std::string, std::vector<double>> results;
+            for (Opened& o : devices) {
+                INFO(o.name << " / " << toString(tier) << " " << toString(t));
+                results[o.name] = test::runAo(*o.device, tiers::profile(tier), scene, s).visibility.values;
+            }
+            requireNoValidation(devices);
+            // Agreement means something only if there is occlusion to agree on: not a constant image
+            // (the weakest, Crease blurred, spans 0.94..1 on this scene).
+            const std::vector<double>& any = results.begin()->second;
+            const auto [lo, hi] = std::minmax_element(any.begin(), any.end());
+            CHECK(*hi - *lo > 0.05);
+            requirePairsWithin(results, kAoPairWorst,
+                               std::string("ao ") + toString(t) + (blur ? " blur" : "") + " at tier " + toString(tier));
+        }
+}
+
+void compareMotionBlur(Tier tier) {
+    SFX_OPEN_AT_LEAST_TWO(devices, tier);
+    using namespace reference;
+    const Scene scene = test::movingAndStillLayersScene();
+    const SceneFrame f = scene.render(0);
+    for (float radius : {0.0f, 7.0f}) {
+        MotionBlurSettings s;
+        s.maxRadiusPx = radius;
+        s.referenceRows = 0;
+        std::map<std::string, std::vector<double>> results;
+        for (Opened& o : devices) {
+            INFO(o.name << " / " << toString(tier) << " radius " << radius);
+            const ColorGrid out = test::runMotionBlur(*o.device, tiers::profile(tier), f.color, f.depth, &f.velocity, s);
+            std::vector<double>& flat = results[o.name];
+            for (const auto& px : out.values) flat.insert(flat.end(), px.begin(), px.end());
+        }
+        requireNoValidation(devices);
+        // Agreement means something only if the output is blurred: far from the input somewhere.
+        double moved = 0;
+        const std::vector<double>& any = results.begin()->second;
+        for (size_t i = 0; i < f.color.values.size(); ++i)
+            for (size_t c = 0; c < 4; ++c) moved = std::max(moved, std::abs(any[i * 4 + c] - f.color.values[i][c]));
+        CHECK(moved > 0.1);
+        requirePairsWithin(results, kMotionBlurPairWorst,
+                           "motion blur radius " + std::to_string(int(radius)) + " at tier " + toString(tier));
+    }
+}
+
 }  // namespace
+
+TEST_CASE("ao agrees across backends, per technique, blur on and off: high tier", "[cross-backend][ao]") {
+    compareAo(Tier::High);
+}
+TEST_CASE("ao agrees across backends, per technique, blur on and off: current tier", "[cross-backend][ao]") {
+    compareAo(Tier::Current);
+}
+TEST_CASE("motion blur agrees across backends: high tier", "[cross-backend][motion_blur]") { compareMotionBlur(Tier::High); }
+TEST_CASE("motion blur agrees across backends: current tier", "[cross-backend][motion_blur]") {
+    compareMotionBlur(Tier::Current);
+}
 
 TEST_CASE("linear depth and its pyramid agree across backends", "[cross-backend][depth]") {
     for (Tier tier : {Tier::High, Tier::Current}) {
         std::vector<Opened> devices = openAll(tier);
         if (devices.size() < 2) {
-            WARN("fewer than two backends at tier " << toString(tier) << ": nothing to compare");
+            test::recordSkip(Catch::getResultCapture().getCurrentTestName(),
+                             std::string("fewer than two backends at tier ") + toString(tier) + ": nothing to compare");
             continue;
         }
         const uint32_t W = 45, H = 29;
-        const uint32_t levels = tier == Tier::High ? 4u : 1u;
+        const uint32_t levels = std::min(4u, tiers::profile(tier).aoDepthMipLevels);  // the tier's pyramid, up to 4
         PerspectiveDesc pd;
         pd.aspect = double(W) / H;
         pd.reversedZ = true;
@@ -86,21 +192,20 @@ TEST_CASE("linear depth and its pyramid agree across backends", "[cross-backend]
             (void)d.destroyTexture(src);
         }
         requireNoValidation(devices);
-        const auto& first = results.begin();
-        for (auto it = std::next(results.begin()); it != results.end(); ++it) {
-            INFO(first->first << " vs " << it->first << " at tier " << toString(tier));
-            // Reversed-Z is well conditioned: a few ulps each way (docs/conformance.md). The
-            // pyramid levels copy the same source texels on every backend, so they agree within
-            // the same bound.
-            for (uint32_t m = 0; m < levels; ++m) {
-                REQUIRE(first->second[m].size() == it->second[m].size());
-                for (size_t i = 0; i < first->second[m].size(); ++i) {
-                    const double a = first->second[m][i], b = it->second[m][i];
-                    INFO("level " << m << " texel " << i << ": " << a << " vs " << b);
-                    REQUIRE(std::abs(a - b) <= 2.0 * a * 10.0 * std::ldexp(1.0, -23));
+        // Reversed-Z is well conditioned: a few ulps each way (docs/conformance.md). The pyramid
+        // levels copy the same source texels on every backend, so they agree within the same bound.
+        for (auto a = results.begin(); a != results.end(); ++a)
+            for (auto b = std::next(a); b != results.end(); ++b) {
+                INFO(a->first << " vs " << b->first << " at tier " << toString(tier));
+                for (uint32_t m = 0; m < levels; ++m) {
+                    REQUIRE(a->second[m].size() == b->second[m].size());
+                    for (size_t i = 0; i < a->second[m].size(); ++i) {
+                        const double x = a->second[m][i], y = b->second[m][i];
+                        INFO("level " << m << " texel " << i << ": " << x << " vs " << y);
+                        REQUIRE(std::abs(x - y) <= 2.0 * x * 10.0 * std::ldexp(1.0, -23));
+                    }
                 }
             }
-        }
     }
 }
 

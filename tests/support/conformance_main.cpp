@@ -1,5 +1,8 @@
 // Entry point of the conformance tests: opens the device named on the command line once,
-// runs the Catch2 session, and fails the run on any validation message.
+// runs the Catch2 session, and fails the run on any validation message. Cases that do not
+// apply to the device are not run (and not counted): [gl] cases run only on GL backends. A
+// backend that cannot be opened, or a case that cannot run (SFX_SKIP), makes the run
+// "skipped" for CTest, or a failure under SFX_REQUIRE_ALL_BACKENDS=1.
 #define CATCH_CONFIG_RUNNER
 #include <catch2/catch.hpp>
 
@@ -8,6 +11,7 @@
 #include <iostream>
 #include <memory>
 
+#include "skips.hpp"
 #include "test_device.hpp"
 
 namespace sfx::test {
@@ -39,16 +43,13 @@ std::string outputDir() {
 
 }  // namespace sfx::test
 
-// Exit code CTest reads as "skipped" (SKIP_RETURN_CODE): the backend is absent on this machine.
-constexpr int kSkipped = 77;
-
 int main(int argc, char** argv) {
     using namespace sfx;
     Catch::Session session;
-    std::string backendName = "vulkan", tierName = "high";
+    std::string backendName = "vulkan", tierName = kTierNames[kTierCount - 1];  // the highest tier
     using namespace Catch::clara;
     auto cli = session.cli() | Opt(backendName, "backend")["--backend"]("vulkan, gles, gl-egl, gl-osmesa, null") |
-               Opt(tierName, "tier")["--tier"]("high, or current (opened under the GL ES 3.0 ceiling)");
+               Opt(tierName, "tier")["--tier"]("a tier: " + tierNameList() + " (a lower one is opened under its capability ceiling)");
     session.cli(cli);
     if (int rc = session.applyCommandLine(argc, argv); rc != 0) return rc;
 
@@ -57,19 +58,19 @@ int main(int argc, char** argv) {
         return 2;
     }
     if (!parseTier(tierName, &test::gTier)) {
-        std::cerr << "--tier '" << tierName << "' is unknown; allowed high, current\n";
+        std::cerr << "--tier '" << tierName << "' is unknown; allowed " << tierNameList() << "\n";
         return 2;
     }
     DeviceOptions options;
     options.validation = true;
-    options.ceiling = test::gTier == Tier::Current ? CapabilityCeiling::GLES30 : CapabilityCeiling::None;
+    options.ceiling = tiers::row(test::gTier).ceiling;
     Result<std::unique_ptr<Device>> device = openDevice(test::gConfig, options);
     if (!device) {
-        const bool required = std::getenv("SFX_REQUIRE_ALL_BACKENDS") != nullptr;
-        std::cerr << (required ? "FAILED: " : "SKIPPED: ") << "backend " << backendName
+        const bool required = test::requireAllBackends();
+        const bool absent = device.status().code() == StatusCode::BackendUnavailable;
+        std::cerr << (absent && !required ? "SKIPPED: " : "FAILED: ") << "backend " << backendName
                   << " could not be opened: " << device.status().toString() << "\n";
-        if (device.status().code() == StatusCode::BackendUnavailable && !required) return kSkipped;
-        return 1;
+        return absent && !required ? test::kSkipExitCode : 1;
     }
     test::gDevice = std::move(device.value());
     Result<tiers::TierChoice> choice = tiers::choose(test::gDevice->caps(), test::gTier);
@@ -80,6 +81,13 @@ int main(int argc, char** argv) {
     }
     std::cout << "tier: " << choice->reason << "\n";
 
+    // Cases for another kind of device are filtered out, so they are neither run nor passed.
+    const BackendKind kind = test::gDevice->caps().backend;
+    if (kind != BackendKind::GL && kind != BackendKind::GLES) {
+        session.configData().testsOrTags.push_back("~[gl]");
+        std::cout << "not run here: cases tagged [gl] (GL backends only)\n";
+    }
+
     int rc = session.run();
     test::takeValidationMessages();
     if (!test::gAllMessages.empty()) {
@@ -88,5 +96,5 @@ int main(int argc, char** argv) {
         rc = rc ? rc : 1;
     }
     test::gDevice.reset();
-    return rc;
+    return test::finishRun(rc);
 }

@@ -114,7 +114,7 @@ TEST_CASE("ao settings resolve to the tier table", "[ao]") {
     const AoConfig aHigh = configFor(AoTechnique::Alchemy, Tier::High);
     CHECK(aHigh.samples == 12);
     CHECK(aHigh.bias == Approx(1e-4));
-    CHECK(configFor(AoTechnique::Alchemy, Tier::Current).samples == uint32_t(shared::SFX_AO_ALCHEMY_SAMPLES_CURRENT));
+    CHECK(configFor(AoTechnique::Alchemy, Tier::Current).samples == 6);
     const AoConfig sHigh = configFor(AoTechnique::Scalable, Tier::High);
     CHECK(sHigh.samples == 9);
     CHECK_FALSE(sHigh.mirrored);
@@ -169,6 +169,44 @@ TEST_CASE("ao normals from depth: exact on planes, close on spheres, no differen
         }
     CHECK(edgePixels > 10);  // the scene really has depth edges
     CHECK(bad == 0);
+}
+
+TEST_CASE("ao normals from depth: a non-finite or out-of-range neighbour is sky, by the shared rule", "[ao]") {
+    // sfx_shared_ao.h: every depth is read through sfxLinearDepthOrFar, so NaN, +-inf, 0, a
+    // negative value and one past the far plane all read as maxDepth, and the tangent goes to the
+    // other neighbour. On a tilted plane the normals next to such pixels stay the plane's normal.
+    samples::AnalyticScene s = samples::tiltedPlaneScene(32, 24);
+    const double bad[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                          -std::numeric_limits<double>::infinity(), 0.0, -1.0, 1e30};
+    std::vector<std::pair<uint32_t, uint32_t>> poked;
+    for (size_t k = 0; k < std::size(bad); ++k) {
+        const uint32_t x = 4 + uint32_t(k) * 4, y = 4 + uint32_t(k) * 3;  // isolated: no two share a neighbour
+        s.linearDepth.at(x, y) = bad[k];
+        poked.push_back({x, y});
+    }
+    const auto n = reference::normalsFromDepth(s.linearDepth, s.reconstruction);
+    Grid asSky = s.linearDepth;
+    for (auto [x, y] : poked) asSky.at(x, y) = s.reconstruction.maxDepth;
+    const auto nSky = reference::normalsFromDepth(asSky, s.reconstruction);
+    for (size_t i = 0; i < n.size(); ++i) {
+        REQUIRE(std::isfinite(n[i].x));
+        REQUIRE(std::isfinite(n[i].y));
+        REQUIRE(std::isfinite(n[i].z));
+        REQUIRE(glm::length(n[i]) == Approx(1.0).epsilon(1e-12));
+        REQUIRE(n[i] == nSky[i]);  // exactly the sky rule, whatever the non-finite value
+    }
+    for (auto [px, py] : poked)
+        for (auto [dx, dy] : {std::pair{-1, 0}, std::pair{1, 0}, std::pair{0, -1}, std::pair{0, 1}}) {
+            const uint32_t x = uint32_t(int(px) + dx), y = uint32_t(int(py) + dy);
+            const size_t i = size_t(y) * s.width + x;
+            INFO("neighbour (" << x << ", " << y << ") of a depth " << s.linearDepth.at(px, py));
+            CHECK(glm::dot(n[i], s.normals[i]) > 1.0 - 1e-9);
+        }
+    // The rule's pieces, as the shaders run them: ties take the lower index, borders the inside.
+    CHECK_FALSE(shared::aoNormalUsesNext(3, 8, 9.0, 9.0, 1.0));
+    CHECK(shared::aoNormalUsesNext(0, 8, 0.0, 50.0, 1.0));
+    CHECK_FALSE(shared::aoNormalUsesNext(7, 8, 50.0, 0.0, 1.0));
+    CHECK(shared::aoFacingNormal(glm::dvec3(1, 0, 0), glm::dvec3(2, 0, 0), glm::dvec3(0, 0, -1)) == glm::dvec3(0, 0, 1));
 }
 
 TEST_CASE("ao reference: an open plane is unoccluded", "[ao]") {

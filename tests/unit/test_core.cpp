@@ -5,6 +5,7 @@
 #include "sfx/null_device.hpp"
 #include "sfx/tiers.hpp"
 #include "sfx_shaders.hpp"
+#include "sfx_test_shaders.hpp"
 
 using namespace sfx;
 
@@ -121,7 +122,7 @@ TEST_CASE("capability ceiling refuses storage, compute and high-tier-only progra
     Result<BufferHandle> storage = dev->createBuffer({256, kBufferStorage});
     CHECK(storage.status().code() == StatusCode::UnsupportedFeature);
     CHECK(storage.status().message().find("ceiling") != std::string::npos);
-    Result<const CompiledProgram*> atomic = shaders::find("hal_atomic_count", Tier::High);
+    Result<const CompiledProgram*> atomic = test_shaders::find("hal_atomic_count", Tier::High);
     REQUIRE(atomic.isOk());
     CHECK(dev->createProgram(*atomic.value()).status().code() == StatusCode::UnsupportedFeature);
     DispatchDesc d;
@@ -135,16 +136,17 @@ TEST_CASE("embedded shader library has every program for its tiers", "[shaders]"
     Result<const CompiledProgram*> missing = shaders::find("no_such_program", Tier::High);
     CHECK(missing.status().code() == StatusCode::InvalidArgument);
     CHECK(missing.status().message().find("linearize_depth") != std::string::npos);
+    // Test and sample programs live in their own libraries, not in the runtime's.
+    CHECK(shaders::find("hal_test_pattern", Tier::High).status().code() == StatusCode::InvalidArgument);
+    CHECK(shaders::find("raster_gbuffer", Tier::High).status().code() == StatusCode::InvalidArgument);
+    CHECK(test_shaders::find("hal_test_pattern", Tier::High).isOk());
     for (const CompiledProgram& p : shaders::all()) {
         INFO(p.name << " " << toString(p.tier));
         for (const StageCode& s : p.stages) {
             CHECK(s.spirv.size() > 5);
+            // Every tier runs on GL ES 3.1 and GL 4.3 (the dialects per tier: test_tier_table.cpp).
             CHECK_FALSE(s.glsl[size_t(ShaderDialect::Essl310)].empty());
             CHECK_FALSE(s.glsl[size_t(ShaderDialect::Glsl450)].empty());
-            if (p.tier == Tier::Current) {
-                CHECK_FALSE(s.glsl[size_t(ShaderDialect::Essl300)].empty());
-                CHECK_FALSE(s.glsl[size_t(ShaderDialect::Glsl330)].empty());
-            }
         }
     }
 }

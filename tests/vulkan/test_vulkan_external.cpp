@@ -16,6 +16,7 @@
 #include "sfx/motion_blur.hpp"
 #include "sfx/tiers.hpp"
 #include "sfx/vulkan_device.hpp"
+#include "skips.hpp"
 #include "steady_frames.hpp"
 
 using namespace sfx;
@@ -146,10 +147,7 @@ void clearTo(Device& d, TextureHandle t, float value) {
 
 TEST_CASE("vulkan: wrapped host device, host command buffer, host objects survive the SDK", "[vulkan]") {
     Host host;
-    if (!host.create()) {
-        WARN("skipped: " << host.skipReason);
-        return;
-    }
+    if (!host.create()) SFX_SKIP(host.skipReason);
     vulkan::ExternalVulkan ext;
     ext.instance = host.instance;
     ext.physicalDevice = host.physical;
@@ -250,8 +248,7 @@ TEST_CASE("vulkan: own device opens, and wrapDevice rejects missing host objects
     Result<std::unique_ptr<Device>> own = vulkan::createDevice({});
     if (!own) {
         CHECK(own.status().code() == StatusCode::BackendUnavailable);
-        WARN("skipped: " << own.status().toString());
-        return;
+        SFX_SKIP(own.status().toString());
     }
     CHECK(own.value()->caps().platform == "vulkan-loader");
     CHECK(own.value()->caps().apiName.rfind("Vulkan 1.", 0) == 0);
@@ -267,10 +264,7 @@ TEST_CASE("vulkan: own device opens, and wrapDevice rejects missing host objects
 // (tests/conformance/test_steady_frames.cpp), with synchronization validation watching.
 TEST_CASE("vulkan: steady frames in a host command buffer make nothing", "[vulkan][steady]") {
     Host host;
-    if (!host.create()) {
-        WARN("skipped: " << host.skipReason);
-        return;
-    }
+    if (!host.create()) SFX_SKIP(host.skipReason);
     vulkan::ExternalVulkan ext{host.instance, host.physical, host.device, host.queue, host.family,
                                vkGetInstanceProcAddr, host.validation};
     VkCommandPool pool = VK_NULL_HANDLE;

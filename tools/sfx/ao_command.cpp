@@ -1,6 +1,5 @@
 // sfx ao: ambient obscurance on G-buffer files, with any technique, tier and backend.
 // Writes visibility in [0, 1] (1 = unoccluded) to --out (.pfm or .exr) and a PNG beside it.
-#include <filesystem>
 #include <iostream>
 #include <optional>
 
@@ -99,10 +98,10 @@ int runAo(const AoFlags& f) {
     }
     // Texture rows are image rows (row 0 = top, as uploadDepth uploaded them).
     if (Status st = io::writeImage(f.outPath, image); !st) return fail(cmd, st);
-    const std::string png = std::filesystem::path(f.outPath).replace_extension(".png").string();
-    if (Status st = io::writePng(png, image); !st) return fail(cmd, st);
+    Result<std::string> png = writePngBeside(f.outPath, image);
+    if (!png) return fail(cmd, png.status());
     std::cout << "sfx ao: " << toString(s.technique) << " on " << dev.caps().summary() << ", tier " << toString(opened->tier.tier)
-              << ", " << w << "x" << h << " -> " << f.outPath << " and " << png << "\n";
+              << ", " << w << "x" << h << " -> " << f.outPath << " and " << png.value() << "\n";
     if (f.showPlan) std::cout << ao.value()->plan().describe();
     return 0;
 }

@@ -1,6 +1,7 @@
 #include "cli_common.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 
@@ -8,7 +9,7 @@ namespace sfx::cli {
 
 void DeviceFlags::add(CLI::App& app) {
     app.add_option("--backend", backend, "auto | vulkan | gles | gl | gl-egl | gl-osmesa")->capture_default_str();
-    app.add_option("--tier", tier, "auto | current | high (current runs under the GL ES 3.0 ceiling)")
+    app.add_option("--tier", tier, "auto, or a tier (" + tierNameList() + "; a lower tier runs under its capability ceiling)")
         ->capture_default_str();
 }
 
@@ -17,12 +18,12 @@ Result<OpenedDevice> openDevice(const DeviceFlags& flags) {
     if (flags.tier != "auto") {
         Tier t;
         if (!parseTier(flags.tier, &t))
-            return invalidArgument("--tier", "'" + flags.tier + "'", "auto, current or high");
+            return invalidArgument("--tier", "'" + flags.tier + "'", "auto or " + tierNameList());
         tier = t;
     }
     DeviceOptions options;
     options.validation = false;
-    options.ceiling = tier == Tier::Current ? CapabilityCeiling::GLES30 : CapabilityCeiling::None;
+    options.ceiling = tier ? tiers::row(*tier).ceiling : CapabilityCeiling::None;
     OpenedDevice out;
     if (flags.backend == "auto") {
         Result<DeviceSelection> sel = openBestDevice(options);
@@ -121,6 +122,12 @@ Status uploadDepth(Device& device, LoadedDepth& depth) {
     SFX_TRY(device.writeTexture(tex.value(), 0, depth.image.pixels.data(), depth.image.pixels.size() * sizeof(float)));
     depth.source.texture = tex.value();
     return Status::ok();
+}
+
+Result<std::string> writePngBeside(const std::string& outPath, const io::Image& image) {
+    const std::string png = std::filesystem::path(outPath).replace_extension(".png").string();
+    SFX_TRY(io::writePng(png, image));
+    return png;
 }
 
 int fail(const std::string& command, const Status& status) {

@@ -57,6 +57,9 @@ Status uploadDepth(Device& device, LoadedDepth& depth);
 // Reads an image and checks it matches width x height; `what` names the flag in errors.
 Result<io::Image> loadMatching(const std::string& path, uint32_t width, uint32_t height, const char* what);
 
+// Writes `image` as a PNG preview beside outPath (same name, extension .png); returns its path.
+Result<std::string> writePngBeside(const std::string& outPath, const io::Image& image);
+
 // Prints "sfx <command>: error: <message>" to stderr and returns the process exit code 1.
 int fail(const std::string& command, const Status& status);
 

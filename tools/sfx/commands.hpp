@@ -14,5 +14,6 @@ struct Command {
 Command addInfoCommand(CLI::App& app);        // info_command.cpp: backends, caps, tiers, plan
 Command addAoCommand(CLI::App& app);          // ao_command.cpp
 Command addMotionBlurCommand(CLI::App& app);  // motionblur_command.cpp
+Command addTruthCommand(CLI::App& app);       // truth_command.cpp: ray-traced AO ground truth
 
 }  // namespace sfx::cli

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
     commands.push_back(sfx::cli::addInfoCommand(app));
     commands.push_back(sfx::cli::addAoCommand(app));
     commands.push_back(sfx::cli::addMotionBlurCommand(app));
+    commands.push_back(sfx::cli::addTruthCommand(app));
     CLI11_PARSE(app, argc, argv);
     for (auto& c : commands)
         if (c.app && c.app->parsed()) return c.run();

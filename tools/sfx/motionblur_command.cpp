@@ -34,6 +34,14 @@ struct MotionBlurFlags {
 // infinities, so they are refused by name instead of clamped.
 constexpr float kLargestHalf = 65504.0f;
 
+// "10 current, 18 high": one default-preset value per tier of the table, for help texts.
+std::string perTier(std::string (*value)(const TierProfile&)) {
+    std::string s;
+    for (const tiers::TierRow& r : tiers::table())
+        s += (s.empty() ? "" : ", ") + value(r.presets.front().params) + " " + toString(r.tier);
+    return s;
+}
+
 Status checkFinite(const io::Image& image, const std::string& flag, const std::string& path) {
     for (uint32_t y = 0; y < image.height; ++y)
         for (uint32_t x = 0; x < image.width; ++x)
@@ -170,11 +178,13 @@ Command addMotionBlurCommand(CLI::App& app) {
     flags->device.add(*sub);
     sub->add_option("--max-radius", flags->maxRadius,
                     "maximum blur radius in pixels at --reference-rows rows (scaled to the picture's height); 0 = the "
-                    "tier's (10 current, 18 high); (0, 64]")
+                    "tier's (" + perTier([](const TierProfile& p) { return std::to_string(int(p.mbMaxRadiusPx)); }) + "); (0, 64]")
         ->capture_default_str();
     sub->add_option("--reference-rows", flags->referenceRows, "rows --max-radius is defined at; 0 = no scaling")
         ->capture_default_str();
-    sub->add_option("--samples", flags->samples, "taps including the centre; 0 = the tier's (7 current, 9 high); odd in [3, 31]")
+    sub->add_option("--samples", flags->samples, "taps including the centre; 0 = the tier's (" +
+                                                  perTier([](const TierProfile& p) { return std::to_string(p.mbTaps); }) +
+                                                  "); odd in [3, 31]")
         ->capture_default_str();
     sub->add_option("--soft-depth", flags->softDepth, "soft depth comparison extent, in linear depth units; [1e-6, 1e6]")
         ->capture_default_str();

@@ -1,5 +1,7 @@
 #include "sfx/shader_compiler.hpp"
 
+#include "sfx/tiers.hpp"
+
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
@@ -119,8 +121,7 @@ Result<std::vector<uint32_t>> glslToSpirv(const StageSource& src, const CompileO
     shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
 
     std::string preamble = "#extension GL_GOOGLE_include_directive : require\n";
-    preamble += opts.tier == Tier::High ? "#define SFX_TIER_HIGH 1\n#define SFX_TIER 1\n"
-                                        : "#define SFX_TIER_CURRENT 1\n#define SFX_TIER 0\n";
+    for (const tiers::ShaderDefine& d : tiers::shaderDefines(opts.tier)) preamble += "#define " + d.name + " " + d.value + "\n";
     for (const auto& [k, v] : opts.defines) preamble += "#define " + k + " " + (v.empty() ? "1" : v) + "\n";
     shader.setPreamble(preamble.c_str());
     shader.setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientVulkan, 100);
@@ -242,9 +243,12 @@ Status reflect(const std::vector<uint32_t>& spirv, ShaderStage stage, const std:
 
 Result<CompiledProgram> compileProgram(const std::string& name, const std::vector<StageSource>& stages,
                                        const CompileOptions& options) {
+    if (uint32_t(options.tier) >= kTierCount)
+        return invalidArgument("CompileOptions.tier", std::to_string(uint32_t(options.tier)), tierNameList());
     CompiledProgram program;
     program.name = name;
     program.tier = options.tier;
+    const std::vector<ShaderDialect>& glDialects = tiers::row(options.tier).glDialects;
     std::string errors;
     for (const StageSource& src : stages) {
         Result<std::vector<uint32_t>> spirv = glslToSpirv(src, options);
@@ -257,10 +261,8 @@ Result<CompiledProgram> compileProgram(const std::string& name, const std::vecto
         code.spirv = std::move(spirv.value());
         SFX_TRY(reflect(code.spirv, src.stage, src.path, &program.resources));
         for (const DialectTarget& t : kGlTargets) {
-            // High-tier programs run only where the device has ESSL 3.1 / GLSL 4.3+; a
-            // current-tier program runs on any device, so it gets every dialect.
-            if (options.tier == Tier::High && (t.dialect == ShaderDialect::Essl300 || t.dialect == ShaderDialect::Glsl330))
-                continue;
+            // Only the dialects of devices that can run the tier (its row of the tier table).
+            if (std::find(glDialects.begin(), glDialects.end(), t.dialect) == glDialects.end()) continue;
             std::vector<std::pair<uint32_t, std::string>> blockNames;
             Result<std::string> text = spirvToGlsl(code.spirv, t, src.path, &blockNames);
             if (!text) return text.status();
@@ -286,6 +288,8 @@ Result<std::vector<ManifestEntry>> parseManifest(const std::string& path) {
     std::string line;
     int lineNo = 0;
     std::set<std::string> names;
+    std::string allTiers;  // "current,high": the manifest's spelling of every tier
+    for (uint32_t t = 0; t < kTierCount; ++t) allTiers += std::string(t ? "," : "") + kTierNames[t];
     while (std::getline(in, line)) {
         ++lineNo;
         if (auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
@@ -295,7 +299,7 @@ Result<std::vector<ManifestEntry>> parseManifest(const std::string& path) {
         if (w.empty()) continue;
         const std::string where = path + ":" + std::to_string(lineNo) + ": error: ";
         if (w.size() < 3)
-            return Status{StatusCode::FileError, where + "expected 'name tiers file...', e.g. 'blur current,high fullscreen.vert blur.frag'"};
+            return Status{StatusCode::FileError, where + "expected 'name tiers file...', e.g. 'blur " + allTiers + " fullscreen.vert blur.frag'"};
         ManifestEntry e;
         e.name = w[0];
         e.line = lineNo;
@@ -303,7 +307,7 @@ Result<std::vector<ManifestEntry>> parseManifest(const std::string& path) {
         std::istringstream tiers(w[1]);
         for (std::string t; std::getline(tiers, t, ',');) {
             Tier tier;
-            if (!parseTier(t, &tier)) return Status{StatusCode::FileError, where + "unknown tier '" + t + "'; allowed current, high"};
+            if (!parseTier(t, &tier)) return Status{StatusCode::FileError, where + "unknown tier '" + t + "'; allowed " + tierNameList()};
             e.tiers.push_back(tier);
         }
         for (size_t i = 2; i < w.size(); ++i) {
@@ -328,8 +332,16 @@ std::string identifier(const std::string& s) {
 std::string rawString(const std::string& s) { return "R\"sfxglsl(" + s + ")sfxglsl\""; }
 }  // namespace
 
+// The SPIR-V array of stage `stage` of `p`, named after the program and tier so that the symbol
+// table of a library shows which programs it embeds (tests/check_runtime_library.sh reads it).
+static std::string spirvArrayName(const CompiledProgram& p, size_t stage) {
+    return "kSpirv_" + identifier(p.name) + "_" + toString(p.tier) + "_" + std::to_string(stage);
+}
+
 Result<std::pair<std::string, std::string>> generateEmbedding(const std::vector<CompiledProgram>& programs,
-                                                              const std::string& headerName) {
+                                                              const EmbeddingDesc& desc) {
+    const std::string ns = "sfx::" + desc.cppNamespace;
+    const std::string generated = "// Generated by tools/sfxc from shader_src/" + desc.manifestName + ". Do not edit.\n";
     // Binding constants: one namespace per program; a resource must have one binding across tiers.
     std::map<std::string, std::map<std::string, uint32_t>> bindings;
     for (const CompiledProgram& p : programs) {
@@ -343,7 +355,7 @@ Result<std::pair<std::string, std::string>> generateEmbedding(const std::vector<
         }
     }
     std::ostringstream h;
-    h << "// Generated by tools/sfxc from shader_src/programs.txt. Do not edit.\n#pragma once\n\n"
+    h << generated << "#pragma once\n\n"
          "#include <cstdint>\n#include <span>\n#include <string_view>\n\n#include \"sfx/shader_program.hpp\"\n"
          "#include \"sfx/status.hpp\"\n\n"
          "// Binding numbers reflected from the shaders, so no backend or effect hard-codes one.\n"
@@ -355,18 +367,18 @@ Result<std::pair<std::string, std::string>> generateEmbedding(const std::vector<
             h << "inline constexpr uint32_t " << identifier(name) << " = " << binding << ";\n";
         h << "}  // namespace " << identifier(program) << "\n";
     }
-    h << "}  // namespace sfx::gen\n\nnamespace sfx::shaders {\n"
+    h << "}  // namespace sfx::gen\n\nnamespace " << ns << " {\n"
          "// The embedded program `name` compiled for `tier`; InvalidArgument names the known ones.\n"
          "Result<const CompiledProgram*> find(std::string_view name, Tier tier);\n"
-         "std::span<const CompiledProgram> all();\n}  // namespace sfx::shaders\n";
+         "std::span<const CompiledProgram> all();\n}  // namespace " << ns << "\n";
 
     std::ostringstream c;
-    c << "// Generated by tools/sfxc from shader_src/programs.txt. Do not edit.\n#include \"" << headerName
-      << "\"\n\n#include <string>\n#include <vector>\n\nnamespace sfx::shaders {\nnamespace {\n";
+    c << generated << "#include \"" << desc.headerName << "\"\n\n#include <string>\n#include <vector>\n\nnamespace " << ns
+      << " {\nnamespace {\n";
     for (size_t pi = 0; pi < programs.size(); ++pi) {
         const CompiledProgram& p = programs[pi];
         for (size_t si = 0; si < p.stages.size(); ++si) {
-            c << "const uint32_t kSpirv_" << pi << "_" << si << "[] = {";
+            c << "const uint32_t " << spirvArrayName(p, si) << "[] = {";
             const auto& words = p.stages[si].spirv;
             for (size_t w = 0; w < words.size(); ++w) c << (w % 12 == 0 ? "\n    " : " ") << words[w] << "u,";
             c << "\n};\n";
@@ -380,7 +392,7 @@ Result<std::pair<std::string, std::string>> generateEmbedding(const std::vector<
         for (size_t si = 0; si < p.stages.size(); ++si) {
             const StageCode& s = p.stages[si];
             c << "        {\n            StageCode s;\n            s.stage = ShaderStage(" << uint32_t(s.stage) << ");\n"
-              << "            s.spirv.assign(std::begin(kSpirv_" << pi << "_" << si << "), std::end(kSpirv_" << pi << "_" << si
+              << "            s.spirv.assign(std::begin(" << spirvArrayName(p, si) << "), std::end(" << spirvArrayName(p, si)
               << "));\n";
             for (const DialectTarget& t : kGlTargets)
                 c << "            s.glsl[" << size_t(t.dialect) << "] = " << rawString(s.glsl[size_t(t.dialect)]) << ";\n";
@@ -402,7 +414,7 @@ Result<std::pair<std::string, std::string>> generateEmbedding(const std::vector<
          "    }\n"
          "    return Status{StatusCode::InvalidArgument, \"shader program '\" + std::string(name) + \"' has no \" +\n"
          "                      toString(tier) + \"-tier build; known: \" + known};\n"
-         "}\n}  // namespace sfx::shaders\n";
+         "}\n}  // namespace " + ns + "\n";
     return std::make_pair(h.str(), c.str());
 }
 

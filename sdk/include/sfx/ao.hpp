@@ -60,7 +60,7 @@ struct AoSettings {
     uint32_t samples = 0;    // 0 = tier default; Alchemy [1, 64]; Scalable [1, 64] (even on the
                              // current tier: mirrored pairs); Crease 0 or 24 (its pattern is fixed)
     bool blur = true;        // the separable depth-aware bilateral blur (and crease's two-blur look)
-    uint32_t blurRadius = 0; // 0 = tier default (SFX_AO_BLUR_RADIUS_*); else [1, SFX_AO_MAX_BLUR_RADIUS] px
+    uint32_t blurRadius = 0; // 0 = tier default (TierProfile::aoBlurRadiusPx); else [1, SFX_AO_MAX_BLUR_RADIUS] px
     AoNormals normals = AoNormals::FromDepth;
     AoCreaseSettings crease;
 };

@@ -1,5 +1,5 @@
-// The two quality tiers of the SDK. Which tier a device gets, and what each tier's
-// parameters are, is decided by the data and rules in tiers/ (see sfx/tiers.hpp).
+// The quality tiers of the SDK. Which tier a device gets, and what each tier's parameters
+// are, is decided by the table in tiers/ (see sfx/tiers.hpp); this header only names them.
 #pragma once
 
 #include <cstdint>
@@ -7,31 +7,45 @@
 
 namespace sfx {
 
+// Every tier, lowest first: X(enumerator, name). Adding a tier is a line here plus its row in
+// the tier table (tiers/src/tier_table.cpp), which also generates its shader defines.
+#define SFX_TIER_LIST(X)                                                                          \
+    X(Current, "current") /* GL ES 3.0-class: fragment passes only, no storage buffers or atomics */ \
+    X(High, "high")       /* Vulkan / GL ES 3.1+ / GL 4.3+: storage buffers, atomics, compute */
+
 enum class Tier : uint32_t {
-    Current = 0,  // GL ES 3.0-class: fragment passes only, no storage buffers or atomics
-    High = 1,     // Vulkan / GL ES 3.1+ / GL 4.3+: storage buffers, atomics, compute
+#define SFX_TIER_ENUMERATOR(e, name) e,
+    SFX_TIER_LIST(SFX_TIER_ENUMERATOR)
+#undef SFX_TIER_ENUMERATOR
 };
-inline constexpr uint32_t kTierCount = 2;
 
-const char* toString(Tier tier);  // "current" / "high"
+#define SFX_TIER_NAME(e, name) name,
+inline constexpr const char* kTierNames[] = {SFX_TIER_LIST(SFX_TIER_NAME)};
+#undef SFX_TIER_NAME
+inline constexpr uint32_t kTierCount = uint32_t(sizeof(kTierNames) / sizeof(kTierNames[0]));
+
+const char* toString(Tier tier);  // its name in SFX_TIER_LIST; "unknown" out of range
 bool parseTier(const std::string& text, Tier* out);
+// The tier names for a message's allowed values: "current or high".
+std::string tierNameList();
 
-// The per-tier parameters effects read. Filled by sfx::tiers from its table; the values
-// are the constants the shaders and CPU references share (shader_src/include/sfx_shared.h).
+// The parameters effects read: one quality preset of one tier. The values live in the tier
+// table (tiers/src/tier_table.cpp); shaders get the structural ones (which passes and bindings
+// exist) as defines generated from it, the rest through their uniform blocks.
 struct TierProfile {
     Tier tier = Tier::Current;
     // Ambient obscurance
     uint32_t aoScalableTaps = 0;       // 4 (mirrored) or 9 (spiral)
     bool aoScalableMirrored = false;   // current tier: each offset also used negated
     float aoScalableMaxRadiusPx = 0;   // screen-space clamp of the AO radius (0 = none)
-    bool aoUsesDepthMip = false;       // high tier reads the depth MIP pyramid
+    bool aoUsesDepthMip = false;       // Scalable AO reads the depth MIP pyramid (SFX_AO_DEPTH_MIP)
     uint32_t aoDepthMipLevels = 0;     // levels of that pyramid (level 0 included)
     uint32_t aoAlchemySamples = 0;     // default Alchemy sample count
     uint32_t aoBlurRadiusPx = 0;       // bilateral blur half-width
     // With blur, where the blur finds each pixel's depth. true (current tier): the raw AO goes to
     // an RGBA8 target with a 16-bit depth key packed in b, a (one fetch per tap, 8-bit targets
-    // only). false (high): an RG16F target, and the blur reads the linear depth texture. Must
-    // match ao_blur.frag, whose high-tier variant (SFX_TIER_HIGH) declares that depth binding.
+    // only). false (high): an RG16F target, and the blur reads the linear depth texture. The
+    // table turns it into SFX_AO_PACKED_DEPTH_TARGET, which decides ao_blur.frag's bindings.
     bool aoPackedDepthTarget = false;
     // Motion blur
     uint32_t mbTaps = 0;               // reconstruction taps including the centre

@@ -14,26 +14,9 @@ namespace {
 
 using detail::loadProgram;
 
-// Mirrors AoParams in shader_src/include/sfx_shared_ao.h (std140: 4-byte scalars, vec4 first).
-struct AoParams {
-    float projInfo[4];
-    float radius, intensity, contrast, bias;
-    float epsilon, pixelsPerUnit, maxRadiusPx, maxDepth;
-    int32_t samples, mirrored, mipLevels, normalSource;
-    float spiralTurns, keyNear, keyInvLog2Range, packDepth;
-    float creaseRange, creaseBias, creaseAverager, creaseMinimum;
-    float fadeStart, invFadeRange, pad0, pad1;
-};
-static_assert(sizeof(AoParams) == 112);
-
-// Mirrors BlurParams in shader_src/ao_blur.frag (std140).
-struct BlurParams {
-    int32_t direction[2];
-    int32_t radius, moderateRadius;
-    int32_t crease, finalPass, pad0, pad1;
-    float maxDepth, keyNear, keyLog2Range, pad2;
-};
-static_assert(sizeof(BlurParams) == 48);
+// The uniform blocks of the AO passes, declared once in sfx_shared_ao.h for C++ and GLSL.
+using shared::AoParams;
+using shared::BlurParams;
 
 const char* programName(AoTechnique t) {
     switch (t) {
@@ -57,7 +40,7 @@ Format aoTargetFormat(const TierProfile& profile) { return profile.aoPackedDepth
 
 Result<std::unique_ptr<AmbientObscurance>> AmbientObscurance::create(Device& device, const AoDesc& desc) {
     if (uint32_t(desc.profile.tier) >= kTierCount)
-        return invalidArgument("AoDesc.profile.tier", std::to_string(uint32_t(desc.profile.tier)), "Current or High");
+        return invalidArgument("AoDesc.profile.tier", std::to_string(uint32_t(desc.profile.tier)), tierNameList());
     SFX_TRY(detail::checkTargetSize(device, desc.width, desc.height, "AoDesc."));
     SFX_TRY(validateAoSettings(desc.settings, desc.profile));
     std::unique_ptr<AmbientObscurance> ao(new AmbientObscurance(device, desc));

@@ -66,7 +66,7 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
         return invalidArgument("AoSettings.samples", std::to_string(s.samples), "[0, " + std::to_string(maxSamples) + "] (0 = tier default)");
     } else if (s.technique == AoTechnique::Scalable && profile.aoScalableMirrored && s.samples % 2 != 0) {
         return invalidArgument("AoSettings.samples", std::to_string(s.samples),
-                               "an even count on the current tier (taps come in mirrored pairs), or 0");
+                               std::string("an even count on the ") + toString(profile.tier) + " tier (its Scalable taps come in mirrored pairs), or 0");
     }
     if (s.blurRadius > uint32_t(shared::SFX_AO_MAX_BLUR_RADIUS))
         return invalidArgument("AoSettings.blurRadius", std::to_string(s.blurRadius),
@@ -102,7 +102,7 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
             c.bias = s.bias == -1.0f ? kAoScalableDefaultBias : s.bias;
             c.samples = s.samples ? s.samples : profile.aoScalableTaps;
             c.mirrored = profile.aoScalableMirrored;
-            c.spiralTurns = c.mirrored ? shared::SFX_AO_SPIRAL_TURNS_MIRRORED : shared::SFX_AO_SPIRAL_TURNS_HIGH;
+            c.spiralTurns = c.mirrored ? shared::SFX_AO_SPIRAL_TURNS_MIRRORED : shared::SFX_AO_SPIRAL_TURNS_SPIRAL;
             c.maxRadiusPx = profile.aoScalableMaxRadiusPx;
             c.depthMipLevels = profile.aoUsesDepthMip ? std::max(1u, std::min(profile.aoDepthMipLevels, mipLevelsAllowed)) : 1;
             break;

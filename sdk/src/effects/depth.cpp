@@ -11,16 +11,8 @@ namespace {
 
 using detail::loadProgram;
 
-// Mirrors LinearizeParams in shader_src/linearize_depth.frag (std140).
-struct LinearizeParams {
-    float ndcScale;
-    float denomOffset;
-    float numerator;
-    float maxDepth;
-    float linearInput;
-    float pad[3];
-};
-static_assert(sizeof(LinearizeParams) == 32);
+// The uniform block of linearize_depth.frag, declared once in sfx_shared.h.
+using shared::LinearizeParams;
 
 bool isHardwareDepthFormat(Format f) {
     return f == Format::D16 || f == Format::D24S8 || f == Format::D32F || f == Format::R32F;
@@ -29,14 +21,15 @@ bool isHardwareDepthFormat(Format f) {
 }  // namespace
 
 Result<std::unique_ptr<LinearDepth>> LinearDepth::create(Device& device, const LinearDepthDesc& desc) {
-    if (uint32_t(desc.tier) >= kTierCount) return invalidArgument("LinearDepthDesc.tier", std::to_string(uint32_t(desc.tier)), "Current or High");
+    if (uint32_t(desc.tier) >= kTierCount) return invalidArgument("LinearDepthDesc.tier", std::to_string(uint32_t(desc.tier)), tierNameList());
     const uint32_t maxLevels = uint32_t(shared::SFX_DEPTH_MIP_MAX_LEVELS);
     if (desc.mipLevels == 0 || desc.mipLevels > maxLevels)
         return invalidArgument("LinearDepthDesc.mipLevels", std::to_string(desc.mipLevels), "[1, " + std::to_string(maxLevels) + "]");
     if (uint32_t(desc.input) > 1) return invalidArgument("LinearDepthDesc.input", std::to_string(uint32_t(desc.input)), "Hardware or Linear");
-    if (desc.tier == Tier::Current && desc.mipLevels > 1)
+    // The programs built for the tier (shader_src/programs.txt) say whether it has the MIP pass.
+    if (desc.mipLevels > 1 && !shaders::find(gen::depth_mip::kName, desc.tier).isOk())
         return invalidArgument("LinearDepthDesc.mipLevels", std::to_string(desc.mipLevels),
-                               "1 on the current tier (the depth MIP pyramid is a high-tier pass)");
+                               std::string("1 on the ") + toString(desc.tier) + " tier (its programs include no depth MIP pass)");
     std::unique_ptr<LinearDepth> depth(new LinearDepth(device, desc));
     SFX_TRY(depth->allocate());
     return depth;

@@ -14,35 +14,10 @@ namespace {
 
 using detail::loadProgram;
 
-// Mirror the uniform blocks of shader_src/mb_*.frag (std140).
-struct PackParams {
-    float reprojection[16];
-    float clipFromView[4];
-    float target[4];
-    float radius;
-    float velocityScale;
-    float cameraOnly;
-    float maxDepth;
-};
-static_assert(sizeof(PackParams) == 112);
-
-struct TileParams {
-    int32_t tileSize;
-    int32_t pad[3];
-};
-static_assert(sizeof(TileParams) == 16);
-
-struct ReconstructParams {
-    float radius;
-    float softExtent;
-    float centreWeight;
-    float pad0;
-    int32_t tileSize;
-    int32_t pairs;
-    int32_t jitterSize;
-    int32_t pad1;
-};
-static_assert(sizeof(ReconstructParams) == 32);
+// The uniform blocks of the mb_*.frag passes, declared once in sfx_shared_mb.h for C++ and GLSL.
+using PackParams = shared::MbPackParams;
+using TileParams = shared::MbTileParams;
+using ReconstructParams = shared::MbReconstructParams;
 
 bool isColorFormat(Format f) { return f == Format::RGBA8 || f == Format::RGBA16F || f == Format::RGBA32F; }
 bool isVelocityFormat(Format f) {

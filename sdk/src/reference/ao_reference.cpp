@@ -27,75 +27,86 @@ dvec3 positionAt(const DepthReconstruction& rec, int x, int y, double z) {
     return dvec3(p.x, p.y, p.z);
 }
 
-double finishVisibility(double occlusion, double contrast) { return std::pow(std::max(0.0, 1.0 - occlusion), contrast); }
+}  // namespace
 
-double alchemy(const AoInput& in, const AoConfig& c, uint32_t x, uint32_t y, const dvec3& C, const dvec3& n, double z) {
-    const Grid& d = in.linearDepth;
+double aoFinishVisibility(double occlusion, double contrast) { return std::pow(std::max(0.0, 1.0 - occlusion), contrast); }
+
+std::vector<AoTap> aoTaps(const AoConfig& c, const DepthReconstruction& rec, uint32_t w, uint32_t h, uint32_t x, uint32_t y,
+                          double z) {
+    std::vector<AoTap> taps;
     const double r = c.radius;
-    const double screenRadius = r * in.reconstruction.pixelsPerUnitAtUnitDepth / z;
     const double phi = sh::aoRotationAngle(int(x), int(y));
-    double sum = 0;
-    for (uint32_t i = 0; i < c.samples; ++i) {
-        const double rho = std::sqrt((double(i) + 0.5) / double(c.samples)) * screenRadius;
-        const double theta = double(i) * double(sh::SFX_AO_GOLDEN_ANGLE) + phi;
-        int qx, qy;
-        tapPixel(x, y, rho * std::cos(theta), rho * std::sin(theta), d.width, d.height, &qx, &qy);
-        const dvec3 v = positionAt(in.reconstruction, qx, qy, d.at(uint32_t(qx), uint32_t(qy))) - C;
-        sum += sh::aoAlchemyTerm(glm::dot(v, v), glm::dot(v, n), z, r, c.bias, c.epsilon);
+    switch (c.technique) {
+        case AoTechnique::Alchemy: {
+            const double screenRadius = r * rec.pixelsPerUnitAtUnitDepth / z;
+            for (uint32_t i = 0; i < c.samples; ++i) {
+                const double rho = std::sqrt((double(i) + 0.5) / double(c.samples)) * screenRadius;
+                const double theta = double(i) * double(sh::SFX_AO_GOLDEN_ANGLE) + phi;
+                AoTap t;
+                tapPixel(x, y, rho * std::cos(theta), rho * std::sin(theta), w, h, &t.x, &t.y);
+                taps.push_back(t);
+            }
+            break;
+        }
+        case AoTechnique::Scalable: {
+            double screenRadius = r * rec.pixelsPerUnitAtUnitDepth / z;
+            if (c.maxRadiusPx > 0) screenRadius = std::min(screenRadius, c.maxRadiusPx);
+            const uint32_t offsets = c.mirrored ? c.samples / 2 : c.samples;
+            for (uint32_t i = 0; i < offsets; ++i) {
+                const double alpha = (double(i) + 0.5) / double(offsets);
+                const double hPx = alpha * screenRadius;
+                const double theta = double(sh::SFX_AO_TWO_PI) * alpha * c.spiralTurns + phi;
+                int level = 0;
+                if (c.depthMipLevels > 1 && hPx >= 1.0)
+                    level = std::clamp(int(std::floor(std::log2(hPx))) - int(sh::SFX_AO_MIP_LEVEL_OFFSET), 0, int(c.depthMipLevels) - 1);
+                for (int sign = 1; sign >= (c.mirrored ? -1 : 1); sign -= 2) {
+                    AoTap t;
+                    t.level = level;
+                    tapPixel(x, y, sign * hPx * std::cos(theta), sign * hPx * std::sin(theta), w, h, &t.x, &t.y);
+                    taps.push_back(t);
+                }
+            }
+            break;
+        }
+        case AoTechnique::Crease:
+            for (int i = 0; i < sh::SFX_AO_CREASE_TAPS; ++i)
+                taps.push_back({std::clamp(int(x) + sh::SFX_AO_CREASE_OFFSETS[i].x, 0, int(w) - 1),
+                                std::clamp(int(y) + sh::SFX_AO_CREASE_OFFSETS[i].y, 0, int(h) - 1), 0});
+            break;
     }
-    // The falloff length u of the paper's g(t) is taken as r, so that the result is
-    // scale-invariant (epsilon is relative to r^2 for the same reason).
-    const double occlusion = 2.0 * c.intensity * r / double(c.samples) * sum;
-    return finishVisibility(occlusion, c.contrast);
+    return taps;
 }
 
-double scalable(const AoInput& in, const std::vector<Grid>& pyramid, const AoConfig& c, uint32_t x, uint32_t y,
-                const dvec3& C, const dvec3& n, double z) {
-    const Grid& d = in.linearDepth;
-    const double r = c.radius;
-    double screenRadius = r * in.reconstruction.pixelsPerUnitAtUnitDepth / z;
-    if (c.maxRadiusPx > 0) screenRadius = std::min(screenRadius, c.maxRadiusPx);
-    const double phi = sh::aoRotationAngle(int(x), int(y));
-    const uint32_t offsets = c.mirrored ? c.samples / 2 : c.samples;
-    double sum = 0;
-    for (uint32_t i = 0; i < offsets; ++i) {
-        const double alpha = (double(i) + 0.5) / double(offsets);
-        const double h = alpha * screenRadius;
-        const double theta = double(sh::SFX_AO_TWO_PI) * alpha * c.spiralTurns + phi;
-        int level = 0;
-        if (c.depthMipLevels > 1 && h >= 1.0)
-            level = std::clamp(int(std::floor(std::log2(h))) - int(sh::SFX_AO_MIP_LEVEL_OFFSET), 0, int(c.depthMipLevels) - 1);
-        for (int sign = 1; sign >= (c.mirrored ? -1 : 1); sign -= 2) {
-            int qx, qy;
-            tapPixel(x, y, sign * h * std::cos(theta), sign * h * std::sin(theta), d.width, d.height, &qx, &qy);
-            const Grid& g = pyramid[size_t(level)];
-            const uint32_t mx = std::min(uint32_t(qx) >> level, g.width - 1);
-            const uint32_t my = std::min(uint32_t(qy) >> level, g.height - 1);
-            // The tap's depth may come from a coarse level; its position is the tap's own pixel.
-            const dvec3 v = positionAt(in.reconstruction, qx, qy, g.at(mx, my)) - C;
-            sum += sh::aoScalableTerm(glm::dot(v, v), glm::dot(v, n), r, c.bias, c.epsilon);
+double aoTapTerm(const AoConfig& c, double vv, double vn, double z) {
+    switch (c.technique) {
+        case AoTechnique::Alchemy: return sh::aoAlchemyTerm(vv, vn, z, c.radius, c.bias, c.epsilon);
+        case AoTechnique::Scalable: return sh::aoScalableTerm(vv, vn, c.radius, c.bias, c.epsilon);
+        case AoTechnique::Crease: {
+            const AoCreaseSettings& k = c.crease;
+            return sh::aoCreaseTerm(vv, vn, double(k.range), double(k.minimumCrease), double(k.bias), c.epsilon);
         }
     }
-    const double a = 2.0 * c.intensity / double(c.samples) * sum;
-    return finishVisibility(a * a, c.contrast);
+    return 0.0;
 }
 
-double crease(const AoInput& in, const AoConfig& c, uint32_t x, uint32_t y, const dvec3& C, const dvec3& n, double z) {
-    const Grid& d = in.linearDepth;
-    const AoCreaseSettings& k = c.crease;
-    double total = 0;
-    for (int i = 0; i < sh::SFX_AO_CREASE_TAPS; ++i) {
-        const int qx = std::clamp(int(x) + sh::SFX_AO_CREASE_OFFSETS[i].x, 0, int(d.width) - 1);
-        const int qy = std::clamp(int(y) + sh::SFX_AO_CREASE_OFFSETS[i].y, 0, int(d.height) - 1);
-        const dvec3 v = positionAt(in.reconstruction, qx, qy, d.at(uint32_t(qx), uint32_t(qy))) - C;
-        total += sh::aoCreaseTerm(glm::dot(v, v), glm::dot(v, n), double(k.range), double(k.minimumCrease), double(k.bias), c.epsilon);
+double aoOcclusionFromSum(const AoConfig& c, double sum, double z) {
+    switch (c.technique) {
+        // The falloff length u of the paper's g(t) is taken as r, so that the result is
+        // scale-invariant (epsilon is relative to r^2 for the same reason).
+        case AoTechnique::Alchemy: return 2.0 * c.intensity * c.radius / double(c.samples) * sum;
+        case AoTechnique::Scalable: {
+            const double a = 2.0 * c.intensity / double(c.samples) * sum;
+            return a * a;
+        }
+        case AoTechnique::Crease: {
+            const AoCreaseSettings& k = c.crease;
+            const double invFade = std::isinf(k.fadeEnd) ? 0.0 : 1.0 / (double(k.fadeEnd) - double(k.fadeStart));
+            const double fade = 1.0 - saturate((z - double(k.fadeStart)) * invFade);
+            return c.intensity * sum / double(k.averager) * fade;
+        }
     }
-    const double invFade = std::isinf(k.fadeEnd) ? 0.0 : 1.0 / (double(k.fadeEnd) - double(k.fadeStart));
-    const double fade = 1.0 - saturate((z - double(k.fadeStart)) * invFade);
-    return finishVisibility(c.intensity * total / double(k.averager) * fade, c.contrast);
+    return 0.0;
 }
-
-}  // namespace
 
 glm::dvec3 viewPosition(const AoInput& in, uint32_t x, uint32_t y) {
     return positionAt(in.reconstruction, int(x), int(y), in.linearDepth.at(x, y));
@@ -103,35 +114,39 @@ glm::dvec3 viewPosition(const AoInput& in, uint32_t x, uint32_t y) {
 
 std::vector<glm::dvec3> normalsFromDepth(const Grid& d, const DepthReconstruction& rec) {
     std::vector<dvec3> out(size_t(d.width) * d.height, dvec3(0, 0, 1));
-    auto pos = [&](int x, int y) { return positionAt(rec, x, y, d.at(uint32_t(x), uint32_t(y))); };
+    // The rule of sfx_shared_ao.h: every depth read as sfxLinearDepthOrFar makes it.
+    auto depth = [&](int x, int y) { return sh::sfxLinearDepthOrFar(d.at(uint32_t(x), uint32_t(y)), rec.maxDepth); };
+    auto pos = [&](int x, int y) { return positionAt(rec, x, y, depth(x, y)); };
     const int w = int(d.width), h = int(d.height);
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
-            const double z = d.at(uint32_t(x), uint32_t(y));
+            const double z = depth(x, y);
             const dvec3 C = pos(x, y);
-            // On each axis take the neighbour whose depth is closer (ties: the lower index).
             dvec3 dx(1, 0, 0), dy(0, 1, 0);
             if (w > 1) {
-                const bool useRight = x == 0 || (x < w - 1 && std::abs(d.at(uint32_t(x + 1), uint32_t(y)) - z) <
-                                                                  std::abs(d.at(uint32_t(x - 1), uint32_t(y)) - z));
-                dx = useRight ? pos(x + 1, y) - C : C - pos(x - 1, y);
+                const double zl = x > 0 ? depth(x - 1, y) : 0.0, zr = x < w - 1 ? depth(x + 1, y) : 0.0;
+                dx = sh::aoNormalUsesNext(x, w, zl, zr, z) ? pos(x + 1, y) - C : C - pos(x - 1, y);
             }
             if (h > 1) {
-                const bool useNext = y == 0 || (y < h - 1 && std::abs(d.at(uint32_t(x), uint32_t(y + 1)) - z) <
-                                                                 std::abs(d.at(uint32_t(x), uint32_t(y - 1)) - z));
-                dy = useNext ? pos(x, y + 1) - C : C - pos(x, y - 1);
+                const double zd = y > 0 ? depth(x, y - 1) : 0.0, zu = y < h - 1 ? depth(x, y + 1) : 0.0;
+                dy = sh::aoNormalUsesNext(y, h, zd, zu, z) ? pos(x, y + 1) - C : C - pos(x, y - 1);
             }
-            dvec3 n = glm::cross(dx, dy);
-            const double len = glm::length(n);
-            n = len > 0 && std::isfinite(len) ? n / len : dvec3(0, 0, 1);
-            if (glm::dot(n, C) > 0) n = -n;  // face the camera (C is the ray from the eye)
-            out[size_t(y) * d.width + size_t(x)] = n;
+            out[size_t(y) * d.width + size_t(x)] = sh::aoFacingNormal(dx, dy, C);
         }
     }
     return out;
 }
 
-Grid rawVisibility(const AoInput& in, const AoConfig& c) {
+Grid linearDepthOrFar(const Grid& linearDepth, double maxDepth) {
+    Grid out = linearDepth;
+    for (double& z : out.values) z = sh::sfxLinearDepthOrFar(z, maxDepth);
+    return out;
+}
+
+namespace {
+
+// The obscurance of `in`, whose linear depth already went through linearDepthOrFar.
+Grid rawVisibilityOfClamped(const AoInput& in, const AoConfig& c) {
     const Grid& d = in.linearDepth;
     const std::vector<dvec3> derived = in.normals.empty() ? normalsFromDepth(d, in.reconstruction) : std::vector<dvec3>{};
     const std::vector<dvec3>& normals = in.normals.empty() ? derived : in.normals;
@@ -144,16 +159,28 @@ Grid rawVisibility(const AoInput& in, const AoConfig& c) {
             if (isSky(z, in.reconstruction.maxDepth)) continue;
             const dvec3 C = viewPosition(in, x, y);
             const dvec3 n = normals[size_t(y) * d.width + x];
-            double v = 1.0;
-            switch (c.technique) {
-                case AoTechnique::Alchemy: v = alchemy(in, c, x, y, C, n, z); break;
-                case AoTechnique::Scalable: v = scalable(in, pyramid, c, x, y, C, n, z); break;
-                case AoTechnique::Crease: v = crease(in, c, x, y, C, n, z); break;
+            double sum = 0;
+            for (const AoTap& t : aoTaps(c, in.reconstruction, d.width, d.height, x, y, z)) {
+                // A Scalable tap may read a coarse level's depth; its position is its own pixel.
+                const Grid& g = c.technique == AoTechnique::Scalable ? pyramid[size_t(t.level)] : d;
+                const uint32_t mx = std::min(uint32_t(t.x) >> t.level, g.width - 1);
+                const uint32_t my = std::min(uint32_t(t.y) >> t.level, g.height - 1);
+                const dvec3 v = positionAt(in.reconstruction, t.x, t.y, g.at(mx, my)) - C;
+                sum += aoTapTerm(c, glm::dot(v, v), glm::dot(v, n), z);
             }
+            const double v = aoFinishVisibility(aoOcclusionFromSum(c, sum, z), c.contrast);
             out.at(x, y) = saturate(v);
         }
     }
     return out;
+}
+
+}  // namespace
+
+Grid rawVisibility(const AoInput& in, const AoConfig& c) {
+    AoInput clamped = in;
+    clamped.linearDepth = linearDepthOrFar(in.linearDepth, in.reconstruction.maxDepth);
+    return rawVisibilityOfClamped(clamped, c);
 }
 
 Grid bilateralBlurPass(const Grid& vis, const Grid& d, double maxDepth, int radius, int dx, int dy) {
@@ -181,11 +208,13 @@ Grid bilateralBlurPass(const Grid& vis, const Grid& d, double maxDepth, int radi
 }
 
 Grid ambientVisibility(const AoInput& in, const AoConfig& c) {
-    Grid raw = rawVisibility(in, c);
+    const double maxDepth = in.reconstruction.maxDepth;
+    AoInput clamped = in;
+    clamped.linearDepth = linearDepthOrFar(in.linearDepth, maxDepth);
+    Grid raw = rawVisibilityOfClamped(clamped, c);
     if (c.blurRadius == 0) return raw;
     const int r = int(c.blurRadius);
-    const double maxDepth = in.reconstruction.maxDepth;
-    const Grid& d = in.linearDepth;
+    const Grid& d = clamped.linearDepth;
     Grid wide = bilateralBlurPass(bilateralBlurPass(raw, d, maxDepth, r, 1, 0), d, maxDepth, r, 0, 1);
     if (c.technique != AoTechnique::Crease) return wide;
     const int rm = std::max(1, r / 2);

@@ -23,11 +23,34 @@ glm::dvec3 viewPosition(const AoInput& in, uint32_t x, uint32_t y);
 
 // Normals from depth, robust at edges: on each axis, the difference to the neighbour whose
 // depth is closer to the centre's (the only in-bounds one at the border), so a normal never
-// differences across a discontinuity; oriented toward the camera.
+// differences across a discontinuity; oriented toward the camera. The rule is sfx_shared_ao.h's
+// (aoNormalUsesNext, aoFacingNormal), the shaders' too: a non-finite or out-of-range depth
+// reads as the far plane, so its neighbours take their tangent from the other side.
 std::vector<glm::dvec3> normalsFromDepth(const Grid& linearDepth, const DepthReconstruction& reconstruction);
+
+// One tap of a technique's pattern around a pixel: the pixel it lands on (clamped to the image)
+// and the depth MIP level it reads (Scalable on the high tier; 0 otherwise).
+struct AoTap {
+    int x = 0, y = 0;
+    int level = 0;
+};
+// The taps of config's pattern (Alchemy disk, Scalable spiral, Crease diamond) around pixel
+// (x, y) of a w x h image whose centre is at linear depth z, in the shaders' order.
+std::vector<AoTap> aoTaps(const AoConfig& config, const DepthReconstruction& reconstruction, uint32_t w, uint32_t h,
+                          uint32_t x, uint32_t y, double z);
+// The technique's per-tap term (sfx_shared_ao.h) for v = tap - centre: vv = dot(v, v), vn = dot(v, n).
+double aoTapTerm(const AoConfig& config, double vv, double vn, double z);
+// The summed per-tap terms of one pixel as occlusion (the technique's normalisation), and the
+// visibility it leaves with contrast applied (before saturation).
+double aoOcclusionFromSum(const AoConfig& config, double sum, double z);
+double aoFinishVisibility(double occlusion, double contrast);
 
 // Visibility of every pixel before any blur (1 = unoccluded, sky = 1).
 Grid rawVisibility(const AoInput& in, const AoConfig& config);
+
+// Every depth the AO reference reads goes through sfxLinearDepthOrFar first, as every fetch of
+// the shaders does: a non-positive, non-finite or overflowing depth is the far plane (sky).
+Grid linearDepthOrFar(const Grid& linearDepth, double maxDepth);
 
 // One separable bilateral pass along (dx, dy) with half-width radius; depth weights relative
 // to the centre's depth (SFX_AO_BLUR_DEPTH_TOLERANCE). Sky pixels pass through.

@@ -18,7 +18,7 @@ struct StageSource {
 };
 
 struct CompileOptions {
-    Tier tier = Tier::High;  // defines SFX_TIER_CURRENT or SFX_TIER_HIGH, and SFX_TIER (0 or 1)
+    Tier tier = Tier::High;  // gets the defines tiers::shaderDefines generates from its row (e.g. SFX_TIER_HIGH)
     std::vector<std::string> includeDirs;
     std::vector<std::pair<std::string, std::string>> defines;
 };
@@ -40,10 +40,20 @@ struct ManifestEntry {
 };
 Result<std::vector<ManifestEntry>> parseManifest(const std::string& path);
 
-// C++ that embeds the programs (sfx::shaders::find) and the header with binding constants
-// (sfx::gen::<program>::<resource>). Bindings must agree across a program's tiers.
+// How one manifest is embedded: the generated header's file name, the manifest it came from
+// (named in the "generated" comment), and the namespace under sfx:: that holds find() and
+// all(). Each library of programs (runtime, tests, samples) has its own namespace, so they
+// can be linked together; binding constants share sfx::gen::<program> (names are unique).
+struct EmbeddingDesc {
+    std::string headerName;
+    std::string manifestName = "programs.txt";
+    std::string cppNamespace = "shaders";
+};
+
+// C++ that embeds the programs (sfx::<cppNamespace>::find) and the header with binding
+// constants (sfx::gen::<program>::<resource>). Bindings must agree across a program's tiers.
 Result<std::pair<std::string, std::string>> generateEmbedding(const std::vector<CompiledProgram>& programs,
-                                                              const std::string& headerName);
+                                                              const EmbeddingDesc& desc);
 
 Result<std::string> readTextFile(const std::string& path);
 

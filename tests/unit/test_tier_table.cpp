@@ -1,0 +1,157 @@
+// The tier table and what is generated from it (shader defines, dialects, names), and the
+// uniform blocks declared once in shader_src/include/sfx_shared*.h against the blocks the
+// compiled shaders really have.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <string>
+#include <tuple>
+
+#include "sfx/tiers.hpp"
+#include "sfx_sample_shaders.hpp"
+#include "sfx_shaders.hpp"
+#include "sfx_shared.h"
+#include "sfx_shared_ao.h"
+#include "sfx_shared_mb.h"
+#include "sfx_shared_raster.h"
+
+using namespace sfx;
+
+namespace {
+
+// Every parameter of a profile, for comparing whole profiles.
+auto fields(const TierProfile& p) {
+    return std::make_tuple(p.tier, p.aoScalableTaps, p.aoScalableMirrored, p.aoScalableMaxRadiusPx, p.aoUsesDepthMip,
+                           p.aoDepthMipLevels, p.aoAlchemySamples, p.aoBlurRadiusPx, p.aoPackedDepthTarget, p.mbTaps,
+                           p.mbMaxRadiusPx, p.mbJitterSize, p.abufferOit);
+}
+
+bool sameStructure(const TierProfile& a, const TierProfile& b) {
+    return a.tier == b.tier && a.aoUsesDepthMip == b.aoUsesDepthMip && a.aoPackedDepthTarget == b.aoPackedDepthTarget;
+}
+
+}  // namespace
+
+TEST_CASE("tier table: a row per tier, in order, each with its default preset first", "[tiers]") {
+    const std::vector<tiers::TierRow>& table = tiers::table();
+    REQUIRE(table.size() == kTierCount);
+    for (uint32_t i = 0; i < kTierCount; ++i) {
+        const tiers::TierRow& row = table[i];
+        INFO(toString(row.tier));
+        CHECK(row.tier == Tier(i));
+        CHECK(&tiers::row(Tier(i)) == &row);
+        CHECK_FALSE(row.summary.empty());
+        CHECK_FALSE(row.requirements.empty());
+        CHECK_FALSE(row.glDialects.empty());
+        REQUIRE_FALSE(row.presets.empty());
+        CHECK(row.presets.front().name == tiers::kDefaultPreset);
+        for (const tiers::Preset& p : row.presets) {
+            INFO(p.name);
+            CHECK(p.params.tier == row.tier);
+            // Presets differ only in uniforms: the structural parameters are the default's.
+            CHECK(sameStructure(p.params, row.presets.front().params));
+        }
+        Result<TierProfile> byName = tiers::preset(row.tier, tiers::kDefaultPreset);
+        REQUIRE(byName.isOk());
+        CHECK(byName->aoScalableTaps == tiers::profile(row.tier).aoScalableTaps);
+        // Only the highest tier runs without a ceiling; a lower one is reachable on any device.
+        CHECK((row.ceiling == CapabilityCeiling::None) == (i + 1 == kTierCount));
+        // A higher tier asks for everything a lower one does.
+        if (i > 0)
+            for (const tiers::Requirement& lower : table[i - 1].requirements)
+                CHECK(std::any_of(row.requirements.begin(), row.requirements.end(),
+                                  [&](const tiers::Requirement& r) { return std::string(r.what) == lower.what; }));
+    }
+    Result<TierProfile> unknown = tiers::preset(Tier::Current, "ultra");
+    CHECK(unknown.status().code() == StatusCode::InvalidArgument);
+    CHECK(unknown.status().message().find(tiers::kDefaultPreset) != std::string::npos);
+}
+
+TEST_CASE("tier table: the default presets hold the parameters the tiers always had", "[tiers]") {
+    // Written out here, apart from the table, so that moving the values into it changed none.
+    TierProfile expected[kTierCount];
+    expected[0] = {.tier = Tier::Current, .aoScalableTaps = 4, .aoScalableMirrored = true, .aoScalableMaxRadiusPx = 20.0f,
+                   .aoUsesDepthMip = false, .aoDepthMipLevels = 1, .aoAlchemySamples = 6, .aoBlurRadiusPx = 2,
+                   .aoPackedDepthTarget = true, .mbTaps = 7, .mbMaxRadiusPx = 10.0f, .mbJitterSize = 2, .abufferOit = false};
+    expected[1] = {.tier = Tier::High, .aoScalableTaps = 9, .aoScalableMirrored = false, .aoScalableMaxRadiusPx = 0.0f,
+                   .aoUsesDepthMip = true, .aoDepthMipLevels = uint32_t(shared::SFX_DEPTH_MIP_MAX_LEVELS),
+                   .aoAlchemySamples = 12, .aoBlurRadiusPx = 6, .aoPackedDepthTarget = false, .mbTaps = 9,
+                   .mbMaxRadiusPx = 18.0f, .mbJitterSize = 4, .abufferOit = true};
+    for (uint32_t i = 0; i < kTierCount; ++i) {
+        INFO(toString(Tier(i)));
+        CHECK(fields(tiers::profile(Tier(i))) == fields(expected[i]));
+    }
+}
+
+TEST_CASE("tier table: names, shader defines and dialects are generated from it", "[tiers][shaders]") {
+    CHECK(tierNameList() == "current or high");
+    for (uint32_t i = 0; i < kTierCount; ++i) {
+        Tier parsed;
+        REQUIRE(parseTier(kTierNames[i], &parsed));
+        CHECK(parsed == Tier(i));
+        CHECK(std::string(toString(Tier(i))) == kTierNames[i]);
+    }
+    Tier t;
+    CHECK_FALSE(parseTier("ultra", &t));
+    CHECK(std::string(toString(Tier(kTierCount))) == "unknown");
+
+    auto has = [](Tier tier, const std::string& name, const std::string& value) {
+        for (const tiers::ShaderDefine& d : tiers::shaderDefines(tier))
+            if (d.name == name) return d.value == value;
+        return false;
+    };
+    CHECK(has(Tier::Current, "SFX_TIER_CURRENT", "1"));
+    CHECK(has(Tier::Current, "SFX_TIER", "0"));
+    CHECK(has(Tier::Current, "SFX_AO_PACKED_DEPTH_TARGET", "1"));
+    CHECK_FALSE(has(Tier::Current, "SFX_AO_DEPTH_MIP", "1"));
+    CHECK(has(Tier::High, "SFX_TIER_HIGH", "1"));
+    CHECK(has(Tier::High, "SFX_TIER", "1"));
+    CHECK(has(Tier::High, "SFX_AO_DEPTH_MIP", "1"));
+    CHECK_FALSE(has(Tier::High, "SFX_AO_PACKED_DEPTH_TARGET", "1"));
+
+    // The embedded programs carry exactly their tier's GL dialects.
+    for (const CompiledProgram& p : shaders::all()) {
+        const std::vector<ShaderDialect>& dialects = tiers::row(p.tier).glDialects;
+        for (const StageCode& s : p.stages)
+            for (uint32_t d = uint32_t(ShaderDialect::Essl300); d < uint32_t(ShaderDialect::Count); ++d) {
+                INFO(p.name << " " << toString(p.tier) << " " << toString(ShaderDialect(d)));
+                const bool listed = std::find(dialects.begin(), dialects.end(), ShaderDialect(d)) != dialects.end();
+                CHECK(s.glsl[d].empty() == !listed);
+            }
+    }
+}
+
+TEST_CASE("shared uniform blocks: the C++ structs have the compiled blocks' size and binding", "[shaders]") {
+    struct Expected {
+        const char* program;
+        const char* block;
+        uint32_t size;
+        uint32_t binding;
+    };
+    const Expected expected[] = {
+        {"ao_alchemy", "AoParams", sizeof(shared::AoParams), shared::AoParams::kBinding},
+        {"ao_scalable", "AoParams", sizeof(shared::AoParams), shared::AoParams::kBinding},
+        {"ao_crease", "AoParams", sizeof(shared::AoParams), shared::AoParams::kBinding},
+        {"ao_blur", "BlurParams", sizeof(shared::BlurParams), shared::BlurParams::kBinding},
+        {"linearize_depth", "LinearizeParams", sizeof(shared::LinearizeParams), shared::LinearizeParams::kBinding},
+        {"mb_pack", "MbPackParams", sizeof(shared::MbPackParams), shared::MbPackParams::kBinding},
+        {"mb_tile_max", "MbTileParams", sizeof(shared::MbTileParams), shared::MbTileParams::kBinding},
+        {"mb_reconstruct", "MbReconstructParams", sizeof(shared::MbReconstructParams), shared::MbReconstructParams::kBinding},
+        {"raster_gbuffer", "RasterParams", sizeof(shared::RasterParams), shared::RasterParams::kBinding},
+    };
+    for (const Expected& e : expected)
+        for (uint32_t t = 0; t < kTierCount; ++t) {
+            // The G-buffer raster program belongs to the samples' shader library, not the runtime's.
+            const bool sample = std::string_view(e.program) == gen::raster_gbuffer::kName;
+            Result<const CompiledProgram*> p = sample ? sample_shaders::find(e.program, Tier(t)) : shaders::find(e.program, Tier(t));
+            REQUIRE(p.isOk());
+            INFO(e.program << " " << toString(Tier(t)) << " " << e.block);
+            const auto& res = p.value()->resources;
+            auto it = std::find_if(res.begin(), res.end(), [&](const ShaderResource& r) {
+                return r.kind == ResourceKind::UniformBuffer && r.name == e.block;
+            });
+            REQUIRE(it != res.end());
+            CHECK(it->blockSize == e.size);
+            CHECK(it->binding == e.binding);
+        }
+}

@@ -1,0 +1,115 @@
+// The tier table: one row per tier, lowest first. Everything that differs between tiers is a
+// value here; effects, sfxc (the shader defines), `sfx info --rules` and docs/tiers.md read it.
+// To add a tier: its line in SFX_TIER_LIST (sfx/tier.hpp) and its row below.
+#include "sfx/tiers.hpp"
+
+#include "sfx_shared.h"
+
+namespace sfx::tiers {
+namespace {
+
+bool apiAtLeast(const DeviceCaps& c, uint32_t major, uint32_t minor) {
+    return c.apiMajor > major || (c.apiMajor == major && c.apiMinor >= minor);
+}
+
+// GL ES 3.0-class: fragment passes with float render targets for linear depth.
+std::vector<Requirement> currentRules() {
+    return {
+        {"a rasterising device (not the null backend)", [](const DeviceCaps& c) { return c.backend != BackendKind::Null; }},
+        {"API at least GL ES 3.0, GL 3.3 or Vulkan 1.0",
+         [](const DeviceCaps& c) {
+             switch (c.backend) {
+             case BackendKind::GLES: return apiAtLeast(c, 3, 0);
+             case BackendKind::GL: return apiAtLeast(c, 3, 3);
+             case BackendKind::Vulkan: return apiAtLeast(c, 1, 0);
+             default: return false;
+             }
+         }},
+        // Linear depth (R32F), motion blur's packed velocity and tiles (RGBA16F, RG16F). On GL ES
+        // one extension, EXT_color_buffer_float, makes all of them renderable.
+        {"R32F, RGBA16F and RG16F render targets (EXT_color_buffer_float on GL ES)",
+         [](const DeviceCaps& c) {
+             return c.renderableFormat[size_t(Format::R32F)] && c.renderableFormat[size_t(Format::RGBA16F)] &&
+                    c.renderableFormat[size_t(Format::RG16F)];
+         }},
+        {"RGBA8 render targets", [](const DeviceCaps& c) { return c.renderableFormat[size_t(Format::RGBA8)]; }},
+        {"sampling D32F or D24S8 depth", [](const DeviceCaps& c) {
+             return c.sampledFormat[size_t(Format::D32F)] || c.sampledFormat[size_t(Format::D24S8)];
+         }},
+    };
+}
+
+// Vulkan / D3D11-class: everything above, plus compute, storage buffers and atomics.
+std::vector<Requirement> highRules() {
+    std::vector<Requirement> rules = currentRules();
+    rules.push_back({"API at least GL ES 3.1, GL 4.3 or Vulkan 1.1", [](const DeviceCaps& c) {
+                         switch (c.backend) {
+                         case BackendKind::GLES: return apiAtLeast(c, 3, 1);
+                         case BackendKind::GL: return apiAtLeast(c, 4, 3);
+                         case BackendKind::Vulkan: return apiAtLeast(c, 1, 1);
+                         default: return false;
+                         }
+                     }});
+    rules.push_back({"compute shaders", [](const DeviceCaps& c) { return c.computeShaders; }});
+    rules.push_back({"storage buffers", [](const DeviceCaps& c) { return c.storageBuffers; }});
+    rules.push_back({"atomics on storage buffers", [](const DeviceCaps& c) { return c.atomics; }});
+    rules.push_back({"R32UI render targets", [](const DeviceCaps& c) { return c.renderableFormat[size_t(Format::R32UI)]; }});
+    return rules;
+}
+
+TierProfile currentDefault() {
+    TierProfile p;
+    p.tier = Tier::Current;
+    p.aoScalableTaps = 4;  // mirrored: 2 offsets, each also negated
+    p.aoScalableMirrored = true;
+    p.aoScalableMaxRadiusPx = 20.0f;
+    p.aoUsesDepthMip = false;
+    p.aoDepthMipLevels = 1;
+    p.aoAlchemySamples = 6;
+    p.aoBlurRadiusPx = 2;  // 5-tap separable bilateral
+    p.aoPackedDepthTarget = true;  // ao_blur.frag reads the key packed in the RGBA8 AO target
+    p.mbTaps = 7;                  // 6 samples + centre
+    p.mbMaxRadiusPx = 10.0f;
+    p.mbJitterSize = 2;  // checkerboard
+    p.abufferOit = false;
+    return p;
+}
+
+TierProfile highDefault() {
+    TierProfile p;
+    p.tier = Tier::High;
+    p.aoScalableTaps = 9;  // spiral taps reading the depth MIP
+    p.aoScalableMirrored = false;
+    p.aoScalableMaxRadiusPx = 0.0f;  // no clamp
+    p.aoUsesDepthMip = true;
+    p.aoDepthMipLevels = uint32_t(shared::SFX_DEPTH_MIP_MAX_LEVELS);
+    p.aoAlchemySamples = 12;  // the paper's 12 samples per pixel
+    p.aoBlurRadiusPx = 6;     // 13-tap, as Alchemy's filter
+    p.aoPackedDepthTarget = false;  // RG16F AO target; the blur reads the linear depth texture
+    p.mbTaps = 9;                   // 8 samples + centre
+    p.mbMaxRadiusPx = 18.0f;
+    p.mbJitterSize = 4;  // 4x4 randomised
+    p.abufferOit = true;
+    return p;
+}
+
+std::vector<TierRow> makeTable() {
+    std::vector<TierRow> rows;
+    rows.push_back({Tier::Current, "GL ES 3.0-class: fragment passes only, no storage buffers or atomics", currentRules(),
+                    CapabilityCeiling::GLES30,
+                    {ShaderDialect::Essl300, ShaderDialect::Essl310, ShaderDialect::Glsl330, ShaderDialect::Glsl450},
+                    {{kDefaultPreset, currentDefault()}}});
+    rows.push_back({Tier::High, "Vulkan / GL ES 3.1+ / GL 4.3+: storage buffers, atomics, compute", highRules(),
+                    CapabilityCeiling::None, {ShaderDialect::Essl310, ShaderDialect::Glsl450},
+                    {{kDefaultPreset, highDefault()}}});
+    return rows;
+}
+
+}  // namespace
+
+const std::vector<TierRow>& table() {
+    static const std::vector<TierRow> rows = makeTable();
+    return rows;
+}
+
+}  // namespace sfx::tiers

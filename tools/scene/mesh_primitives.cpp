@@ -1,0 +1,108 @@
+#include "sfx/mesh_primitives.hpp"
+
+#include <tiny_obj_loader.h>
+
+#include <cmath>
+#include <filesystem>
+#include <system_error>
+
+namespace sfx::scene {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace
+
+void addQuad(TriangleMesh& m, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
+    const glm::vec3 n = glm::normalize(glm::cross(b - a, d - a));
+    const uint32_t base = uint32_t(m.vertices.size());
+    for (glm::vec3 p : {a, b, c, d}) m.vertices.push_back({p, n});
+    m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+}
+
+TriangleMesh quadMesh() {
+    TriangleMesh m;
+    addQuad(m, {-0.5f, -0.5f, 0}, {0.5f, -0.5f, 0}, {0.5f, 0.5f, 0}, {-0.5f, 0.5f, 0});
+    return m;
+}
+
+TriangleMesh boxMesh(glm::vec3 lo, glm::vec3 hi) {
+    TriangleMesh m;
+    const glm::vec3 p[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z},
+                            {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
+    addQuad(m, p[4], p[5], p[6], p[7]);  // +z
+    addQuad(m, p[1], p[0], p[3], p[2]);  // -z
+    addQuad(m, p[5], p[1], p[2], p[6]);  // +x
+    addQuad(m, p[0], p[4], p[7], p[3]);  // -x
+    addQuad(m, p[7], p[6], p[2], p[3]);  // +y
+    addQuad(m, p[0], p[1], p[5], p[4]);  // -y
+    return m;
+}
+
+TriangleMesh sphereMesh(glm::vec3 centre, float radius, int slices, int stacks) {
+    TriangleMesh m;
+    for (int i = 0; i <= stacks; ++i) {
+        const double v = double(i) / stacks, phi = v * kPi;
+        for (int j = 0; j <= slices; ++j) {
+            const double u = double(j) / slices, theta = u * 2.0 * kPi;
+            const glm::vec3 n(float(std::sin(phi) * std::cos(theta)), float(std::cos(phi)), float(std::sin(phi) * std::sin(theta)));
+            m.vertices.push_back({centre + radius * n, n});
+        }
+    }
+    for (int i = 0; i < stacks; ++i)
+        for (int j = 0; j < slices; ++j) {
+            const uint32_t a = uint32_t(i * (slices + 1) + j), b = a + uint32_t(slices + 1);
+            m.indices.insert(m.indices.end(), {a, a + 1, b, a + 1, b + 1, b});
+        }
+    return m;
+}
+
+Result<TriangleMesh> loadObjMesh(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return Status{StatusCode::FileError, path + ": no such file"};
+    tinyobj::ObjReader reader;
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = true;
+    config.vertex_color = false;
+    config.mtl_search_path = "";  // materials are not read: colour comes from the scene
+    if (!reader.ParseFromFile(path, config)) {
+        std::string why = reader.Error();
+        while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
+        return Status{StatusCode::FileError, path + ": not a readable OBJ file" + (why.empty() ? "" : " (" + why + ")")};
+    }
+    const auto& attrib = reader.GetAttrib();
+    TriangleMesh m;
+    m.vertices.resize(attrib.vertices.size() / 3);
+    for (size_t i = 0; i < m.vertices.size(); ++i) {
+        const glm::vec3 p(attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]);
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            return Status{StatusCode::FileError, path + ": vertex " + std::to_string(i + 1) + " is not finite"};
+        m.vertices[i] = {p, glm::vec3(0)};
+    }
+    for (const auto& shape : reader.GetShapes()) {
+        for (const auto& idx : shape.mesh.indices) {
+            if (idx.vertex_index < 0 || size_t(idx.vertex_index) >= m.vertices.size())
+                return Status{StatusCode::FileError, path + ": a face of " + (shape.name.empty() ? "the mesh" : "'" + shape.name + "'") +
+                                                         " refers to vertex " + std::to_string(long(idx.vertex_index) + 1) +
+                                                         "; the file has " + std::to_string(m.vertices.size())};
+            m.indices.push_back(uint32_t(idx.vertex_index));
+        }
+    }
+    m.indices.resize(m.indices.size() / 3 * 3);
+    if (m.indices.empty()) return Status{StatusCode::FileError, path + ": no triangles"};
+    // Smooth vertex normals from the faces, area-weighted (the normals an OBJ may carry are not read).
+    for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+        Vertex &a = m.vertices[m.indices[t]], &b = m.vertices[m.indices[t + 1]], &c = m.vertices[m.indices[t + 2]];
+        const glm::vec3 n = glm::cross(b.position - a.position, c.position - a.position);
+        a.normal += n;
+        b.normal += n;
+        c.normal += n;
+    }
+    for (Vertex& v : m.vertices) {
+        const float len = glm::length(v.normal);
+        v.normal = len > 0 && std::isfinite(len) ? v.normal / len : glm::vec3(0, 1, 0);
+    }
+    return m;
+}
+
+}  // namespace sfx::scene
