@@ -137,6 +137,19 @@ struct Host {
     }
 };
 
+// A host command pool (its buffers resettable by begin) with one primary command buffer.
+void makeCommandBuffer(const Host& host, VkCommandPool& pool, VkCommandBuffer& cb) {
+    VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    pci.queueFamilyIndex = host.family;
+    REQUIRE(vkCreateCommandPool(host.device, &pci, nullptr, &pool) == VK_SUCCESS);
+    VkCommandBufferAllocateInfo cai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    cai.commandPool = pool;
+    cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    cai.commandBufferCount = 1;
+    REQUIRE(vkAllocateCommandBuffers(host.device, &cai, &cb) == VK_SUCCESS);
+}
+
 void clearTo(Device& d, TextureHandle t, float value) {
     RenderPassDesc pass;
     pass.colors = {{t, 0, LoadOp::Clear, {value, value, value, value}}};
@@ -158,15 +171,8 @@ TEST_CASE("vulkan: wrapped host device, host command buffer, host objects surviv
     ext.debugUtilsEnabled = host.validation;
 
     VkCommandPool pool = VK_NULL_HANDLE;
-    VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    pci.queueFamilyIndex = host.family;
-    REQUIRE(vkCreateCommandPool(host.device, &pci, nullptr, &pool) == VK_SUCCESS);
     VkCommandBuffer cb = VK_NULL_HANDLE;
-    VkCommandBufferAllocateInfo cai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    cai.commandPool = pool;
-    cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    cai.commandBufferCount = 1;
-    REQUIRE(vkAllocateCommandBuffers(host.device, &cai, &cb) == VK_SUCCESS);
+    makeCommandBuffer(host, pool, cb);
 
     {
         DeviceOptions options;
@@ -268,16 +274,8 @@ TEST_CASE("vulkan: steady frames in a host command buffer make nothing", "[vulka
     vulkan::ExternalVulkan ext{host.instance, host.physical, host.device, host.queue, host.family,
                                vkGetInstanceProcAddr, host.validation};
     VkCommandPool pool = VK_NULL_HANDLE;
-    VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    pci.queueFamilyIndex = host.family;
-    REQUIRE(vkCreateCommandPool(host.device, &pci, nullptr, &pool) == VK_SUCCESS);
     VkCommandBuffer cb = VK_NULL_HANDLE;
-    VkCommandBufferAllocateInfo cai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    cai.commandPool = pool;
-    cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    cai.commandBufferCount = 1;
-    REQUIRE(vkAllocateCommandBuffers(host.device, &cai, &cb) == VK_SUCCESS);
+    makeCommandBuffer(host, pool, cb);
     VkFence fence = VK_NULL_HANDLE;
     VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     REQUIRE(vkCreateFence(host.device, &fci, nullptr, &fence) == VK_SUCCESS);
