@@ -24,6 +24,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <set>
 
 #include "sfx/backends.hpp"
@@ -459,6 +460,15 @@ Status writeInputs(const std::string& dir, uint32_t w, uint32_t h) {
     SFX_TRY(io::writeImage(dir + "/velocity_small.exr", small));
     SFX_TRY(io::writeImage(dir + "/velocity_1ch.exr", depth));
     std::ofstream(dir + "/velocity_corrupt.exr") << "this is not an OpenEXR file\n";
+    // Hostile values (PFM keeps 32-bit floats): huge and infinite velocities are clamped by the
+    // effect; a NaN is a named error of the tool.
+    io::Image huge = vel3, nan = vel3;
+    huge.at(10, 10, 0) = 1.0e6f;
+    huge.at(20, 12, 1) = -std::numeric_limits<float>::infinity();
+    huge.at(30, 20, 0) = std::numeric_limits<float>::max();
+    nan.at(5, 7, 1) = std::numeric_limits<float>::quiet_NaN();
+    SFX_TRY(io::writeImage(dir + "/velocity_huge.pfm", huge));
+    SFX_TRY(io::writeImage(dir + "/velocity_nan.pfm", nan));
     std::cout << "wrote " << w << "x" << h << " motion blur inputs to " << dir << "\n";
     return Status::ok();
 }

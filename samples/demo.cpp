@@ -16,6 +16,7 @@
 #include "sfx/motion_blur.hpp"
 #include "sfx/tiers.hpp"
 #include "sfx/image_io.hpp"
+#include "sfx/scene_render.hpp"
 #include "sfx_shared.h"
 
 using namespace sfx;
@@ -133,6 +134,9 @@ int main(int argc, char** argv) {
     app.add_option("--width", width, "width in pixels")->capture_default_str();
     app.add_option("--height", height, "height in pixels")->capture_default_str();
     app.add_option("--scenes", scenes, "scenes to render")->capture_default_str();
+    std::string sceneFile = SFX_SAMPLE_SCENES_DIR "/panes.json";
+    app.add_option("--scene-file", sceneFile, "a scene file drawn through the scene renderer (sfx render); '' = none")
+        ->capture_default_str();
     CLI11_PARSE(app, argc, argv);
 
     std::optional<Tier> forcedTier;
@@ -301,6 +305,25 @@ int main(int argc, char** argv) {
     }
     (void)device->destroyTexture(colour.value());
     (void)device->destroyTimer(timer.value());
+
+    // 4. A scene file through the scene renderer, as `sfx render` draws it: its plan (what the
+    //    scene needs and nothing more) and the picture.
+    if (!sceneFile.empty()) {
+        Result<scene::Scene> file = scene::loadSceneFile(sceneFile);
+        if (!file) return fail(file.status());
+        render::RenderOptions ro;
+        ro.width = width;
+        ro.height = height;
+        Result<std::unique_ptr<render::SceneRender>> sr = render::SceneRender::create(*device, tier.value(), file.value(), ro);
+        if (!sr) return fail(sr.status());
+        std::cout << "[" << sceneFile << "] scene renderer plan:\n" << sr.value()->plan().describe();
+        Result<render::RenderResult> picture = sr.value()->render();
+        if (!picture) return fail(picture.status());
+        for (const std::string& w : picture->warnings) std::cout << "[" << sceneFile << "] warning: " << w << "\n";
+        const std::string path = outDir + "/scene_" + fs::path(sceneFile).stem().string() + ".png";
+        if (Status s = render::writeRendered(path, picture->color, "--scene-file output"); !s) return fail(s);
+        std::cout << "[" << sceneFile << "] wrote " << path << "\n";
+    }
     std::cout << "done: " << outDir << "\n";
     return 0;
 }

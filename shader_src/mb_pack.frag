@@ -25,15 +25,8 @@ void main() {
     } else {
         v = texelFetch(uVelocity, p, 0).xy;
     }
-    v *= params.velocityScale;
-    float len = length(v);
-    // Non-finite velocity is treated as still rather than poisoning the neighbourhood.
-    if (isnan(len) || isinf(len)) {
-        v = vec2(0.0);
-        len = 0.0;
-    }
-    // Clamp the magnitude, keeping the direction (the course's "clamp to max blur").
-    if (len > params.radius) v *= params.radius / len;
+    // Non-finite, infinite and huge velocities: the rule of sfx_shared_mb.h (mbClampVelocity).
+    v = mbClampVelocity(v * params.velocityScale, params.radius);
     vec2 enc = vec2(mbEncodeVelocity(v.x, params.radius), mbEncodeVelocity(v.y, params.radius));
     float zc = min(z, SFX_MB_MAX_PACKED_DEPTH);
     // hi keeps the top 11 significant bits of z, which fp16 stores exactly; lo the rest.

@@ -24,7 +24,7 @@ vec2 roundAway(vec2 x) { return sign(x) * floor(abs(x) + 0.5); }
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    vec4 colorC = texelFetch(uColor, p, 0);
+    vec4 colorC = sfxColor(texelFetch(uColor, p, 0));  // the colour rule of sfx_shared.h
     vec2 vN = decodeVelocity(texelFetch(uNeighborMax, p / params.tileSize, 0).xy);
     if (length(vN) < SFX_MB_STILL_PX) {
         outColor = colorC;
@@ -52,7 +52,9 @@ void main() {
             float speedS = length(decodeVelocity(packedS.xy));
             float zS = packedS.z + packedS.w;
             float w = mbSampleWeight(zC, zS, speedC, speedS, dist, params.softExtent) * perSample;
-            sum += texelFetch(uColor, q, 0) * w;
+            vec4 colorS = texelFetch(uColor, q, 0);
+            if (!sfxColorIsFinite(colorS)) continue;  // a non-finite sample is left out (sfx_shared.h)
+            sum += sfxColor(colorS) * w;
             total += w;
         }
     }

@@ -2,7 +2,8 @@
 // Outputs: 0 = view-space unit normal (x right, y up, camera looking down -z), a = 1;
 //          1 = velocity in pixels across the shutter interval (x toward increasing column,
 //              y toward increasing memory row), the convention of sfx/motion_blur.hpp;
-//          2 = albedo: a checker on the object's own coordinates, so motion shows.
+//          2 = albedo: the object's colour with its shading code in a (RasterParams.surface),
+//              or, when surface.a is 0, a checker on the object's own coordinates, so motion shows.
 #define SFX_WANT_RASTER_PARAMS 1
 #include "sfx_shared_raster.h"  // RasterParams raster (binding 0)
 
@@ -27,7 +28,11 @@ void main() {
     vec2 closePixel = (vCloseClip.xy / vCloseClip.w * 0.5 + 0.5) * raster.viewportSize.xy;
     outVelocity = closePixel - openPixel;
 
-    ivec3 cell = ivec3(floor(vObjectPosition * 4.0));
-    float checker = ((cell.x + cell.y + cell.z) & 1) == 0 ? 1.0 : 0.55;
-    outAlbedo = vec4(vec3(0.85, 0.8, 0.72) * checker, 1.0);
+    if (raster.surface.a > 0.0) {
+        outAlbedo = raster.surface;
+    } else {
+        ivec3 cell = ivec3(floor(vObjectPosition * 4.0));
+        float checker = ((cell.x + cell.y + cell.z) & 1) == 0 ? 1.0 : 0.55;
+        outAlbedo = vec4(vec3(0.85, 0.8, 0.72) * checker, SFX_RASTER_SHADING_LAMBERT);
+    }
 }

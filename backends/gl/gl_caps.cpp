@@ -92,8 +92,8 @@ Status GlDevice::init(CapabilityCeiling ceiling) {
     c.limits.maxBufferSize = uint64_t(1) << 30;  // GL has no query; generous for screen-space buffers
     c.limits.maxComputeWorkGroupInvocations = full ? geti(GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS) : 0;
     c.limits.maxTextureBindings = geti(GL_MAX_TEXTURE_IMAGE_UNITS);
-    uniformOffsetAlignment_ = std::max<uint32_t>(1, geti(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT));
-    storageOffsetAlignment_ = modern ? std::max<uint32_t>(1, geti(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT)) : 1;
+    c.limits.minUniformBufferOffsetAlignment = std::max<uint32_t>(1, geti(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT));
+    c.limits.minStorageBufferOffsetAlignment = modern ? std::max<uint32_t>(1, geti(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT)) : 1;
 
     // Float colour targets are core in desktop GL and GL ES 3.2; GL ES 3.0/3.1 (and a
     // device under the ES 3.0 ceiling) have them only through EXT_color_buffer_float.

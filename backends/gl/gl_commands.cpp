@@ -1,4 +1,4 @@
-// Commands: render passes, draws and dispatches that the checks (gl_checks.cpp) accepted,
+// Commands: render passes, draws and dispatches that the checks (sfx::validation, gl_checks.cpp) accepted,
 // encoded as GL state changes and calls, with the SDK's bindings undone after each.
 #include <algorithm>
 
@@ -12,7 +12,7 @@ bool GlDevice::filterable(Format f) const {
     return !isFloat32Format(f) || float32Filterable_;
 }
 
-// Binds resources checkResources accepted. Textures show the shader only the binding's mips
+// Binds resources the shared validation accepted. Textures show the shader only the binding's mips
 // (BASE_LEVEL/MAX_LEVEL), which also makes rendering into a mip outside them legal.
 void GlDevice::bindResources(const BindingSet& b) {
     for (const TextureBinding& tb : b.textures) {
@@ -29,7 +29,8 @@ void GlDevice::bindResources(const BindingSet& b) {
     GL(glActiveTexture, GL_TEXTURE0);
     auto bindRange = [&](GLenum target, const BufferBinding& bb) {
         const GlBuffer& buf = buffers_.get(bb.buffer);
-        GL(glBindBufferRange, target, bb.binding, buf.name, GLintptr(bb.offset), GLsizeiptr(boundSize(bb, buf.desc)));
+        GL(glBindBufferRange, target, bb.binding, buf.name, GLintptr(bb.offset),
+           GLsizeiptr(validation::boundSize(bb, buf.desc)));
     };
     for (const BufferBinding& bb : b.uniformBuffers) bindRange(GL_UNIFORM_BUFFER, bb);
     for (const BufferBinding& bb : b.storageBuffers) bindRange(GL_SHADER_STORAGE_BUFFER, bb);
@@ -49,6 +50,26 @@ void GlDevice::unbindResources(const BindingSet& b) {
         GL(glBindTexture, GL_TEXTURE_2D, 0);
     }
     GL(glActiveTexture, GL_TEXTURE0);
+}
+
+PassTargets GlDevice::passTargets(const RenderPassDesc& pass) const {
+    PassTargets out;
+    for (const ColorAttachment& ca : pass.colors) {
+        const GlTexture& t = textures_.get(ca.texture);
+        if (out.width == 0) {
+            out.width = mipExtent(t.desc.width, ca.mip);
+            out.height = mipExtent(t.desc.height, ca.mip);
+        }
+        out.colors.push_back({&t, ca.mip});
+    }
+    if (!pass.depth.texture.isNull()) {
+        out.depth = &textures_.get(pass.depth.texture);
+        if (out.width == 0) {
+            out.width = out.depth->desc.width;
+            out.height = out.depth->desc.height;
+        }
+    }
+    return out;
 }
 
 // Clears the attachments as their load ops ask, then runs the draws in order.

@@ -32,6 +32,7 @@ GlDevice::~GlDevice() {
     buffers_.forEachAlive([&](GlBuffer& b) { gl_.glDeleteBuffers(1, &b.name); });
     samplers_.forEachAlive([&](GlSampler& s) { gl_.glDeleteSamplers(1, &s.name); });
     programs_.forEachAlive([&](GlProgram& p) { gl_.glDeleteProgram(p.name); });
+    for (GLuint p : destroyedPrograms_) gl_.glDeleteProgram(p);
     pipelines_.forEachAlive([&](GlPipeline& p) {
         gl_.glDeleteVertexArrays(1, &p.vao);
         if (p.specialized) gl_.glDeleteProgram(p.specialized);
@@ -47,6 +48,9 @@ GlDevice::~GlDevice() {
     gl_.glFinish();
     platform_->release();
     if (gCurrentPlatform == platform_.get()) gCurrentPlatform = nullptr;
+    // Messages nobody took go to the host's log callback (DeviceOptions::log).
+    for (const std::string& m : takeValidationMessages())
+        if (options_.log) options_.log(LogSeverity::Error, "sfx gl: untaken validation message at teardown: " + m);
 }
 
 bool GlDevice::makeCurrent() {
@@ -97,7 +101,7 @@ Status GlDevice::beginTimer(TimerHandle h) {
 
 Status GlDevice::endTimer(TimerHandle h) {
     SFX_TRY(timers_.check(h, "timer"));
-    if (!timers_.get(h).begun) return {StatusCode::InvalidArgument, "endTimer: timer was not begun"};
+    if (!timers_.get(h).begun) return validation::fail(validation::Error::TimerNotBegun, {});
     SFX_TRY(enter());
     GL(glFinish);
     GlTimer& t = timers_.get(h);
@@ -111,23 +115,20 @@ Status GlDevice::endTimer(TimerHandle h) {
 Result<TimerReading> GlDevice::readTimer(TimerHandle h) {
     SFX_TRY(timers_.check(h, "timer"));
     const GlTimer& t = timers_.get(h);
-    if (t.lastMs < 0) return Status{StatusCode::InvalidArgument, "readTimer: timer has no finished measurement"};
+    if (t.lastMs < 0) return validation::fail(validation::Error::TimerNoMeasurement, {});
     return TimerReading{t.lastMs, caps_.timing};
 }
 
 // ---- Commands: every check before any GL work, then the encoding ---------------------------
 
 Status GlDevice::renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) {
+    SFX_TRY(validation::renderPass(pass, draws, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
     SFX_TRY(enter());
-    PassTargets targets;
-    Status s = checkPass(pass, draws, &targets);
-    if (s) s = encodeRenderPass(pass, draws, targets);
-    return takeDeviceError(s);
+    return takeDeviceError(encodeRenderPass(pass, draws, passTargets(pass)));
 }
 
 Status GlDevice::dispatch(const DispatchDesc& d) {
-    Result<const GlProgram*> program = checkDispatch(d);
-    if (!program) return program.status();
+    SFX_TRY(validation::dispatch(d, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
     SFX_TRY(enter());
     encodeDispatch(programOf(pipelines_.get(d.pipeline)), d);
     return takeDeviceError(Status::ok());

@@ -6,7 +6,7 @@
 //   gl_errors.cpp       per-call GL error checks and KHR_debug output
 //   gl_resources.cpp    textures, buffers, samplers
 //   gl_programs.cpp     shader compile/link, name-based binding, pipelines
-//   gl_checks.cpp       the GL backend's own binding, attachment and feedback checks
+//   gl_checks.cpp       the checks only GL makes (the rest is the shared sfx::validation)
 //   gl_commands.cpp     render passes, draws, dispatches: GL state and resource binding
 //   gl_framebuffers.cpp the framebuffer object cache
 //   gl_readback.cpp     texture and buffer readback, the GL ES depth copy
@@ -50,18 +50,16 @@ struct GlSampler {
 // compile its own copy with the values in place.
 using GlSources = std::vector<std::pair<GLenum, std::string>>;
 struct GlProgram {
-    std::string label;
+    validation::ProgramInfo info;
     GLuint name = 0;
-    bool compute = false;
-    std::vector<ShaderResource> resources;
     GlSources sources;
 };
 struct GlPipeline {
-    bool compute = false;
-    ProgramHandle program;
+    validation::PipelineInfo info;  // what the shared validation checks draws and dispatches against
+    GLuint program = 0;             // the program's GL object, kept until its last pipeline goes
     GraphicsPipelineDesc desc;  // graphics state; program field unused
     GLuint vao = 0;
-    GLuint specialized = 0;  // the program compiled with the pipeline's constants; 0: the program's
+    GLuint specialized = 0;         // the program compiled with the pipeline's constants; 0: none
 };
 struct GlTimer {
     bool begun = false, ended = false;
@@ -156,6 +154,11 @@ private:
     void setSamplerState(GLuint s, const SamplerDesc& d);
 
     // ---- Programs (gl_programs.cpp) -------------------------------------------------------
+    // A GL pipeline draws with its program's GL object, while the HAL lets a program be destroyed
+    // before its pipelines (as a Vulkan pipeline holds its own compiled state): the object is
+    // deleted when the program and the last pipeline using it are both gone.
+    void usePipelineProgram(GLuint program) { ++programUsers_[program]; }
+    void releaseProgramObject(GLuint program, bool programDestroyed);
     // Compiles and links `program`'s text for the device's dialect and binds its resources by name.
     Result<GLuint> linkProgram(const CompiledProgram& program);
     static GlSources sourcesOf(const CompiledProgram& program, ShaderDialect dialect);
@@ -164,27 +167,18 @@ private:
     // The program of `pipeline` specialised with its constants (0 when it has none).
     Result<GLuint> specialize(const GlProgram& program, const std::vector<SpecializationConstant>& constants);
     GLuint programOf(const GlPipeline& pipeline) const {
-        return pipeline.specialized ? pipeline.specialized : programs_.get(pipeline.program).name;
+        return pipeline.specialized ? pipeline.specialized : pipeline.program;
     }
     Result<GLuint> compileShader(const std::string& programName, GLenum type, const std::string& source);
     Result<GLuint> buildProgram(const std::string& programName, const std::vector<std::pair<GLenum, std::string>>& sources);
     void bindResourcesByName(GLuint program, const std::vector<ShaderResource>& resources);
 
-    // ---- The backend's own checks (gl_checks.cpp) -----------------------------------------
-    Status checkBindingsMatch(const GlProgram& program, const BindingSet& b, const char* where);
-    Status checkBufferRange(GLenum target, const BufferBinding& bb, uint32_t alignment, uint32_t minSize,
-                            const ShaderResource* resource);
-    const ShaderResource* findResource(const GlProgram* program, ResourceKind kind, uint32_t binding);
-    Status checkResources(const BindingSet& b, const GlProgram* program);
-    Status checkPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, PassTargets* targets);
-    Status checkDraw(const DrawDesc& d, const ColorTargets& colors, const GlTexture* depth);
-    Result<const GlProgram*> checkDispatch(const DispatchDesc& d);
+    // ---- The checks only GL makes (gl_checks.cpp) -----------------------------------------
+    Status checkTextureUnits(const CompiledProgram& program) const;
 
     // ---- Commands (gl_commands.cpp) -------------------------------------------------------
-    // The range a buffer binding covers: its size, or the rest of the buffer when size is 0.
-    static uint64_t boundSize(const BufferBinding& bb, const BufferDesc& d) {
-        return bb.size ? bb.size : (bb.offset < d.size ? d.size - bb.offset : 0);
-    }
+    // The attachments of a render pass the shared validation accepted, and their one extent.
+    PassTargets passTargets(const RenderPassDesc& pass) const;
     bool filterable(Format f) const;
     void bindResources(const BindingSet& b);
     void unbindResources(const BindingSet& b);
@@ -210,7 +204,6 @@ private:
     std::set<std::string> extensions_;
     bool float32Filterable_ = false;
     bool debugOutput_ = false;
-    uint32_t uniformOffsetAlignment_ = 1, storageOffsetAlignment_ = 1;
     std::vector<std::string> messages_;
     std::string pendingError_;  // the first GL error since the current call began
 
@@ -222,6 +215,8 @@ private:
     HandlePool<PipelineTag, GlPipeline> pipelines_;
     HandlePool<TimerTag, GlTimer> timers_;
 
+    std::map<GLuint, uint32_t> programUsers_;  // pipelines per GL program object
+    std::set<GLuint> destroyedPrograms_;       // destroyed programs whose pipelines still draw
     std::map<FboKey, GLuint> fbos_;
     // For stats(): texture and buffer storage (the textures readTexture copies depth through
     // included, and counted again as readback copies), framebuffer objects, and the bytes of

@@ -9,6 +9,7 @@ namespace sfx::gl {
 Result<ProgramHandle> GlDevice::createProgram(const CompiledProgram& program) {
     // The shared check names what the device lacks before looking for the dialect's text.
     SFX_TRY(validation::program(program, caps_));
+    SFX_TRY(checkTextureUnits(program));
     SFX_TRY(enter());
     Result<GLuint> linked = linkProgram(program);
     if (!linked) return takeDeviceError(linked.status());
@@ -18,15 +19,24 @@ Result<ProgramHandle> GlDevice::createProgram(const CompiledProgram& program) {
         gl_.glDeleteProgram(name);
         return s;
     }
-    return programs_.insert(GlProgram{program.name, name, program.isCompute(), program.resources, sourcesOf(program, caps_.dialect)});
+    return programs_.insert(GlProgram{validation::programInfo(program), name, sourcesOf(program, caps_.dialect)});
 }
 
 Status GlDevice::destroyProgram(ProgramHandle h) {
     SFX_TRY(programs_.check(h, "program"));
     SFX_TRY(enter());
     GlProgram p = programs_.remove(h);
-    GL(glDeleteProgram, p.name);
+    releaseProgramObject(p.name, true);
     return takeDeviceError(Status::ok());
+}
+
+void GlDevice::releaseProgramObject(GLuint program, bool programDestroyed) {
+    if (programDestroyed) destroyedPrograms_.insert(program);
+    auto users = programUsers_.find(program);
+    if (!programDestroyed && users != programUsers_.end() && --users->second == 0) programUsers_.erase(users);
+    if (programUsers_.count(program) || !destroyedPrograms_.count(program)) return;
+    destroyedPrograms_.erase(program);
+    GL(glDeleteProgram, program);
 }
 
 GlSources GlDevice::sourcesOf(const CompiledProgram& program, ShaderDialect dialect) {
@@ -64,7 +74,7 @@ Result<GLuint> GlDevice::specialize(const GlProgram& program, const std::vector<
         const size_t eol = text.find('\n');
         text.insert(eol == std::string::npos ? text.size() : eol + 1, defines);
     }
-    return linkSources(program.label, sources, program.resources);
+    return linkSources(program.info.name, sources, program.info.resources);
 }
 
 Result<GLuint> GlDevice::compileShader(const std::string& programName, GLenum type, const std::string& source) {
@@ -81,8 +91,8 @@ Result<GLuint> GlDevice::compileShader(const std::string& programName, GLenum ty
     GL(glGetShaderInfoLog, shader, GLsizei(log.size()), nullptr, log.data());
     GL(glDeleteShader, shader);
     const char* stage = type == GL_VERTEX_SHADER ? "vertex" : type == GL_FRAGMENT_SHADER ? "fragment" : "compute";
-    return Status{StatusCode::ShaderError, "program '" + programName + "' " + stage + " stage failed to compile (" +
-                                               toString(caps_.dialect) + "): " + log.c_str()};
+    // GL only: Vulkan consumes SPIR-V, checked by SPIRV-Tools instead (vulkan_pipelines.cpp).
+    return validation::fail(validation::Error::ShaderCompile, {programName, stage, toString(caps_.dialect), log.c_str()});
 }
 
 Result<GLuint> GlDevice::buildProgram(const std::string& programName,
@@ -111,8 +121,7 @@ Result<GLuint> GlDevice::buildProgram(const std::string& programName,
     std::string log(size_t(std::max(length, 1)), '\0');
     GL(glGetProgramInfoLog, program, GLsizei(log.size()), nullptr, log.data());
     GL(glDeleteProgram, program);
-    return Status{StatusCode::ShaderError, "program '" + programName + "' failed to link (" +
-                                               toString(caps_.dialect) + "): " + log.c_str()};
+    return validation::fail(validation::Error::ShaderLink, {programName, toString(caps_.dialect), log.c_str()});
 }
 
 // SPIR-V to ESSL 300 / GLSL 330 drops binding qualifiers, so bind by the reflected GL name
@@ -153,13 +162,12 @@ void GlDevice::bindResourcesByName(GLuint program, const std::vector<ShaderResou
 
 Result<PipelineHandle> GlDevice::createGraphicsPipeline(const GraphicsPipelineDesc& desc) {
     SFX_TRY(programs_.check(desc.program, "GraphicsPipelineDesc.program"));
-    if (programs_.get(desc.program).compute)
-        return Status{StatusCode::InvalidArgument, "GraphicsPipelineDesc.program is a compute program"};
-    SFX_TRY(validation::graphicsPipelineShape(desc, caps_));
-    SFX_TRY(validation::graphicsPipelineState(desc, caps_));
+    Result<validation::PipelineInfo> info = validation::graphicsPipeline(desc, programs_.get(desc.program).info, caps_);
+    if (!info) return info.status();
     SFX_TRY(enter());
     GlPipeline p;
-    p.program = desc.program;
+    p.info = std::move(info.value());
+    p.program = programs_.get(desc.program).name;
     p.desc = desc;
     p.desc.debugName = "";
     Result<GLuint> specialized = specialize(programs_.get(desc.program), desc.constants);
@@ -176,21 +184,22 @@ Result<PipelineHandle> GlDevice::createGraphicsPipeline(const GraphicsPipelineDe
         if (p.specialized) gl_.glDeleteProgram(p.specialized);
         return s;
     }
+    usePipelineProgram(p.program);
     return pipelines_.insert(std::move(p));
 }
 
 Result<PipelineHandle> GlDevice::createComputePipeline(const ComputePipelineDesc& desc) {
     SFX_TRY(programs_.check(desc.program, "ComputePipelineDesc.program"));
-    if (!programs_.get(desc.program).compute)
-        return Status{StatusCode::InvalidArgument, "ComputePipelineDesc.program is not a compute program"};
-    SFX_TRY(validation::specializationConstants(desc.constants, "ComputePipelineDesc"));
+    Result<validation::PipelineInfo> info = validation::computePipeline(desc, programs_.get(desc.program).info);
+    if (!info) return info.status();
     SFX_TRY(enter());
     GlPipeline p;
-    p.compute = true;
-    p.program = desc.program;
+    p.info = std::move(info.value());
+    p.program = programs_.get(desc.program).name;
     Result<GLuint> specialized = specialize(programs_.get(desc.program), desc.constants);
     if (!specialized) return takeDeviceError(specialized.status());
     p.specialized = specialized.value();
+    usePipelineProgram(p.program);
     return pipelines_.insert(std::move(p));
 }
 
@@ -200,6 +209,7 @@ Status GlDevice::destroyPipeline(PipelineHandle h) {
     GlPipeline p = pipelines_.remove(h);
     if (p.vao) GL(glDeleteVertexArrays, 1, &p.vao);
     if (p.specialized) GL(glDeleteProgram, p.specialized);
+    releaseProgramObject(p.program, false);
     return takeDeviceError(Status::ok());
 }
 

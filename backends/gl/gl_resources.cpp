@@ -51,7 +51,7 @@ Status GlDevice::writeTexture(TextureHandle h, uint32_t mip, const void* data, s
     SFX_TRY(textures_.check(h, "texture"));
     const GlTexture& t = textures_.get(h);
     SFX_TRY(validation::textureBytes(t.desc, mip, bytes, "bytes"));
-    if (!data) return invalidArgument("data", "null", "a pointer to the level's bytes");
+    SFX_TRY(validation::pointer(data, "data", "the level's bytes"));
     SFX_TRY(enter());
     const GlFormat f = glFormat(t.desc.format);
     GL(glBindBuffer, GL_PIXEL_UNPACK_BUFFER, 0);
@@ -100,8 +100,8 @@ Status GlDevice::destroyBuffer(BufferHandle h) {
 Status GlDevice::writeBuffer(BufferHandle h, uint64_t offset, const void* data, size_t bytes) {
     SFX_TRY(buffers_.check(h, "buffer"));
     const GlBuffer& b = buffers_.get(h);
-    SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "writeBuffer range"));
-    if (!data) return invalidArgument("data", "null", "a pointer to the bytes to write");
+    SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "writeBuffer(offset, bytes)"));
+    SFX_TRY(validation::pointer(data, "data", "the bytes to write"));
     SFX_TRY(enter());
     GL(glBindBuffer, GL_COPY_WRITE_BUFFER, b.name);
     GL(glBufferSubData, GL_COPY_WRITE_BUFFER, GLintptr(offset), GLsizeiptr(bytes), data);

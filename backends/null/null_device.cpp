@@ -1,3 +1,6 @@
+// The null backend: every call goes through the same shared validation as on Vulkan and GL (it
+// keeps each program's reflection, each pipeline's description and each texture's and buffer's
+// description for that), then keeps contents in host memory and draws nothing.
 #include "sfx/null_device.hpp"
 
 #include <cstring>
@@ -17,11 +20,10 @@ struct NullBuffer {
     std::vector<uint8_t> bytes;
 };
 struct NullProgram {
-    bool compute = false;
+    validation::ProgramInfo info;
 };
 struct NullPipeline {
-    bool compute = false;
-    VertexLayout vertexLayout;  // bounds the draws' vertex reads
+    validation::PipelineInfo info;
 };
 struct NullTimer {
     bool begun = false, ended = false;
@@ -63,7 +65,7 @@ public:
         SFX_TRY(textures_.check(h, "texture"));
         NullTexture& t = textures_.get(h);
         SFX_TRY(validation::textureBytes(t.desc, mip, bytes, "bytes"));
-        if (!data) return invalidArgument("data", "null", "a pointer to the level's bytes");
+        SFX_TRY(validation::pointer(data, "data", "the level's bytes"));
         std::memcpy(t.mips[mip].data(), data, bytes);
         return Status::ok();
     }
@@ -71,7 +73,7 @@ public:
         SFX_TRY(textures_.check(h, "texture"));
         NullTexture& t = textures_.get(h);
         SFX_TRY(validation::textureBytes(t.desc, mip, bytes, "bytes"));
-        if (!out) return invalidArgument("out", "null", "a pointer to the level's bytes");
+        SFX_TRY(validation::pointer(out, "out", "the level's bytes"));
         std::memcpy(out, t.mips[mip].data(), bytes);
         return Status::ok();
     }
@@ -89,16 +91,16 @@ public:
     Status writeBuffer(BufferHandle h, uint64_t offset, const void* data, size_t bytes) override {
         SFX_TRY(buffers_.check(h, "buffer"));
         NullBuffer& b = buffers_.get(h);
-        SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "writeBuffer range"));
-        if (!data) return invalidArgument("data", "null", "a pointer to the bytes to write");
+        SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "writeBuffer(offset, bytes)"));
+        SFX_TRY(validation::pointer(data, "data", "the bytes to write"));
         std::memcpy(b.bytes.data() + offset, data, bytes);
         return Status::ok();
     }
     Status readBuffer(BufferHandle h, uint64_t offset, void* out, size_t bytes) override {
         SFX_TRY(buffers_.check(h, "buffer"));
         NullBuffer& b = buffers_.get(h);
-        SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "readBuffer range"));
-        if (!out) return invalidArgument("out", "null", "a pointer for the bytes read");
+        SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "readBuffer(offset, bytes)"));
+        SFX_TRY(validation::pointer(out, "out", "room for the bytes read"));
         std::memcpy(out, b.bytes.data() + offset, bytes);
         return Status::ok();
     }
@@ -115,7 +117,7 @@ public:
 
     Result<ProgramHandle> createProgram(const CompiledProgram& program) override {
         SFX_TRY(validation::program(program, caps_));
-        return programs_.insert(NullProgram{program.isCompute()});
+        return programs_.insert(NullProgram{validation::programInfo(program)});
     }
     Status destroyProgram(ProgramHandle h) override {
         SFX_TRY(programs_.check(h, "program"));
@@ -125,18 +127,15 @@ public:
 
     Result<PipelineHandle> createGraphicsPipeline(const GraphicsPipelineDesc& desc) override {
         SFX_TRY(programs_.check(desc.program, "GraphicsPipelineDesc.program"));
-        if (programs_.get(desc.program).compute)
-            return Status{StatusCode::InvalidArgument, "GraphicsPipelineDesc.program is a compute program"};
-        SFX_TRY(validation::graphicsPipelineShape(desc, caps_));
-        SFX_TRY(validation::graphicsPipelineState(desc, caps_));
-        return pipelines_.insert(NullPipeline{false, desc.vertexLayout});
+        Result<validation::PipelineInfo> info = validation::graphicsPipeline(desc, programs_.get(desc.program).info, caps_);
+        if (!info) return info.status();
+        return pipelines_.insert(NullPipeline{std::move(info.value())});
     }
     Result<PipelineHandle> createComputePipeline(const ComputePipelineDesc& desc) override {
         SFX_TRY(programs_.check(desc.program, "ComputePipelineDesc.program"));
-        if (!programs_.get(desc.program).compute)
-            return Status{StatusCode::InvalidArgument, "ComputePipelineDesc.program is not a compute program"};
-        SFX_TRY(validation::specializationConstants(desc.constants, "ComputePipelineDesc"));
-        return pipelines_.insert(NullPipeline{true, {}});
+        Result<validation::PipelineInfo> info = validation::computePipeline(desc, programs_.get(desc.program).info);
+        if (!info) return info.status();
+        return pipelines_.insert(NullPipeline{std::move(info.value())});
     }
     Status destroyPipeline(PipelineHandle h) override {
         SFX_TRY(pipelines_.check(h, "pipeline"));
@@ -152,37 +151,9 @@ public:
     }
 
     Status renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) override {
-        if (pass.colors.empty() && pass.depth.texture.isNull())
-            return invalidArgument("RenderPassDesc", "without attachments", "at least one colour or depth attachment");
-        for (size_t i = 0; i < pass.colors.size(); ++i) {
-            SFX_TRY(textures_.check(pass.colors[i].texture, "RenderPassDesc.colors[].texture"));
-            SFX_TRY(validation::mipRange(textures_.get(pass.colors[i].texture).desc, pass.colors[i].mip,
-                                         "RenderPassDesc.colors[].mip"));
-        }
-        if (!pass.depth.texture.isNull()) SFX_TRY(textures_.check(pass.depth.texture, "RenderPassDesc.depth.texture"));
-        for (const DrawDesc& d : draws) {
-            SFX_TRY(pipelines_.check(d.pipeline, "DrawDesc.pipeline"));
-            SFX_TRY(checkBindings(d.bindings));
-            SFX_TRY(validation::noFeedbackLoop(pass, d));
-            const BufferDesc* vertexBuffer = nullptr;
-            const BufferDesc* indexBuffer = nullptr;
-            if (!pipelines_.get(d.pipeline).vertexLayout.attributes.empty() || !d.vertexBuffer.isNull()) {
-                SFX_TRY(buffers_.check(d.vertexBuffer, "DrawDesc.vertexBuffer"));
-                vertexBuffer = &buffers_.get(d.vertexBuffer).desc;
-            }
-            if (!d.indexBuffer.isNull()) {
-                SFX_TRY(buffers_.check(d.indexBuffer, "DrawDesc.indexBuffer"));
-                indexBuffer = &buffers_.get(d.indexBuffer).desc;
-            }
-            SFX_TRY(validation::drawRange(d, pipelines_.get(d.pipeline).vertexLayout, vertexBuffer, indexBuffer));
-        }
-        return Status::ok();
+        return validation::renderPass(pass, draws, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_);
     }
-    Status dispatch(const DispatchDesc& d) override {
-        SFX_TRY(validation::dispatchGroups(d, caps_));
-        SFX_TRY(pipelines_.check(d.pipeline, "DispatchDesc.pipeline"));
-        return checkBindings(d.bindings);
-    }
+    Status dispatch(const DispatchDesc& d) override { return validation::dispatch(d, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_); }
     Status beginTimer(TimerHandle h) override {
         SFX_TRY(timers_.check(h, "timer"));
         timers_.get(h).begun = true;
@@ -190,7 +161,7 @@ public:
     }
     Status endTimer(TimerHandle h) override {
         SFX_TRY(timers_.check(h, "timer"));
-        if (!timers_.get(h).begun) return {StatusCode::InvalidArgument, "endTimer: timer was not begun"};
+        if (!timers_.get(h).begun) return validation::fail(validation::Error::TimerNotBegun, {});
         timers_.get(h).ended = true;
         return Status::ok();
     }
@@ -204,23 +175,11 @@ public:
     }
     Result<TimerReading> readTimer(TimerHandle h) override {
         SFX_TRY(timers_.check(h, "timer"));
-        if (!timers_.get(h).ended) return Status{StatusCode::InvalidArgument, "readTimer: timer has no finished measurement"};
+        if (!timers_.get(h).ended) return validation::fail(validation::Error::TimerNoMeasurement, {});
         return TimerReading{0.0, caps_.timing};
     }
 
 private:
-    Status checkBindings(const BindingSet& b) {
-        for (const auto& t : b.textures) {
-            SFX_TRY(textures_.check(t.texture, "TextureBinding.texture"));
-            SFX_TRY(validation::textureBinding(textures_.get(t.texture).desc, t));
-            if (!t.sampler.isNull()) SFX_TRY(samplers_.check(t.sampler, "TextureBinding.sampler"));
-        }
-        for (const auto& u : b.uniformBuffers) SFX_TRY(buffers_.check(u.buffer, "BufferBinding.buffer"));
-        for (const auto& s : b.storageBuffers) SFX_TRY(buffers_.check(s.buffer, "BufferBinding.buffer"));
-        for (const auto& s : b.storageImages) SFX_TRY(textures_.check(s.texture, "StorageImageBinding.texture"));
-        return Status::ok();
-    }
-
     DeviceCaps caps_;
     uint16_t serial_;
     HandlePool<TextureTag, NullTexture> textures_;
@@ -240,9 +199,11 @@ DeviceCaps defaultCaps(CapabilityCeiling ceiling) {
     c.platform = "null";
     c.apiName = "null";
     c.deviceName = "null device";
-    c.dialect = ShaderDialect::Glsl450;
-    c.ceiling = ceiling;
     const bool full = ceiling == CapabilityCeiling::None;
+    // Under the ceiling the dialect a GL ES 3.0-class desktop GL compiles, as the GL backend does,
+    // so high-tier-only programs are refused the same way.
+    c.dialect = full ? ShaderDialect::Glsl450 : ShaderDialect::Glsl330;
+    c.ceiling = ceiling;
     c.computeShaders = full;
     c.storageBuffers = full;
     c.atomics = full;
@@ -257,6 +218,9 @@ DeviceCaps defaultCaps(CapabilityCeiling ceiling) {
     c.limits.maxBufferSize = 1u << 30;
     c.limits.maxComputeWorkGroupInvocations = full ? 1024 : 0;
     c.limits.maxTextureBindings = 16;
+    // The largest alignment common hardware asks for, so code that passes here passes there.
+    c.limits.minUniformBufferOffsetAlignment = 256;
+    c.limits.minStorageBufferOffsetAlignment = 256;
     for (size_t f = 1; f < size_t(Format::Count); ++f) {
         c.sampledFormat[f] = true;
         c.renderableFormat[f] = true;

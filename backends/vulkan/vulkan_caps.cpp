@@ -37,6 +37,8 @@ void VulkanDevice::fillCaps(const DeviceOptions& options) {
     c.limits.maxBufferSize = std::min<uint64_t>(uint64_t(1) << 30, largestHeap / 4);
     c.limits.maxComputeWorkGroupInvocations = fullFeatures_ ? l.maxComputeWorkGroupInvocations : 0;
     c.limits.maxTextureBindings = std::min<uint32_t>(l.maxPerStageDescriptorSampledImages, 64);
+    c.limits.minUniformBufferOffsetAlignment = std::max<uint64_t>(1, l.minUniformBufferOffsetAlignment);
+    c.limits.minStorageBufferOffsetAlignment = std::max<uint64_t>(1, l.minStorageBufferOffsetAlignment);
 
     for (size_t i = 1; i < size_t(Format::Count); ++i) {
         const Format f = Format(i);

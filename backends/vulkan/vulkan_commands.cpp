@@ -8,10 +8,8 @@
 namespace sfx::vulkan {
 
 Status VulkanDevice::noHostCommandBuffer(const char* call) const {
-    if (hostCommandBuffer_)
-        return {StatusCode::UnsupportedFeature,
-                std::string(call) + " needs a submit, but the device records into a host command buffer; "
-                                    "submit it, call flush(), then read"};
+    // Vulkan only: only the Vulkan backend records into a host's command buffer.
+    if (hostCommandBuffer_) return validation::fail(validation::Error::HostCommandBufferRead, {call});
     return Status::ok();
 }
 
@@ -66,6 +64,35 @@ Status VulkanDevice::setHostCommandBuffer(VkCommandBuffer cb) {
     recycleStaging(stagingHost_);
     hostCommandBuffer_ = cb;
     return Status::ok();
+}
+
+PassTargets VulkanDevice::passTargets(const RenderPassDesc& pass) {
+    PassTargets out;
+    for (const ColorAttachment& c : pass.colors) {
+        VulkanTexture& t = textures_.get(c.texture);
+        if (out.width == 0) {
+            out.width = mipExtent(t.desc.width, c.mip);
+            out.height = mipExtent(t.desc.height, c.mip);
+        }
+        out.colorFormats.push_back(t.desc.format);
+        out.uses.images.push_back({&t, c.mip, 1, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                   VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, true});
+    }
+    if (!pass.depth.texture.isNull()) {
+        VulkanTexture& depth = textures_.get(pass.depth.texture);
+        if (out.width == 0) {
+            out.width = depth.desc.width;
+            out.height = depth.desc.height;
+        }
+        out.depth = &depth;
+        out.depthFormat = depth.desc.format;
+        out.uses.images.push_back({&depth, 0, 1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                                   VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+                                   VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                                   true});
+    }
+    return out;
 }
 
 Status VulkanDevice::recordRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws,
@@ -140,7 +167,7 @@ Status VulkanDevice::recordRenderPass(const RenderPassDesc& pass, std::span<cons
         const VulkanPipeline& pl = pipelines_.get(d.pipeline);
         vk_.vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pl.pipeline);
         if (sets[i]) vk_.vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pl.layout, 0, 1, &sets[i], 0, nullptr);
-        if (pl.usesVertexBuffer) {
+        if (pl.usesVertexBuffer()) {
             const VkDeviceSize offset = 0;
             vk_.vkCmdBindVertexBuffers(cb, 0, 1, &buffers_.get(d.vertexBuffer).buffer, &offset);
         }

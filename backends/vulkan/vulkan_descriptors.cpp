@@ -1,14 +1,13 @@
 // Descriptors: set and pipeline layouts from a program's reflection, a BindingSet resolved into
-// descriptor writes (its checks are in vulkan_checks.cpp), and the descriptor-set cache: a set is
-// written once per distinct (set layout, descriptors) and reused by every later draw or dispatch
-// that binds the same, so a steady frame allocates and updates none. A cached set is never
-// written again, so command buffers still in flight may keep using it. The cache is cleared
-// (its pools destroyed once the GPU is done) when a texture, buffer, sampler or pipeline it may
-// name is destroyed, or when it grows past kMaxCachedSets.
+// descriptor writes (checked before by the shared validation), and the descriptor-set cache: a
+// set is written once per distinct (set layout, descriptors) and reused by every later draw or
+// dispatch that binds the same, so a steady frame allocates and updates none. A cached set is
+// never written again, so command buffers still in flight may keep using it. The cache is
+// cleared (its pools destroyed once the GPU is done) when a texture, buffer, sampler or pipeline
+// it may name is destroyed, or when it grows past kMaxCachedSets.
 #include <algorithm>
 
 #include "sfx/hal_validation.hpp"
-#include "vulkan_checks.hpp"
 #include "vulkan_device_impl.hpp"
 #include "vulkan_formats.hpp"
 
@@ -16,13 +15,20 @@ namespace sfx::vulkan {
 
 namespace {
 constexpr size_t kMaxCachedSets = 4096;
-}
 
-Status VulkanDevice::resolveBindings(const BindingSet& set, const VulkanPipeline& pl, const char* what,
-                                     Uses& uses, ResolvedBindings& out) {
+// The pipeline stages that read or write `binding` of `kind`, from the program's reflection
+// (the shared validation has matched every binding to a resource before).
+VkPipelineStageFlags bindingStages(const VulkanPipeline& pl, uint32_t binding, ResourceKind kind) {
+    for (const ShaderResource& r : pl.info.resources)
+        if (r.binding == binding && r.kind == kind) return shaderStages(r.stages, pl.info.compute);
+    return shaderStages(0, pl.info.compute);
+}
+}  // namespace
+
+Status VulkanDevice::resolveBindings(const BindingSet& set, const VulkanPipeline& pl, Uses& uses, ResolvedBindings& out) {
+    // Reserved up front: the writes point into images and buffers.
     out.images.reserve(set.textures.size() + set.storageImages.size());
     out.buffers.reserve(set.uniformBuffers.size() + set.storageBuffers.size());
-    ReflectionMatch reflection(pl);
     auto write = [&](uint32_t binding, VkDescriptorType type) {
         VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         w.dstBinding = binding;
@@ -31,64 +37,40 @@ Status VulkanDevice::resolveBindings(const BindingSet& set, const VulkanPipeline
         out.writes.push_back(w);
         return &out.writes.back();
     };
-    (void)what;
-
     for (const TextureBinding& tb : set.textures) {
-        SFX_TRY(textures_.check(tb.texture, "TextureBinding.texture"));
         VulkanTexture& t = textures_.get(tb.texture);
-        SFX_TRY(validation::textureBinding(t.desc, tb));
-        VkSampler sampler = defaultSampler_;
-        if (!tb.sampler.isNull()) {
-            SFX_TRY(samplers_.check(tb.sampler, "TextureBinding.sampler"));
-            sampler = samplers_.get(tb.sampler);
-        }
-        Result<const ShaderResource*> r = reflection.claim(tb.binding, ResourceKind::SampledTexture, "TextureBinding");
-        if (!r) return r.status();
+        const VkSampler sampler = tb.sampler.isNull() ? defaultSampler_ : samplers_.get(tb.sampler);
         Result<VkImageView> view = sampledView(t, tb.baseMip, tb.mipCount);
         if (!view) return view.status();
         out.images.push_back({sampler, view.value(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
         write(tb.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER)->pImageInfo = &out.images.back();
         uses.images.push_back({&t, tb.baseMip, tb.mipCount, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                               shaderStages(r.value()->stages, pl.compute), VK_ACCESS_SHADER_READ_BIT, false});
+                               bindingStages(pl, tb.binding, ResourceKind::SampledTexture), VK_ACCESS_SHADER_READ_BIT, false});
     }
     for (const StorageImageBinding& sb : set.storageImages) {
-        SFX_TRY(textures_.check(sb.texture, "StorageImageBinding.texture"));
         VulkanTexture& t = textures_.get(sb.texture);
-        SFX_TRY(validation::mipRange(t.desc, sb.mip, "StorageImageBinding.mip"));
-        Result<const ShaderResource*> r = reflection.claim(sb.binding, ResourceKind::StorageImage, "StorageImageBinding");
-        if (!r) return r.status();
-        SFX_TRY(checkStorageImageUsage(t.desc));
         Result<VkImageView> view = storageView(t, sb.mip);
         if (!view) return view.status();
         out.images.push_back({VK_NULL_HANDLE, view.value(), VK_IMAGE_LAYOUT_GENERAL});
         write(sb.binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE)->pImageInfo = &out.images.back();
-        uses.images.push_back({&t, sb.mip, 1, VK_IMAGE_LAYOUT_GENERAL, shaderStages(r.value()->stages, pl.compute),
+        uses.images.push_back({&t, sb.mip, 1, VK_IMAGE_LAYOUT_GENERAL, bindingStages(pl, sb.binding, ResourceKind::StorageImage),
                                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, true});
     }
-    auto buffers = [&](const std::vector<BufferBinding>& list, ResourceKind kind, uint32_t usageBit,
-                       uint64_t alignment, uint64_t maxRange) -> Status {
+    auto buffers = [&](const std::vector<BufferBinding>& list, ResourceKind kind) {
         for (const BufferBinding& bb : list) {
-            SFX_TRY(buffers_.check(bb.buffer, "BufferBinding.buffer"));
             VulkanBuffer& b = buffers_.get(bb.buffer);
-            Result<const ShaderResource*> r = reflection.claim(bb.binding, kind, "BufferBinding");
-            if (!r) return r.status();
-            Result<uint64_t> size = checkBufferBinding(b.desc, bb, kind, usageBit, *r.value(), alignment, maxRange);
-            if (!size) return size.status();
-            out.buffers.push_back({b.buffer, bb.offset, size.value()});
+            out.buffers.push_back({b.buffer, bb.offset, validation::boundSize(bb, b.desc)});
             write(bb.binding, toVkDescriptor(kind))->pBufferInfo = &out.buffers.back();
             const bool storage = kind == ResourceKind::StorageBuffer;
-            uses.buffers.push_back({&b, shaderStages(r.value()->stages, pl.compute),
+            uses.buffers.push_back({&b, bindingStages(pl, bb.binding, kind),
                                     storage ? VkAccessFlags(VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT)
                                             : VkAccessFlags(VK_ACCESS_UNIFORM_READ_BIT),
                                     storage});
         }
-        return Status::ok();
     };
-    SFX_TRY(buffers(set.uniformBuffers, ResourceKind::UniformBuffer, kBufferUniform,
-                    props_.limits.minUniformBufferOffsetAlignment, props_.limits.maxUniformBufferRange));
-    SFX_TRY(buffers(set.storageBuffers, ResourceKind::StorageBuffer, kBufferStorage,
-                    props_.limits.minStorageBufferOffsetAlignment, props_.limits.maxStorageBufferRange));
-    return reflection.allClaimed();
+    buffers(set.uniformBuffers, ResourceKind::UniformBuffer);
+    buffers(set.storageBuffers, ResourceKind::StorageBuffer);
+    return Status::ok();
 }
 
 Result<VkDescriptorSet> VulkanDevice::allocateSet(VkDescriptorSetLayout layout) {
@@ -137,7 +119,7 @@ void VulkanDevice::clearSetCache() {
 }
 
 Result<VkDescriptorSet> VulkanDevice::writeSet(const VulkanPipeline& pl, ResolvedBindings& resolved) {
-    if (pl.resources.empty()) return VkDescriptorSet(VK_NULL_HANDLE);
+    if (pl.info.resources.empty()) return VkDescriptorSet(VK_NULL_HANDLE);
     // The key: the set layout and every descriptor, in binding order of the writes.
     setKey_.clear();
     setKey_.push_back(uint64_t(pl.setLayout));

@@ -1,8 +1,8 @@
-// The Vulkan backend's HAL calls: each checks its arguments (the shared sfx::validation, and the
-// backend's own checks in vulkan_checks.cpp) and delegates to the file that owns the concern
-// (see vulkan_device_impl.hpp). Timers are in vulkan_timers.cpp and flush in vulkan_commands.cpp.
+// The Vulkan backend's HAL calls: each checks its arguments with the shared sfx::validation (the
+// Vulkan-only checks are SPIR-V validation, in vulkan_pipelines.cpp, and the host command buffer's
+// limits, in vulkan_commands.cpp and vulkan_timers.cpp) and delegates to the file that owns the
+// concern (see vulkan_device_impl.hpp). Timers are in vulkan_timers.cpp, flush in vulkan_commands.cpp.
 #include "sfx/hal_validation.hpp"
-#include "vulkan_checks.hpp"
 #include "vulkan_device_impl.hpp"
 
 namespace sfx::vulkan {
@@ -27,7 +27,7 @@ Status VulkanDevice::writeTexture(TextureHandle h, uint32_t mip, const void* dat
     SFX_TRY(textures_.check(h, "texture"));
     VulkanTexture& t = textures_.get(h);
     SFX_TRY(validation::textureBytes(t.desc, mip, bytes, "bytes"));
-    if (!data) return invalidArgument("data", "null", "a pointer to the level's bytes");
+    SFX_TRY(validation::pointer(data, "data", "the level's bytes"));
     return uploadTexture(t, mip, data, bytes);
 }
 
@@ -35,7 +35,7 @@ Status VulkanDevice::readTexture(TextureHandle h, uint32_t mip, void* out, size_
     SFX_TRY(textures_.check(h, "texture"));
     VulkanTexture& t = textures_.get(h);
     SFX_TRY(validation::textureBytes(t.desc, mip, bytes, "bytes"));
-    if (!out) return invalidArgument("out", "null", "a pointer to the level's bytes");
+    SFX_TRY(validation::pointer(out, "out", "the level's bytes"));
     SFX_TRY(noHostCommandBuffer("readTexture"));
     return downloadTexture(t, mip, out, bytes);
 }
@@ -72,16 +72,16 @@ Status VulkanDevice::destroyBuffer(BufferHandle h) {
 Status VulkanDevice::writeBuffer(BufferHandle h, uint64_t offset, const void* data, size_t bytes) {
     SFX_TRY(buffers_.check(h, "buffer"));
     VulkanBuffer& b = buffers_.get(h);
-    SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "writeBuffer range"));
-    if (!data) return invalidArgument("data", "null", "a pointer to the bytes to write");
+    SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "writeBuffer(offset, bytes)"));
+    SFX_TRY(validation::pointer(data, "data", "the bytes to write"));
     return stageBufferWrite(b, offset, data, bytes);
 }
 
 Status VulkanDevice::readBuffer(BufferHandle h, uint64_t offset, void* out, size_t bytes) {
     SFX_TRY(buffers_.check(h, "buffer"));
     VulkanBuffer& b = buffers_.get(h);
-    SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "readBuffer range"));
-    if (!out) return invalidArgument("out", "null", "a pointer for the bytes read");
+    SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "readBuffer(offset, bytes)"));
+    SFX_TRY(validation::pointer(out, "out", "room for the bytes read"));
     SFX_TRY(noHostCommandBuffer("readBuffer"));
     return readBackBuffer(b, offset, out, bytes);
 }
@@ -106,18 +106,17 @@ Status VulkanDevice::destroyProgram(ProgramHandle h) {
 Result<PipelineHandle> VulkanDevice::createGraphicsPipeline(const GraphicsPipelineDesc& desc) {
     SFX_TRY(programs_.check(desc.program, "GraphicsPipelineDesc.program"));
     const VulkanProgram& prog = programs_.get(desc.program);
-    if (prog.compute) return Status{StatusCode::InvalidArgument, "GraphicsPipelineDesc.program is a compute program"};
-    SFX_TRY(validation::graphicsPipelineShape(desc, caps_));
-    SFX_TRY(validation::graphicsPipelineState(desc, caps_));
-    return makeGraphicsPipeline(desc, prog);
+    Result<validation::PipelineInfo> info = validation::graphicsPipeline(desc, prog.info, caps_);
+    if (!info) return info.status();
+    return makeGraphicsPipeline(desc, prog, std::move(info.value()));
 }
 
 Result<PipelineHandle> VulkanDevice::createComputePipeline(const ComputePipelineDesc& desc) {
     SFX_TRY(programs_.check(desc.program, "ComputePipelineDesc.program"));
     const VulkanProgram& prog = programs_.get(desc.program);
-    if (!prog.compute) return Status{StatusCode::InvalidArgument, "ComputePipelineDesc.program is not a compute program"};
-    SFX_TRY(validation::specializationConstants(desc.constants, "ComputePipelineDesc"));
-    return makeComputePipeline(desc, prog);
+    Result<validation::PipelineInfo> info = validation::computePipeline(desc, prog.info);
+    if (!info) return info.status();
+    return makeComputePipeline(desc, prog, std::move(info.value()));
 }
 
 Status VulkanDevice::destroyPipeline(PipelineHandle h) {
@@ -132,46 +131,30 @@ Status VulkanDevice::destroyPipeline(PipelineHandle h) {
 // ---- Commands ------------------------------------------------------------------------------
 
 Status VulkanDevice::renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) {
-    PassTargets targets;
-    SFX_TRY(checkAttachments(pass, textures_, caps_, targets));
+    SFX_TRY(validation::renderPass(pass, draws, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
+    PassTargets targets = passTargets(pass);
     std::vector<ResolvedBindings> resolved(draws.size());
     for (size_t i = 0; i < draws.size(); ++i) {
         const DrawDesc& d = draws[i];
-        SFX_TRY(pipelines_.check(d.pipeline, "DrawDesc.pipeline"));
         const VulkanPipeline& pl = pipelines_.get(d.pipeline);
-        if (pl.compute) return invalidArgument("DrawDesc.pipeline", "a compute pipeline", "a graphics pipeline");
-        SFX_TRY(checkPipelineAttachments(pl, targets));
-        SFX_TRY(resolveBindings(d.bindings, pl, "DrawDesc.bindings", targets.uses, resolved[i]));
-        SFX_TRY(validation::noFeedbackLoop(pass, d));
-        const BufferDesc* vertexBuffer = nullptr;
-        const BufferDesc* indexBuffer = nullptr;
-        if (pl.usesVertexBuffer || !d.vertexBuffer.isNull()) {
-            SFX_TRY(buffers_.check(d.vertexBuffer, "DrawDesc.vertexBuffer"));
-            VulkanBuffer& b = buffers_.get(d.vertexBuffer);
-            vertexBuffer = &b.desc;
-            targets.uses.buffers.push_back({&b, VK_PIPELINE_STAGE_VERTEX_INPUT_BIT, VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT, false});
-        }
-        if (!d.indexBuffer.isNull()) {
-            SFX_TRY(buffers_.check(d.indexBuffer, "DrawDesc.indexBuffer"));
-            VulkanBuffer& b = buffers_.get(d.indexBuffer);
-            indexBuffer = &b.desc;
-            targets.uses.buffers.push_back({&b, VK_PIPELINE_STAGE_VERTEX_INPUT_BIT, VK_ACCESS_INDEX_READ_BIT, false});
-        }
-        SFX_TRY(validation::drawRange(d, pl.vertexLayout, vertexBuffer, indexBuffer));
+        SFX_TRY(resolveBindings(d.bindings, pl, targets.uses, resolved[i]));
+        // Vertex and index reads, for the barriers after what last wrote the buffers.
+        if (!d.vertexBuffer.isNull())
+            targets.uses.buffers.push_back({&buffers_.get(d.vertexBuffer), VK_PIPELINE_STAGE_VERTEX_INPUT_BIT,
+                                            VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT, false});
+        if (!d.indexBuffer.isNull())
+            targets.uses.buffers.push_back({&buffers_.get(d.indexBuffer), VK_PIPELINE_STAGE_VERTEX_INPUT_BIT,
+                                            VK_ACCESS_INDEX_READ_BIT, false});
     }
-    SFX_TRY(checkLayoutConflicts(targets.uses.images));
     return recordRenderPass(pass, draws, targets, resolved);
 }
 
 Status VulkanDevice::dispatch(const DispatchDesc& d) {
-    SFX_TRY(validation::dispatchGroups(d, caps_));
-    SFX_TRY(pipelines_.check(d.pipeline, "DispatchDesc.pipeline"));
+    SFX_TRY(validation::dispatch(d, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
     const VulkanPipeline& pl = pipelines_.get(d.pipeline);
-    if (!pl.compute) return invalidArgument("DispatchDesc.pipeline", "a graphics pipeline", "a compute pipeline");
     Uses uses;
     ResolvedBindings resolved;
-    SFX_TRY(resolveBindings(d.bindings, pl, "DispatchDesc.bindings", uses, resolved));
-    SFX_TRY(checkLayoutConflicts(uses.images));
+    SFX_TRY(resolveBindings(d.bindings, pl, uses, resolved));
     return recordDispatch(d, pl, uses, resolved);
 }
 

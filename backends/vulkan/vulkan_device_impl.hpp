@@ -37,7 +37,7 @@ struct InstanceSetup {
     bool debugUtils = false;
 };
 
-// vulkan_pipelines.cpp: SPIR-V that the driver would choke on is refused, with SPIRV-Tools' words.
+// vulkan_pipelines.cpp: SPIR-V whose structure a driver would walk off is refused.
 Status validateSpirv(const CompiledProgram& program, const StageCode& stage);
 
 class VulkanDevice final : public Device {
@@ -47,9 +47,9 @@ public:
                      timers_(serial_, "timer") {}
     ~VulkanDevice() override {
         shutdown();
-        // Messages nobody took (teardown ones included) can only be told on stderr now.
+        // Messages nobody took (teardown ones included) go to the host's log callback.
         for (const std::string& m : takeValidationMessages())
-            std::fprintf(stderr, "sfx vulkan: untaken validation message at teardown: %s\n", m.c_str());
+            if (log_) log_(LogSeverity::Error, "sfx vulkan: untaken validation message at teardown: " + m);
     }
 
     // vulkan_platform.cpp: own instance and device, or the host's objects.
@@ -147,8 +147,8 @@ private:
     void destroyStaging();
 
     // vulkan_descriptors.cpp
-    Status resolveBindings(const BindingSet& set, const VulkanPipeline& pipeline, const char* what,
-                           Uses& uses, ResolvedBindings& out);
+    // Descriptor writes, and image and buffer uses, of a BindingSet the shared validation accepted.
+    Status resolveBindings(const BindingSet& set, const VulkanPipeline& pipeline, Uses& uses, ResolvedBindings& out);
     Result<VkDescriptorSet> allocateSet(VkDescriptorSetLayout layout);
     // A set of the pipeline's layout holding `resolved`, from the cache or written once;
     // VK_NULL_HANDLE for a pipeline without resources.
@@ -158,10 +158,13 @@ private:
 
     // vulkan_pipelines.cpp
     Result<ProgramHandle> makeProgram(const CompiledProgram& program);
-    Result<PipelineHandle> makeGraphicsPipeline(const GraphicsPipelineDesc& desc, const VulkanProgram& prog);
-    Result<PipelineHandle> makeComputePipeline(const ComputePipelineDesc& desc, const VulkanProgram& prog);
-    // The program's reflection and the layouts made from it; on failure `p` is retired.
-    Status startPipeline(const VulkanProgram& prog, bool compute, VulkanPipeline& p);
+    Result<PipelineHandle> makeGraphicsPipeline(const GraphicsPipelineDesc& desc, const VulkanProgram& prog,
+                                                validation::PipelineInfo info);
+    Result<PipelineHandle> makeComputePipeline(const ComputePipelineDesc& desc, const VulkanProgram& prog,
+                                               validation::PipelineInfo info);
+    // The pipeline's checked description and the layouts made from its reflection; on failure
+    // `p` is retired.
+    Status startPipeline(validation::PipelineInfo info, VulkanPipeline& p);
     // Inserts `p` once created (r is VK_SUCCESS); otherwise retires it and names the program.
     Result<PipelineHandle> finishPipeline(VulkanPipeline& p, VkResult r, const char* call, const char* debugName);
 
@@ -169,6 +172,8 @@ private:
     Result<VkCommandBuffer> recording();
     Status submitAndWait();
     Status noHostCommandBuffer(const char* call) const;
+    // The attachments of a render pass the shared validation accepted: size, formats, layouts.
+    PassTargets passTargets(const RenderPassDesc& pass);
     Status recordRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, const PassTargets& targets,
                             std::vector<ResolvedBindings>& resolved);
     Status recordDispatch(const DispatchDesc& d, const VulkanPipeline& pl, const Uses& uses, ResolvedBindings& resolved);
@@ -205,6 +210,7 @@ public:  // set up by the factory functions
     uint32_t queueFamily_ = 0;
     bool ownsDevice_ = false;
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    LogCallback log_;  // DeviceOptions::log
 
 private:
     Functions& vk_ = setup_.fns;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sfx/hal.hpp"
+#include "sfx/hal_validation.hpp"
 
 namespace sfx::vulkan {
 
@@ -60,23 +61,16 @@ struct VulkanTexture {
 };
 
 struct VulkanProgram {
-    std::string name;
-    bool compute = false;
-    std::vector<ShaderResource> resources;
+    validation::ProgramInfo info;
     std::vector<std::pair<ShaderStage, VkShaderModule>> modules;
 };
 
 struct VulkanPipeline {
-    bool compute = false;
+    validation::PipelineInfo info;  // what the shared validation checks draws and dispatches against
     VkPipeline pipeline = VK_NULL_HANDLE;
     VkPipelineLayout layout = VK_NULL_HANDLE;  // own, so the program may go first
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-    std::vector<ShaderResource> resources;
-    std::string programName;
-    std::vector<Format> colorFormats;
-    Format depthFormat = Format::Undefined;
-    bool usesVertexBuffer = false;
-    VertexLayout vertexLayout;  // bounds the draws' vertex reads (validation::drawRange)
+    bool usesVertexBuffer() const { return !info.vertexLayout.attributes.empty(); }
 };
 
 struct VulkanTimer {
@@ -139,7 +133,8 @@ struct Uses {
     std::vector<BufferUse> buffers;
 };
 
-// A draw or dispatch with its resources resolved and checked, before anything is recorded.
+// A draw or dispatch with its resources resolved (checked by the shared validation), before
+// anything is recorded.
 struct ResolvedBindings {
     std::vector<VkDescriptorImageInfo> images;  // stable storage for the writes
     std::vector<VkDescriptorBufferInfo> buffers;

@@ -1,7 +1,5 @@
-// Programs (shader modules, SPIR-V checked by SPIRV-Tools first) and the graphics and compute
+// Programs (shader modules, their SPIR-V's structure checked first) and the graphics and compute
 // pipelines made from them. Pipelines own their layouts, so a program may be destroyed first.
-#include <spirv-tools/libspirv.hpp>
-
 #include <cstddef>
 
 #include "vulkan_device_impl.hpp"
@@ -9,24 +7,31 @@
 
 namespace sfx::vulkan {
 
-// SPIR-V that the driver would choke on is refused here, with SPIRV-Tools' words.
+// sfxc validated every embedded program with SPIRV-Tools at build time, so the runtime links no
+// SPIR-V tooling; it still refuses a module whose structure a driver would walk off the end of:
+// the header (magic number, five words) and every instruction's word count inside the module.
 Status validateSpirv(const CompiledProgram& program, const StageCode& stage) {
-    spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_1);
-    std::string errors;
-    tools.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t& pos, const char* message) {
-        errors += "  word " + std::to_string(pos.index) + ": " + message + "\n";
-    });
-    if (!tools.Validate(stage.spirv))
-        return {StatusCode::ShaderError, "program '" + program.name + "' " + toString(stage.stage) +
-                                             " stage: invalid SPIR-V:\n" + errors};
+    const std::vector<uint32_t>& words = stage.spirv;
+    auto refuse = [&](const std::string& why) {
+        return validation::fail(validation::Error::ShaderInvalidSpirv, {program.name, toString(stage.stage), "  " + why});
+    };
+    constexpr uint32_t kMagic = 0x07230203u;
+    constexpr size_t kHeaderWords = 5;
+    if (words.size() < kHeaderWords) return refuse(std::to_string(words.size()) + " words; a module has at least 5");
+    if (words[0] != kMagic) return refuse("word 0 is not the SPIR-V magic number 0x07230203");
+    for (size_t i = kHeaderWords; i < words.size();) {
+        const uint32_t count = words[i] >> 16;
+        if (count == 0 || count > words.size() - i)
+            return refuse("instruction at word " + std::to_string(i) + " has word count " + std::to_string(count) +
+                          "; allowed 1.." + std::to_string(words.size() - i));
+        i += count;
+    }
     return Status::ok();
 }
 
 Result<ProgramHandle> VulkanDevice::makeProgram(const CompiledProgram& program) {
     VulkanProgram p;
-    p.name = program.name;
-    p.compute = program.isCompute();
-    p.resources = program.resources;
+    p.info = validation::programInfo(program);
     auto cleanup = [&]() {
         for (auto& m : p.modules) vk_.vkDestroyShaderModule(device_, m.second, nullptr);
     };
@@ -46,18 +51,16 @@ Result<ProgramHandle> VulkanDevice::makeProgram(const CompiledProgram& program) 
 }
 
 
-Status VulkanDevice::startPipeline(const VulkanProgram& prog, bool compute, VulkanPipeline& p) {
-    p.compute = compute;
-    p.resources = prog.resources;
-    p.programName = prog.name;
-    Status s = createLayouts(prog.resources, compute, p);
+Status VulkanDevice::startPipeline(validation::PipelineInfo info, VulkanPipeline& p) {
+    p.info = std::move(info);
+    Status s = createLayouts(p.info.resources, p.info.compute, p);
     if (!s) retire(p);
     return s;
 }
 
 Result<PipelineHandle> VulkanDevice::finishPipeline(VulkanPipeline& p, VkResult r, const char* call, const char* debugName) {
     if (r != VK_SUCCESS) {
-        const std::string program = p.programName;
+        const std::string program = p.info.programName;
         retire(p);
         return Status{StatusCode::ShaderError, "program '" + program + "': " + call + " failed: " + vkResultName(r)};
     }
@@ -85,13 +88,10 @@ struct Specialization {
 
 }  // namespace
 
-Result<PipelineHandle> VulkanDevice::makeGraphicsPipeline(const GraphicsPipelineDesc& desc, const VulkanProgram& prog) {
+Result<PipelineHandle> VulkanDevice::makeGraphicsPipeline(const GraphicsPipelineDesc& desc, const VulkanProgram& prog,
+                                                          validation::PipelineInfo info) {
     VulkanPipeline p;
-    p.colorFormats = desc.colorFormats;
-    p.depthFormat = desc.depthFormat;
-    p.usesVertexBuffer = desc.vertexLayout.stride > 0;
-    p.vertexLayout = desc.vertexLayout;
-    SFX_TRY(startPipeline(prog, false, p));
+    SFX_TRY(startPipeline(std::move(info), p));
 
     const Specialization specialization(desc.constants);
     std::vector<VkPipelineShaderStageCreateInfo> stages;
@@ -112,7 +112,7 @@ Result<PipelineHandle> VulkanDevice::makeGraphicsPipeline(const GraphicsPipeline
         attributes.push_back({a.location, 0, f, a.offset});
     }
     VkPipelineVertexInputStateCreateInfo vi{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    if (p.usesVertexBuffer) {
+    if (p.usesVertexBuffer()) {
         vi.vertexBindingDescriptionCount = 1;
         vi.pVertexBindingDescriptions = &vb;
         vi.vertexAttributeDescriptionCount = uint32_t(attributes.size());
@@ -180,9 +180,10 @@ Result<PipelineHandle> VulkanDevice::makeGraphicsPipeline(const GraphicsPipeline
     return finishPipeline(p, r, "vkCreateGraphicsPipelines", desc.debugName);
 }
 
-Result<PipelineHandle> VulkanDevice::makeComputePipeline(const ComputePipelineDesc& desc, const VulkanProgram& prog) {
+Result<PipelineHandle> VulkanDevice::makeComputePipeline(const ComputePipelineDesc& desc, const VulkanProgram& prog,
+                                                         validation::PipelineInfo info) {
     VulkanPipeline p;
-    SFX_TRY(startPipeline(prog, true, p));
+    SFX_TRY(startPipeline(std::move(info), p));
     VkComputePipelineCreateInfo pci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     pci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     pci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;

@@ -211,6 +211,7 @@ Status VulkanDevice::initWrapped(const ExternalVulkan& ext, const DeviceOptions&
 }
 
 Status VulkanDevice::finishInit(const DeviceOptions& options, bool) {
+    log_ = options.log;
     if (setup_.debugUtils) {
         loadInstanceFn(vk_, setup_.instance, "vkCreateDebugUtilsMessengerEXT", &vk_.vkCreateDebugUtilsMessengerEXT);
         loadInstanceFn(vk_, setup_.instance, "vkDestroyDebugUtilsMessengerEXT", &vk_.vkDestroyDebugUtilsMessengerEXT);

@@ -27,7 +27,8 @@ void VulkanDevice::markEndedTimersFlushed(bool hostRecorded, double wallMs) {
 
 Result<TimerHandle> VulkanDevice::createTimer() {
     if (freeTimerSlots_.empty())
-        return Status{StatusCode::InvalidArgument, "createTimer: all " + std::to_string(kMaxTimers) + " timers are in use"};
+        // Vulkan only: timers are query pairs in one pool of fixed size (GL and null have no pool).
+        return validation::fail(validation::Error::TimerPoolFull, {std::to_string(kMaxTimers)});
     VulkanTimer t;
     t.queryIndex = freeTimerSlots_.back() * 2;
     freeTimerSlots_.pop_back();
@@ -56,7 +57,7 @@ Status VulkanDevice::beginTimer(TimerHandle h) {
 Status VulkanDevice::endTimer(TimerHandle h) {
     SFX_TRY(timers_.check(h, "timer"));
     VulkanTimer& t = timers_.get(h);
-    if (t.state != VulkanTimer::State::Begun) return {StatusCode::InvalidArgument, "endTimer: timer was not begun"};
+    if (t.state != VulkanTimer::State::Begun) return validation::fail(validation::Error::TimerNotBegun, {});
     Result<VkCommandBuffer> cb = recording();
     if (!cb) return cb.status();
     if (queryPool_) vk_.vkCmdWriteTimestamp(cb.value(), VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queryPool_, t.queryIndex + 1);
@@ -68,14 +69,15 @@ Result<TimerReading> VulkanDevice::readTimer(TimerHandle h) {
     SFX_TRY(timers_.check(h, "timer"));
     VulkanTimer& t = timers_.get(h);
     if (t.state != VulkanTimer::State::Flushed)
-        return Status{StatusCode::InvalidArgument, "readTimer: timer has no finished measurement"};
+        return validation::fail(validation::Error::TimerNoMeasurement, {});
     if (!queryPool_) return TimerReading{t.wallMs, TimingSource::WallClockAfterFinish};
     uint64_t stamps[2] = {0, 0};
     // A host command buffer may not have run yet: never wait for it.
     const VkQueryResultFlags flags = VK_QUERY_RESULT_64_BIT | (t.hostRecorded ? 0 : VK_QUERY_RESULT_WAIT_BIT);
     VkResult r = vk_.vkGetQueryPoolResults(device_, queryPool_, t.queryIndex, 2, sizeof(stamps), stamps, sizeof(uint64_t), flags);
     if (r == VK_NOT_READY)
-        return Status{StatusCode::InvalidArgument, "readTimer: the host command buffer holding the timer has not finished"};
+        // Vulkan only: only the Vulkan backend records into a host's command buffer.
+        return validation::fail(validation::Error::TimerHostPending, {});
     if (r != VK_SUCCESS) return vkError("vkGetQueryPoolResults", r);
     const uint64_t mask = timestampValidBits_ >= 64 ? ~uint64_t(0) : ((uint64_t(1) << timestampValidBits_) - 1);
     const uint64_t ticks = (stamps[1] - stamps[0]) & mask;

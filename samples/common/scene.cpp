@@ -51,7 +51,7 @@ Result<Mesh> loadObj(const std::string& path) {
 
 glm::dmat4 Scene::view(double time) const {
     const glm::dvec3 shift = eyeVelocity * time;
-    return glm::lookAt(eye + shift, target + shift, glm::dvec3(0, 1, 0));
+    return glm::lookAt(eye + shift, target + shift, up);
 }
 
 Result<CameraProjection> Scene::projection(uint32_t width, uint32_t height, ClipDepthRange clipDepth) const {
@@ -133,8 +133,10 @@ void store(float (&dst)[16], const glm::dmat4& m) {
 }
 }  // namespace
 
-Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Device& device, Tier tier) {
-    std::unique_ptr<SceneRenderer> r(new SceneRenderer(device));
+Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Device& device, Tier tier, Format albedoFormat) {
+    if (albedoFormat != Format::RGBA8 && albedoFormat != Format::RGBA16F)
+        return invalidArgument("SceneRenderer albedoFormat", toString(albedoFormat), "RGBA8 or RGBA16F");
+    std::unique_ptr<SceneRenderer> r(new SceneRenderer(device, albedoFormat));
     Result<const CompiledProgram*> program = sample_shaders::find(gen::raster_gbuffer::kName, tier);
     if (!program) return program.status();
     Result<ProgramHandle> handle = device.createProgram(*program.value());
@@ -145,7 +147,7 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Device& device, Tie
     pd.vertexLayout.stride = sizeof(Vertex);
     pd.vertexLayout.attributes = {{0, VertexFormat::Float3, 0}, {1, VertexFormat::Float3, 12}};
     pd.depth = {true, true, CompareOp::Less};
-    pd.colorFormats = {Format::RGBA16F, Format::RG16F, Format::RGBA8};
+    pd.colorFormats = {Format::RGBA16F, Format::RG16F, albedoFormat};
     pd.depthFormat = Format::D32F;
     pd.debugName = "sample-scene-gbuffer";
     Result<PipelineHandle> pipeline = device.createGraphicsPipeline(pd);
@@ -215,7 +217,7 @@ Result<GBuffer> SceneRenderer::render(const Scene& scene, uint32_t width, uint32
         } targets[] = {{&g.depth, Format::D32F, "scene-depth"},
                        {&g.normals, Format::RGBA16F, "scene-normals"},
                        {&g.velocity, Format::RG16F, "scene-velocity"},
-                       {&g.albedo, Format::RGBA8, "scene-albedo"}};
+                       {&g.albedo, albedoFormat_, "scene-albedo"}};
         for (const auto& t : targets) {
             Result<TextureHandle> texture =
                 device_.createTexture({width, height, 1, t.format, kTextureSampled | kTextureRenderTarget, t.name});
@@ -234,6 +236,7 @@ Result<GBuffer> SceneRenderer::render(const Scene& scene, uint32_t width, uint32
             store(p.shutterCloseClip, g.camera.projection * scene.view(time + 0.5) * modelAt(time + 0.5));
             p.viewportSize[0] = float(width);
             p.viewportSize[1] = float(height);
+            for (int c = 0; c < 4; ++c) p.surface[c] = float(m.source->surface[c]);
             SFX_TRY(device_.writeBuffer(m.params, 0, &p, sizeof p));
             DrawDesc d;
             d.pipeline = pipeline_;
@@ -266,6 +269,9 @@ void SceneRenderer::destroy(GBuffer& g) {
 }
 
 Result<GBufferContents> readBack(Device& device, const GBuffer& g) {
+    Result<TextureDesc> albedo = device.textureDesc(g.albedo);
+    if (!albedo) return albedo.status();
+    if (albedo->format != Format::RGBA8) return invalidArgument("readBack albedo", toString(albedo->format), "RGBA8");
     GBufferContents c;
     c.width = g.width;
     c.height = g.height;

@@ -22,6 +22,9 @@ struct Mesh : scene::TriangleMesh {
     Mesh(scene::TriangleMesh triangles) : scene::TriangleMesh(std::move(triangles)) {}
     glm::dmat4 model{1.0};
     glm::dvec3 velocity{0.0};       // world units per shutter interval (for moving-object demos)
+    // RasterParams.surface: rgb linear colour, a the shading code (SFX_RASTER_SHADING_*);
+    // a = 0 draws the samples' checkered albedo.
+    glm::dvec4 surface{0.0};
 };
 
 struct Scene {
@@ -29,6 +32,7 @@ struct Scene {
     std::vector<Mesh> meshes;
     glm::dvec3 eye{0, 1.5, 5};
     glm::dvec3 target{0, 0.5, 0};
+    glm::dvec3 up{0, 1, 0};
     glm::dvec3 eyeVelocity{0.0};  // world units per shutter interval (camera motion blur)
     double fovYDegrees = 60.0;
     double nearPlane = 0.1;
@@ -49,7 +53,7 @@ struct GBuffer {
     TextureHandle depth;     // D32F hardware depth in the device's clip convention
     TextureHandle normals;   // RGBA16F view-space unit normals (x right, y up, looking down -z); a = 0: nothing drawn
     TextureHandle velocity;  // RG16F pixels across the shutter interval (sfx/motion_blur.hpp convention)
-    TextureHandle albedo;    // RGBA8 checkered albedo; a = 0: nothing drawn
+    TextureHandle albedo;    // albedo (Mesh::surface or a checker), a = shading code; a = 0: nothing drawn
     CameraProjection camera;
 };
 
@@ -60,14 +64,15 @@ struct GBufferContents {
     std::vector<float> storedDepth;    // the D32F values as rasterised
     std::vector<glm::vec3> normals;    // view space, from the RGBA16F halves (exact)
     std::vector<glm::vec2> velocity;   // pixels across the shutter interval, from RG16F (exact)
-    std::vector<uint8_t> albedo;       // RGBA8
+    std::vector<uint8_t> albedo;       // RGBA8 (readBack needs the RGBA8 albedo format)
     bool drawn(size_t i) const { return albedo[i * 4 + 3] != 0; }
 };
 Result<GBufferContents> readBack(Device& device, const GBuffer& gbuffer);
 
 class SceneRenderer {
 public:
-    static Result<std::unique_ptr<SceneRenderer>> create(Device& device, Tier tier);
+    // albedoFormat: RGBA8 (the samples) or RGBA16F (scene files: linear colours kept exact).
+    static Result<std::unique_ptr<SceneRenderer>> create(Device& device, Tier tier, Format albedoFormat = Format::RGBA8);
     ~SceneRenderer();
     // Uploads the scene's meshes (replacing the previous scene's); render() draws them.
     Status load(const Scene& scene);
@@ -77,8 +82,9 @@ public:
     void destroy(GBuffer& gbuffer);
 
 private:
-    SceneRenderer(Device& device) : device_(device) {}
+    SceneRenderer(Device& device, Format albedoFormat) : device_(device), albedoFormat_(albedoFormat) {}
     Device& device_;
+    Format albedoFormat_;
     ProgramHandle program_;
     PipelineHandle pipeline_;
     struct GpuMesh {

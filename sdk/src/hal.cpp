@@ -112,10 +112,10 @@ const char* toString(ShaderStage stage) {
 
 const char* toString(ResourceKind kind) {
     switch (kind) {
-    case ResourceKind::UniformBuffer: return "uniform-buffer";
-    case ResourceKind::SampledTexture: return "sampled-texture";
-    case ResourceKind::StorageBuffer: return "storage-buffer";
-    case ResourceKind::StorageImage: return "storage-image";
+    case ResourceKind::UniformBuffer: return "uniform buffer";
+    case ResourceKind::SampledTexture: return "sampled texture";
+    case ResourceKind::StorageBuffer: return "storage buffer";
+    case ResourceKind::StorageImage: return "storage image";
     }
     return "unknown";
 }

@@ -7,6 +7,7 @@
 #define SFX_SHARED_H
 
 #ifdef __cplusplus
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 namespace sfx::shared {
@@ -66,21 +67,58 @@ struct ivec2 { int x, y; };
 // depth buffer) are sky: effects leave them unoccluded and unblurred.
 SFX_CONST(float, SFX_SKY_DEPTH, 1.0e8)
 
-// Linear depth as every pass reads it: a non-positive, non-finite or overflowing value is a point
-// at or beyond the far plane, so it becomes maxDepth (the far plane, or SFX_SKY_DEPTH for an
-// infinite projection). The linearisation pass stores this; a pass that reads the host's linear
-// depth directly (LinearDepth passing through) applies it on every fetch, which changes nothing
-// for values already stored by that pass.
-SFX_FN SFX_REAL sfxLinearDepthOrFar(SFX_REAL z, SFX_REAL maxDepth) { return (z > 0.0 && z < maxDepth) ? z : maxDepth; }
+// ---- Hostile values: the rules every effect applies to what it reads (docs/robustness_extremes.md)
+// Finite: not NaN and not +-infinity. GLSL and C++ spell the test differently; the rule is one.
+#ifdef __cplusplus
+SFX_FN bool sfxIsFinite(SFX_REAL x) { return std::isfinite(x); }
+#else
+bool sfxIsFinite(float x) { return !isnan(x) && !isinf(x); }
+#endif
+// The smallest normal float. Linear depth below it (a denormal) is treated as zero, because a GPU
+// may flush denormals to zero on fetch and the reference (double) must decide the same way.
+SFX_CONST(float, SFX_FLOAT_MIN_NORMAL, 1.17549435e-38)
+
+// Linear depth as every pass reads it: a non-positive, denormal, non-finite or overflowing value
+// is a point at or beyond the far plane, so it becomes maxDepth (the far plane, or SFX_SKY_DEPTH
+// for an infinite projection). The linearisation pass stores this; a pass that reads the host's
+// linear depth directly (LinearDepth passing through) applies it on every fetch, which changes
+// nothing for values already stored by that pass.
+SFX_FN SFX_REAL sfxLinearDepthOrFar(SFX_REAL z, SFX_REAL maxDepth) {
+    return (z >= SFX_REAL(SFX_FLOAT_MIN_NORMAL) && z < maxDepth) ? z : maxDepth;
+}
 
 // Hardware depth d -> linear eye depth. For any perspective projection z = B / (ndc_z + A), with
 // A = P[2][2] and B = P[3][2] of the column-major matrix; ndc_z = d * ndcScale + ndcOffset maps the
 // stored depth to the API's clip range, and the host folds ndcOffset + A into denomOffset in
 // double precision (makeDepthReconstruction), so this is one multiply-add and a divide. A zero
-// or negative denominator (at or past the far plane) lands on maxDepth.
+// or negative denominator (at or past the far plane) lands on maxDepth. A stored value outside
+// [0, 1] (NaN, +-infinity, or any other value a float depth buffer can hold but no depth test
+// writes) is outside the depth range: sky as well.
 SFX_FN SFX_REAL sfxLinearizeDepth(SFX_REAL d, SFX_REAL ndcScale, SFX_REAL denomOffset, SFX_REAL numerator, SFX_REAL maxDepth) {
+    if (!(d >= 0.0 && d <= 1.0)) return maxDepth;
     return sfxLinearDepthOrFar(numerator / (d * ndcScale + denomOffset), maxDepth);
 }
+
+// Colour as the gathering passes read it: a non-finite channel reads as 0, and a finite one is
+// held within +-SFX_COLOR_MAX (the largest half float), so a weighted sum of colours can never
+// overflow a float however bright the input, and the output is always finite. Samples whose
+// colour has a non-finite channel are left out of a gather altogether (sfxColorIsFinite), so
+// a NaN or infinite pixel never spreads to its neighbours; the pixel itself keeps its finite
+// channels and reads 0 in the others.
+SFX_CONST(float, SFX_COLOR_MAX, 65504.0)
+SFX_FN SFX_REAL sfxColorChannel(SFX_REAL c) {
+    return sfxIsFinite(c) ? (c > SFX_REAL(SFX_COLOR_MAX) ? SFX_REAL(SFX_COLOR_MAX) : (c < -SFX_REAL(SFX_COLOR_MAX) ? -SFX_REAL(SFX_COLOR_MAX) : c)) : 0.0;
+}
+#ifdef __cplusplus
+template <class Rgba> bool sfxColorIsFinite(const Rgba& c) { return std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]) && std::isfinite(c[3]); }
+template <class Rgba> Rgba sfxColor(Rgba c) {
+    for (auto& v : c) v = sfxColorChannel(v);
+    return c;
+}
+#else
+bool sfxColorIsFinite(vec4 c) { return sfxIsFinite(c.r) && sfxIsFinite(c.g) && sfxIsFinite(c.b) && sfxIsFinite(c.a); }
+vec4 sfxColor(vec4 c) { return vec4(sfxColorChannel(c.r), sfxColorChannel(c.g), sfxColorChannel(c.b), sfxColorChannel(c.a)); }
+#endif
 
 // Parameters of the linearisation pass (linearize_depth.frag), filled by LinearDepth.
 #if defined(__cplusplus) || defined(SFX_WANT_LINEARIZE_PARAMS)

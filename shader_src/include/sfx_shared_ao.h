@@ -132,6 +132,23 @@ SFX_FN SFX_AO_VEC3 aoFacingNormal(SFX_AO_VEC3 dx, SFX_AO_VEC3 dy, SFX_AO_VEC3 C)
     return dot(n, C) > 0.0 ? -n : n;
 }
 
+// ---- Host normals ----------------------------------------------------------------------------
+// A host normal is used when all its components are finite and its length is at least
+// SFX_AO_MIN_NORMAL_LENGTH; it is then normalised. Otherwise (zero-length, NaN, +-infinity)
+// the pixel falls back to the normal derived from depth (above). The length is taken of n
+// divided by its largest component, so a huge finite normal neither overflows nor turns NaN.
+// aoHostNormalOrZero returns the unit normal, or (0, 0, 0) for "derive it instead".
+SFX_CONST(float, SFX_AO_MIN_NORMAL_LENGTH, 1.0e-3)
+SFX_FN SFX_AO_VEC3 aoHostNormalOrZero(SFX_AO_VEC3 n) {
+    if (!sfxIsFinite(n.x) || !sfxIsFinite(n.y) || !sfxIsFinite(n.z)) return SFX_AO_VEC3(0.0, 0.0, 0.0);
+    SFX_REAL m = max(max(abs(n.x), abs(n.y)), abs(n.z));
+    if (m == 0.0) return SFX_AO_VEC3(0.0, 0.0, 0.0);
+    SFX_AO_VEC3 u = n / m;
+    SFX_REAL len = length(u);
+    if (len < SFX_REAL(SFX_AO_MIN_NORMAL_LENGTH) / m) return SFX_AO_VEC3(0.0, 0.0, 0.0);
+    return u / len;
+}
+
 // ---- Per-pixel rotation --------------------------------------------------------------------
 // An integer hash of the pixel, so the GPU (32-bit float) and the reference (double) rotate
 // each pixel's pattern by the same angle: phi = (hash & 0xFFFF) * 2 pi / 65536. The low 16 bits
@@ -238,8 +255,8 @@ vec3 aoNormal(ivec2 p, vec3 C, float z, ivec2 size) {
     if (params.normalSource != 0) {
         vec3 n = texelFetch(uNormals, p, 0).xyz;
         if (params.normalSource == 2) n = n * 2.0 - 1.0;
-        float len = length(n);
-        if (len > 1e-3) return n / len;
+        n = aoHostNormalOrZero(n);  // the host-normal rule above
+        if (n != vec3(0.0)) return n;
     }
     return aoDerivedNormal(p, C, z, size);
 }

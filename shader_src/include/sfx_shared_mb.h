@@ -24,7 +24,11 @@
 #include <algorithm>
 #include <cmath>
 namespace sfx::shared {
+using glm::length;
+using std::abs;
 using std::clamp;
+using std::isinf;
+using std::isnan;
 using std::max;
 using std::min;
 #define SFX_MB_FN inline
@@ -84,6 +88,27 @@ SFX_MB_FN SFX_MB_VEC2 mbCameraVelocity(SFX_MB_VEC2 pc, SFX_MB_VEC2 ndcScale, SFX
     SFX_MB_VEC4 prev = reprojection * clip;
     if (!(prev.w > 1.0e-6)) return SFX_MB_VEC2(0.0);
     return (ndc - SFX_MB_VEC2(prev.x, prev.y) / prev.w) * 0.5 * target;
+}
+
+// The velocity rule of pass 1: the blur radius vector v (pixels, as float: the reference rounds
+// its double to float first, as the shader holds it) clamped to length k in its own direction.
+// - A NaN component: the pixel is still (0), rather than poisoning the neighbourhood.
+// - An infinite component: length k along the signs of the infinite components (a finite
+//   component vanishes beside an infinite one); (+inf, -inf) is the diagonal.
+// - Finite: longer than k is scaled to k. The length is taken of v divided by its largest
+//   component, so no value up to the float maximum overflows and nothing becomes NaN.
+SFX_MB_FN SFX_MB_VEC2 mbClampVelocity(SFX_MB_VEC2 v, SFX_MB_REAL k) {
+    if (isnan(v.x) || isnan(v.y)) return SFX_MB_VEC2(0.0);
+    SFX_MB_VEC2 dir;
+    if (isinf(v.x) || isinf(v.y)) {
+        dir = SFX_MB_VEC2(isinf(v.x) ? (v.x > 0.0 ? 1.0 : -1.0) : 0.0, isinf(v.y) ? (v.y > 0.0 ? 1.0 : -1.0) : 0.0);
+    } else {
+        SFX_MB_REAL m = max(abs(v.x), abs(v.y));
+        if (m == 0.0) return SFX_MB_VEC2(0.0);
+        dir = v / m;  // largest component +-1: its length is in [1, sqrt 2]
+        if (length(dir) <= k / m) return v;
+    }
+    return dir * (k / length(dir));
 }
 
 // Velocity component in [-k, k] pixels <-> [0, 1] (the course's rescale to fit two channels).

@@ -148,6 +148,7 @@ TEST_CASE("gl: two GL devices in one process switch contexts", "[hal][gl]") {
                                                                           : BackendConfig{BackendKind::GL, "osmesa"};
     DeviceOptions options;
     options.ceiling = a.caps().ceiling;
+    options.validation = true;
     Result<std::unique_ptr<Device>> opened = openDevice(other, options);
     if (!opened) {
         SFX_SKIP("second GL device unavailable: " << opened.status().toString());
@@ -249,7 +250,9 @@ TEST_CASE("gl: a host's current context wrapped as a device", "[hal][gl]") {
 }
 
 TEST_CASE("gl: an API the platform lacks is BackendUnavailable", "[hal][gl]") {
-    Result<std::unique_ptr<Device>> es = gl::createDevice(gl::Platform::OSMesa, gl::Api::GLES, {});
+    DeviceOptions options;
+    options.validation = true;
+    Result<std::unique_ptr<Device>> es = gl::createDevice(gl::Platform::OSMesa, gl::Api::GLES, options);
     CHECK(es.status().code() == StatusCode::BackendUnavailable);
     CHECK(es.status().message().find("OSMesa") != std::string::npos);
     // The test device still works after the refused open.

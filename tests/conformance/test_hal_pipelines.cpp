@@ -126,6 +126,6 @@ TEST_CASE("hal: unknown pipeline state and bad texture bindings are refused alik
         checkNamed(dev().renderPass(pass, {&draw, 1}), StatusCode::InvalidArgument, "baseMip+mipCount");
     }
     draw.bindings.textures = {{gen::copy::uSource, notSampled}};
-    checkNamed(dev().renderPass(pass, {&draw, 1}), StatusCode::InvalidArgument, "kTextureSampled");
+    checkNamed(dev().renderPass(pass, {&draw, 1}), StatusCode::InvalidArgument, "with usage sampled");
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }

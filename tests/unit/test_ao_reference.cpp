@@ -340,6 +340,16 @@ TEST_CASE("ao cli fixture: write small G-buffer files", "[.ao-cli-fixture]") {
     REQUIRE(io::writePfm("ao_cli_depth.pfm", depth).isOk());
     REQUIRE(io::writePfm("ao_cli_normals.pfm", normals).isOk());
     REQUIRE(io::writePfm("ao_cli_small.pfm", io::Image(32, 24, 1, 4.0f)).isOk());
+    // Hostile values: a NaN normal is a named error; an infinite one and infinite or zero depth
+    // follow the effect's rules (derived normal, sky).
+    io::Image nanNormals = normals, hostileNormals = normals, hostileDepth = depth;
+    nanNormals.at(9, 4, 2) = std::numeric_limits<float>::quiet_NaN();
+    hostileNormals.at(9, 4, 0) = std::numeric_limits<float>::infinity();
+    hostileDepth.at(10, 5) = std::numeric_limits<float>::infinity();
+    hostileDepth.at(11, 5) = 0.0f;
+    REQUIRE(io::writePfm("ao_cli_nan_normals.pfm", nanNormals).isOk());
+    REQUIRE(io::writePfm("ao_cli_hostile_normals.pfm", hostileNormals).isOk());
+    REQUIRE(io::writePfm("ao_cli_hostile_depth.pfm", hostileDepth).isOk());
     std::FILE* f = std::fopen("ao_cli_malformed.pfm", "wb");
     REQUIRE(f);
     std::fputs("Pf\n64 oops\n-1\n", f);

@@ -180,3 +180,39 @@ TEST_CASE("handles: a slot whose generation runs out is retired, never reused", 
     CHECK(h.bits != first.bits);
     CHECK(pool.aliveCount() == 1);
 }
+
+TEST_CASE("results: the value of an error Result is a value-initialised T, never undefined", "[status]") {
+    Result<std::unique_ptr<Device>> device = Status{StatusCode::BackendUnavailable, "no driver"};
+    CHECK_FALSE(device.isOk());
+    CHECK(device.value() == nullptr);
+    CHECK(device.status().code() == StatusCode::BackendUnavailable);
+    CHECK(device.status().message() == "no driver");
+    std::unique_ptr<Device> moved = std::move(device).value();
+    CHECK(moved == nullptr);
+
+    const Result<int> number = invalidArgument("n", "-1", "0..3");
+    CHECK(number.value() == 0);
+    CHECK(*number == 0);
+    Result<std::string> text = Status{StatusCode::FileError, "missing"};
+    CHECK(text->empty());
+    Result<TextureHandle> texture = Status{StatusCode::InvalidHandle, "gone"};
+    CHECK(texture.value().isNull());
+    // Writing through an error Result's value touches only that Result.
+    text.value() = "written";
+    CHECK(Result<std::string>(Status{StatusCode::FileError, "x"}).value().empty());
+
+    // An Ok Status carries no value, so a Result made from one is an error, not an empty success.
+    Result<int> fromOk = Status::ok();
+    CHECK_FALSE(fromOk.isOk());
+    CHECK(fromOk.status().code() == StatusCode::InvalidArgument);
+
+    Result<int> good = 7;
+    CHECK(good.isOk());
+    CHECK(good.value() == 7);
+}
+
+TEST_CASE("device options: API validation is off unless the host asks for it", "[hal][options]") {
+    DeviceOptions options;
+    CHECK_FALSE(options.validation);
+    CHECK_FALSE(options.log);
+}

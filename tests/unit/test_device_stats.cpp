@@ -7,7 +7,9 @@
 using namespace sfx;
 
 TEST_CASE("null device: stats count creations, destructions and bytes held", "[stats]") {
-    auto dev = null::createDevice();
+    DeviceOptions options;
+    options.validation = true;  // as every test device
+    auto dev = null::createDevice(options);
     const DeviceStats empty = dev->stats();
     CHECK(empty == DeviceStats{});
 

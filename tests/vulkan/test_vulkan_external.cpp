@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "analytic_scenes.hpp"
@@ -174,9 +176,11 @@ TEST_CASE("vulkan: wrapped host device, host command buffer, host objects surviv
     VkCommandBuffer cb = VK_NULL_HANDLE;
     makeCommandBuffer(host, pool, cb);
 
+    std::vector<std::pair<LogSeverity, std::string>> logged;  // DeviceOptions::log
     {
         DeviceOptions options;
         options.validation = true;
+        options.log = [&](LogSeverity severity, std::string_view message) { logged.emplace_back(severity, message); };
         Result<std::unique_ptr<Device>> wrapped = vulkan::wrapDevice(ext, options);
         INFO(wrapped.status().toString());
         REQUIRE(wrapped.isOk());
@@ -225,13 +229,24 @@ TEST_CASE("vulkan: wrapped host device, host command buffer, host objects surviv
             VkSamplerCreateInfo bad{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
             bad.anisotropyEnable = VK_TRUE;  // the host did not enable samplerAnisotropy
             bad.maxAnisotropy = 4.0f;
-            VkSampler sampler = VK_NULL_HANDLE;
-            vkCreateSampler(host.device, &bad, nullptr, &sampler);
-            if (sampler) vkDestroySampler(host.device, sampler, nullptr);
+            auto createBadSampler = [&] {
+                VkSampler sampler = VK_NULL_HANDLE;
+                vkCreateSampler(host.device, &bad, nullptr, &sampler);
+                if (sampler) vkDestroySampler(host.device, sampler, nullptr);
+            };
+            createBadSampler();
             CHECK_FALSE(d.takeValidationMessages().empty());
+            // Left untaken, the next one reaches the log callback when the device goes, not stderr.
+            createBadSampler();
             host.messages.errors.clear();
         }
         REQUIRE(d.destroyTexture(tex.value()).isOk());
+        CHECK(logged.empty());
+    }
+    if (host.validation) {
+        REQUIRE_FALSE(logged.empty());
+        CHECK(logged.front().first == LogSeverity::Error);
+        CHECK(logged.front().second.find("untaken validation message at teardown") != std::string::npos);
     }
 
     // The SDK is gone; every host object still works and nothing of the SDK's leaked.
@@ -251,7 +266,9 @@ TEST_CASE("vulkan: wrapped host device, host command buffer, host objects surviv
 }
 
 TEST_CASE("vulkan: own device opens, and wrapDevice rejects missing host objects", "[vulkan]") {
-    Result<std::unique_ptr<Device>> own = vulkan::createDevice({});
+    DeviceOptions options;
+    options.validation = true;  // the tests ask for validation; the default is off
+    Result<std::unique_ptr<Device>> own = vulkan::createDevice(options);
     if (!own) {
         CHECK(own.status().code() == StatusCode::BackendUnavailable);
         SFX_SKIP(own.status().toString());

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <system_error>
 
 namespace sfx::scene {
@@ -57,52 +59,75 @@ TriangleMesh sphereMesh(glm::vec3 centre, float radius, int slices, int stacks) 
     return m;
 }
 
-Result<TriangleMesh> loadObjMesh(const std::string& path) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) return Status{StatusCode::FileError, path + ": no such file"};
+Result<TriangleMesh> parseObjMesh(const std::string& path, const std::string& text) {
     tinyobj::ObjReader reader;
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;
     config.mtl_search_path = "";  // materials are not read: colour comes from the scene
-    if (!reader.ParseFromFile(path, config)) {
+    if (!reader.ParseFromString(text, "", config)) {
         std::string why = reader.Error();
         while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
         return Status{StatusCode::FileError, path + ": not a readable OBJ file" + (why.empty() ? "" : " (" + why + ")")};
     }
+    auto error = [&](const std::string& what) { return Status{StatusCode::FileError, path + ": " + what}; };
     const auto& attrib = reader.GetAttrib();
     TriangleMesh m;
     m.vertices.resize(attrib.vertices.size() / 3);
     for (size_t i = 0; i < m.vertices.size(); ++i) {
         const glm::vec3 p(attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]);
+        // A non-finite position would make every normal it touches NaN.
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-            return Status{StatusCode::FileError, path + ": vertex " + std::to_string(i + 1) + " is not finite"};
+            return error("vertex " + std::to_string(i + 1) + " is not finite");
         m.vertices[i] = {p, glm::vec3(0)};
     }
+    // tinyobjloader triangulates polygons and resolves relative (negative) indices, but it
+    // neither checks an index against the vertex count nor drops faces of 1 or 2 vertices.
     for (const auto& shape : reader.GetShapes()) {
-        for (const auto& idx : shape.mesh.indices) {
-            if (idx.vertex_index < 0 || size_t(idx.vertex_index) >= m.vertices.size())
-                return Status{StatusCode::FileError, path + ": a face of " + (shape.name.empty() ? "the mesh" : "'" + shape.name + "'") +
-                                                         " refers to vertex " + std::to_string(long(idx.vertex_index) + 1) +
-                                                         "; the file has " + std::to_string(m.vertices.size())};
-            m.indices.push_back(uint32_t(idx.vertex_index));
+        const std::string mesh = shape.name.empty() ? "the mesh" : "'" + shape.name + "'";
+        size_t next = 0;
+        for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
+            const size_t count = shape.mesh.num_face_vertices[f];
+            if (count != 3) return error("face " + std::to_string(f + 1) + " of " + mesh + " has " + std::to_string(count) + " vertices");
+            if (next + count > shape.mesh.indices.size()) return error("face " + std::to_string(f + 1) + " of " + mesh + " is cut short");
+            for (size_t k = 0; k < count; ++k) {
+                const int index = shape.mesh.indices[next + k].vertex_index;
+                if (index < 0 || size_t(index) >= m.vertices.size())
+                    return error("face " + std::to_string(f + 1) + " of " + mesh + " refers to vertex " + std::to_string(int64_t(index) + 1) +
+                                 "; the file has " + std::to_string(m.vertices.size()));
+                m.indices.push_back(uint32_t(index));
+            }
+            next += count;
         }
     }
-    m.indices.resize(m.indices.size() / 3 * 3);
-    if (m.indices.empty()) return Status{StatusCode::FileError, path + ": no triangles"};
-    // Smooth vertex normals from the faces, area-weighted (the normals an OBJ may carry are not read).
+    if (m.indices.empty()) return error("no triangles");
+    // Smooth vertex normals from the faces, area-weighted (the normals an OBJ may carry are not
+    // read), summed in double precision: in float, the cross product of edges near FLT_MAX
+    // overflows to infinity and the normal comes out NaN.
+    std::vector<glm::dvec3> normals(m.vertices.size(), glm::dvec3(0.0));
     for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
-        Vertex &a = m.vertices[m.indices[t]], &b = m.vertices[m.indices[t + 1]], &c = m.vertices[m.indices[t + 2]];
-        const glm::vec3 n = glm::cross(b.position - a.position, c.position - a.position);
-        a.normal += n;
-        b.normal += n;
-        c.normal += n;
+        const uint32_t ia = m.indices[t], ib = m.indices[t + 1], ic = m.indices[t + 2];
+        const glm::dvec3 a(m.vertices[ia].position), b(m.vertices[ib].position), c(m.vertices[ic].position);
+        const glm::dvec3 n = glm::cross(b - a, c - a);
+        normals[ia] += n;
+        normals[ib] += n;
+        normals[ic] += n;
     }
-    for (Vertex& v : m.vertices) {
-        const float len = glm::length(v.normal);
-        v.normal = len > 0 && std::isfinite(len) ? v.normal / len : glm::vec3(0, 1, 0);
+    for (size_t i = 0; i < m.vertices.size(); ++i) {
+        const double length = glm::length(normals[i]);
+        m.vertices[i].normal = length > 0 && std::isfinite(length) ? glm::vec3(normals[i] / length) : glm::vec3(0, 1, 0);
     }
     return m;
+}
+
+Result<TriangleMesh> loadObjMesh(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return Status{StatusCode::FileError, path + ": no such file"};
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return Status{StatusCode::FileError, path + ": cannot open for reading"};
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) return Status{StatusCode::FileError, path + ": read failed"};
+    return parseObjMesh(path, text);
 }
 
 }  // namespace sfx::scene

@@ -59,16 +59,11 @@ int runAo(const AoFlags& f) {
         if (n.channels < 3)
             return fail(cmd, Status{StatusCode::FileError, "--normals " + f.normalsPath + " has " + std::to_string(n.channels) +
                                                                " channel(s); view-space normals need x, y, z"});
+        if (Status st = refuseNaN(n, 3, "--normals", f.normalsPath); !st) return fail(cmd, st);
         std::vector<float> px(size_t(w) * h * 4, 0.0f);
         for (uint32_t y = 0; y < h; ++y)
             for (uint32_t x = 0; x < w; ++x)
-                for (uint32_t c = 0; c < 3; ++c) {
-                    const float v = n.at(x, y, c);
-                    if (!std::isfinite(v))
-                        return fail(cmd, Status{StatusCode::FileError, "--normals " + f.normalsPath + ": pixel (" + std::to_string(x) + ", " +
-                                                                           std::to_string(y) + ") is not finite"});
-                    px[(size_t(y) * w + x) * 4 + c] = v;
-                }
+                for (uint32_t c = 0; c < 3; ++c) px[(size_t(y) * w + x) * 4 + c] = n.at(x, y, c);
         Result<TextureHandle> t = dev.createTexture({w, h, 1, Format::RGBA32F, kTextureSampled, "sfx-cli-normals"});
         if (!t) return fail(cmd, t.status());
         normals = t.value();
@@ -112,6 +107,7 @@ Command addAoCommand(CLI::App& app) {
     auto flags = std::make_shared<AoFlags>();
     Command c;
     c.app = app.add_subcommand("ao", "Ambient obscurance on G-buffer files: visibility in [0,1] (1 = unoccluded)");
+    c.app->footer(kInputValuesHelp);
     flags->device.add(*c.app);
     flags->camera.add(*c.app);
     c.app->add_option("--technique", flags->technique, "alchemy | scalable | crease")->capture_default_str();

@@ -1,5 +1,6 @@
 #include "cli_common.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -11,6 +12,8 @@ void DeviceFlags::add(CLI::App& app) {
     app.add_option("--backend", backend, "auto | vulkan | gles | gl | gl-egl | gl-osmesa")->capture_default_str();
     app.add_option("--tier", tier, "auto, or a tier (" + tierNameList() + "; a lower tier runs under its capability ceiling)")
         ->capture_default_str();
+    app.add_flag("--validate", validate,
+                 "API validation (Vulkan validation layer, GL error checks); messages go to stderr");
 }
 
 Result<OpenedDevice> openDevice(const DeviceFlags& flags) {
@@ -22,7 +25,10 @@ Result<OpenedDevice> openDevice(const DeviceFlags& flags) {
         tier = t;
     }
     DeviceOptions options;
-    options.validation = false;
+    options.validation = flags.validate;
+    // The tool, not the library, prints: validation messages reach stderr through the log callback
+    // when the device is destroyed.
+    options.log = [](LogSeverity, std::string_view message) { std::cerr << "sfx: " << message << "\n"; };
     options.ceiling = tier ? tiers::row(*tier).ceiling : CapabilityCeiling::None;
     OpenedDevice out;
     if (flags.backend == "auto") {
@@ -41,6 +47,24 @@ Result<OpenedDevice> openDevice(const DeviceFlags& flags) {
     if (!choice) return choice.status();
     out.tier = choice.value();
     return out;
+}
+
+const char* const kInputValuesHelp =
+    "Input values: a NaN anywhere in an input file is an error naming the file, pixel and channel. Every "
+    "other value reaches the effect as it is and follows its rule (docs/robustness_extremes.md): depth that is "
+    "infinite, not positive, or hardware depth outside [0, 1] is sky; a zero or infinite normal falls back to "
+    "the one derived from depth; an infinite or huge velocity is clamped to the blur radius in its direction; "
+    "colour beyond +-65504 is held at +-65504 and infinite colour is left out of the blur.";
+
+Status refuseNaN(const io::Image& image, uint32_t channels, const std::string& flag, const std::string& path) {
+    for (uint32_t y = 0; y < image.height; ++y)
+        for (uint32_t x = 0; x < image.width; ++x)
+            for (uint32_t c = 0; c < std::min(channels, image.channels); ++c)
+                if (std::isnan(image.at(x, y, c)))
+                    return {StatusCode::InvalidArgument, flag + " " + path + ": pixel (" + std::to_string(x) + ", " +
+                                                             std::to_string(y) + ") channel " + std::to_string(c) +
+                                                             " is NaN; input files may hold any value but NaN"};
+    return Status::ok();
 }
 
 void CameraFlags::add(CLI::App& app) {
@@ -86,19 +110,9 @@ Result<LoadedDepth> readDepth(const CameraFlags& f) {
     Result<io::Image> image = io::readImage(f.depthPath);
     if (!image) return Status{image.status().code(), "--depth: " + image.status().message()};
     out.image = io::Image(image->width, image->height, 1);
-    const bool hardware = f.depthKind == "hardware";
-    for (uint32_t y = 0; y < image->height; ++y) {
-        for (uint32_t x = 0; x < image->width; ++x) {
-            const float v = image->at(x, y, 0);
-            const bool ok = hardware ? (v >= 0.0f && v <= 1.0f) : (std::isfinite(v) && v > 0.0f);
-            if (!ok)
-                return Status{StatusCode::InvalidArgument,
-                              "--depth " + f.depthPath + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                                  ") is " + std::to_string(v) + "; " +
-                                  (hardware ? "hardware depth must lie in [0, 1]" : "linear depth must be finite and > 0")};
-            out.image.at(x, y) = v;
-        }
-    }
+    SFX_TRY(refuseNaN(image.value(), 1, "--depth", f.depthPath));
+    for (uint32_t y = 0; y < image->height; ++y)
+        for (uint32_t x = 0; x < image->width; ++x) out.image.at(x, y) = image->at(x, y, 0);
     PerspectiveDesc p;
     p.fovYRadians = f.fovYDegrees * 3.14159265358979323846 / 180.0;
     p.aspect = double(image->width) / double(image->height);
@@ -110,7 +124,7 @@ Result<LoadedDepth> readDepth(const CameraFlags& f) {
     Result<CameraProjection> camera = makePerspective(p);
     if (!camera) return camera.status();
 
-    out.source.kind = hardware ? DepthKind::Hardware : DepthKind::Linear;
+    out.source.kind = f.depthKind == "hardware" ? DepthKind::Hardware : DepthKind::Linear;
     out.source.camera = camera.value();
     return out;
 }

@@ -16,10 +16,11 @@
 
 namespace sfx::cli {
 
-// --backend auto|vulkan|gles|gl|gl-egl|gl-osmesa and --tier auto|current|high.
+// --backend auto|vulkan|gles|gl|gl-egl|gl-osmesa, --tier auto|current|high and --validate.
 struct DeviceFlags {
     std::string backend = "auto";
     std::string tier = "auto";
+    bool validate = false;  // API validation; its messages are printed on stderr
     void add(CLI::App& app);
 };
 
@@ -47,8 +48,9 @@ struct LoadedDepth {
     io::Image image;   // as read, one channel, row 0 = top
     DepthSource source;  // kind and camera; the texture once uploadDepth has run (R32F)
 };
-// Reads the depth file (PFM/EXR/PNG; first channel) once, validates flags and values (finite,
-// hardware depth in [0,1], linear depth > 0) and builds the camera. No device is needed, so a
+// Reads the depth file (PFM/EXR/PNG; first channel) once, validates flags and values (no NaN:
+// refuseNaN; any other value goes to the effect, whose depth rule makes it sky where it is out
+// of range) and builds the camera. No device is needed, so a
 // bad file is named before one is opened.
 Result<LoadedDepth> readDepth(const CameraFlags& flags);
 // Uploads depth.image to a new R32F texture on `device` into depth.source.texture.
@@ -59,6 +61,14 @@ Result<io::Image> loadMatching(const std::string& path, uint32_t width, uint32_t
 
 // Writes `image` as a PNG preview beside outPath (same name, extension .png); returns its path.
 Result<std::string> writePngBeside(const std::string& outPath, const io::Image& image);
+
+// The one rule of every tool for hostile values in input files (each --help says it):
+// a NaN is an error naming the flag, file, pixel and channel; every other value (an infinity,
+// a huge or out-of-range value) goes to the effect, which follows its documented rule.
+extern const char* const kInputValuesHelp;
+// InvalidArgument "<flag> <path>: pixel (x, y) channel c is NaN; ..." for the first NaN among
+// the first `channels` channels of `image`, else ok.
+Status refuseNaN(const io::Image& image, uint32_t channels, const std::string& flag, const std::string& path);
 
 // Prints "sfx <command>: error: <message>" to stderr and returns the process exit code 1.
 int fail(const std::string& command, const Status& status);

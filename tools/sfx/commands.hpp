@@ -15,5 +15,6 @@ Command addInfoCommand(CLI::App& app);        // info_command.cpp: backends, cap
 Command addAoCommand(CLI::App& app);          // ao_command.cpp
 Command addMotionBlurCommand(CLI::App& app);  // motionblur_command.cpp
 Command addTruthCommand(CLI::App& app);       // truth_command.cpp: ray-traced AO ground truth
+Command addRenderCommand(CLI::App& app);      // render_command.cpp: scene files
 
 }  // namespace sfx::cli

@@ -1,4 +1,5 @@
 // sfx motionblur: motion blur reconstruction on colour, depth and velocity files.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <iostream>
@@ -30,8 +31,9 @@ struct MotionBlurFlags {
     float exposure = 1.0f;
 };
 
-// The colour and velocity travel as 16-bit floats: values past the half range would become
-// infinities, so they are refused by name instead of clamped.
+// Colour may travel as 16-bit floats (RGBA16F where RGBA32F is not renderable): finite colour
+// is held at +-65504 here, the colour rule the effect applies on any format (sfx_shared.h), so
+// both paths give the same picture instead of a half-float infinity.
 constexpr float kLargestHalf = 65504.0f;
 
 // "10 current, 18 high": one default-preset value per tier of the table, for help texts.
@@ -40,19 +42,6 @@ std::string perTier(std::string (*value)(const TierProfile&)) {
     for (const tiers::TierRow& r : tiers::table())
         s += (s.empty() ? "" : ", ") + value(r.presets.front().params) + " " + toString(r.tier);
     return s;
-}
-
-Status checkFinite(const io::Image& image, const std::string& flag, const std::string& path) {
-    for (uint32_t y = 0; y < image.height; ++y)
-        for (uint32_t x = 0; x < image.width; ++x)
-            for (uint32_t c = 0; c < image.channels; ++c) {
-                const float v = image.at(x, y, c);
-                if (!std::isfinite(v) || std::fabs(v) > kLargestHalf)
-                    return {StatusCode::InvalidArgument, flag + " " + path + ": pixel (" + std::to_string(x) + ", " +
-                                                             std::to_string(y) + ") channel " + std::to_string(c) +
-                                                             " is " + std::to_string(v) + "; allowed finite values in [-65504, 65504]"};
-            }
-    return Status::ok();
 }
 
 Status run(const MotionBlurFlags& f) {
@@ -71,7 +60,7 @@ Status run(const MotionBlurFlags& f) {
 
     Result<io::Image> color = loadMatching(f.colorPath, w, h, "--color");
     if (!color) return color.status();
-    SFX_TRY(checkFinite(color.value(), "--color", f.colorPath));
+    SFX_TRY(refuseNaN(color.value(), color->channels, "--color", f.colorPath));
     Result<io::Image> velocity = loadMatching(f.velocityPath, w, h, "--velocity");
     if (!velocity) return velocity.status();
     const uint32_t needed = velExt == ".pfm" ? 3u : 2u;
@@ -79,7 +68,8 @@ Status run(const MotionBlurFlags& f) {
         return {StatusCode::InvalidArgument, "--velocity " + f.velocityPath + " has " + std::to_string(velocity->channels) +
                                                  " channel(s); a velocity " + velExt.substr(1) + " needs " + std::to_string(needed) +
                                                  (velExt == ".pfm" ? " (x, y, ignored)" : " (x, y)")};
-    SFX_TRY(checkFinite(velocity.value(), "--velocity", f.velocityPath));
+    // Any velocity but NaN: the effect clamps infinite and huge ones to the radius (sfx_shared_mb.h).
+    SFX_TRY(refuseNaN(velocity.value(), 2, "--velocity", f.velocityPath));
 
     Result<OpenedDevice> opened = openDevice(f.device);
     if (!opened) return opened.status();
@@ -97,6 +87,8 @@ Status run(const MotionBlurFlags& f) {
             const uint32_t ch = color->channels;
             for (uint32_t c = 0; c < 3; ++c) px[c] = color->at(x, y, ch >= 3 ? c : 0);
             px[3] = ch == 4 || ch == 2 ? color->at(x, y, ch - 1) : 1.0f;
+            for (uint32_t c = 0; c < 4; ++c)
+                if (std::isfinite(px[c])) px[c] = std::clamp(px[c], -kLargestHalf, kLargestHalf);
         }
     Result<TextureHandle> colorTex = device.createTexture({w, h, 1, colorFormat, kTextureSampled, "sfx-cli-color"});
     if (!colorTex) return colorTex.status();
@@ -171,6 +163,7 @@ Command addMotionBlurCommand(CLI::App& app) {
     Command c;
     c.app = app.add_subcommand("motionblur", "Motion blur reconstruction on colour, depth and velocity files");
     CLI::App* sub = c.app;
+    sub->footer(kInputValuesHelp);
     sub->add_option("--color", flags->colorPath, "colour file (PNG, PFM or EXR; grey, RGB or RGBA)")->required();
     flags->camera.add(*sub);
     sub->add_option("--velocity", flags->velocityPath, kVelocityHelp)->required();

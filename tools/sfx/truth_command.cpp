@@ -60,6 +60,7 @@ Command addTruthCommand(CLI::App& app) {
     auto flags = std::make_shared<TruthFlags>();
     Command c;
     c.app = app.add_subcommand("truth", "Ray-traced AO ground truth (Embree) of a sample scene: visibility in [0,1] and a surface mask");
+    c.app->footer("Input values: reads no input files (the scene is one of the built-in ones), so no NaN can reach it.");
     c.app->add_option("--scene", flags->scene, "one of: " + sceneList())->required();
     c.app->add_option("--width", flags->width, "pixels, 1 to 16384")->capture_default_str();
     c.app->add_option("--height", flags->height, "pixels, 1 to 16384")->capture_default_str();

@@ -14,9 +14,11 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "sfx/handle.hpp"
@@ -235,6 +237,11 @@ struct DeviceLimits {
     uint64_t maxBufferSize = 0;
     uint32_t maxComputeWorkGroupInvocations = 0;  // 0 without compute
     uint32_t maxTextureBindings = 0;
+    // A uniform / storage BufferBinding's offset is a multiple of these (Vulkan
+    // minUniformBufferOffsetAlignment / minStorageBufferOffsetAlignment, GL's
+    // UNIFORM_BUFFER_OFFSET_ALIGNMENT / SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT); at least 1.
+    uint64_t minUniformBufferOffsetAlignment = 1;
+    uint64_t minStorageBufferOffsetAlignment = 1;
 };
 
 struct DeviceCaps {
@@ -265,11 +272,24 @@ struct DeviceCaps {
     std::string summary() const;  // one line for logs: backend, API, device, ceiling
 };
 
+// How bad a message the library hands the host is.
+enum class LogSeverity : uint32_t { Info, Warning, Error };
+// The library prints nothing: what it has to say beyond a Status goes to this callback. It is
+// called on the thread making the SDK call (or destroying the device) that produced the
+// message, never concurrently for one device; it must not call back into that device.
+using LogCallback = std::function<void(LogSeverity severity, std::string_view message)>;
+
 struct DeviceOptions {
     CapabilityCeiling ceiling = CapabilityCeiling::None;
-    // Vulkan: VK_LAYER_KHRONOS_validation with synchronization validation; GL: glGetError after
-    // every call.
-    bool validation = true;
+    // API validation, only when the host asks: Vulkan enables VK_LAYER_KHRONOS_validation
+    // with synchronization validation (own device) and the SDK's debug messenger; GL checks
+    // glGetError after every call and turns on KHR_debug output. It multiplies the CPU cost of a dispatch (about 7.5x on
+    // Vulkan), so it is off by default; the tests, the samples and `sfx --validate` turn it on.
+    bool validation = false;
+    // Where the library's own diagnostics go; empty: they are dropped. Validation messages
+    // are also kept for Device::takeValidationMessages(); the ones still untaken when the
+    // device is destroyed go here (LogSeverity::Error) so none is lost silently.
+    LogCallback log;
 };
 
 // How many objects of one kind exist now and how many were ever made.

@@ -1,10 +1,43 @@
-// Checks of HAL descriptions shared by every backend, so a bad argument gets the same code and
-// message on Vulkan, GL and the null device. Backends call these before touching their API.
+// The checks of every HAL call, shared by every backend, so a bad argument gets the same code and
+// message on Vulkan, GL and the null device. A backend gathers the descriptions it keeps (the
+// program's reflection, the pipeline's formats, the bound textures' and buffers' descriptions)
+// and calls these before touching its API. Codes and messages come from the one table of
+// sfx/validation_errors.hpp. Descriptions and reads/writes: hal_validation.cpp; render passes,
+// draws, dispatches and bindings: hal_validation_commands.cpp.
 #pragma once
 
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
 #include "sfx/hal.hpp"
+#include "sfx/validation_errors.hpp"
 
 namespace sfx::validation {
+
+// What the validation knows of a program: kept by the backend from createProgram.
+struct ProgramInfo {
+    std::string name;
+    bool compute = false;
+    std::vector<ShaderResource> resources;
+};
+ProgramInfo programInfo(const CompiledProgram& program);
+
+// What the validation knows of a pipeline: kept by the backend from pipeline creation, so draws
+// are checked against the program's reflection and the formats the pipeline was made for.
+struct PipelineInfo {
+    bool compute = false;
+    std::string programName;
+    std::vector<ShaderResource> resources;
+    std::vector<Format> colorFormats;
+    Format depthFormat = Format::Undefined;
+    VertexLayout vertexLayout;
+};
+// The program is of the pipeline's kind, then graphicsPipelineShape and graphicsPipelineState.
+Result<PipelineInfo> graphicsPipeline(const GraphicsPipelineDesc& desc, const ProgramInfo& program, const DeviceCaps& caps);
+// Compute: the program is a compute program and the desc's specialisation constants have distinct ids.
+Result<PipelineInfo> computePipeline(const ComputePipelineDesc& desc, const ProgramInfo& program);
 
 Status textureDesc(const TextureDesc& desc, const DeviceCaps& caps);
 Status bufferDesc(const BufferDesc& desc, const DeviceCaps& caps);
@@ -15,7 +48,8 @@ Status program(const CompiledProgram& program, const DeviceCaps& caps);
 // location below kMaxVertexAttributes (64-bit sums, so a huge offset cannot wrap past the check).
 Status graphicsPipelineShape(const GraphicsPipelineDesc& desc, const DeviceCaps& caps);
 
-// Specialisation constants with distinct ids; `where` names the desc ("GraphicsPipelineDesc").
+// Specialisation constants with distinct ids (SpecializationConstantIdTwice); `where` names the
+// desc ("GraphicsPipelineDesc").
 Status specializationConstants(const std::vector<SpecializationConstant>& constants, const char* where);
 
 // Attribute locations every API offers (Vulkan maxVertexInputAttributes and GL_MAX_VERTEX_ATTRIBS
@@ -27,26 +61,74 @@ uint32_t vertexFormatBytes(VertexFormat format);  // 0 for an unknown format
 // One past the last byte any attribute of the layout reads within a vertex; 0 without attributes.
 uint64_t vertexAttributeEnd(const VertexLayout& layout);
 
-// What a draw reads from its buffers stays inside them. Non-indexed: the last vertex's attributes,
-// (count - 1) * stride + vertexAttributeEnd, lie inside vertexBuffer. Indexed: the count 32-bit
-// indices lie inside indexBuffer (the vertices the index values name are the API's robustness's
-// business: robustBufferAccess on Vulkan). Pass the descriptions of the draw's buffers, null where
-// the draw has none; call after checking the handles.
-Status drawRange(const DrawDesc& draw, const VertexLayout& layout, const BufferDesc* vertexBuffer,
-                 const BufferDesc* indexBuffer);
 // The fixed-function state: cull, depth compare, blend factors known enumerators, and no blending
 // into an integer colour format. Every backend calls it at pipeline creation, so an unknown value
 // is refused the same way everywhere instead of mapping to a default on one API.
 Status graphicsPipelineState(const GraphicsPipelineDesc& desc, const DeviceCaps& caps);
-// A texture binding's mips, baseMip and mipCount, make a non-empty range inside the texture's
-// levels (checked without the 32-bit sum, which wraps), and the texture has kTextureSampled.
-Status textureBinding(const TextureDesc& texture, const TextureBinding& binding);
-Status mipRange(const TextureDesc& desc, uint32_t mip, const char* argument);
-Status textureBytes(const TextureDesc& desc, uint32_t mip, size_t bytes, const char* argument);
-Status bufferRange(const BufferDesc& desc, uint64_t offset, uint64_t bytes, const char* argument);
-Status dispatchGroups(const DispatchDesc& dispatch, const DeviceCaps& caps);
-// A draw may not sample a mip its pass renders to (a feedback loop: undefined on GL, a layout
-// conflict on Vulkan). Handles are compared as values, so call after checking them.
-Status noFeedbackLoop(const RenderPassDesc& pass, const DrawDesc& draw);
+
+Status mipRange(const TextureDesc& desc, uint32_t mip, std::string_view argument);
+Status textureBytes(const TextureDesc& desc, uint32_t mip, size_t bytes, std::string_view argument);
+Status bufferRange(const BufferDesc& desc, uint64_t offset, uint64_t bytes, std::string_view argument);
+// A host pointer a read or write needs; `what` says what it points to ("the level's bytes").
+Status pointer(const void* p, std::string_view argument, std::string_view what);
+// The range a buffer binding covers: its size, or the rest of the buffer when size is 0.
+uint64_t boundSize(const BufferBinding& binding, const BufferDesc& buffer);
+
+// The backend's objects as the command checks read them: each call checks the handle (null,
+// foreign, unknown, destroyed) and gives the description the object was made with.
+class ObjectLookup {
+public:
+    virtual ~ObjectLookup() = default;
+    virtual Result<const TextureDesc*> texture(TextureHandle h, const std::string& argument) const = 0;
+    virtual Result<const BufferDesc*> buffer(BufferHandle h, const std::string& argument) const = 0;
+    virtual Status sampler(SamplerHandle h, const std::string& argument) const = 0;
+    virtual Result<const PipelineInfo*> pipeline(PipelineHandle h, const std::string& argument) const = 0;
+};
+
+// An ObjectLookup over a backend's HandlePools, whose records hold `desc` (textures, buffers)
+// and `info` (pipelines).
+template <class Textures, class Buffers, class Samplers, class Pipelines>
+class PoolLookup final : public ObjectLookup {
+public:
+    PoolLookup(const Textures& t, const Buffers& b, const Samplers& s, const Pipelines& p)
+        : textures_(t), buffers_(b), samplers_(s), pipelines_(p) {}
+    Result<const TextureDesc*> texture(TextureHandle h, const std::string& argument) const override {
+        SFX_TRY(textures_.check(h, argument));
+        return &textures_.get(h).desc;
+    }
+    Result<const BufferDesc*> buffer(BufferHandle h, const std::string& argument) const override {
+        SFX_TRY(buffers_.check(h, argument));
+        return &buffers_.get(h).desc;
+    }
+    Status sampler(SamplerHandle h, const std::string& argument) const override { return samplers_.check(h, argument); }
+    Result<const PipelineInfo*> pipeline(PipelineHandle h, const std::string& argument) const override {
+        SFX_TRY(pipelines_.check(h, argument));
+        return &pipelines_.get(h).info;
+    }
+
+private:
+    const Textures& textures_;
+    const Buffers& buffers_;
+    const Samplers& samplers_;
+    const Pipelines& pipelines_;
+};
+
+// Every check of a render pass and its draws, before anything is recorded: the attachments (at
+// least one, within maxColorAttachments, render targets of the right kind, known load ops, one
+// size); each draw's pipeline (graphics, made for the pass's formats), its bindings against the
+// program's reflection and the bound resources (see dispatch), no feedback loop, its vertex and
+// index buffers; and no texture mip used two ways in the pass. What a draw reads from its buffers
+// stays inside them. Non-indexed: the last vertex's attributes, (count - 1) * stride +
+// vertexAttributeEnd, lie inside the vertex buffer. Indexed: the count 32-bit indices lie inside
+// the index buffer (the vertices the index values name are the API's robustness's business:
+// robustBufferAccess on Vulkan).
+Status renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, const ObjectLookup& objects,
+                  const DeviceCaps& caps);
+// Every check of a dispatch: the device has compute, group counts, a compute pipeline, and its
+// bindings: each given once, at a binding of the program's reflection, of the resource kind the
+// program has there, every reflected resource given; textures with usage sampled (storage images:
+// storage) and mips inside them; buffers with the usage of their kind, ranges inside them, offsets
+// aligned to caps.limits, ranges within the limits and at least the reflected block's size.
+Status dispatch(const DispatchDesc& dispatch, const ObjectLookup& objects, const DeviceCaps& caps);
 
 }  // namespace sfx::validation

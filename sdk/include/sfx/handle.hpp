@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "sfx/status.hpp"
+#include "sfx/validation_errors.hpp"
 
 namespace sfx {
 
@@ -59,16 +60,15 @@ public:
     }
 
     // Ok when the handle names a live object of this pool; the error says which rule failed.
-    Status check(Handle<Tag> h, const char* argument) const {
-        if (h.isNull()) return {StatusCode::InvalidHandle, std::string(argument) + " is a null " + kind_ + " handle"};
-        if (uint16_t(h.bits >> 48) != serial_)
-            return {StatusCode::ForeignHandle, std::string(argument) + " is a " + kind_ + " handle of another device"};
+    Status check(Handle<Tag> h, std::string_view argument) const {
+        using validation::Error;
+        if (h.isNull()) return validation::fail(Error::HandleNull, {argument, kind_, kind_});
+        if (uint16_t(h.bits >> 48) != serial_) return validation::fail(Error::HandleForeign, {argument, kind_, kind_});
         uint64_t index = (h.bits & 0xffffffffu) - 1;
-        if (index >= slots_.size())
-            return {StatusCode::InvalidHandle, std::string(argument) + " is not a " + kind_ + " handle of this device"};
+        if (index >= slots_.size()) return validation::fail(Error::HandleUnknown, {argument, kind_, kind_});
         const Slot& slot = slots_[index];
         if (!slot.alive || slot.generation != uint16_t(h.bits >> 32))
-            return {StatusCode::StaleHandle, std::string(argument) + " names a destroyed " + kind_};
+            return validation::fail(Error::HandleStale, {argument, kind_, kind_});
         return Status::ok();
     }
 

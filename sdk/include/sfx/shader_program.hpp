@@ -26,7 +26,7 @@ const char* toString(ShaderStage stage);
 inline constexpr uint32_t stageBit(ShaderStage s) { return 1u << uint32_t(s); }
 
 enum class ResourceKind : uint32_t { UniformBuffer, SampledTexture, StorageBuffer, StorageImage };
-const char* toString(ResourceKind kind);
+const char* toString(ResourceKind kind);  // "uniform buffer", "sampled texture", ... (words for messages)
 
 struct ShaderResource {
     std::string name;     // as declared in shader_src (the variable, or the block type for buffers)

@@ -4,8 +4,8 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 namespace sfx {
@@ -47,24 +47,37 @@ private:
 };
 
 // A value or the Status that explains why there is none.
+//
+// Reading the value of an error Result is well-defined, never undefined behaviour: value(),
+// operator* and operator-> then give a value-initialised T held by this Result (a null
+// unique_ptr, a null handle, 0, an empty string), so a forgotten check reads an empty value
+// instead of memory that is not there. status() still says why. A Result made from an Ok
+// Status (which carries no value) is an error with StatusCode::InvalidArgument.
 template <class T>
 class [[nodiscard]] Result {
+    static_assert(std::is_default_constructible_v<T>,
+                  "Result<T> needs a default-constructible T: it is what an error Result's value() gives");
+
 public:
     Result(T value) : value_(std::move(value)) {}
-    Result(Status status) : status_(std::move(status)) {}
+    Result(Status status) : status_(std::move(status)) {
+        if (status_.isOk())
+            status_ = Status{StatusCode::InvalidArgument, "Result<T> was made from an Ok Status, which has no value"};
+    }
 
-    bool isOk() const { return value_.has_value(); }
+    bool isOk() const { return status_.isOk(); }
     explicit operator bool() const { return isOk(); }
     const Status& status() const { return status_; }
-    T& value() & { return *value_; }
-    const T& value() const& { return *value_; }
-    T&& value() && { return std::move(*value_); }
-    T* operator->() { return &*value_; }
-    const T* operator->() const { return &*value_; }
-    T& operator*() { return *value_; }
+    T& value() & { return value_; }
+    const T& value() const& { return value_; }
+    T&& value() && { return std::move(value_); }
+    T* operator->() { return &value_; }
+    const T* operator->() const { return &value_; }
+    T& operator*() { return value_; }
+    const T& operator*() const { return value_; }
 
 private:
-    std::optional<T> value_;
+    T value_{};
     Status status_;
 };
 

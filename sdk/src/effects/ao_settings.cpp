@@ -49,6 +49,14 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
         profile.aoBlurRadiusPx == 0 || profile.aoDepthMipLevels == 0)
         return invalidArgument("AoDesc.profile", "an empty or unknown tier profile (tap counts 0)",
                                "tiers::profile(tier) or tiers::choose(caps)->profile");
+    // A hand-filled profile must also stay inside what the shaders are built for: the resolved
+    // config takes its counts from it unchecked.
+    if (profile.aoScalableTaps > uint32_t(shared::SFX_AO_MAX_SAMPLES) || profile.aoAlchemySamples > uint32_t(shared::SFX_AO_MAX_SAMPLES) ||
+        (profile.aoScalableMirrored && profile.aoScalableTaps % 2 != 0) ||
+        profile.aoBlurRadiusPx > uint32_t(shared::SFX_AO_MAX_BLUR_RADIUS) || !(profile.aoScalableMaxRadiusPx >= 0.0f) ||
+        std::isinf(profile.aoScalableMaxRadiusPx))
+        return invalidArgument("AoDesc.profile", "a tier profile with counts outside the shaders' limits",
+                               "tiers::profile(tier) or tiers::choose(caps)->profile");
     if (uint32_t(s.technique) > 2) return invalidArgument("AoSettings.technique", std::to_string(uint32_t(s.technique)), "Alchemy, Scalable or Crease");
     // The lower bound keeps epsilon * r^2 a normal float (>= 1e-16 with epsilon >= 1e-8): smaller
     // radii underflow it to 0 on the GPU and a tap on the centre pixel would divide 0 by 0.

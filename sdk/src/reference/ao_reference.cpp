@@ -148,8 +148,13 @@ namespace {
 // The obscurance of `in`, whose linear depth already went through linearDepthOrFar.
 Grid rawVisibilityOfClamped(const AoInput& in, const AoConfig& c) {
     const Grid& d = in.linearDepth;
-    const std::vector<dvec3> derived = in.normals.empty() ? normalsFromDepth(d, in.reconstruction) : std::vector<dvec3>{};
-    const std::vector<dvec3>& normals = in.normals.empty() ? derived : in.normals;
+    // Host normals follow the rule of sfx_shared_ao.h: an unusable one (zero, NaN, infinite)
+    // falls back to the derived normal of its pixel.
+    std::vector<dvec3> normals = normalsFromDepth(d, in.reconstruction);
+    for (size_t i = 0; i < in.normals.size(); ++i) {
+        const dvec3 n = sh::aoHostNormalOrZero(in.normals[i]);
+        if (n != dvec3(0.0)) normals[i] = n;
+    }
     std::vector<Grid> pyramid;
     if (c.technique == AoTechnique::Scalable) pyramid = depthPyramid(d, std::max(c.depthMipLevels, 1u));
     Grid out(d.width, d.height, 1.0);

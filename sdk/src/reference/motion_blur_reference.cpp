@@ -35,6 +35,8 @@ struct MaxTracker {
 
 }  // namespace
 
+static_assert(kSkyDepth == double(shared::SFX_SKY_DEPTH));
+
 double roundToHalf(double value) {
     if (!std::isfinite(value) || value == 0.0) return value;
     int exponent = 0;
@@ -48,7 +50,7 @@ double roundToHalf(double value) {
 }
 
 MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearDepth, const VelocityGrid& velocityPx,
-                                     const MotionBlurParams& p) {
+                                     const MotionBlurParams& p, double maxDepth) {
     const uint32_t w = color.width, h = color.height;
     const double k = double(p.radiusPx);
     MotionBlurReferenceResult r;
@@ -59,17 +61,15 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
     Grid depth(w, h);
     for (uint32_t y = 0; y < h; ++y) {
         for (uint32_t x = 0; x < w; ++x) {
-            std::array<double, 2> v = velocityPx.at(x, y);
-            v[0] *= 0.5 * p.exposure;
-            v[1] *= 0.5 * p.exposure;
-            double len = std::sqrt(length2(v));
-            if (!std::isfinite(len)) v = {0, 0}, len = 0;
-            if (len > k) v = {v[0] * k / len, v[1] * k / len};
+            // The scaled velocity as the shader holds it (a float), then the rule of sfx_shared_mb.h.
+            const std::array<double, 2>& in = velocityPx.at(x, y);
+            const float scale = float(0.5 * p.exposure);
+            const glm::dvec2 v = shared::mbClampVelocity(glm::dvec2(double(float(in[0]) * scale), double(float(in[1]) * scale)), k);
             for (int c = 0; c < 2; ++c) {
                 const double e = std::clamp(roundToHalf(mbEncodeVelocity(v[c], k)), 0.0, 1.0);
                 r.radiusPx.at(x, y)[c] = mbDecodeVelocity(e, k);
             }
-            depth.at(x, y) = std::min(linearDepth.at(x, y), double(shared::SFX_MB_MAX_PACKED_DEPTH));
+            depth.at(x, y) = std::min(shared::sfxLinearDepthOrFar(linearDepth.at(x, y), maxDepth), double(shared::SFX_MB_MAX_PACKED_DEPTH));
         }
     }
 
@@ -106,7 +106,7 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
     const double perSample = shared::mbSampleScale(int(p.pairs));
     for (int y = 0; y < int(h); ++y) {
         for (int x = 0; x < int(w); ++x) {
-            const std::array<double, 4>& colorC = color.at(uint32_t(x), uint32_t(y));
+            const std::array<double, 4> colorC = shared::sfxColor(color.at(uint32_t(x), uint32_t(y)));  // sfx_shared.h
             const std::array<double, 2> vN = r.neighborMax.at(uint32_t(x) / n, uint32_t(y) / n);
             if (std::sqrt(length2(vN)) < double(shared::SFX_MB_STILL_PX)) {
                 r.color.at(uint32_t(x), uint32_t(y)) = colorC;
@@ -133,7 +133,9 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
                     const double speedS = std::sqrt(length2(r.radiusPx.at(uint32_t(qx), uint32_t(qy))));
                     const double zS = depth.at(uint32_t(qx), uint32_t(qy));
                     const double wS = mbSampleWeight(zC, zS, speedC, speedS, dist, p.softDepthExtent) * perSample;
-                    const std::array<double, 4>& colorS = color.at(uint32_t(qx), uint32_t(qy));
+                    const std::array<double, 4>& rawS = color.at(uint32_t(qx), uint32_t(qy));
+                    if (!shared::sfxColorIsFinite(rawS)) continue;  // never spread (sfx_shared.h)
+                    const std::array<double, 4> colorS = shared::sfxColor(rawS);
                     for (int c = 0; c < 4; ++c) sum[c] += colorS[c] * wS;
                     total += wS;
                 }

@@ -47,10 +47,15 @@ struct MotionBlurReferenceResult {
     uint64_t stillPixels = 0;       // pixels returned unchanged by the velocity branch
 };
 
-// linearDepth: positive linear depth (the LinearDepth pass output); velocityPx: the host's
-// velocity, pixels across the shutter interval. Sizes must match (asserted by the caller).
+// SFX_SKY_DEPTH of sfx_shared.h (the .cpp asserts they are equal): an infinite projection's maxDepth.
+inline constexpr double kSkyDepth = 1.0e8;
+
+// linearDepth: linear depth, read through sfxLinearDepthOrFar(z, maxDepth) as the pack pass does
+// (maxDepth: the far plane of the depth's reconstruction, or SFX_SKY_DEPTH); velocityPx: the
+// host's velocity, pixels across the shutter interval. Sizes must match (asserted by the caller).
+// Hostile values follow the rules of sfx_shared.h / sfx_shared_mb.h, as on the GPU.
 MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearDepth, const VelocityGrid& velocityPx,
-                                     const MotionBlurParams& params);
+                                     const MotionBlurParams& params, double maxDepth = kSkyDepth);
 
 // Camera-only velocity (pixels across the shutter, current minus previous position) for
 // linear depth under `projection`, as mb_pack.frag computes it.

@@ -21,6 +21,11 @@ struct Image {
     float at(uint32_t x, uint32_t y, uint32_t c = 0) const { return pixels[(size_t(y) * width + x) * channels + c]; }
 };
 
+// The largest picture a reader accepts: sides up to 65536 and at most 2^25 pixels (8K UHD,
+// 7680x4320, is 33,177,600). A header claiming more is a FileError before anything is allocated.
+inline constexpr uint64_t kMaxImageSide = 65536;
+inline constexpr uint64_t kMaxImagePixels = uint64_t(1) << 25;
+
 // The file name's extension, lower-cased, with its dot (".pfm"); empty when it has none. The one
 // rule readImage/writeImage and the tools use to pick a format.
 std::string extensionOf(const std::string& path);
@@ -29,6 +34,10 @@ std::string extensionOf(const std::string& path);
 // .exr (channels Y, or R G B [A], or any names sorted; half or float). FileError names the
 // file and what is wrong with it.
 Result<Image> readImage(const std::string& path);
+// The same decoders on a file's bytes already in memory; `path` picks the format by its
+// extension and names the file in messages. maxPixels lowers the pixel limit (the fuzz targets
+// of tests/fuzz use a small one so they explore the parsers instead of filling large images).
+Result<Image> decodeImage(const std::string& path, const void* data, size_t size, uint64_t maxPixels = kMaxImagePixels);
 
 // PNG stores [0,1] as 8 bits (values clamped, NaN written as 0); 1-4 channels.
 Status writePng(const std::string& path, const Image& image);

@@ -36,5 +36,8 @@ TriangleMesh sphereMesh(glm::vec3 centre, float radius, int slices = 48, int sta
 // the path when it does not exist, does not parse, has no triangles, an index out of range or a
 // coordinate that is not finite.
 Result<TriangleMesh> loadObjMesh(const std::string& path);
+// The same on an OBJ file's text (`path` only names it in messages): what the fuzz target feeds.
+// Every index of a mesh it returns names one of its vertices and every normal is unit.
+Result<TriangleMesh> parseObjMesh(const std::string& path, const std::string& text);
 
 }  // namespace sfx::scene

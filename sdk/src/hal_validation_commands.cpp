@@ -1,0 +1,288 @@
+// The shared checks of commands: a render pass with its draws, a dispatch, and the bindings of
+// either against the pipeline's program reflection and the bound resources. Backends call
+// renderPass / dispatch with an ObjectLookup over their pools before recording anything, so a
+// refused command leaves every target as it was. Codes and messages: validation_messages.cpp.
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "hal_validation_words.hpp"
+#include "sfx/hal_validation.hpp"
+
+namespace sfx::validation {
+namespace {
+
+// One use of a texture's mips by a command, for the two-ways check.
+struct MipUse {
+    TextureHandle texture;
+    uint32_t baseMip = 0, mipCount = 1;
+    const char* as = "";   // "a sampled texture", "a storage image", "a colour attachment"...
+    std::string argument;  // who uses it
+};
+
+const char* bindingSetField(ResourceKind k) {
+    switch (k) {
+    case ResourceKind::UniformBuffer: return "uniformBuffers";
+    case ResourceKind::SampledTexture: return "textures";
+    case ResourceKind::StorageBuffer: return "storageBuffers";
+    case ResourceKind::StorageImage: return "storageImages";
+    }
+    return "?";
+}
+
+std::string formatsList(const std::vector<Format>& formats) {
+    std::string out;
+    for (Format f : formats) out += (out.empty() ? "" : ", ") + formatName(f);
+    return out;
+}
+
+// Binding against reflection: each binding given once, at a binding the program has, of its kind.
+class ReflectionMatch {
+public:
+    ReflectionMatch(const PipelineInfo& pipeline, const std::string& where) : pipeline_(pipeline), where_(where) {}
+
+    Result<const ShaderResource*> claim(uint32_t binding, ResourceKind kind, const std::string& argument) {
+        for (const auto& [b, arg] : given_)
+            if (b == binding) return fail(Error::BindingTwice, {argument, str(binding), arg});
+        given_.push_back({binding, argument});
+        for (const ShaderResource& r : pipeline_.resources)
+            if (r.binding == binding) {
+                if (r.kind != kind)
+                    return fail(Error::BindingKind, {argument, str(binding), pipeline_.programName, toString(r.kind),
+                                                     r.name, bindingSetField(r.kind)});
+                return &r;
+            }
+        std::string bindings;
+        for (const ShaderResource& r : pipeline_.resources)
+            bindings += (bindings.empty() ? "" : ", ") + str(r.binding) + " (" + r.name + ")";
+        return fail(Error::BindingUnknown, {argument, str(binding), pipeline_.programName, bindings.empty() ? "none" : bindings});
+    }
+
+    Status allClaimed() const {
+        for (const ShaderResource& r : pipeline_.resources)
+            if (std::none_of(given_.begin(), given_.end(), [&](const auto& g) { return g.first == r.binding; }))
+                return fail(Error::BindingMissing, {where_, bindingSetField(r.kind), str(r.binding), pipeline_.programName,
+                                                    toString(r.kind), r.name});
+        return Status::ok();
+    }
+
+private:
+    const PipelineInfo& pipeline_;
+    const std::string& where_;
+    std::vector<std::pair<uint32_t, std::string>> given_;
+};
+
+Status bufferBinding(const BufferBinding& bb, ResourceKind kind, const ShaderResource& block, const std::string& argument,
+                     const ObjectLookup& objects, const DeviceCaps& caps) {
+    Result<const BufferDesc*> found = objects.buffer(bb.buffer, argument + ".buffer");
+    if (!found) return found.status();
+    const BufferDesc& buffer = *found.value();
+    const bool uniform = kind == ResourceKind::UniformBuffer;
+    const uint32_t usage = uniform ? kBufferUniform : kBufferStorage;
+    if (!(buffer.usage & usage))
+        return fail(Error::ResourceUsage, {argument + ".buffer", bufferUsageNames(buffer.usage), "buffer", bufferUsageNames(usage)});
+    const uint64_t size = boundSize(bb, buffer);
+    SFX_TRY(bufferRange(buffer, bb.offset, size, argument));
+    const uint64_t alignment = uniform ? caps.limits.minUniformBufferOffsetAlignment : caps.limits.minStorageBufferOffsetAlignment;
+    if (alignment > 1 && bb.offset % alignment != 0)
+        return fail(Error::BufferBindingAlignment,
+                    {argument, str(bb.offset), str(alignment),
+                     uniform ? "caps.limits.minUniformBufferOffsetAlignment" : "caps.limits.minStorageBufferOffsetAlignment"});
+    const uint64_t maxRange = uniform ? caps.limits.maxUniformBlockSize : caps.limits.maxStorageBufferSize;
+    if (size > maxRange)
+        return fail(Error::BufferBindingMaxRange, {argument, str(size), str(maxRange),
+                                                   uniform ? "caps.limits.maxUniformBlockSize" : "caps.limits.maxStorageBufferSize"});
+    if (block.blockSize > size) return fail(Error::BufferBindingBlockSize, {argument, str(size), str(block.blockSize), block.name});
+    return Status::ok();
+}
+
+// A BindingSet against the pipeline's reflection and the bound resources; appends its mip uses.
+Status bindings(const BindingSet& set, const PipelineInfo& pipeline, const std::string& where, const ObjectLookup& objects,
+                const DeviceCaps& caps, std::vector<MipUse>& uses) {
+    ReflectionMatch reflection(pipeline, where);
+    for (size_t i = 0; i < set.textures.size(); ++i) {
+        const TextureBinding& tb = set.textures[i];
+        const std::string arg = where + ".textures[" + str(i) + "]";
+        Result<const ShaderResource*> r = reflection.claim(tb.binding, ResourceKind::SampledTexture, arg);
+        if (!r) return r.status();
+        Result<const TextureDesc*> t = objects.texture(tb.texture, arg + ".texture");
+        if (!t) return t.status();
+        if (!tb.sampler.isNull()) SFX_TRY(objects.sampler(tb.sampler, arg + ".sampler"));
+        const TextureDesc& desc = *t.value();
+        if (!(desc.usage & kTextureSampled))
+            return fail(Error::ResourceUsage, {arg + ".texture", textureUsageNames(desc.usage), "texture", "sampled"});
+        // baseMip + mipCount in 32 bits wraps (1 + 0xFFFFFFFF = 0); compare without adding.
+        if (tb.mipCount == 0 || tb.baseMip >= desc.mipLevels || tb.mipCount > desc.mipLevels - tb.baseMip)
+            return fail(Error::BindingMips, {arg, str(tb.baseMip), str(tb.mipCount), str(desc.mipLevels)});
+        uses.push_back({tb.texture, tb.baseMip, tb.mipCount, "a sampled texture", arg});
+    }
+    for (size_t i = 0; i < set.storageImages.size(); ++i) {
+        const StorageImageBinding& ib = set.storageImages[i];
+        const std::string arg = where + ".storageImages[" + str(i) + "]";
+        Result<const ShaderResource*> r = reflection.claim(ib.binding, ResourceKind::StorageImage, arg);
+        if (!r) return r.status();
+        Result<const TextureDesc*> t = objects.texture(ib.texture, arg + ".texture");
+        if (!t) return t.status();
+        if (!(t.value()->usage & kTextureStorage))
+            return fail(Error::ResourceUsage, {arg + ".texture", textureUsageNames(t.value()->usage), "texture", "storage"});
+        SFX_TRY(mipRange(*t.value(), ib.mip, arg + ".mip"));
+        uses.push_back({ib.texture, ib.mip, 1, "a storage image", arg});
+    }
+    const std::pair<const std::vector<BufferBinding>*, ResourceKind> lists[] = {
+        {&set.uniformBuffers, ResourceKind::UniformBuffer}, {&set.storageBuffers, ResourceKind::StorageBuffer}};
+    for (const auto& [list, kind] : lists)
+        for (size_t i = 0; i < list->size(); ++i) {
+            const BufferBinding& bb = (*list)[i];
+            const std::string arg = where + "." + bindingSetField(kind) + "[" + str(i) + "]";
+            Result<const ShaderResource*> r = reflection.claim(bb.binding, kind, arg);
+            if (!r) return r.status();
+            SFX_TRY(bufferBinding(bb, kind, *r.value(), arg, objects, caps));
+        }
+    return reflection.allClaimed();
+}
+
+// A draw may not sample a mip its pass renders to (a feedback loop: undefined on GL, a layout
+// conflict on Vulkan).
+Status noFeedbackLoop(const RenderPassDesc& pass, const BindingSet& set, const std::string& where) {
+    for (size_t i = 0; i < set.textures.size(); ++i) {
+        const TextureBinding& tb = set.textures[i];
+        auto inRange = [&](uint32_t mip) { return mip >= tb.baseMip && mip - tb.baseMip < tb.mipCount; };
+        const std::string arg = where + ".textures[" + str(i) + "]";
+        for (size_t c = 0; c < pass.colors.size(); ++c)
+            if (pass.colors[c].texture == tb.texture && inRange(pass.colors[c].mip))
+                return fail(Error::FeedbackLoop, {arg, str(tb.baseMip), str(tb.mipCount), str(pass.colors[c].mip),
+                                                  "RenderPassDesc.colors[" + str(c) + "]"});
+        if (!pass.depth.texture.isNull() && pass.depth.texture == tb.texture && inRange(0))
+            return fail(Error::FeedbackLoop, {arg, str(tb.baseMip), str(tb.mipCount), "0", "RenderPassDesc.depth"});
+    }
+    return Status::ok();
+}
+
+// One mip in two kinds of use within one command cannot hold on every API (on Vulkan each kind
+// is an image layout, and an image subresource has one layout at a time).
+Status noMipUsedTwoWays(const std::vector<MipUse>& uses) {
+    for (size_t i = 0; i < uses.size(); ++i)
+        for (size_t j = 0; j < i; ++j) {
+            const MipUse& a = uses[i];
+            const MipUse& b = uses[j];
+            if (a.texture != b.texture || std::string_view(a.as) == b.as) continue;
+            const uint32_t lo = std::max(a.baseMip, b.baseMip);
+            if (lo - a.baseMip < a.mipCount && lo - b.baseMip < b.mipCount && lo >= a.baseMip && lo >= b.baseMip)
+                return fail(Error::MipUsedTwoWays, {a.argument, str(lo), b.argument, b.as});
+        }
+    return Status::ok();
+}
+
+Status attachment(TextureHandle texture, uint32_t mip, LoadOp load, const std::string& arg, bool depth, size_t index,
+                  const ObjectLookup& objects, uint32_t& width, uint32_t& height, std::vector<Format>& colorFormats,
+                  Format& depthFormat, std::vector<MipUse>& uses) {
+    Result<const TextureDesc*> t = objects.texture(texture, arg + ".texture");
+    if (!t) return t.status();
+    const TextureDesc& d = *t.value();
+    SFX_TRY(mipRange(d, mip, arg + ".mip"));
+    if (!(d.usage & kTextureRenderTarget) || isDepthFormat(d.format) != depth)
+        return depth ? fail(Error::PassDepthTarget, {toString(d.format), textureUsageNames(d.usage)})
+                     : fail(Error::PassColorTarget, {str(index), toString(d.format), textureUsageNames(d.usage)});
+    if (uint32_t(load) > uint32_t(LoadOp::DontCare)) return fail(Error::PassLoadOp, {arg + ".load", str(uint32_t(load))});
+    const uint32_t w = mipExtent(d.width, mip), h = mipExtent(d.height, mip);
+    if (width == 0) {
+        width = w;
+        height = h;
+    } else if (w != width || h != height) {
+        return fail(Error::PassSize, {arg + ".texture", str(w), str(h), str(mip), str(width), str(height)});
+    }
+    if (depth)
+        depthFormat = d.format;
+    else
+        colorFormats.push_back(d.format);
+    uses.push_back({texture, mip, 1, depth ? "the depth attachment" : "a colour attachment", arg});
+    return Status::ok();
+}
+
+Status drawBuffers(const DrawDesc& draw, const PipelineInfo& pipeline, const std::string& arg, const ObjectLookup& objects) {
+    if (draw.instanceCount == 0) return fail(Error::DrawInstanceCount, {arg});
+    const VertexLayout& layout = pipeline.vertexLayout;
+    const BufferDesc* vertexBuffer = nullptr;
+    if (layout.attributes.empty()) {
+        if (!draw.vertexBuffer.isNull()) return fail(Error::DrawVertexBufferUnused, {arg});
+    } else {
+        if (draw.vertexBuffer.isNull()) return fail(Error::DrawVertexBufferMissing, {arg});
+        Result<const BufferDesc*> vb = objects.buffer(draw.vertexBuffer, arg + ".vertexBuffer");
+        if (!vb) return vb.status();
+        vertexBuffer = vb.value();
+        if (!(vertexBuffer->usage & kBufferVertex))
+            return fail(Error::ResourceUsage, {arg + ".vertexBuffer", bufferUsageNames(vertexBuffer->usage), "buffer", "vertex"});
+    }
+    if (!draw.indexBuffer.isNull()) {
+        Result<const BufferDesc*> ib = objects.buffer(draw.indexBuffer, arg + ".indexBuffer");
+        if (!ib) return ib.status();
+        const BufferDesc& index = *ib.value();
+        if (!(index.usage & kBufferIndex))
+            return fail(Error::ResourceUsage, {arg + ".indexBuffer", bufferUsageNames(index.usage), "buffer", "index"});
+        // count < 2^32, so count * 4 fits in 64 bits.
+        if (uint64_t(draw.count) * 4 > index.size)
+            return fail(Error::DrawIndexCount, {arg, str(draw.count), str(index.size / 4), str(index.size)});
+        return Status::ok();
+    }
+    if (!vertexBuffer || draw.count == 0) return Status::ok();
+    // stride <= kMaxVertexStride and count < 2^32: the product stays far below 2^64.
+    const uint64_t attributeEnd = vertexAttributeEnd(layout);
+    const uint64_t end = uint64_t(draw.count - 1) * layout.stride + attributeEnd;
+    if (end > vertexBuffer->size) {
+        const uint64_t fit = vertexBuffer->size < attributeEnd ? 0 : (vertexBuffer->size - attributeEnd) / layout.stride + 1;
+        return fail(Error::DrawVertexCount, {arg, str(draw.count), str(fit), str(layout.stride), str(vertexBuffer->size)});
+    }
+    return Status::ok();
+}
+
+}  // namespace
+
+Status renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, const ObjectLookup& objects,
+                  const DeviceCaps& caps) {
+    if (pass.colors.empty() && pass.depth.texture.isNull()) return fail(Error::PassNoAttachments, {});
+    if (pass.colors.size() > caps.limits.maxColorAttachments)
+        return fail(Error::PassColorCount, {str(pass.colors.size()), str(caps.limits.maxColorAttachments)});
+    uint32_t width = 0, height = 0;
+    std::vector<Format> colorFormats;
+    Format depthFormat = Format::Undefined;
+    std::vector<MipUse> uses;
+    for (size_t i = 0; i < pass.colors.size(); ++i) {
+        const ColorAttachment& c = pass.colors[i];
+        SFX_TRY(attachment(c.texture, c.mip, c.load, "RenderPassDesc.colors[" + str(i) + "]", false, i, objects, width, height,
+                           colorFormats, depthFormat, uses));
+    }
+    if (!pass.depth.texture.isNull())
+        SFX_TRY(attachment(pass.depth.texture, 0, pass.depth.load, "RenderPassDesc.depth", true, 0, objects, width, height,
+                           colorFormats, depthFormat, uses));
+    for (size_t i = 0; i < draws.size(); ++i) {
+        const DrawDesc& d = draws[i];
+        const std::string arg = draws.size() == 1 ? std::string("DrawDesc") : "DrawDesc[" + str(i) + "]";
+        Result<const PipelineInfo*> found = objects.pipeline(d.pipeline, arg + ".pipeline");
+        if (!found) return found.status();
+        const PipelineInfo& pl = *found.value();
+        if (pl.compute) return fail(Error::DrawPipelineCompute, {arg + ".pipeline", pl.programName});
+        if (pl.colorFormats != colorFormats || pl.depthFormat != depthFormat)
+            return fail(Error::DrawPipelineFormats, {arg + ".pipeline", formatsList(pl.colorFormats), formatName(pl.depthFormat),
+                                                     formatsList(colorFormats), formatName(depthFormat)});
+        SFX_TRY(bindings(d.bindings, pl, arg + ".bindings", objects, caps, uses));
+        SFX_TRY(noFeedbackLoop(pass, d.bindings, arg + ".bindings"));
+        SFX_TRY(drawBuffers(d, pl, arg, objects));
+    }
+    return noMipUsedTwoWays(uses);
+}
+
+Status dispatch(const DispatchDesc& d, const ObjectLookup& objects, const DeviceCaps& caps) {
+    if (!caps.computeShaders) return fail(Error::DispatchUnsupported, {underCeiling(caps)});
+    const std::pair<const char*, uint32_t> groups[] = {{"X", d.groupsX}, {"Y", d.groupsY}, {"Z", d.groupsZ}};
+    for (const auto& [axis, count] : groups)
+        if (count == 0 || count > 65535) return fail(Error::DispatchGroups, {axis, str(count)});
+    Result<const PipelineInfo*> found = objects.pipeline(d.pipeline, "DispatchDesc.pipeline");
+    if (!found) return found.status();
+    const PipelineInfo& pl = *found.value();
+    if (!pl.compute) return fail(Error::DispatchPipelineGraphics, {pl.programName});
+    std::vector<MipUse> uses;
+    SFX_TRY(bindings(d.bindings, pl, "DispatchDesc.bindings", objects, caps, uses));
+    return noMipUsedTwoWays(uses);
+}
+
+}  // namespace sfx::validation

@@ -1,0 +1,146 @@
+// The scene renderer (sfx_render, behind `sfx render`) on every backend x tier: unlit objects
+// and the background keep their colours exactly, AO only darkens lambert surfaces and does
+// darken some, the plan holds only what the scene and options need, and transparent objects
+// are reported, never skipped silently.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <string>
+
+#include "sfx/scene_render.hpp"
+#include "sfx/tiers.hpp"
+#include "test_device.hpp"
+
+using namespace sfx;
+
+namespace {
+
+// A lambert floor with a box standing on it (contact creases for AO), and an unlit quad
+// facing the camera at the centre of the view. Colours are exact in half floats.
+const char* kScene = R"({
+  "width": 64, "height": 40,
+  "camera": {"position": [0, 1.0, 2.5], "target": [0, 0.4, 0], "near": 0.1, "far": 20},
+  "background": [0.25, 0.5, 0.75],
+  "objects": [
+    {"mesh": "box", "position": [0, -0.05, 0], "scale": [6, 0.1, 6], "color": [0.75, 0.75, 0.75]},
+    {"mesh": "box", "position": [-0.7, 0.3, -0.3], "scale": 0.6, "color": [0.5, 0.75, 0.25]},
+    {"mesh": "quad", "position": [0.45, 0.5, 0.3], "scale": 0.5, "color": [0.125, 0.375, 0.625], "shading": "unlit"}
+  ]})";
+
+scene::Scene loadScene(const std::string& text) {
+    Result<scene::Scene> s = scene::loadSceneFromString(text, ".", "test-scene");
+    INFO(s.status().toString());
+    REQUIRE(s.isOk());
+    return s.value();
+}
+
+tiers::TierChoice testTier() {
+    Result<tiers::TierChoice> t = tiers::choose(test::device().caps(), test::tier());
+    INFO(t.status().toString());
+    REQUIRE(t.isOk());
+    return t.value();
+}
+
+render::RenderResult renderWith(const scene::Scene& scene, const render::RenderOptions& options, render::RenderPlan* plan = nullptr) {
+    auto r = render::SceneRender::create(test::device(), testTier(), scene, options);
+    INFO(r.status().toString());
+    REQUIRE(r.isOk());
+    if (plan) *plan = r.value()->plan();
+    Result<render::RenderResult> out = r.value()->render();
+    INFO(out.status().toString());
+    REQUIRE(out.isOk());
+    return std::move(out.value());
+}
+
+bool hasPass(const render::RenderPlan& plan, const std::string& effect) {
+    return std::any_of(plan.lines.begin(), plan.lines.end(), [&](const render::PlanLine& l) {
+        return l.kind != render::PlanLine::Kind::Omitted && l.effect == effect;
+    });
+}
+
+}  // namespace
+
+TEST_CASE("scene renderer: unlit and background exact, AO only darkens lambert surfaces", "[render][conformance]") {
+    const scene::Scene scene = loadScene(kScene);
+    render::RenderOptions off;
+    off.ao.reset();
+    render::RenderOptions on;
+    on.ao = AoTechnique::Alchemy;
+    on.aoRadius = 0.4f;
+    render::RenderPlan offPlan, onPlan;
+    const render::RenderResult a = renderWith(scene, off, &offPlan);
+    const render::RenderResult b = renderWith(scene, on, &onPlan);
+    REQUIRE(a.color.width == 64);
+    REQUIRE(a.color.height == 40);
+    CHECK_FALSE(a.ao.has_value());
+    REQUIRE(b.ao.has_value());
+
+    const glm::dvec3 unlit(0.125, 0.375, 0.625);
+    size_t unlitPixels = 0, skyPixels = 0, darkened = 0;
+    for (size_t i = 0; i < size_t(64) * 40; ++i) {
+        const glm::dvec3 ca(a.color.pixels[i * 3], a.color.pixels[i * 3 + 1], a.color.pixels[i * 3 + 2]);
+        const glm::dvec3 cb(b.color.pixels[i * 3], b.color.pixels[i * 3 + 1], b.color.pixels[i * 3 + 2]);
+        INFO("pixel " << i);
+        if (ca == unlit) ++unlitPixels;
+        if (ca == scene.background) ++skyPixels;
+        if (ca == unlit || ca == scene.background) {
+            REQUIRE(cb == ca);  // untouched by AO
+            continue;
+        }
+        for (int c = 0; c < 3; ++c) REQUIRE(cb[c] <= ca[c] + 1e-6);  // AO multiplies the ambient term by <= 1
+        if (cb.x < ca.x - 1e-3) ++darkened;
+        const float v = b.ao->pixels[i];
+        REQUIRE(v >= 0.0f);
+        REQUIRE(v <= 1.0f);
+    }
+    CHECK(unlitPixels > 20);  // the quad covers about 12 x 12 pixels
+    CHECK(skyPixels > 20);
+    CHECK(darkened > 10);     // the creases at the box's foot
+
+    CHECK_FALSE(hasPass(offPlan, "ao"));
+    CHECK_FALSE(hasPass(offPlan, "depth"));
+    CHECK(hasPass(onPlan, "ao"));
+    CHECK_FALSE(hasPass(onPlan, "transparency"));
+    CHECK(b.warnings.empty());
+    CHECK(b.stats.transparentObjects == 0);
+    CHECK(b.stats.opaqueObjects == 3);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("scene renderer: transparent objects are reported, not skipped silently", "[render][conformance]") {
+    std::string text = kScene;
+    const std::string unlitKey = "\"shading\": \"unlit\"";
+    text.replace(text.find(unlitKey), unlitKey.size(), unlitKey + ", \"opacity\": 0.5");
+    const scene::Scene scene = loadScene(text);
+    render::RenderOptions options;
+    render::RenderPlan plan;
+    const render::RenderResult r = renderWith(scene, options, &plan);
+    REQUIRE(r.warnings.size() == 1);
+    CHECK(r.warnings[0].find("1 transparent") != std::string::npos);
+    CHECK(plan.describe().find("transparency not yet available: 1 transparent") != std::string::npos);
+    CHECK(r.stats.transparentObjects == 1);
+    CHECK(r.stats.opaqueObjects == 2);
+    CHECK_FALSE(r.stats.transparencyRan);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("scene renderer: bad options are named errors", "[render][bad-input]") {
+    const scene::Scene scene = loadScene(kScene);
+    const struct {
+        void (*edit)(render::RenderOptions&);
+        const char* field;
+    } cases[] = {{[](render::RenderOptions& o) { o.aoRadius = 0.0f; }, "--ao-radius"},
+                 {[](render::RenderOptions& o) { o.aoLayers = 0; }, "--ao-layers"},
+                 {[](render::RenderOptions& o) { o.maxLayers = 0; }, "--max-layers"},
+                 {[](render::RenderOptions& o) { o.nodes = 9; }, "--nodes"},
+                 {[](render::RenderOptions& o) { o.width = scene::kMaxSceneSize + 1; }, "--width"}};
+    for (const auto& c : cases) {
+        render::RenderOptions o;
+        c.edit(o);
+        auto r = render::SceneRender::create(test::device(), testTier(), scene, o);
+        INFO(c.field);
+        REQUIRE_FALSE(r.isOk());
+        CHECK(r.status().code() == StatusCode::InvalidArgument);
+        CHECK(r.status().message().find(c.field) == 0);
+    }
+}

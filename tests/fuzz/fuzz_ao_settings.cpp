@@ -1,0 +1,48 @@
+// validateAoSettings / resolveAoConfig on settings and profiles from fuzzer bytes: a named
+// InvalidArgument or a config inside the documented ranges (finite numbers, 1..64 samples,
+// blur radius <= SFX_AO_MAX_BLUR_RADIUS, at least one depth MIP level read).
+#include <cstdlib>
+
+#include "fuzz_values.hpp"
+#include "sfx/ao.hpp"
+#include "sfx_shared_ao.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    using namespace sfx;
+    FuzzedDataProvider in(data, size);
+    const TierProfile profile = fuzz::hostileProfile(in);
+    AoSettings s;
+    s.technique = AoTechnique(in.ConsumeIntegralInRange<uint32_t>(0, 4));
+    s.radius = fuzz::hostileFloat(in);
+    s.intensity = fuzz::hostileFloat(in);
+    s.contrast = fuzz::hostileFloat(in);
+    s.bias = in.ConsumeBool() ? -1.0f : fuzz::hostileFloat(in);
+    s.epsilon = fuzz::hostileFloat(in);
+    s.samples = fuzz::hostileCount(in);
+    s.blur = in.ConsumeBool();
+    s.blurRadius = fuzz::hostileCount(in);
+    s.normals = AoNormals(in.ConsumeIntegralInRange<uint32_t>(0, 3));
+    s.crease.range = fuzz::hostileFloat(in);
+    s.crease.bias = fuzz::hostileFloat(in);
+    s.crease.averager = fuzz::hostileFloat(in);
+    s.crease.minimumCrease = fuzz::hostileFloat(in);
+    s.crease.fadeStart = fuzz::hostileFloat(in);
+    s.crease.fadeEnd = fuzz::hostileFloat(in);
+    const uint32_t mipLevelsAllowed = in.ConsumeIntegralInRange<uint32_t>(1, 16);
+
+    const Status valid = validateAoSettings(s, profile);
+    Result<AoConfig> config = resolveAoConfig(s, profile, mipLevelsAllowed);
+    if (bool(valid) != bool(config)) std::abort();  // resolve validates exactly as validate does
+    if (!config) {
+        if (!fuzz::namesField(config.status(), {"AoSettings.", "AoDesc.profile"})) std::abort();
+        return 0;
+    }
+    const AoConfig& c = config.value();
+    for (double v : {c.radius, c.intensity, c.contrast, c.bias, c.epsilon, c.spiralTurns, c.maxRadiusPx})
+        if (!std::isfinite(v)) std::abort();
+    if (c.samples < 1 || c.samples > uint32_t(shared::SFX_AO_MAX_SAMPLES)) std::abort();
+    if (c.mirrored && c.samples % 2 != 0) std::abort();
+    if (c.blurRadius > uint32_t(shared::SFX_AO_MAX_BLUR_RADIUS)) std::abort();
+    if (c.depthMipLevels < 1 || c.depthMipLevels > mipLevelsAllowed) std::abort();
+    return 0;
+}

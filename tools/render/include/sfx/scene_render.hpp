@@ -1,0 +1,119 @@
+// The scene renderer behind `sfx render` and the demo: a scene file (sfx/scene_file.hpp) drawn
+// through the HAL into the SDK's own textures (the samples' G-buffer raster pass), ambient
+// obscurance on it, and a composite: lambert objects get colour * (ambient * AO + light * n.l),
+// unlit objects their colour exactly. It models only what the scene and the options ask for
+// (no AO resources with AO off, no transparency resources when nothing is transparent), and
+// its plan says what each pass and resource is for.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sfx/ao.hpp"
+#include "sfx/image_io.hpp"
+#include "sfx/plan.hpp"
+#include "sfx/scene_file.hpp"
+#include "sfx/tiers.hpp"
+
+namespace sfx::render {
+
+// The fixed light of lambert shading, in view space (from the upper left, toward the scene),
+// and the weights of its terms: colour * (kAmbient * AO + kDirect * max(0, n . light)).
+inline constexpr double kLightDirectionView[3] = {-0.4, 0.7, 0.59};
+inline constexpr double kAmbient = 0.5;
+inline constexpr double kDirect = 0.6;
+
+struct RenderOptions {
+    uint32_t width = 0, height = 0;  // 0: the scene's; else [1, scene::kMaxSceneSize]
+    std::optional<AoTechnique> ao = AoTechnique::Scalable;  // nullopt: AO off
+    float aoRadius = 0.5f;           // AoSettings.radius
+    uint32_t aoLayers = 1;           // opaque depth layers AO tests; 1 = single-layer AO
+    bool oit = true;                 // false: transparent objects are not drawn (--oit off)
+    uint32_t maxLayers = 16;         // K: fragments kept exact per pixel by the transparency resolve
+    uint32_t nodes = 4;              // M: nodes of a compressed list
+};
+// InvalidArgument naming the field (by its `sfx render` flag, e.g. "--ao-radius") and its allowed values.
+Status validateOptions(const RenderOptions& options);
+
+// One line of the plan: a pass, a resource, a host step, or something left out, and why.
+struct PlanLine {
+    enum class Kind { Pass, Resource, Host, Omitted } kind = Kind::Pass;
+    std::string effect, name;
+    uint32_t width = 0, height = 0;
+    uint64_t bytes = 0;  // resources
+    std::string why;
+};
+struct RenderPlan {
+    std::vector<PlanLine> lines;
+    uint64_t totalBytes() const;
+    std::string describe() const;
+};
+
+// What the transparency path stored, or could not; zero where it did not run.
+struct RenderStats {
+    uint32_t opaqueObjects = 0, transparentObjects = 0, triangles = 0;
+    uint64_t fragmentsStored = 0, fragmentsDropped = 0, poolBytes = 0;
+    double meanDepthComplexity = 0, maxDepthComplexity = 0;
+    bool transparencyRan = false;
+    std::string describe() const;
+};
+
+// The seam where order-independent transparency plugs in: given the scene's transparent
+// objects over the composited opaque picture, it composites them (and may add passes and
+// resources to the plan and numbers to the stats). Until the transparency effect exists it
+// draws nothing and says so (warning and plan line); the renderer never skips them silently.
+struct TransparencyRequest {
+    const scene::Scene* scene = nullptr;
+    std::vector<size_t> objects;  // indices into scene->objects, all translucent
+    const RenderOptions* options = nullptr;
+};
+struct TransparencyOutcome {
+    bool drawn = false;
+    std::vector<PlanLine> plan;
+    std::vector<std::string> warnings;
+};
+TransparencyOutcome renderTransparent(Device& device, const TransparencyRequest& request, io::Image& color,
+                                      RenderStats& stats);
+
+struct RenderResult {
+    io::Image color;               // linear RGB, row 0 = top
+    std::optional<io::Image> ao;   // visibility in [0, 1], 1 channel, when AO ran
+    RenderPlan plan;
+    RenderStats stats;
+    std::vector<std::string> warnings;  // printable: what was asked but not drawn
+};
+
+class SceneRender {
+public:
+    // Uploads the scene and creates exactly the passes the options need; errors name the option.
+    static Result<std::unique_ptr<SceneRender>> create(Device& device, const tiers::TierChoice& tier,
+                                                       const scene::Scene& scene, const RenderOptions& options);
+    ~SceneRender();
+    SceneRender(const SceneRender&) = delete;
+    SceneRender& operator=(const SceneRender&) = delete;
+
+    uint32_t width() const { return width_; }
+    uint32_t height() const { return height_; }
+    // Known before render(): the passes, resources and bytes, and why each is there.
+    RenderPlan plan() const;
+    Result<RenderResult> render();
+
+private:
+    struct Impl;
+    explicit SceneRender(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+    uint32_t width_ = 0, height_ = 0;
+};
+
+// Linear [0, 1] -> the sRGB transfer function (PNG output).
+double linearToSrgb(double linear);
+// The image as a PNG stores it: each channel sRGB-encoded.
+io::Image srgbEncoded(const io::Image& linear);
+// By extension: .pfm and .exr hold linear RGB, .png sRGB-encoded. Other extensions:
+// InvalidArgument naming `flag`.
+Status writeRendered(const std::string& path, const io::Image& linear, const char* flag);
+
+}  // namespace sfx::render

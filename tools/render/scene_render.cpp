@@ -1,0 +1,350 @@
+// The scene renderer: scene file -> the samples' G-buffer raster pass -> AO -> composite.
+#include "sfx/scene_render.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "scene.hpp"
+#include "sfx/half.hpp"
+#include "sfx_shared_raster.h"
+
+namespace sfx::render {
+namespace {
+
+constexpr uint32_t kMaxAoLayers = 1;  // multilayer AO (more than one opaque layer) is not built yet
+constexpr uint32_t kMaxKeptLayers = 64;
+constexpr uint32_t kMaxCompressedNodes = 4;
+
+std::string mib(uint64_t bytes) {
+    std::ostringstream s;
+    s.precision(3);
+    s << double(bytes) / (1024.0 * 1024.0) << " MiB";
+    return s.str();
+}
+
+// The opaque objects as the samples' raster pass draws them: one mesh per object, placed by
+// its world matrix, with its colour and shading code.
+samples::Scene opaqueScene(const scene::Scene& in) {
+    samples::Scene out;
+    out.name = in.path;
+    out.eye = in.camera.position;
+    out.target = in.camera.target;
+    out.up = in.camera.up;
+    out.fovYDegrees = in.camera.fovYDegrees;
+    out.nearPlane = in.camera.nearPlane;
+    out.farPlane = in.camera.farPlane;
+    for (const scene::SceneObject& o : in.objects) {
+        if (o.translucent()) continue;
+        samples::Mesh m(in.meshes[o.meshIndex]);
+        m.model = o.world;
+        const double code = o.shading == scene::Shading::Unlit ? shared::SFX_RASTER_SHADING_UNLIT : shared::SFX_RASTER_SHADING_LAMBERT;
+        m.surface = glm::dvec4(o.color, code);
+        out.meshes.push_back(std::move(m));
+    }
+    return out;
+}
+
+std::string aoPassWhy(const PlannedPass& p) {
+    if (p.name == "linearize") return "linear depth from the hardware depth, which the AO taps read";
+    if (p.name.rfind("depth_mip", 0) == 0) return "depth MIP level the tier's Scalable AO reads for distant taps";
+    if (p.name.find("blur") != std::string::npos) return "one direction of the depth-aware bilateral blur of the raw AO";
+    return "the ambient obscurance estimate";
+}
+
+}  // namespace
+
+Status validateOptions(const RenderOptions& o) {
+    if (o.width > scene::kMaxSceneSize)
+        return invalidArgument("--width", std::to_string(o.width), "0 (the scene's) or [1, " + std::to_string(scene::kMaxSceneSize) + "]");
+    if (o.height > scene::kMaxSceneSize)
+        return invalidArgument("--height", std::to_string(o.height), "0 (the scene's) or [1, " + std::to_string(scene::kMaxSceneSize) + "]");
+    if (!(o.aoRadius >= kAoMinRadius && o.aoRadius <= 1000.0f))
+        return invalidArgument("--ao-radius", std::to_string(o.aoRadius), "[1e-4, 1000]");
+    if (o.aoLayers < 1 || o.aoLayers > kMaxAoLayers)
+        return invalidArgument("--ao-layers", std::to_string(o.aoLayers),
+                               "1 (multilayer AO over more opaque layers is not available in this build)");
+    if (o.maxLayers < 1 || o.maxLayers > kMaxKeptLayers)
+        return invalidArgument("--max-layers", std::to_string(o.maxLayers), "[1, " + std::to_string(kMaxKeptLayers) + "]");
+    if (o.nodes < 1 || o.nodes > kMaxCompressedNodes)
+        return invalidArgument("--nodes", std::to_string(o.nodes), "[1, " + std::to_string(kMaxCompressedNodes) + "]");
+    return Status::ok();
+}
+
+uint64_t RenderPlan::totalBytes() const {
+    uint64_t total = 0;
+    for (const PlanLine& l : lines) total += l.bytes;
+    return total;
+}
+
+std::string RenderPlan::describe() const {
+    std::ostringstream s;
+    const struct {
+        PlanLine::Kind kind;
+        const char* title;
+    } sections[] = {{PlanLine::Kind::Pass, "passes"},
+                    {PlanLine::Kind::Resource, "resources"},
+                    {PlanLine::Kind::Host, "host steps"},
+                    {PlanLine::Kind::Omitted, "not modelled"}};
+    for (const auto& section : sections) {
+        s << section.title << ":\n";
+        for (const PlanLine& l : lines) {
+            if (l.kind != section.kind) continue;
+            s << "  " << l.effect << " / " << l.name;
+            if (l.width) s << "  " << l.width << "x" << l.height;
+            if (l.kind == PlanLine::Kind::Resource) s << "  " << l.bytes << " bytes";
+            s << "  -- " << l.why << "\n";
+        }
+    }
+    s << "total GPU memory: " << totalBytes() << " bytes (" << mib(totalBytes()) << ")\n";
+    return s.str();
+}
+
+std::string RenderStats::describe() const {
+    std::ostringstream s;
+    s << "objects: " << opaqueObjects << " opaque, " << transparentObjects << " transparent; " << triangles << " opaque triangles\n";
+    if (!transparencyRan) {
+        s << "fragments stored: 0, dropped: 0, pool bytes: 0 (no transparency pass ran"
+          << (transparentObjects ? ": transparency not yet available" : ": nothing in the scene is transparent") << ")\n";
+        s << "depth complexity: not measured (it is measured by the transparency pass)\n";
+    } else {
+        s << "fragments stored: " << fragmentsStored << ", dropped: " << fragmentsDropped << ", pool bytes: " << poolBytes << "\n";
+        s << "depth complexity: mean " << meanDepthComplexity << ", max " << maxDepthComplexity << "\n";
+    }
+    return s.str();
+}
+
+TransparencyOutcome renderTransparent(Device&, const TransparencyRequest& request, io::Image&, RenderStats&) {
+    TransparencyOutcome out;
+    const std::string n = std::to_string(request.objects.size());
+    out.plan.push_back({PlanLine::Kind::Omitted, "transparency", "oit", 0, 0, 0,
+                        "transparency not yet available: " + n + " transparent objects are not drawn"});
+    out.warnings.push_back("transparency not yet available: " + n + " transparent objects skipped");
+    return out;
+}
+
+struct SceneRender::Impl {
+    Device& device;
+    tiers::TierChoice tier;
+    scene::Scene file;  // a copy: the caller's scene may go away after create()
+    RenderOptions options;
+    samples::Scene scene;
+    std::vector<size_t> transparent;
+    std::unique_ptr<samples::SceneRenderer> raster;
+    std::unique_ptr<AmbientObscurance> ao;
+    TextureHandle aoOutput;
+    Format aoFormat = Format::Undefined;
+    uint32_t width = 0, height = 0;
+    uint32_t triangles = 0;
+
+    Impl(Device& d, const tiers::TierChoice& t, const scene::Scene& f, const RenderOptions& o)
+        : device(d), tier(t), file(f), options(o) {}
+    ~Impl() {
+        ao.reset();
+        if (!aoOutput.isNull()) (void)device.destroyTexture(aoOutput);
+    }
+};
+
+SceneRender::SceneRender(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {
+    width_ = impl_->width;
+    height_ = impl_->height;
+}
+SceneRender::~SceneRender() = default;
+
+Result<std::unique_ptr<SceneRender>> SceneRender::create(Device& device, const tiers::TierChoice& tier, const scene::Scene& file,
+                                                         const RenderOptions& options) {
+    SFX_TRY(validateOptions(options));
+    auto impl = std::make_unique<Impl>(device, tier, file, options);
+    impl->width = options.width ? options.width : file.width;
+    impl->height = options.height ? options.height : file.height;
+    impl->scene = opaqueScene(file);
+    for (size_t i = 0; i < file.objects.size(); ++i)
+        if (file.objects[i].translucent()) impl->transparent.push_back(i);
+    for (const samples::Mesh& m : impl->scene.meshes) impl->triangles += uint32_t(m.indices.size() / 3);
+
+    Result<std::unique_ptr<samples::SceneRenderer>> raster = samples::SceneRenderer::create(device, tier.tier, Format::RGBA16F);
+    if (!raster) return raster.status();
+    impl->raster = std::move(raster.value());
+    SFX_TRY(impl->raster->load(impl->scene));
+
+    if (options.ao) {
+        AoSettings s;
+        s.technique = *options.ao;
+        s.radius = options.aoRadius;
+        s.normals = AoNormals::FromTexture;
+        Result<std::unique_ptr<AmbientObscurance>> ao =
+            AmbientObscurance::create(device, {impl->width, impl->height, tier.profile, s, DepthKind::Hardware});
+        if (!ao) return ao.status();
+        impl->ao = std::move(ao.value());
+        impl->aoFormat = device.caps().renderableFormat[size_t(Format::R32F)] ? Format::R32F : Format::RGBA8;
+        Result<TextureHandle> out =
+            device.createTexture({impl->width, impl->height, 1, impl->aoFormat, kTextureSampled | kTextureRenderTarget, "render-ao"});
+        if (!out) return out.status();
+        impl->aoOutput = out.value();
+    }
+    return std::unique_ptr<SceneRender>(new SceneRender(std::move(impl)));
+}
+
+RenderPlan SceneRender::plan() const {
+    const Impl& m = *impl_;
+    const uint32_t w = m.width, h = m.height;
+    RenderPlan p;
+    using K = PlanLine::Kind;
+    p.lines.push_back({K::Pass, "scene", "raster", w, h, 0,
+                       std::to_string(m.scene.meshes.size()) + " opaque objects, " + std::to_string(m.triangles) +
+                           " triangles into depth, normals and colour"});
+    const struct {
+        const char* name;
+        Format format;
+        const char* why;
+    } targets[] = {{"depth", Format::D32F, "hardware depth: visibility, and the depth AO reads"},
+                   {"normals", Format::RGBA16F, "view-space normals: lambert shading and AO's tap normals"},
+                   {"velocity", Format::RG16F, "written by the shared raster pass (motion blur's input); a still frame leaves it unread"},
+                   {"albedo", Format::RGBA16F, "linear colour exact in half floats, shading code in alpha"}};
+    for (const auto& t : targets) {
+        const PlannedResource r = plannedTexture("scene", t.name, {w, h, 1, t.format, kTextureSampled | kTextureRenderTarget, t.name});
+        p.lines.push_back({K::Resource, "scene", t.name, w, h, r.bytes, std::string(toString(t.format)) + ": " + t.why});
+    }
+    if (m.ao) {
+        const Plan aoPlan = m.ao->plan();
+        const std::string tech = toString(*m.options.ao);
+        for (const PlannedPass& pass : aoPlan.passes) p.lines.push_back({K::Pass, pass.effect, pass.name, pass.width, pass.height, 0, aoPassWhy(pass)});
+        for (const PlannedResource& r : aoPlan.resources)
+            p.lines.push_back({K::Resource, r.effect, r.name, r.width, r.height, r.bytes,
+                               (r.format == Format::Undefined ? std::string("uniform buffer") : std::string(toString(r.format))) +
+                                   ": held by the AO effect (--ao " + tech + ")"});
+        const PlannedResource out = plannedTexture("ao", "visibility", {w, h, 1, m.aoFormat, kTextureSampled | kTextureRenderTarget, "ao"});
+        p.lines.push_back({K::Resource, "ao", "visibility", w, h, out.bytes,
+                           std::string(toString(m.aoFormat)) + ": the AO result the composite multiplies into the ambient term"});
+        p.lines.push_back({K::Omitted, "ao", "multilayer depth", 0, 0, 0, "not asked (--ao-layers 1): AO tests the first visible layer only"});
+    } else {
+        p.lines.push_back({K::Omitted, "ao", "all", 0, 0, 0, "--ao off: no linear depth, AO or blur passes and no AO textures"});
+    }
+    p.lines.push_back({K::Host, "composite", "shade", w, h, 0,
+                       "lambert: colour * (ambient * AO + light * n.l); unlit: colour exactly; background where nothing is drawn"});
+    if (m.transparent.empty()) {
+        p.lines.push_back({K::Omitted, "transparency", "oit", 0, 0, 0,
+                           "nothing in the scene is transparent: no A-buffer, node pool or OIT pass"});
+    } else if (!m.options.oit) {
+        p.lines.push_back({K::Omitted, "transparency", "oit", 0, 0, 0,
+                           "--oit off: " + std::to_string(m.transparent.size()) + " transparent objects are not drawn"});
+    } else {
+        p.lines.push_back({K::Omitted, "transparency", "oit", 0, 0, 0,
+                           "transparency not yet available: " + std::to_string(m.transparent.size()) + " transparent objects"});
+    }
+    return p;
+}
+
+namespace {
+
+struct ReadTargets {
+    std::vector<uint16_t> albedo, normals;  // RGBA16F halves
+    std::vector<float> visibility;          // one per pixel; empty without AO
+};
+
+Result<ReadTargets> readTargets(Device& device, const samples::GBuffer& g, TextureHandle ao, Format aoFormat) {
+    const size_t n = size_t(g.width) * g.height;
+    ReadTargets t;
+    t.albedo.resize(n * 4);
+    t.normals.resize(n * 4);
+    SFX_TRY(device.readTexture(g.albedo, 0, t.albedo.data(), t.albedo.size() * sizeof(uint16_t)));
+    SFX_TRY(device.readTexture(g.normals, 0, t.normals.data(), t.normals.size() * sizeof(uint16_t)));
+    if (ao.isNull()) return t;
+    t.visibility.resize(n);
+    if (aoFormat == Format::R32F) {
+        SFX_TRY(device.readTexture(ao, 0, t.visibility.data(), n * sizeof(float)));
+    } else {
+        std::vector<uint8_t> px(n * 4);
+        SFX_TRY(device.readTexture(ao, 0, px.data(), px.size()));
+        for (size_t i = 0; i < n; ++i) t.visibility[i] = px[i * 4] / 255.0f;
+    }
+    return t;
+}
+
+io::Image composite(const ReadTargets& t, uint32_t w, uint32_t h, const glm::dvec3& background) {
+    const glm::dvec3 light = glm::normalize(glm::dvec3(kLightDirectionView[0], kLightDirectionView[1], kLightDirectionView[2]));
+    io::Image out(w, h, 3);
+    for (size_t i = 0; i < size_t(w) * h; ++i) {
+        const double code = halfToFloat(t.albedo[i * 4 + 3]);
+        const glm::dvec3 albedo(halfToFloat(t.albedo[i * 4]), halfToFloat(t.albedo[i * 4 + 1]), halfToFloat(t.albedo[i * 4 + 2]));
+        glm::dvec3 c = background;
+        if (code > 0.75) {
+            const glm::dvec3 n(halfToFloat(t.normals[i * 4]), halfToFloat(t.normals[i * 4 + 1]), halfToFloat(t.normals[i * 4 + 2]));
+            const double ao = t.visibility.empty() ? 1.0 : double(t.visibility[i]);
+            c = albedo * (kAmbient * ao + kDirect * std::max(0.0, glm::dot(n, light)));
+        } else if (code > 0.0) {
+            c = albedo;
+        }
+        for (int k = 0; k < 3; ++k) out.pixels[i * 3 + k] = float(c[k]);
+    }
+    return out;
+}
+
+}  // namespace
+
+Result<RenderResult> SceneRender::render() {
+    Impl& m = *impl_;
+    RenderResult result;
+    result.plan = plan();
+    result.stats.opaqueObjects = uint32_t(m.scene.meshes.size());
+    result.stats.transparentObjects = uint32_t(m.transparent.size());
+    result.stats.triangles = m.triangles;
+
+    Result<samples::GBuffer> g = m.raster->render(m.scene, m.width, m.height);
+    if (!g) return g.status();
+    auto work = [&]() -> Status {
+        if (m.ao) {
+            AoInputs in;
+            in.depth = {g->depth, DepthKind::Hardware, g->camera};
+            in.normals = g->normals;
+            in.output = m.aoOutput;
+            SFX_TRY(m.ao->dispatch(in));
+        }
+        SFX_TRY(m.device.flush());
+        Result<ReadTargets> t = readTargets(m.device, g.value(), m.aoOutput, m.aoFormat);
+        if (!t) return t.status();
+        result.color = composite(t.value(), m.width, m.height, m.file.background);
+        if (m.ao) {
+            io::Image ao(m.width, m.height, 1);
+            ao.pixels = t->visibility;
+            result.ao = std::move(ao);
+        }
+        return Status::ok();
+    };
+    Status s = work();
+    m.raster->destroy(g.value());
+    SFX_TRY(s);
+    if (!m.transparent.empty()) {
+        if (m.options.oit) {
+            TransparencyRequest request{&m.file, m.transparent, &m.options};
+            TransparencyOutcome t = renderTransparent(m.device, request, result.color, result.stats);
+            result.warnings.insert(result.warnings.end(), t.warnings.begin(), t.warnings.end());
+        } else {
+            result.warnings.push_back("--oit off: " + std::to_string(m.transparent.size()) + " transparent objects not drawn");
+        }
+    }
+    return result;
+}
+
+double linearToSrgb(double linear) {
+    const double v = std::clamp(std::isnan(linear) ? 0.0 : linear, 0.0, 1.0);
+    return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+}
+
+io::Image srgbEncoded(const io::Image& linear) {
+    io::Image out = linear;
+    for (uint32_t i = 0; i < out.pixels.size(); ++i) {
+        const bool alpha = out.channels == 4 && i % 4 == 3;
+        if (!alpha) out.pixels[i] = float(linearToSrgb(out.pixels[i]));
+    }
+    return out;
+}
+
+Status writeRendered(const std::string& path, const io::Image& linear, const char* flag) {
+    const std::string ext = io::extensionOf(path);
+    if (ext == ".png") return io::writePng(path, srgbEncoded(linear));
+    if (ext == ".pfm" || ext == ".exr") return io::writeImage(path, linear);
+    return invalidArgument(flag, "'" + path + "'", "a .pfm, .exr (linear RGB) or .png (sRGB) file");
+}
+
+}  // namespace sfx::render
