@@ -116,7 +116,7 @@ Status GlDevice::encodeRenderPass(const RenderPassDesc& pass, std::span<const Dr
 void GlDevice::encodeDraw(const DrawDesc& d) {
     const GlPipeline& p = pipelines_.get(d.pipeline);
     const GraphicsPipelineDesc& pd = p.desc;
-    GL(glUseProgram, p.program);
+    GL(glUseProgram, programOf(p));
     bindResources(d.bindings);
 
     if (pd.depth.test || pd.depth.write) {

@@ -33,7 +33,10 @@ GlDevice::~GlDevice() {
     samplers_.forEachAlive([&](GlSampler& s) { gl_.glDeleteSamplers(1, &s.name); });
     programs_.forEachAlive([&](GlProgram& p) { gl_.glDeleteProgram(p.name); });
     for (GLuint p : destroyedPrograms_) gl_.glDeleteProgram(p);
-    pipelines_.forEachAlive([&](GlPipeline& p) { gl_.glDeleteVertexArrays(1, &p.vao); });
+    pipelines_.forEachAlive([&](GlPipeline& p) {
+        gl_.glDeleteVertexArrays(1, &p.vao);
+        if (p.specialized) gl_.glDeleteProgram(p.specialized);
+    });
     for (auto& [key, fbo] : fbos_) gl_.glDeleteFramebuffers(1, &fbo);
     if (nearestSampler_) gl_.glDeleteSamplers(1, &nearestSampler_);
     if (emptyVao_) gl_.glDeleteVertexArrays(1, &emptyVao_);
@@ -127,7 +130,7 @@ Status GlDevice::renderPass(const RenderPassDesc& pass, std::span<const DrawDesc
 Status GlDevice::dispatch(const DispatchDesc& d) {
     SFX_TRY(validation::dispatch(d, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
     SFX_TRY(enter());
-    encodeDispatch(pipelines_.get(d.pipeline).program, d);
+    encodeDispatch(programOf(pipelines_.get(d.pipeline)), d);
     return takeDeviceError(Status::ok());
 }
 

@@ -46,15 +46,20 @@ struct GlSampler {
     SamplerDesc desc;
     GLuint name = 0;
 };
+// Stage type and text, as compiled: kept so a pipeline with specialisation constants can
+// compile its own copy with the values in place.
+using GlSources = std::vector<std::pair<GLenum, std::string>>;
 struct GlProgram {
     validation::ProgramInfo info;
     GLuint name = 0;
+    GlSources sources;
 };
 struct GlPipeline {
     validation::PipelineInfo info;  // what the shared validation checks draws and dispatches against
     GLuint program = 0;             // the program's GL object, kept until its last pipeline goes
     GraphicsPipelineDesc desc;  // graphics state; program field unused
     GLuint vao = 0;
+    GLuint specialized = 0;         // the program compiled with the pipeline's constants; 0: none
 };
 struct GlTimer {
     bool begun = false, ended = false;
@@ -118,6 +123,7 @@ public:
     Status flush() override;
 
     std::vector<std::string> takeValidationMessages() override;
+    DeviceStats stats() const override;  // gl_resources.cpp
 
 private:
     // ---- Context (gl_device.cpp) ----------------------------------------------------------
@@ -155,6 +161,14 @@ private:
     void releaseProgramObject(GLuint program, bool programDestroyed);
     // Compiles and links `program`'s text for the device's dialect and binds its resources by name.
     Result<GLuint> linkProgram(const CompiledProgram& program);
+    static GlSources sourcesOf(const CompiledProgram& program, ShaderDialect dialect);
+    Result<GLuint> linkSources(const std::string& programName, const GlSources& sources,
+                               const std::vector<ShaderResource>& resources);
+    // The program of `pipeline` specialised with its constants (0 when it has none).
+    Result<GLuint> specialize(const GlProgram& program, const std::vector<SpecializationConstant>& constants);
+    GLuint programOf(const GlPipeline& pipeline) const {
+        return pipeline.specialized ? pipeline.specialized : pipeline.program;
+    }
     Result<GLuint> compileShader(const std::string& programName, GLenum type, const std::string& source);
     Result<GLuint> buildProgram(const std::string& programName, const std::vector<std::pair<GLenum, std::string>>& sources);
     void bindResourcesByName(GLuint program, const std::vector<ShaderResource>& resources);
@@ -204,6 +218,11 @@ private:
     std::map<GLuint, uint32_t> programUsers_;  // pipelines per GL program object
     std::set<GLuint> destroyedPrograms_;       // destroyed programs whose pipelines still draw
     std::map<FboKey, GLuint> fbos_;
+    // For stats(): texture and buffer storage (the textures readTexture copies depth through
+    // included, and counted again as readback copies), framebuffer objects, and the bytes of
+    // the HAL's textures and buffers alive.
+    ObjectCount storage_, readbackCopies_, framebufferCount_;
+    uint64_t bytesHeld_ = 0;
     GLuint nearestSampler_ = 0;
     GLuint emptyVao_ = 0;
     GLuint depthCopyProgram_ = 0;

@@ -51,6 +51,7 @@ Result<GLuint> GlDevice::framebuffer(const ColorTargets& colors, const GlTexture
                       std::string("the attachments make an incomplete framebuffer (status ") + hex + ")"};
     }
     fbos_[key] = fbo;
+    framebufferCount_.add();
     return fbo;
 }
 
@@ -61,6 +62,7 @@ void GlDevice::forgetFbosOf(GLuint texture) {
         });
         if (uses) {
             GL(glDeleteFramebuffers, 1, &it->second);
+            framebufferCount_.remove();
             it = fbos_.erase(it);
         } else {
             ++it;

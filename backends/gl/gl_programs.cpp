@@ -19,7 +19,7 @@ Result<ProgramHandle> GlDevice::createProgram(const CompiledProgram& program) {
         gl_.glDeleteProgram(name);
         return s;
     }
-    return programs_.insert(GlProgram{validation::programInfo(program), name});
+    return programs_.insert(GlProgram{validation::programInfo(program), name, sourcesOf(program, caps_.dialect)});
 }
 
 Status GlDevice::destroyProgram(ProgramHandle h) {
@@ -39,18 +39,42 @@ void GlDevice::releaseProgramObject(GLuint program, bool programDestroyed) {
     GL(glDeleteProgram, program);
 }
 
-Result<GLuint> GlDevice::linkProgram(const CompiledProgram& program) {
-    std::vector<std::pair<GLenum, std::string>> sources;
+GlSources GlDevice::sourcesOf(const CompiledProgram& program, ShaderDialect dialect) {
+    GlSources sources;
     for (const StageCode& s : program.stages) {
         const GLenum type = s.stage == ShaderStage::Vertex     ? GL_VERTEX_SHADER
                             : s.stage == ShaderStage::Fragment ? GL_FRAGMENT_SHADER
                                                                : GL_COMPUTE_SHADER;
-        sources.push_back({type, s.glsl[size_t(caps_.dialect)]});
+        sources.push_back({type, s.glsl[size_t(dialect)]});
     }
-    Result<GLuint> linked = buildProgram(program.name, sources);
+    return sources;
+}
+
+Result<GLuint> GlDevice::linkProgram(const CompiledProgram& program) {
+    return linkSources(program.name, sourcesOf(program, caps_.dialect), program.resources);
+}
+
+Result<GLuint> GlDevice::linkSources(const std::string& programName, const GlSources& sources,
+                                     const std::vector<ShaderResource>& resources) {
+    Result<GLuint> linked = buildProgram(programName, sources);
     if (!linked) return linked.status();
-    bindResourcesByName(linked.value(), program.resources);
+    bindResourcesByName(linked.value(), resources);
     return linked.value();
+}
+
+// SPIRV-Cross writes a specialisation constant as `const int X = SPIRV_CROSS_CONSTANT_ID_<id>;`
+// with a default #define that yields to one made before it: the values go right after #version.
+Result<GLuint> GlDevice::specialize(const GlProgram& program, const std::vector<SpecializationConstant>& constants) {
+    if (constants.empty()) return GLuint(0);
+    std::string defines;
+    for (const SpecializationConstant& c : constants)
+        defines += "#define SPIRV_CROSS_CONSTANT_ID_" + std::to_string(c.id) + " " + std::to_string(c.value) + "\n";
+    GlSources sources = program.sources;
+    for (auto& [type, text] : sources) {
+        const size_t eol = text.find('\n');
+        text.insert(eol == std::string::npos ? text.size() : eol + 1, defines);
+    }
+    return linkSources(program.info.name, sources, program.info.resources);
 }
 
 Result<GLuint> GlDevice::compileShader(const std::string& programName, GLenum type, const std::string& source) {
@@ -146,6 +170,9 @@ Result<PipelineHandle> GlDevice::createGraphicsPipeline(const GraphicsPipelineDe
     p.program = programs_.get(desc.program).name;
     p.desc = desc;
     p.desc.debugName = "";
+    Result<GLuint> specialized = specialize(programs_.get(desc.program), desc.constants);
+    if (!specialized) return takeDeviceError(specialized.status());
+    p.specialized = specialized.value();
     // The VAO holds which attributes are enabled; the buffer is attached per draw.
     GL(glGenVertexArrays, 1, &p.vao);
     GL(glBindVertexArray, p.vao);
@@ -154,6 +181,7 @@ Result<PipelineHandle> GlDevice::createGraphicsPipeline(const GraphicsPipelineDe
     Status s = takeDeviceError(Status::ok());
     if (!s) {
         gl_.glDeleteVertexArrays(1, &p.vao);
+        if (p.specialized) gl_.glDeleteProgram(p.specialized);
         return s;
     }
     usePipelineProgram(p.program);
@@ -162,11 +190,15 @@ Result<PipelineHandle> GlDevice::createGraphicsPipeline(const GraphicsPipelineDe
 
 Result<PipelineHandle> GlDevice::createComputePipeline(const ComputePipelineDesc& desc) {
     SFX_TRY(programs_.check(desc.program, "ComputePipelineDesc.program"));
-    Result<validation::PipelineInfo> info = validation::computePipeline(programs_.get(desc.program).info);
+    Result<validation::PipelineInfo> info = validation::computePipeline(desc, programs_.get(desc.program).info);
     if (!info) return info.status();
+    SFX_TRY(enter());
     GlPipeline p;
     p.info = std::move(info.value());
     p.program = programs_.get(desc.program).name;
+    Result<GLuint> specialized = specialize(programs_.get(desc.program), desc.constants);
+    if (!specialized) return takeDeviceError(specialized.status());
+    p.specialized = specialized.value();
     usePipelineProgram(p.program);
     return pipelines_.insert(std::move(p));
 }
@@ -176,6 +208,7 @@ Status GlDevice::destroyPipeline(PipelineHandle h) {
     SFX_TRY(enter());
     GlPipeline p = pipelines_.remove(h);
     if (p.vao) GL(glDeleteVertexArrays, 1, &p.vao);
+    if (p.specialized) GL(glDeleteProgram, p.specialized);
     releaseProgramObject(p.program, false);
     return takeDeviceError(Status::ok());
 }

@@ -125,6 +125,8 @@ Status GlDevice::copyDepthEs(const GlTexture& t, uint32_t mip, uint32_t w, uint3
     GL(glBindTexture, GL_TEXTURE_2D, target.name);
     GL(glTexStorage2D, GL_TEXTURE_2D, 1, GL_R32F, GLsizei(w), GLsizei(h));
     GL(glBindTexture, GL_TEXTURE_2D, 0);
+    readbackCopies_.add();
+    storage_.add();
     Status s = [&]() -> Status {
         Result<GLuint> fbo = framebuffer({{&target, 0}}, nullptr, 0);
         if (!fbo) return fbo.status();
@@ -155,6 +157,8 @@ Status GlDevice::copyDepthEs(const GlTexture& t, uint32_t mip, uint32_t w, uint3
     }();
     forgetFbosOf(target.name);
     GL(glDeleteTextures, 1, &target.name);
+    readbackCopies_.remove();
+    storage_.remove();
     return s;
 }
 

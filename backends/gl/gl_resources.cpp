@@ -26,6 +26,8 @@ Result<TextureHandle> GlDevice::createTexture(const TextureDesc& desc) {
         gl_.glDeleteTextures(1, &t.name);
         return s;
     }
+    storage_.add();
+    bytesHeld_ += textureBytes(desc);
     return textures_.insert(t);
 }
 
@@ -33,6 +35,8 @@ Status GlDevice::destroyTexture(TextureHandle h) {
     SFX_TRY(textures_.check(h, "texture"));
     SFX_TRY(enter());
     GlTexture t = textures_.remove(h);
+    storage_.remove();
+    bytesHeld_ -= textureBytes(t.desc);
     forgetFbosOf(t.name);
     GL(glDeleteTextures, 1, &t.name);
     return takeDeviceError(Status::ok());
@@ -78,6 +82,8 @@ Result<BufferHandle> GlDevice::createBuffer(const BufferDesc& desc) {
         gl_.glDeleteBuffers(1, &b.name);
         return s;
     }
+    storage_.add();
+    bytesHeld_ += desc.size;
     return buffers_.insert(b);
 }
 
@@ -85,6 +91,8 @@ Status GlDevice::destroyBuffer(BufferHandle h) {
     SFX_TRY(buffers_.check(h, "buffer"));
     SFX_TRY(enter());
     GlBuffer b = buffers_.remove(h);
+    storage_.remove();
+    bytesHeld_ -= b.desc.size;
     GL(glDeleteBuffers, 1, &b.name);
     return takeDeviceError(Status::ok());
 }
@@ -132,6 +140,15 @@ void GlDevice::setSamplerState(GLuint s, const SamplerDesc& d) {
     GL(glSamplerParameteri, s, GL_TEXTURE_WRAP_S, GLint(wrapMode(d.address)));
     GL(glSamplerParameteri, s, GL_TEXTURE_WRAP_T, GLint(wrapMode(d.address)));
     GL(glSamplerParameteri, s, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+}
+
+DeviceStats GlDevice::stats() const {
+    DeviceStats s = halObjectStats(textures_, buffers_, samplers_, programs_, pipelines_, timers_);
+    s.memoryAllocations = storage_;
+    s.stagingBuffers = readbackCopies_;
+    s.framebuffers = framebufferCount_;
+    s.deviceMemoryBytes = bytesHeld_;
+    return s;
 }
 
 }  // namespace sfx::gl

@@ -46,12 +46,15 @@ public:
     Result<TextureHandle> createTexture(const TextureDesc& desc) override {
         SFX_TRY(validation::textureDesc(desc, caps_));
         NullTexture t{desc, {}};
-        for (uint32_t m = 0; m < desc.mipLevels; ++m) t.mips.emplace_back(mipLevelBytes(desc, m), uint8_t(0));
+        for (uint32_t m = 0; m < desc.mipLevels; ++m) {
+            t.mips.emplace_back(mipLevelBytes(desc, m), uint8_t(0));
+            bytesHeld_ += t.mips.back().size();
+        }
         return textures_.insert(std::move(t));
     }
     Status destroyTexture(TextureHandle h) override {
         SFX_TRY(textures_.check(h, "texture"));
-        textures_.remove(h);
+        for (const std::vector<uint8_t>& mip : textures_.remove(h).mips) bytesHeld_ -= mip.size();
         return Status::ok();
     }
     Result<TextureDesc> textureDesc(TextureHandle h) const override {
@@ -77,11 +80,12 @@ public:
 
     Result<BufferHandle> createBuffer(const BufferDesc& desc) override {
         SFX_TRY(validation::bufferDesc(desc, caps_));
+        bytesHeld_ += desc.size;
         return buffers_.insert(NullBuffer{desc, std::vector<uint8_t>(desc.size, 0)});
     }
     Status destroyBuffer(BufferHandle h) override {
         SFX_TRY(buffers_.check(h, "buffer"));
-        buffers_.remove(h);
+        bytesHeld_ -= buffers_.remove(h).bytes.size();
         return Status::ok();
     }
     Status writeBuffer(BufferHandle h, uint64_t offset, const void* data, size_t bytes) override {
@@ -129,7 +133,7 @@ public:
     }
     Result<PipelineHandle> createComputePipeline(const ComputePipelineDesc& desc) override {
         SFX_TRY(programs_.check(desc.program, "ComputePipelineDesc.program"));
-        Result<validation::PipelineInfo> info = validation::computePipeline(programs_.get(desc.program).info);
+        Result<validation::PipelineInfo> info = validation::computePipeline(desc, programs_.get(desc.program).info);
         if (!info) return info.status();
         return pipelines_.insert(NullPipeline{std::move(info.value())});
     }
@@ -162,6 +166,13 @@ public:
         return Status::ok();
     }
     Status flush() override { return Status::ok(); }
+
+    DeviceStats stats() const override {
+        // The null backend keeps its textures and buffers in host memory: that is what it holds.
+        DeviceStats s = halObjectStats(textures_, buffers_, samplers_, programs_, pipelines_, timers_);
+        s.deviceMemoryBytes = bytesHeld_;
+        return s;
+    }
     Result<TimerReading> readTimer(TimerHandle h) override {
         SFX_TRY(timers_.check(h, "timer"));
         if (!timers_.get(h).ended) return validation::fail(validation::Error::TimerNoMeasurement, {});
@@ -177,6 +188,7 @@ private:
     HandlePool<ProgramTag, NullProgram> programs_;
     HandlePool<PipelineTag, NullPipeline> pipelines_;
     HandlePool<TimerTag, NullTimer> timers_;
+    uint64_t bytesHeld_ = 0;  // texture and buffer bytes
 };
 
 }  // namespace

@@ -38,8 +38,7 @@ Status VulkanDevice::submitAndWait() {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - recordStart_).count();
     SFX_VK(vk_.vkResetFences(device_, 1, &fence_));
     SFX_VK(vk_.vkResetCommandBuffer(commandBuffer_, 0));
-    for (VkDescriptorPool p : descriptorPools_) vk_.vkResetDescriptorPool(device_, p, 0);
-    currentPool_ = 0;
+    recycleStaging(stagingOwn_);
     releaseGarbage(pending_);
     markEndedTimersFlushed(false, wallMs);
     return Status::ok();
@@ -47,11 +46,9 @@ Status VulkanDevice::submitAndWait() {
 
 Status VulkanDevice::flush() {
     if (hostCommandBuffer_) {
-        // The host ends and submits its command buffer; what it used lives until it is done.
+        // The host ends and submits its command buffer; what it used (garbage, staging blocks)
+        // lives until it is done, which the next setCommandBuffer may assume.
         hostCommandBuffer_ = VK_NULL_HANDLE;
-        for (VkDescriptorPool p : descriptorPools_) hostPending_.descriptorPools.push_back(p);
-        descriptorPools_.clear();
-        currentPool_ = 0;
         markEndedTimersFlushed(true, 0);
         return Status::ok();
     }
@@ -64,6 +61,7 @@ Status VulkanDevice::setHostCommandBuffer(VkCommandBuffer cb) {
     SFX_TRY(submitAndWait());
     // The previous host command buffer has finished by now (documented contract).
     releaseGarbage(hostPending_);
+    recycleStaging(stagingHost_);
     hostCommandBuffer_ = cb;
     return Status::ok();
 }
@@ -77,7 +75,9 @@ PassTargets VulkanDevice::passTargets(const RenderPassDesc& pass) {
             out.height = mipExtent(t.desc.height, c.mip);
         }
         out.colorFormats.push_back(t.desc.format);
-        out.uses.push_back({&t, c.mip, 1, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
+        out.uses.images.push_back({&t, c.mip, 1, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                   VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, true});
     }
     if (!pass.depth.texture.isNull()) {
         VulkanTexture& depth = textures_.get(pass.depth.texture);
@@ -87,7 +87,10 @@ PassTargets VulkanDevice::passTargets(const RenderPassDesc& pass) {
         }
         out.depth = &depth;
         out.depthFormat = depth.desc.format;
-        out.uses.push_back({&depth, 0, 1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL});
+        out.uses.images.push_back({&depth, 0, 1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                                   VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+                                   VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                                   true});
     }
     return out;
 }
@@ -117,7 +120,7 @@ Status VulkanDevice::recordRenderPass(const RenderPassDesc& pass, std::span<cons
     Result<VkCommandBuffer> cbr = recording();
     if (!cbr) return cbr.status();
     VkCommandBuffer cb = cbr.value();
-    barrier(cb, targets.uses);
+    barriers(cb, targets.uses);
 
     auto loadOp = [](LoadOp op) {
         return op == LoadOp::Clear ? VK_ATTACHMENT_LOAD_OP_CLEAR
@@ -179,7 +182,7 @@ Status VulkanDevice::recordRenderPass(const RenderPassDesc& pass, std::span<cons
     return Status::ok();
 }
 
-Status VulkanDevice::recordDispatch(const DispatchDesc& d, const VulkanPipeline& pl, const std::vector<ImageUse>& uses,
+Status VulkanDevice::recordDispatch(const DispatchDesc& d, const VulkanPipeline& pl, const Uses& uses,
                                     ResolvedBindings& resolved) {
     Result<VkDescriptorSet> s = writeSet(pl, resolved);
     if (!s) return s.status();
@@ -187,7 +190,7 @@ Status VulkanDevice::recordDispatch(const DispatchDesc& d, const VulkanPipeline&
     Result<VkCommandBuffer> cbr = recording();
     if (!cbr) return cbr.status();
     VkCommandBuffer cb = cbr.value();
-    barrier(cb, uses);
+    barriers(cb, uses);
     vk_.vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pl.pipeline);
     if (set) vk_.vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pl.layout, 0, 1, &set, 0, nullptr);
     vk_.vkCmdDispatch(cb, d.groupsX, d.groupsY, d.groupsZ);

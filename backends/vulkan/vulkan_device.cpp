@@ -17,6 +17,7 @@ Result<TextureHandle> VulkanDevice::createTexture(const TextureDesc& desc) {
 Status VulkanDevice::destroyTexture(TextureHandle h) {
     SFX_TRY(textures_.check(h, "texture"));
     VulkanTexture t = textures_.remove(h);
+    clearSetCache();  // sets may name its views
     retire(t);
     releaseIdleGarbage();
     return Status::ok();
@@ -46,6 +47,7 @@ Result<SamplerHandle> VulkanDevice::createSampler(const SamplerDesc& desc) {
 
 Status VulkanDevice::destroySampler(SamplerHandle h) {
     SFX_TRY(samplers_.check(h, "sampler"));
+    clearSetCache();
     currentGarbage().samplers.push_back(samplers_.remove(h));
     releaseIdleGarbage();
     return Status::ok();
@@ -61,6 +63,7 @@ Result<BufferHandle> VulkanDevice::createBuffer(const BufferDesc& desc) {
 Status VulkanDevice::destroyBuffer(BufferHandle h) {
     SFX_TRY(buffers_.check(h, "buffer"));
     VulkanBuffer b = buffers_.remove(h);
+    clearSetCache();
     retire(b, currentGarbage());
     releaseIdleGarbage();
     return Status::ok();
@@ -111,7 +114,7 @@ Result<PipelineHandle> VulkanDevice::createGraphicsPipeline(const GraphicsPipeli
 Result<PipelineHandle> VulkanDevice::createComputePipeline(const ComputePipelineDesc& desc) {
     SFX_TRY(programs_.check(desc.program, "ComputePipelineDesc.program"));
     const VulkanProgram& prog = programs_.get(desc.program);
-    Result<validation::PipelineInfo> info = validation::computePipeline(prog.info);
+    Result<validation::PipelineInfo> info = validation::computePipeline(desc, prog.info);
     if (!info) return info.status();
     return makeComputePipeline(desc, prog, std::move(info.value()));
 }
@@ -119,6 +122,7 @@ Result<PipelineHandle> VulkanDevice::createComputePipeline(const ComputePipeline
 Status VulkanDevice::destroyPipeline(PipelineHandle h) {
     SFX_TRY(pipelines_.check(h, "pipeline"));
     VulkanPipeline p = pipelines_.remove(h);
+    clearSetCache();  // sets of its set layout
     retire(p);
     releaseIdleGarbage();
     return Status::ok();
@@ -130,17 +134,27 @@ Status VulkanDevice::renderPass(const RenderPassDesc& pass, std::span<const Draw
     SFX_TRY(validation::renderPass(pass, draws, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
     PassTargets targets = passTargets(pass);
     std::vector<ResolvedBindings> resolved(draws.size());
-    for (size_t i = 0; i < draws.size(); ++i)
-        SFX_TRY(resolveBindings(draws[i].bindings, targets.uses, resolved[i]));
+    for (size_t i = 0; i < draws.size(); ++i) {
+        const DrawDesc& d = draws[i];
+        const VulkanPipeline& pl = pipelines_.get(d.pipeline);
+        SFX_TRY(resolveBindings(d.bindings, pl, targets.uses, resolved[i]));
+        // Vertex and index reads, for the barriers after what last wrote the buffers.
+        if (!d.vertexBuffer.isNull())
+            targets.uses.buffers.push_back({&buffers_.get(d.vertexBuffer), VK_PIPELINE_STAGE_VERTEX_INPUT_BIT,
+                                            VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT, false});
+        if (!d.indexBuffer.isNull())
+            targets.uses.buffers.push_back({&buffers_.get(d.indexBuffer), VK_PIPELINE_STAGE_VERTEX_INPUT_BIT,
+                                            VK_ACCESS_INDEX_READ_BIT, false});
+    }
     return recordRenderPass(pass, draws, targets, resolved);
 }
 
 Status VulkanDevice::dispatch(const DispatchDesc& d) {
     SFX_TRY(validation::dispatch(d, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
     const VulkanPipeline& pl = pipelines_.get(d.pipeline);
-    std::vector<ImageUse> uses;
+    Uses uses;
     ResolvedBindings resolved;
-    SFX_TRY(resolveBindings(d.bindings, uses, resolved));
+    SFX_TRY(resolveBindings(d.bindings, pl, uses, resolved));
     return recordDispatch(d, pl, uses, resolved);
 }
 

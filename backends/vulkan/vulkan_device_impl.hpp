@@ -3,16 +3,18 @@
 //
 // Design, chosen for correctness over overlap:
 // - One command buffer records everything between flushes; flush() submits it and waits.
-// - Every command starts with a full memory barrier (all commands -> all commands) plus the
-//   layout transitions its images need; each mip of each image tracks its own layout, so a pass
+// - Each command records only the barriers its hazards need, per image mip and per buffer, from
+//   the last use tracked for each (vulkan_barriers.cpp); each mip has its own layout, so a pass
 //   may render into mip i+1 while sampling mip i.
-// - Buffers live in host-visible, coherent memory. Writes are recorded as copies from staging
-//   buffers so that they stay ordered with the commands around them.
+// - Buffers live in host-visible, coherent memory. Writes are recorded as copies from the staging
+//   ring (vulkan_staging.cpp) so that they stay ordered with the commands around them; descriptor
+//   sets are cached. After the first frame at a size and settings, a frame allocates nothing.
 // - Vulkan functions come from a table loaded through vkGetInstanceProcAddr: the loader is opened
 //   at run time (own device) or the host's entry point is used (wrapped device).
 #pragma once
 
 #include <chrono>
+#include <map>
 #include <cstdio>
 #include <mutex>
 #include <span>
@@ -58,6 +60,7 @@ public:
     Status setHostCommandBuffer(VkCommandBuffer cb);
 
     const DeviceCaps& caps() const override { return caps_; }
+    DeviceStats stats() const override;  // vulkan_memory.cpp
 
     // The HAL calls: vulkan_device.cpp, but for the timers (vulkan_timers.cpp) and flush
     // (vulkan_commands.cpp).
@@ -120,6 +123,7 @@ private:
 
     // vulkan_memory.cpp: allocations, host-visible buffers and their staging copies.
     Result<Allocation> allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags want, bool map);
+    void freeMemory(VkDeviceMemory memory, uint64_t bytes);  // of a failed creation
     Result<VulkanBuffer> makeBuffer(uint64_t size, VkBufferUsageFlags usage, const char* name);
     Result<BufferHandle> makeHalBuffer(const BufferDesc& desc);
     Status stageBufferWrite(VulkanBuffer& b, uint64_t offset, const void* data, size_t bytes);
@@ -133,15 +137,23 @@ private:
     Result<VkImageView> sampledView(VulkanTexture& t, uint32_t baseMip, uint32_t mipCount);
     Result<VkImageView> attachmentView(VulkanTexture& t, uint32_t mip);
     Result<VkImageView> storageView(VulkanTexture& t, uint32_t mip) { return sampledView(t, mip, 1); }
-    // A full barrier plus the layout transitions of `uses`.
-    void barrier(VkCommandBuffer cb, const std::vector<ImageUse>& uses);
+
+    // vulkan_barriers.cpp: the barriers `uses` need after what was recorded before.
+    void barriers(VkCommandBuffer cb, const Uses& uses);
+
+    // vulkan_staging.cpp: `bytes` of the staging ring, for the command buffer being recorded.
+    Result<StagingSlice> stage(uint64_t bytes);
+    void recycleStaging(std::vector<StagingBlock>& blocks);  // their command buffer has finished
+    void destroyStaging();
 
     // vulkan_descriptors.cpp
-    // Descriptor writes and image uses of a BindingSet the shared validation accepted.
-    Status resolveBindings(const BindingSet& set, std::vector<ImageUse>& uses, ResolvedBindings& out);
+    // Descriptor writes, and image and buffer uses, of a BindingSet the shared validation accepted.
+    Status resolveBindings(const BindingSet& set, const VulkanPipeline& pipeline, Uses& uses, ResolvedBindings& out);
     Result<VkDescriptorSet> allocateSet(VkDescriptorSetLayout layout);
-    // A set of the pipeline's layout holding `resolved`; VK_NULL_HANDLE for a pipeline without resources.
+    // A set of the pipeline's layout holding `resolved`, from the cache or written once;
+    // VK_NULL_HANDLE for a pipeline without resources.
     Result<VkDescriptorSet> writeSet(const VulkanPipeline& pipeline, ResolvedBindings& resolved);
+    void clearSetCache();  // before an object a cached set may name goes
     Status createLayouts(const std::vector<ShaderResource>& resources, bool compute, VulkanPipeline& out);
 
     // vulkan_pipelines.cpp
@@ -164,8 +176,7 @@ private:
     PassTargets passTargets(const RenderPassDesc& pass);
     Status recordRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, const PassTargets& targets,
                             std::vector<ResolvedBindings>& resolved);
-    Status recordDispatch(const DispatchDesc& d, const VulkanPipeline& pl, const std::vector<ImageUse>& uses,
-                          ResolvedBindings& resolved);
+    Status recordDispatch(const DispatchDesc& d, const VulkanPipeline& pl, const Uses& uses, ResolvedBindings& resolved);
 
     // vulkan_garbage.cpp: deferred destruction.
     Garbage& currentGarbage() { return hostCommandBuffer_ ? hostPending_ : pending_; }
@@ -218,8 +229,14 @@ private:
     VkQueryPool queryPool_ = VK_NULL_HANDLE;
     std::vector<uint32_t> freeTimerSlots_;
 
-    std::vector<VkDescriptorPool> descriptorPools_;
+    std::vector<VkDescriptorPool> descriptorPools_;  // of the set cache
     size_t currentPool_ = 0;
+    std::map<std::vector<uint64_t>, VkDescriptorSet> setCache_;
+    std::vector<uint64_t> setKey_;  // reused to build the key of each lookup
+    std::vector<StagingBlock> stagingIdle_, stagingOwn_, stagingHost_;
+    // For stats().
+    ObjectCount memoryCount_, stagingCount_, descriptorSetCount_, descriptorPoolCount_, imageViewCount_;
+    uint64_t memoryBytes_ = 0;
     Garbage pending_;       // released after the next flush
     Garbage hostPending_;   // used by a host command buffer: released at the next setCommandBuffer
     std::chrono::steady_clock::time_point recordStart_{};

@@ -12,12 +12,14 @@ void VulkanDevice::retire(VulkanTexture& t) {
         if (v) g.views.push_back(v);
     g.images.push_back(t.image);
     g.memories.push_back(t.memory);
+    g.memoryBytes += t.memoryBytes;
     t = VulkanTexture{};
 }
 
 void VulkanDevice::retire(VulkanBuffer& b, Garbage& g) {
     g.buffers.push_back(b.buffer);
     g.memories.push_back(b.alloc.memory);  // freeing unmaps
+    g.memoryBytes += b.alloc.size;
     b = VulkanBuffer{};
 }
 
@@ -27,11 +29,16 @@ void VulkanDevice::releaseGarbage(Garbage& g) {
     for (VkDescriptorSetLayout s : g.setLayouts) vk_.vkDestroyDescriptorSetLayout(device_, s, nullptr);
     for (VkShaderModule m : g.modules) vk_.vkDestroyShaderModule(device_, m, nullptr);
     for (VkImageView v : g.views) vk_.vkDestroyImageView(device_, v, nullptr);
+    imageViewCount_.remove(g.views.size());
     for (VkImage i : g.images) vk_.vkDestroyImage(device_, i, nullptr);
     for (VkBuffer b : g.buffers) vk_.vkDestroyBuffer(device_, b, nullptr);
     for (VkDeviceMemory m : g.memories) vk_.vkFreeMemory(device_, m, nullptr);
+    memoryCount_.remove(g.memories.size());
+    memoryBytes_ -= g.memoryBytes;
     for (VkSampler s : g.samplers) vk_.vkDestroySampler(device_, s, nullptr);
     for (VkDescriptorPool p : g.descriptorPools) vk_.vkDestroyDescriptorPool(device_, p, nullptr);
+    descriptorPoolCount_.remove(g.descriptorPools.size());
+    descriptorSetCount_.remove(g.descriptorSets);
     g = Garbage{};
 }
 
@@ -61,6 +68,8 @@ void VulkanDevice::shutdown() {
         else vk_.vkQueueWaitIdle(queue_);
         releaseGarbage(pending_);
         releaseGarbage(hostPending_);
+        destroyStaging();
+        clearSetCache();
         textures_.forEachAlive([&](VulkanTexture& t) { retire(t); });
         buffers_.forEachAlive([&](VulkanBuffer& b) { retire(b, pending_); });
         samplers_.forEachAlive([&](VkSampler& s) { pending_.samplers.push_back(s); });
@@ -69,8 +78,6 @@ void VulkanDevice::shutdown() {
             for (auto& m : p.modules) pending_.modules.push_back(m.second);
         });
         releaseGarbage(pending_);
-        for (VkDescriptorPool p : descriptorPools_) vk_.vkDestroyDescriptorPool(device_, p, nullptr);
-        descriptorPools_.clear();
         if (queryPool_) vk_.vkDestroyQueryPool(device_, queryPool_, nullptr);
         if (defaultSampler_) vk_.vkDestroySampler(device_, defaultSampler_, nullptr);
         if (fence_) vk_.vkDestroyFence(device_, fence_, nullptr);

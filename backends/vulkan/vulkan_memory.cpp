@@ -17,6 +17,7 @@ Result<Allocation> VulkanDevice::allocate(const VkMemoryRequirements& req, VkMem
     ai.allocationSize = req.size;
     ai.memoryTypeIndex = uint32_t(type);
     Allocation a;
+    a.size = req.size;
     SFX_VK(vk_.vkAllocateMemory(device_, &ai, nullptr, &a.memory));
     if (map) {
         VkResult r = vk_.vkMapMemory(device_, a.memory, 0, VK_WHOLE_SIZE, 0, &a.mapped);
@@ -25,7 +26,15 @@ Result<Allocation> VulkanDevice::allocate(const VkMemoryRequirements& req, VkMem
             return vkError("vkMapMemory", r);
         }
     }
+    memoryCount_.add();
+    memoryBytes_ += a.size;
     return a;
+}
+
+void VulkanDevice::freeMemory(VkDeviceMemory memory, uint64_t bytes) {
+    vk_.vkFreeMemory(device_, memory, nullptr);
+    memoryCount_.remove();
+    memoryBytes_ -= bytes;
 }
 
 Result<VulkanBuffer> VulkanDevice::makeBuffer(uint64_t size, VkBufferUsageFlags usage, const char* name) {
@@ -46,10 +55,11 @@ Result<VulkanBuffer> VulkanDevice::makeBuffer(uint64_t size, VkBufferUsageFlags 
     VkResult r = vk_.vkBindBufferMemory(device_, b.buffer, b.alloc.memory, 0);
     if (r != VK_SUCCESS) {
         vk_.vkDestroyBuffer(device_, b.buffer, nullptr);
-        vk_.vkFreeMemory(device_, b.alloc.memory, nullptr);
+        freeMemory(b.alloc.memory, b.alloc.size);
         return vkError("vkBindBufferMemory", r);
     }
     setName(VK_OBJECT_TYPE_BUFFER, uint64_t(b.buffer), name);
+    b.desc.size = size;
     return b;
 }
 
@@ -72,19 +82,16 @@ Status VulkanDevice::stageBufferWrite(VulkanBuffer& b, uint64_t offset, const vo
         std::memcpy(static_cast<uint8_t*>(b.alloc.mapped) + offset, data, bytes);
         return Status::ok();
     }
-    // Recorded commands may still read the old contents: copy in order with them.
-    Result<VulkanBuffer> staging = makeBuffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "sfx staging (writeBuffer)");
-    if (!staging) return staging.status();
-    std::memcpy(staging->alloc.mapped, data, bytes);
+    // Recorded commands may still read the old contents: copy in order with them, through the
+    // staging ring.
     Result<VkCommandBuffer> cb = recording();
-    if (!cb) {
-        retire(staging.value(), pending_);
-        return cb.status();
-    }
-    barrier(cb.value(), {});
-    VkBufferCopy region{0, offset, bytes};
+    if (!cb) return cb.status();
+    Result<StagingSlice> staging = stage(bytes);
+    if (!staging) return staging.status();
+    std::memcpy(staging->mapped, data, bytes);
+    barriers(cb.value(), {{}, {BufferUse{&b, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, true}}});
+    VkBufferCopy region{staging->offset, offset, bytes};
     vk_.vkCmdCopyBuffer(cb.value(), staging->buffer, b.buffer, 1, &region);
-    retire(staging.value(), currentGarbage());
     return Status::ok();
 }
 
@@ -92,15 +99,23 @@ Status VulkanDevice::readBackBuffer(VulkanBuffer& b, uint64_t offset, void* out,
     if (recording_) {
         Result<VkCommandBuffer> cb = recording();
         if (!cb) return cb.status();
-        VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-        toHost.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
-        toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-        vk_.vkCmdPipelineBarrier(cb.value(), VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost,
-                                 0, nullptr, 0, nullptr);
+        // The buffer's last GPU write made visible to the host read below.
+        barriers(cb.value(), {{}, {BufferUse{&b, VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT, false}}});
         SFX_TRY(submitAndWait());
     }
     std::memcpy(out, static_cast<const uint8_t*>(b.alloc.mapped) + offset, bytes);
     return Status::ok();
+}
+
+DeviceStats VulkanDevice::stats() const {
+    DeviceStats s = halObjectStats(textures_, buffers_, samplers_, programs_, pipelines_, timers_);
+    s.memoryAllocations = memoryCount_;
+    s.stagingBuffers = stagingCount_;
+    s.descriptorSets = descriptorSetCount_;
+    s.descriptorPools = descriptorPoolCount_;
+    s.imageViews = imageViewCount_;
+    s.deviceMemoryBytes = memoryBytes_;
+    return s;
 }
 
 }  // namespace sfx::vulkan

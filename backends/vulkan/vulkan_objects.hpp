@@ -3,6 +3,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -17,12 +18,35 @@ namespace sfx::vulkan {
 struct Allocation {
     VkDeviceMemory memory = VK_NULL_HANDLE;
     void* mapped = nullptr;
+    uint64_t size = 0;
+};
+
+// How a buffer or an image mip was last used, so that the next command records only the barrier
+// its hazards need (vulkan_barriers.cpp). Kept across submits: a host command buffer may be
+// recorded while the previous one runs.
+struct AccessState {
+    VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;  // images only
+    // The last write (or layout transition) and the stages chained after it by barriers since.
+    VkPipelineStageFlags writeStages = 0;
+    VkAccessFlags writeAccess = 0;      // 0 after a layout transition, which the barrier made available
+    VkPipelineStageFlags readStages = 0;  // reads since the last write: what a write must wait for
+    // Stage and access pairs the last write has been made visible to (a small set; a full one
+    // only costs an extra barrier).
+    std::array<std::pair<VkPipelineStageFlags, VkAccessFlags>, 4> visible{};
+    uint32_t visibleCount = 0;
 };
 
 struct VulkanBuffer {
     BufferDesc desc;
     VkBuffer buffer = VK_NULL_HANDLE;
     Allocation alloc;
+    AccessState state;
+};
+
+// A block of the staging ring (vulkan_staging.cpp): host-visible, mapped, used front to back.
+struct StagingBlock {
+    VulkanBuffer buffer;
+    uint64_t used = 0;
 };
 
 struct VulkanTexture {
@@ -30,7 +54,8 @@ struct VulkanTexture {
     VkFormat format = VK_FORMAT_UNDEFINED;
     VkImage image = VK_NULL_HANDLE;
     VkDeviceMemory memory = VK_NULL_HANDLE;
-    std::vector<VkImageLayout> layouts;                          // per mip
+    uint64_t memoryBytes = 0;
+    std::vector<AccessState> mips;                               // layout and last use per mip
     std::map<std::pair<uint32_t, uint32_t>, VkImageView> views;  // (baseMip, mipCount) -> sampled view
     std::vector<VkImageView> attachmentViews;                    // per mip, all aspects
 };
@@ -59,6 +84,7 @@ struct VulkanTimer {
 struct Garbage {
     std::vector<VkBuffer> buffers;
     std::vector<VkDeviceMemory> memories;
+    uint64_t memoryBytes = 0;  // of `memories`
     std::vector<VkImage> images;
     std::vector<VkImageView> views;
     std::vector<VkSampler> samplers;
@@ -66,18 +92,45 @@ struct Garbage {
     std::vector<VkPipelineLayout> pipelineLayouts;
     std::vector<VkDescriptorSetLayout> setLayouts;
     std::vector<VkShaderModule> modules;
-    std::vector<VkDescriptorPool> descriptorPools;  // retired pools of a host command buffer
+    std::vector<VkDescriptorPool> descriptorPools;  // of a cleared descriptor-set cache
+    uint64_t descriptorSets = 0;                    // the sets they held
 };
 
 // Timestamp query pairs in the device's pool, and descriptor sets per descriptor pool.
 constexpr uint32_t kMaxTimers = 256;
 constexpr uint32_t kDescriptorPoolSets = 256;
 
-// A texture mip range that a command needs in a layout.
+// The pipeline stages of a resource's shader stages (ShaderResource::stages); all of the
+// pipeline's when reflection names none.
+VkPipelineStageFlags shaderStages(uint32_t stageMask, bool compute);
+
+// A texture mip range that a command needs in a layout, with the stages and accesses it makes.
 struct ImageUse {
     VulkanTexture* texture;
     uint32_t baseMip, mipCount;
     VkImageLayout layout;
+    VkPipelineStageFlags stages;
+    VkAccessFlags access;
+    bool write;
+};
+// A buffer a command reads or writes.
+struct BufferUse {
+    VulkanBuffer* buffer;
+    VkPipelineStageFlags stages;
+    VkAccessFlags access;
+    bool write;
+};
+// A slice of the staging ring: where to copy from, and where the host writes the bytes.
+struct StagingSlice {
+    VkBuffer buffer;
+    uint64_t offset;
+    void* mapped;
+};
+
+// Everything one command touches; its barriers are made from this (vulkan_barriers.cpp).
+struct Uses {
+    std::vector<ImageUse> images;
+    std::vector<BufferUse> buffers;
 };
 
 // A draw or dispatch with its resources resolved (checked by the shared validation), before
@@ -90,7 +143,7 @@ struct ResolvedBindings {
 
 // The attachments of a render pass once checked: their common size, formats and layouts.
 struct PassTargets {
-    std::vector<ImageUse> uses;  // attachments first; the draws' bindings are appended
+    Uses uses;  // attachments first; the draws' bindings are appended
     uint32_t width = 0, height = 0;
     std::vector<Format> colorFormats;
     Format depthFormat = Format::Undefined;

@@ -1,5 +1,7 @@
 // Programs (shader modules, their SPIR-V's structure checked first) and the graphics and compute
 // pipelines made from them. Pipelines own their layouts, so a program may be destroyed first.
+#include <cstddef>
+
 #include "vulkan_device_impl.hpp"
 #include "vulkan_formats.hpp"
 
@@ -66,17 +68,39 @@ Result<PipelineHandle> VulkanDevice::finishPipeline(VulkanPipeline& p, VkResult 
     return pipelines_.insert(std::move(p));
 }
 
+namespace {
+
+// The map of a pipeline's specialisation constants: one 32-bit int each, in the given order.
+struct Specialization {
+    std::vector<VkSpecializationMapEntry> entries;
+    VkSpecializationInfo info{};
+    explicit Specialization(const std::vector<SpecializationConstant>& constants) {
+        for (size_t i = 0; i < constants.size(); ++i)
+            entries.push_back({constants[i].id, uint32_t(i * sizeof(SpecializationConstant) + offsetof(SpecializationConstant, value)),
+                               sizeof(int32_t)});
+        info.mapEntryCount = uint32_t(entries.size());
+        info.pMapEntries = entries.data();
+        info.dataSize = constants.size() * sizeof(SpecializationConstant);
+        info.pData = constants.data();
+    }
+    const VkSpecializationInfo* get() const { return entries.empty() ? nullptr : &info; }
+};
+
+}  // namespace
+
 Result<PipelineHandle> VulkanDevice::makeGraphicsPipeline(const GraphicsPipelineDesc& desc, const VulkanProgram& prog,
                                                           validation::PipelineInfo info) {
     VulkanPipeline p;
     SFX_TRY(startPipeline(std::move(info), p));
 
+    const Specialization specialization(desc.constants);
     std::vector<VkPipelineShaderStageCreateInfo> stages;
     for (const auto& [stage, module] : prog.modules) {
         VkPipelineShaderStageCreateInfo si{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
         si.stage = stage == ShaderStage::Vertex ? VK_SHADER_STAGE_VERTEX_BIT : VK_SHADER_STAGE_FRAGMENT_BIT;
         si.module = module;
         si.pName = "main";
+        si.pSpecializationInfo = specialization.get();
         stages.push_back(si);
     }
     VkVertexInputBindingDescription vb{0, desc.vertexLayout.stride, VK_VERTEX_INPUT_RATE_VERTEX};
@@ -167,6 +191,8 @@ Result<PipelineHandle> VulkanDevice::makeComputePipeline(const ComputePipelineDe
     pci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     pci.stage.module = prog.modules[0].second;
     pci.stage.pName = "main";
+    const Specialization specialization(desc.constants);
+    pci.stage.pSpecializationInfo = specialization.get();
     pci.layout = p.layout;
     const VkResult r = vk_.vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &pci, nullptr, &p.pipeline);
     return finishPipeline(p, r, "vkCreateComputePipelines", desc.debugName);

@@ -62,6 +62,7 @@ Status VulkanDevice::createInstance(const DeviceOptions& options, uint32_t& apiV
                     "(Debian/Ubuntu package vulkan-validationlayers)"};
         layers.push_back("VK_LAYER_KHRONOS_validation");
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+        extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);  // the layer provides it
     }
 
     VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
@@ -76,7 +77,14 @@ Status VulkanDevice::createInstance(const DeviceOptions& options, uint32_t& apiV
     ci.ppEnabledExtensionNames = extensions.data();
     // Chained so that messages of vkCreateInstance / vkDestroyInstance are caught as well.
     VkDebugUtilsMessengerCreateInfoEXT dbg = messengerInfo(this);
-    if (options.validation) ci.pNext = &dbg;
+    // Synchronization validation as well as the core checks: a missing or wrong barrier is a
+    // message like any other.
+    const VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+    VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+    features.enabledValidationFeatureCount = 1;
+    features.pEnabledValidationFeatures = enables;
+    features.pNext = &dbg;
+    if (options.validation) ci.pNext = &features;
     VkResult r = vk_.vkCreateInstance(&ci, nullptr, &setup_.instance);
     if (r != VK_SUCCESS)
         return {StatusCode::BackendUnavailable, "vkCreateInstance failed (" + vkResultName(r) +

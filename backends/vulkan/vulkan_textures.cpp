@@ -1,6 +1,5 @@
-// Textures and barriers: images and their memory, sampled and attachment views, the per-mip
-// layout tracking behind every command's barrier, texture uploads and readbacks through staging
-// buffers, and samplers.
+// Textures: images and their memory, sampled and attachment views, texture uploads and
+// readbacks through the staging ring, and samplers.
 #include <cstring>
 
 #include "vulkan_device_impl.hpp"
@@ -37,14 +36,15 @@ Result<TextureHandle> VulkanDevice::makeTexture(const TextureDesc& desc) {
         return a.status();
     }
     t.memory = a->memory;
+    t.memoryBytes = a->size;
     VkResult r = vk_.vkBindImageMemory(device_, t.image, t.memory, 0);
     if (r != VK_SUCCESS) {
         vk_.vkDestroyImage(device_, t.image, nullptr);
-        vk_.vkFreeMemory(device_, t.memory, nullptr);
+        freeMemory(t.memory, t.memoryBytes);
         return vkError("vkBindImageMemory", r);
     }
     setName(VK_OBJECT_TYPE_IMAGE, uint64_t(t.image), desc.debugName);
-    t.layouts.assign(desc.mipLevels, VK_IMAGE_LAYOUT_UNDEFINED);
+    t.mips.assign(desc.mipLevels, AccessState{});
     t.attachmentViews.assign(desc.mipLevels, VK_NULL_HANDLE);
     return textures_.insert(std::move(t));
 }
@@ -60,6 +60,7 @@ Result<VkImageView> VulkanDevice::sampledView(VulkanTexture& t, uint32_t baseMip
     vci.subresourceRange = {dataAspect(t.desc.format), baseMip, mipCount, 0, 1};
     VkImageView view;
     SFX_VK(vk_.vkCreateImageView(device_, &vci, nullptr, &view));
+    imageViewCount_.add();
     t.views[key] = view;
     return view;
 }
@@ -72,83 +73,61 @@ Result<VkImageView> VulkanDevice::attachmentView(VulkanTexture& t, uint32_t mip)
     vci.format = t.format;
     vci.subresourceRange = {fullAspect(t.desc.format), mip, 1, 0, 1};
     SFX_VK(vk_.vkCreateImageView(device_, &vci, nullptr, &t.attachmentViews[mip]));
+    imageViewCount_.add();
     return t.attachmentViews[mip];
 }
 
-void VulkanDevice::barrier(VkCommandBuffer cb, const std::vector<ImageUse>& uses) {
-    // Everything before against everything after: simple and always correct.
-    VkMemoryBarrier global{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    global.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
-    global.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
-    std::vector<VkImageMemoryBarrier> images;
-    for (const ImageUse& u : uses) {
-        for (uint32_t m = u.baseMip; m < u.baseMip + u.mipCount; ++m) {
-            if (u.texture->layouts[m] == u.layout) continue;
-            VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-            b.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
-            b.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
-            b.oldLayout = u.texture->layouts[m];
-            b.newLayout = u.layout;
-            b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-            b.image = u.texture->image;
-            b.subresourceRange = {fullAspect(u.texture->desc.format), m, 1, 0, 1};
-            images.push_back(b);
-            u.texture->layouts[m] = u.layout;
-        }
-    }
-    vk_.vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &global, 0,
-                             nullptr, uint32_t(images.size()), images.data());
-}
-
 Status VulkanDevice::uploadTexture(VulkanTexture& t, uint32_t mip, const void* data, size_t bytes) {
-    Result<VulkanBuffer> staging = makeBuffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "sfx staging (writeTexture)");
+    Result<VkCommandBuffer> cb = recording();
+    if (!cb) return cb.status();
+    Result<StagingSlice> staging = stage(bytes);
     if (!staging) return staging.status();
     // The HAL's D24S8 bytes put depth high; Vulkan's depth-aspect copy wants it low.
     if (t.desc.format == Format::D24S8)
-        d24s8ToVulkan(data, staging->alloc.mapped, bytes);
+        d24s8ToVulkan(data, staging->mapped, bytes);
     else
-        std::memcpy(staging->alloc.mapped, data, bytes);
-    Result<VkCommandBuffer> cb = recording();
-    if (!cb) {
-        retire(staging.value(), pending_);
-        return cb.status();
-    }
-    barrier(cb.value(), {ImageUse{&t, mip, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL}});
+        std::memcpy(staging->mapped, data, bytes);
+    barriers(cb.value(), {{ImageUse{&t, mip, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                                    VK_ACCESS_TRANSFER_WRITE_BIT, true}},
+                          {}});
     VkBufferImageCopy region{};
+    region.bufferOffset = staging->offset;
     region.imageSubresource = {dataAspect(t.desc.format), mip, 0, 1};
     region.imageExtent = {mipExtent(t.desc.width, mip), mipExtent(t.desc.height, mip), 1};
     vk_.vkCmdCopyBufferToImage(cb.value(), staging->buffer, t.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-    retire(staging.value(), currentGarbage());
     return Status::ok();
 }
 
 Status VulkanDevice::downloadTexture(VulkanTexture& t, uint32_t mip, void* out, size_t bytes) {
-    Result<VulkanBuffer> staging = makeBuffer(bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "sfx staging (readTexture)");
-    if (!staging) return staging.status();
-    VulkanBuffer readback = staging.value();
     Result<VkCommandBuffer> cb = recording();
-    if (!cb) {
-        retire(readback, pending_);
-        return cb.status();
-    }
-    barrier(cb.value(), {ImageUse{&t, mip, 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL}});
+    if (!cb) return cb.status();
+    Result<StagingSlice> staging = stage(bytes);
+    if (!staging) return staging.status();
+    const StagingSlice readback = staging.value();
+    barriers(cb.value(), {{ImageUse{&t, mip, 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                                    VK_ACCESS_TRANSFER_READ_BIT, false}},
+                          {}});
     VkBufferImageCopy region{};
+    region.bufferOffset = readback.offset;
     region.imageSubresource = {dataAspect(t.desc.format), mip, 0, 1};
     region.imageExtent = {mipExtent(t.desc.width, mip), mipExtent(t.desc.height, mip), 1};
     vk_.vkCmdCopyImageToBuffer(cb.value(), t.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1, &region);
     // Makes the copy visible to the host read below.
-    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    VkBufferMemoryBarrier toHost{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
     toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-    vk_.vkCmdPipelineBarrier(cb.value(), VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0,
-                             nullptr, 0, nullptr);
+    toHost.srcQueueFamilyIndex = toHost.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    toHost.buffer = readback.buffer;
+    toHost.offset = readback.offset;
+    toHost.size = bytes;
+    vk_.vkCmdPipelineBarrier(cb.value(), VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1,
+                             &toHost, 0, nullptr);
+    // The block goes back to the ring at the submit, but nothing writes it before the copy out.
     Status s = submitAndWait();
     if (s && t.desc.format == Format::D24S8)
-        d24s8FromVulkan(readback.alloc.mapped, out, bytes);
+        d24s8FromVulkan(readback.mapped, out, bytes);
     else if (s)
-        std::memcpy(out, readback.alloc.mapped, bytes);
-    retire(readback, pending_);
-    releaseGarbage(pending_);
+        std::memcpy(out, readback.mapped, bytes);
     return s;
 }
 

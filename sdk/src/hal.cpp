@@ -161,4 +161,10 @@ uint64_t mipLevelBytes(const TextureDesc& desc, uint32_t mip) {
     return uint64_t(mipExtent(desc.width, mip)) * mipExtent(desc.height, mip) * bytesPerTexel(desc.format);
 }
 
+uint64_t textureBytes(const TextureDesc& desc) {
+    uint64_t bytes = 0;
+    for (uint32_t m = 0; m < desc.mipLevels; ++m) bytes += mipLevelBytes(desc, m);
+    return bytes;
+}
+
 }  // namespace sfx

@@ -89,11 +89,20 @@ Status program(const CompiledProgram& p, const DeviceCaps& caps) {
     return Status::ok();
 }
 
+Status specializationConstants(const std::vector<SpecializationConstant>& constants, const char* where) {
+    for (size_t i = 0; i < constants.size(); ++i)
+        for (size_t j = 0; j < i; ++j)
+            if (constants[j].id == constants[i].id)
+                return fail(Error::SpecializationConstantIdTwice, {where, str(i), str(constants[i].id), str(j)});
+    return Status::ok();
+}
+
 ProgramInfo programInfo(const CompiledProgram& program) {
     return {program.name, program.isCompute(), program.resources};
 }
 
 Status graphicsPipelineShape(const GraphicsPipelineDesc& d, const DeviceCaps& caps) {
+    SFX_TRY(specializationConstants(d.constants, "GraphicsPipelineDesc"));
     if (d.colorFormats.size() > caps.limits.maxColorAttachments)
         return fail(Error::PipelineColorCount, {str(d.colorFormats.size()), str(caps.limits.maxColorAttachments)});
     for (size_t i = 0; i < d.colorFormats.size(); ++i) {
@@ -155,8 +164,9 @@ Result<PipelineInfo> graphicsPipeline(const GraphicsPipelineDesc& desc, const Pr
     return PipelineInfo{false, program.name, program.resources, desc.colorFormats, desc.depthFormat, desc.vertexLayout};
 }
 
-Result<PipelineInfo> computePipeline(const ProgramInfo& program) {
+Result<PipelineInfo> computePipeline(const ComputePipelineDesc& desc, const ProgramInfo& program) {
     if (!program.compute) return fail(Error::PipelineProgramGraphics, {program.name});
+    SFX_TRY(specializationConstants(desc.constants, "ComputePipelineDesc"));
     return PipelineInfo{true, program.name, program.resources, {}, Format::Undefined, {}};
 }
 

@@ -63,6 +63,7 @@ constexpr ErrorEntry kTable[] = {
     {E::PipelineDepthCompare, C::InvalidArgument, "PipelineDepthCompare", "GraphicsPipelineDesc.depth.compare is {}; allowed Never, Less, LessEqual, Greater, GreaterEqual, Equal, NotEqual or Always"},
     {E::PipelineBlendFactor, C::InvalidArgument, "PipelineBlendFactor", "GraphicsPipelineDesc.blend.{} is {}; allowed Zero, One, SrcAlpha, OneMinusSrcAlpha, DstAlpha or OneMinusDstAlpha"},
     {E::PipelineBlendInteger, C::InvalidArgument, "PipelineBlendInteger", "GraphicsPipelineDesc.blend.enable is true with the integer format {} in colorFormats[{}]; allowed false, as integer targets do not blend"},
+    {E::SpecializationConstantIdTwice, C::InvalidArgument, "SpecializationConstantIdTwice", "{}.constants[{}].id is {}, which constants[{}] also has; allowed an id no other constant uses"},
 
     {E::MipOutOfRange, C::InvalidArgument, "MipOutOfRange", "{} is {}; allowed [0, {}], the mips of the texture"},
     {E::TextureBytes, C::InvalidArgument, "TextureBytes", "{} is {}; allowed {}, the size of mip {} of a {}x{} {} texture"},

@@ -155,6 +155,17 @@ std::vector<ValidationCase> pipelineAndCommandCases() {
                 d.blend = {true, BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha};
             }));
         });
+    add("specialisation constant id twice", Error::SpecializationConstantIdTwice, {},
+        fixed("GraphicsPipelineDesc.constants[2].id is 3, which constants[0] also has; allowed an id no other constant uses"),
+        [](Objects& o) { return tryPipeline(o, withState([](auto& d) { d.constants = {{3, 1}, {4, 2}, {3, 5}}; })); });
+    add("compute specialisation constant id twice", Error::SpecializationConstantIdTwice, compute,
+        fixed("ComputePipelineDesc.constants[1].id is 0, which constants[0] also has; allowed an id no other constant uses"),
+        [](Objects& o) {
+            ComputePipelineDesc d;
+            d.program = o.program("hal_atomic_count", Tier::High);
+            d.constants = {{0, 1}, {0, 2}};
+            return o.dev.createComputePipeline(d).status();
+        });
 
     // ---- Reads, writes and timers ------------------------------------------------------------
     add("mip past the texture", Error::MipOutOfRange, {}, fixed("mip is 5; allowed [0, 1], the mips of the texture"), [](Objects& o) {

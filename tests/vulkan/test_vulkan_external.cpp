@@ -1,17 +1,25 @@
 // The Vulkan backend on a host engine's objects: wrapping a host-made VkInstance/VkDevice,
-// recording into a host command buffer, and leaving every host object alive and leak-free.
+// recording into a host command buffer (steady frames of the effects included), and leaving
+// every host object alive and leak-free.
 #include <catch2/catch.hpp>
 
 #include <vulkan/vulkan.h>
 
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "analytic_scenes.hpp"
+#include "sfx/ao.hpp"
+#include "sfx/half.hpp"
+#include "sfx/motion_blur.hpp"
+#include "sfx/tiers.hpp"
 #include "sfx/vulkan_device.hpp"
 #include "skips.hpp"
+#include "steady_frames.hpp"
 
 using namespace sfx;
 
@@ -47,15 +55,21 @@ struct Host {
         vkEnumerateInstanceLayerProperties(&count, layers.data());
         for (const auto& l : layers) validation |= std::strcmp(l.layerName, "VK_LAYER_KHRONOS_validation") == 0;
         const char* layer = "VK_LAYER_KHRONOS_validation";
-        const char* ext = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
+        const char* exts[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME};
+        // Synchronization validation as well as the core checks, as on the SDK's own devices.
+        const VkValidationFeatureEnableEXT syncValidation = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
+        VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+        features.enabledValidationFeatureCount = 1;
+        features.pEnabledValidationFeatures = &syncValidation;
         VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
         app.apiVersion = VK_API_VERSION_1_3;
         VkInstanceCreateInfo ci{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
         ci.pApplicationInfo = &app;
         ci.enabledLayerCount = validation ? 1 : 0;
         ci.ppEnabledLayerNames = &layer;
-        ci.enabledExtensionCount = validation ? 1 : 0;
-        ci.ppEnabledExtensionNames = &ext;
+        ci.enabledExtensionCount = validation ? 2 : 0;
+        ci.ppEnabledExtensionNames = exts;
+        if (validation) ci.pNext = &features;
         if (vkCreateInstance(&ci, nullptr, &instance) != VK_SUCCESS) {
             skipReason = "no Vulkan instance";
             return false;
@@ -125,6 +139,19 @@ struct Host {
     }
 };
 
+// A host command pool (its buffers resettable by begin) with one primary command buffer.
+void makeCommandBuffer(const Host& host, VkCommandPool& pool, VkCommandBuffer& cb) {
+    VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    pci.queueFamilyIndex = host.family;
+    REQUIRE(vkCreateCommandPool(host.device, &pci, nullptr, &pool) == VK_SUCCESS);
+    VkCommandBufferAllocateInfo cai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    cai.commandPool = pool;
+    cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    cai.commandBufferCount = 1;
+    REQUIRE(vkAllocateCommandBuffers(host.device, &cai, &cb) == VK_SUCCESS);
+}
+
 void clearTo(Device& d, TextureHandle t, float value) {
     RenderPassDesc pass;
     pass.colors = {{t, 0, LoadOp::Clear, {value, value, value, value}}};
@@ -146,15 +173,8 @@ TEST_CASE("vulkan: wrapped host device, host command buffer, host objects surviv
     ext.debugUtilsEnabled = host.validation;
 
     VkCommandPool pool = VK_NULL_HANDLE;
-    VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    pci.queueFamilyIndex = host.family;
-    REQUIRE(vkCreateCommandPool(host.device, &pci, nullptr, &pool) == VK_SUCCESS);
     VkCommandBuffer cb = VK_NULL_HANDLE;
-    VkCommandBufferAllocateInfo cai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    cai.commandPool = pool;
-    cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    cai.commandBufferCount = 1;
-    REQUIRE(vkAllocateCommandBuffers(host.device, &cai, &cb) == VK_SUCCESS);
+    makeCommandBuffer(host, pool, cb);
 
     std::vector<std::pair<LogSeverity, std::string>> logged;  // DeviceOptions::log
     {
@@ -260,4 +280,98 @@ TEST_CASE("vulkan: own device opens, and wrapDevice rejects missing host objects
     vulkan::ExternalVulkan empty;
     Result<std::unique_ptr<Device>> bad = vulkan::wrapDevice(empty);
     CHECK(bad.status().code() == StatusCode::InvalidArgument);
+}
+
+// Steady frames recorded into the host's command buffer: after warm-up, AO of each technique and
+// motion blur make no object and keep resident memory flat, as with the SDK's own command buffers
+// (tests/conformance/test_steady_frames.cpp), with synchronization validation watching.
+TEST_CASE("vulkan: steady frames in a host command buffer make nothing", "[vulkan][steady]") {
+    Host host;
+    if (!host.create()) SFX_SKIP(host.skipReason);
+    vulkan::ExternalVulkan ext{host.instance, host.physical, host.device, host.queue, host.family,
+                               vkGetInstanceProcAddr, host.validation};
+    VkCommandPool pool = VK_NULL_HANDLE;
+    VkCommandBuffer cb = VK_NULL_HANDLE;
+    makeCommandBuffer(host, pool, cb);
+    VkFence fence = VK_NULL_HANDLE;
+    VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    REQUIRE(vkCreateFence(host.device, &fci, nullptr, &fence) == VK_SUCCESS);
+    {
+        DeviceOptions options;
+        options.validation = true;
+        Result<std::unique_ptr<Device>> wrapped = vulkan::wrapDevice(ext, options);
+        INFO(wrapped.status().toString());
+        REQUIRE(wrapped.isOk());
+        Device& d = *wrapped.value();
+        const TierProfile& profile = tiers::profile(Tier::High);
+        constexpr uint32_t w = 160, h = 90;
+        const samples::AnalyticScene scene = samples::cornerScene(w, h);
+        const std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
+        TextureHandle depthTex = d.createTexture({w, h, 1, Format::R32F, kTextureSampled, "host-depth"}).value();
+        REQUIRE(d.writeTexture(depthTex, 0, depth.data(), depth.size() * sizeof(float)).isOk());
+        TextureHandle outTex = d.createTexture({w, h, 1, Format::R16F, kTextureSampled | kTextureRenderTarget, "host-ao"}).value();
+        std::vector<uint16_t> color(size_t(w) * h * 4, floatToHalf(0.5f));
+        TextureHandle colorTex = d.createTexture({w, h, 1, Format::RGBA16F, kTextureSampled, "host-colour"}).value();
+        REQUIRE(d.writeTexture(colorTex, 0, color.data(), color.size() * sizeof(uint16_t)).isOk());
+        REQUIRE(d.flush().isOk());
+
+        // One host frame: begin, let the SDK record, end, submit, wait (so the next
+        // setCommandBuffer may reuse what this one used).
+        auto hostFrame = [&](auto record) -> Status {
+            VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+            bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+            if (vkBeginCommandBuffer(cb, &bi) != VK_SUCCESS) return {StatusCode::DeviceError, "vkBeginCommandBuffer"};
+            SFX_TRY(vulkan::setCommandBuffer(d, cb));
+            SFX_TRY(record());
+            SFX_TRY(d.flush());
+            if (vkEndCommandBuffer(cb) != VK_SUCCESS) return {StatusCode::DeviceError, "vkEndCommandBuffer"};
+            VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+            si.commandBufferCount = 1;
+            si.pCommandBuffers = &cb;
+            if (vkQueueSubmit(host.queue, 1, &si, fence) != VK_SUCCESS) return {StatusCode::DeviceError, "vkQueueSubmit"};
+            if (vkWaitForFences(host.device, 1, &fence, VK_TRUE, UINT64_MAX) != VK_SUCCESS || vkResetFences(host.device, 1, &fence) != VK_SUCCESS)
+                return {StatusCode::DeviceError, "vkWaitForFences"};
+            return Status::ok();
+        };
+        auto steady = [&](const std::string& what, auto record) {
+            INFO(what);
+            for (int i = 0; i < 5; ++i) REQUIRE(hostFrame(record).isOk());
+            const DeviceStats before = d.stats();
+            const double rssBefore = test::residentMiB();
+            for (int i = 0; i < 300; ++i) {
+                Status s = hostFrame(record);
+                if (!s) FAIL(what << " frame " << i << ": " << s.toString());
+            }
+            const double growth = test::residentMiB() - rssBefore;
+            std::printf("steady frames vulkan host command buffer %s: resident %+.2f MiB over 300 frames\n", what.c_str(), growth);
+            test::checkNothingMade(before, d.stats());
+            test::checkResidentFlat(d.caps().backend, growth);
+            const std::vector<std::string> messages = d.takeValidationMessages();
+            for (const std::string& m : messages) UNSCOPED_INFO("validation: " << m);
+            for (const std::string& m : host.messages.errors) UNSCOPED_INFO("host validation: " << m);
+            CHECK(messages.empty());
+            CHECK(host.messages.errors.empty());
+        };
+        for (AoTechnique technique : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}) {
+            AoSettings settings;
+            settings.technique = technique;
+            Result<std::unique_ptr<AmbientObscurance>> ao =
+                AmbientObscurance::create(d, {w, h, profile, settings, DepthKind::Hardware});
+            REQUIRE(ao.isOk());
+            AoInputs in;
+            in.depth = DepthSource{depthTex, DepthKind::Linear, scene.camera};
+            in.output = outTex;
+            steady(std::string("ao ") + toString(technique), [&] { return ao.value()->dispatch(in); });
+        }
+        Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {w, h, profile, Format::RGBA16F, DepthKind::Hardware});
+        REQUIRE(mb.isOk());
+        MotionBlurInputs in;
+        in.color = colorTex;
+        in.depth = DepthSource{depthTex, DepthKind::Linear, scene.camera};
+        in.camera.previousViewProjection[3][0] = 0.02;
+        steady("motion blur", [&] { return mb.value()->dispatch(in); });
+        for (TextureHandle t : {depthTex, outTex, colorTex}) REQUIRE(d.destroyTexture(t).isOk());
+    }
+    vkDestroyFence(host.device, fence, nullptr);
+    vkDestroyCommandPool(host.device, pool, nullptr);
 }

@@ -122,6 +122,17 @@ struct BlendState {
     BlendFactor dstAlpha = BlendFactor::Zero;
 };
 
+// A specialisation constant of a pipeline's program: the shader declares
+// `layout(constant_id = id) const int NAME = default;` and the pipeline fixes the value, so the
+// driver compiles loop bounds and branches that depend on it as constants, once, when the
+// pipeline is made (a uniform value there may make a driver recompile at draw time). Vulkan
+// specialises the SPIR-V; GL compiles the program's text with the value in place. Ids a program
+// does not declare are ignored.
+struct SpecializationConstant {
+    uint32_t id = 0;
+    int32_t value = 0;
+};
+
 struct GraphicsPipelineDesc {
     ProgramHandle program;
     VertexLayout vertexLayout;
@@ -131,11 +142,13 @@ struct GraphicsPipelineDesc {
     std::vector<Format> colorFormats; // one per colour attachment, [0, caps.limits.maxColorAttachments]
     Format depthFormat = Format::Undefined;
     const char* debugName = "";
+    std::vector<SpecializationConstant> constants;  // distinct ids
 };
 
 struct ComputePipelineDesc {
     ProgramHandle program;
     const char* debugName = "";
+    std::vector<SpecializationConstant> constants;  // distinct ids
 };
 
 // Resources for one draw or dispatch, by the binding numbers the shader reflection reports
@@ -280,8 +293,8 @@ using LogCallback = std::function<void(LogSeverity severity, std::string_view me
 struct DeviceOptions {
     CapabilityCeiling ceiling = CapabilityCeiling::None;
     // API validation, only when the host asks: Vulkan enables VK_LAYER_KHRONOS_validation
-    // (own device) and the SDK's debug messenger; GL checks glGetError after every call and
-    // turns on KHR_debug output. It multiplies the CPU cost of a dispatch (about 7.5x on
+    // with synchronization validation (own device) and the SDK's debug messenger; GL checks
+    // glGetError after every call and turns on KHR_debug output. It multiplies the CPU cost of a dispatch (about 7.5x on
     // Vulkan), so it is off by default; the tests, the samples and `sfx --validate` turn it on.
     bool validation = false;
     // Where the library's own diagnostics go; empty: they are dropped. Validation messages
@@ -289,6 +302,49 @@ struct DeviceOptions {
     // device is destroyed go here (LogSeverity::Error) so none is lost silently.
     LogCallback log;
 };
+
+// How many objects of one kind exist now and how many were ever made.
+struct ObjectCount {
+    uint64_t live = 0;
+    uint64_t created = 0;
+    void add(uint64_t n = 1) { live += n; created += n; }
+    void remove(uint64_t n = 1) { live -= n < live ? n : live; }
+    bool operator==(const ObjectCount&) const = default;
+};
+
+// What a device has made, for a host's profiler and for the tests that check that a steady
+// frame makes nothing: compare two readings taken a frame (or many) apart. The HAL kinds count
+// what the Device calls made; the backend kinds count what the backend made behind them
+// (0 where a backend has no such thing: GL has no descriptor sets, the null backend no memory).
+struct DeviceStats {
+    ObjectCount textures, buffers, samplers, programs, pipelines, timers;
+    ObjectCount memoryAllocations;  // Vulkan: vkAllocateMemory; GL: texture and buffer storage
+    ObjectCount stagingBuffers;     // Vulkan: blocks of the upload/readback ring; GL: readback copies
+    ObjectCount descriptorSets;     // Vulkan: sets in the cache (made once per distinct binding set)
+    ObjectCount descriptorPools;    // Vulkan
+    ObjectCount imageViews;         // Vulkan: sampled, storage and attachment views
+    ObjectCount framebuffers;       // GL: framebuffer objects (Vulkan renders without any)
+    uint64_t deviceMemoryBytes = 0; // bytes of GPU (or, null: host) memory the device holds now
+    bool operator==(const DeviceStats&) const = default;
+};
+// The counts of a device's HandlePool (sfx/handle.hpp).
+template <class Pool>
+ObjectCount objectCount(const Pool& pool) {
+    return {uint64_t(pool.aliveCount()), pool.createdCount()};
+}
+// The HAL kinds of DeviceStats from a backend's six pools; the backend adds its own kinds.
+template <class Textures, class Buffers, class Samplers, class Programs, class Pipelines, class Timers>
+DeviceStats halObjectStats(const Textures& textures, const Buffers& buffers, const Samplers& samplers,
+                           const Programs& programs, const Pipelines& pipelines, const Timers& timers) {
+    DeviceStats s;
+    s.textures = objectCount(textures);
+    s.buffers = objectCount(buffers);
+    s.samplers = objectCount(samplers);
+    s.programs = objectCount(programs);
+    s.pipelines = objectCount(pipelines);
+    s.timers = objectCount(timers);
+    return s;
+}
 
 class Device {
 public:
@@ -339,6 +395,9 @@ public:
     // The time between the timer's begin and end of the last flushed use.
     virtual Result<TimerReading> readTimer(TimerHandle timer) = 0;
 
+    // Counts of what the device made (see DeviceStats); cheap, callable every frame.
+    virtual DeviceStats stats() const = 0;
+
     // Messages from the API's validation since the last call: Vulkan validation-layer
     // messages, GL errors caught by the per-call checks and GL debug output. Tests fail on any.
     virtual std::vector<std::string> takeValidationMessages() { return {}; }
@@ -346,6 +405,7 @@ public:
 
 // Byte size of one mip level of a texture.
 uint64_t mipLevelBytes(const TextureDesc& desc, uint32_t mip);
+uint64_t textureBytes(const TextureDesc& desc);  // all its mip levels
 uint32_t mipExtent(uint32_t base, uint32_t mip);  // max(1, base >> mip)
 uint32_t maxMipLevels(uint32_t width, uint32_t height);
 

@@ -36,7 +36,8 @@ struct PipelineInfo {
 };
 // The program is of the pipeline's kind, then graphicsPipelineShape and graphicsPipelineState.
 Result<PipelineInfo> graphicsPipeline(const GraphicsPipelineDesc& desc, const ProgramInfo& program, const DeviceCaps& caps);
-Result<PipelineInfo> computePipeline(const ProgramInfo& program);
+// Compute: the program is a compute program and the desc's specialisation constants have distinct ids.
+Result<PipelineInfo> computePipeline(const ComputePipelineDesc& desc, const ProgramInfo& program);
 
 Status textureDesc(const TextureDesc& desc, const DeviceCaps& caps);
 Status bufferDesc(const BufferDesc& desc, const DeviceCaps& caps);
@@ -46,6 +47,10 @@ Status program(const CompiledProgram& program, const DeviceCaps& caps);
 // Attachment formats, and a vertex layout whose every attribute lies inside the stride at a
 // location below kMaxVertexAttributes (64-bit sums, so a huge offset cannot wrap past the check).
 Status graphicsPipelineShape(const GraphicsPipelineDesc& desc, const DeviceCaps& caps);
+
+// Specialisation constants with distinct ids (SpecializationConstantIdTwice); `where` names the
+// desc ("GraphicsPipelineDesc").
+Status specializationConstants(const std::vector<SpecializationConstant>& constants, const char* where);
 
 // Attribute locations every API offers (Vulkan maxVertexInputAttributes and GL_MAX_VERTEX_ATTRIBS
 // are at least 16), and the smallest stride limit among them (maxVertexInputBindingStride and

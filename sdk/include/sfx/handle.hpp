@@ -55,6 +55,7 @@ public:
         Slot& slot = slots_[index];
         slot.object = std::move(object);
         slot.alive = true;
+        ++created_;
         return Handle<Tag>{(uint64_t(serial_) << 48) | (uint64_t(slot.generation) << 32) | (uint64_t(index) + 1)};
     }
 
@@ -99,6 +100,7 @@ public:
             if (s.alive) f(s.object);
     }
     size_t aliveCount() const { return slots_.size() - freeList_.size() - retired_; }
+    uint64_t createdCount() const { return created_; }  // inserts over the pool's life
 
 private:
     struct Slot {
@@ -111,6 +113,7 @@ private:
     std::vector<Slot> slots_;
     std::vector<uint32_t> freeList_;
     size_t retired_ = 0;  // slots whose generations ran out
+    uint64_t created_ = 0;
 };
 
 }  // namespace sfx

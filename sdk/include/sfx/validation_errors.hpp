@@ -64,6 +64,7 @@ enum class Error : uint32_t {
     PipelineDepthCompare,
     PipelineBlendFactor,
     PipelineBlendInteger,
+    SpecializationConstantIdTwice,
     // Reads and writes.
     MipOutOfRange,
     TextureBytes,

@@ -49,7 +49,7 @@ std::string Plan::describe() const {
 
 PlannedResource plannedTexture(const std::string& effect, const std::string& name, const TextureDesc& desc) {
     PlannedResource r{effect, name, desc.format, desc.width, desc.height, desc.mipLevels, 0};
-    for (uint32_t m = 0; m < desc.mipLevels; ++m) r.bytes += mipLevelBytes(desc, m);
+    r.bytes = textureBytes(desc);
     return r;
 }
 

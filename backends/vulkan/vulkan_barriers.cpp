@@ -1,0 +1,151 @@
+// Barriers: each command records only the barriers its hazards need, from the last use tracked
+// per image mip and per buffer (AccessState): a layout transition, a write after reads or writes
+// (the earlier accesses must finish first), or a read of a write not yet made visible to the
+// reading stage and access. Reads after reads need nothing. Barriers are batched per command,
+// one vkCmdPipelineBarrier per pair of source and destination stage masks.
+#include <algorithm>
+
+#include "vulkan_device_impl.hpp"
+#include "vulkan_formats.hpp"
+
+namespace sfx::vulkan {
+namespace {
+
+// What one use of a resource needs before it: nothing (src == 0 and no transition), or an
+// execution and memory dependency from `src`/`srcAccess` to the use's stages and accesses.
+struct Hazard {
+    VkPipelineStageFlags src = 0;
+    VkAccessFlags srcAccess = 0;
+    VkImageLayout oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    bool needed = false;
+};
+
+bool madeVisible(const AccessState& s, VkPipelineStageFlags stages, VkAccessFlags access) {
+    for (uint32_t i = 0; i < s.visibleCount; ++i)
+        if ((s.visible[i].first & stages) == stages && (s.visible[i].second & access) == access) return true;
+    return false;
+}
+
+// Updates `s` for a use and says what barrier the use needs. `image`: the layout counts.
+Hazard track(AccessState& s, bool image, VkImageLayout layout, VkPipelineStageFlags stages, VkAccessFlags access,
+             bool write) {
+    Hazard h;
+    h.oldLayout = s.layout;
+    const bool transition = image && s.layout != layout;
+    if (write || transition) {
+        // Everything earlier must finish (and earlier writes be made available) before this
+        // write or transition; a layout transition is itself a write.
+        h.src = s.writeStages | s.readStages;
+        h.srcAccess = s.writeAccess;
+        h.needed = transition || h.src != 0;
+        s.layout = layout;
+        s.writeStages = stages;
+        s.writeAccess = write ? access : 0;
+        s.readStages = write ? 0 : stages;
+        s.visibleCount = 0;
+        if (!write) s.visible[s.visibleCount++] = {stages, access};  // the transition's barrier covers this read
+        return h;
+    }
+    if (s.writeStages && !madeVisible(s, stages, access)) {
+        h.src = s.writeStages;
+        h.srcAccess = s.writeAccess;
+        h.needed = true;
+        if (s.visibleCount < s.visible.size()) s.visible[s.visibleCount++] = {stages, access};
+        s.writeStages |= stages;  // a later barrier from these stages chains after the write
+    }
+    s.readStages |= stages;
+    return h;
+}
+
+// The barriers of one command, grouped by their stage masks.
+struct BarrierBatch {
+    VkPipelineStageFlags src = 0, dst = 0;
+    std::vector<VkImageMemoryBarrier> images;
+    std::vector<VkBufferMemoryBarrier> buffers;
+};
+
+BarrierBatch& batchFor(std::vector<BarrierBatch>& batches, VkPipelineStageFlags src, VkPipelineStageFlags dst) {
+    if (!src) src = VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT;  // nothing to wait for: a transition only
+    for (BarrierBatch& b : batches)
+        if (b.src == src && b.dst == dst) return b;
+    batches.push_back({src, dst, {}, {}});
+    return batches.back();
+}
+
+}  // namespace
+
+VkPipelineStageFlags shaderStages(uint32_t stageMask, bool compute) {
+    VkPipelineStageFlags s = 0;
+    if (stageMask & stageBit(ShaderStage::Vertex)) s |= VK_PIPELINE_STAGE_VERTEX_SHADER_BIT;
+    if (stageMask & stageBit(ShaderStage::Fragment)) s |= VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+    if (stageMask & stageBit(ShaderStage::Compute)) s |= VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    if (!s)
+        s = compute ? VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT
+                    : VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+    return s;
+}
+
+void VulkanDevice::barriers(VkCommandBuffer cb, const Uses& uses) {
+    // One entry per image mip and per buffer: a command's several uses of one resource (say,
+    // the same texture sampled by two draws) make a single use with their stages and accesses.
+    struct MipUse {
+        VulkanTexture* texture;
+        uint32_t mip;
+        ImageUse use;
+    };
+    std::vector<MipUse> mips;
+    for (const ImageUse& u : uses.images)
+        for (uint32_t m = u.baseMip; m < u.baseMip + u.mipCount; ++m) {
+            auto it = std::find_if(mips.begin(), mips.end(), [&](const MipUse& e) { return e.texture == u.texture && e.mip == m; });
+            if (it == mips.end()) {
+                mips.push_back({u.texture, m, u});
+            } else {
+                it->use.stages |= u.stages;
+                it->use.access |= u.access;
+                it->use.write = it->use.write || u.write;
+            }
+        }
+    std::vector<BufferUse> buffers;
+    for (const BufferUse& u : uses.buffers) {
+        auto it = std::find_if(buffers.begin(), buffers.end(), [&](const BufferUse& e) { return e.buffer == u.buffer; });
+        if (it == buffers.end()) {
+            buffers.push_back(u);
+        } else {
+            it->stages |= u.stages;
+            it->access |= u.access;
+            it->write = it->write || u.write;
+        }
+    }
+
+    std::vector<BarrierBatch> batches;
+    for (const MipUse& e : mips) {
+        const Hazard h = track(e.texture->mips[e.mip], true, e.use.layout, e.use.stages, e.use.access, e.use.write);
+        if (!h.needed) continue;
+        VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+        b.srcAccessMask = h.srcAccess;
+        b.dstAccessMask = e.use.access;
+        b.oldLayout = h.oldLayout;
+        b.newLayout = e.use.layout;
+        b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        b.image = e.texture->image;
+        b.subresourceRange = {fullAspect(e.texture->desc.format), e.mip, 1, 0, 1};
+        batchFor(batches, h.src, e.use.stages).images.push_back(b);
+    }
+    for (const BufferUse& u : buffers) {
+        const Hazard h = track(u.buffer->state, false, VK_IMAGE_LAYOUT_UNDEFINED, u.stages, u.access, u.write);
+        if (!h.needed) continue;
+        VkBufferMemoryBarrier b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
+        b.srcAccessMask = h.srcAccess;
+        b.dstAccessMask = u.access;
+        b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        b.buffer = u.buffer->buffer;
+        b.offset = 0;
+        b.size = VK_WHOLE_SIZE;
+        batchFor(batches, h.src, u.stages).buffers.push_back(b);
+    }
+    for (const BarrierBatch& b : batches)
+        vk_.vkCmdPipelineBarrier(cb, b.src, b.dst, 0, 0, nullptr, uint32_t(b.buffers.size()), b.buffers.data(),
+                                 uint32_t(b.images.size()), b.images.data());
+}
+
+}  // namespace sfx::vulkan

@@ -1,0 +1,110 @@
+// Steady frames: once an effect has run at a size and settings, the frames after it make no
+// object (Device::stats() the same before and after, creation totals included) and the
+// process's resident memory stays flat, on every backend and tier.
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+
+#include "analytic_scenes.hpp"
+#include "sfx/ao.hpp"
+#include "sfx/half.hpp"
+#include "sfx/motion_blur.hpp"
+#include "steady_frames.hpp"
+#include "test_device.hpp"
+
+using namespace sfx;
+
+namespace {
+
+constexpr uint32_t kWidth = 160, kHeight = 90;
+constexpr int kWarmupFrames = 5;
+constexpr int kSteadyFrames = 300;
+// Runs `frame` (record and flush one frame) for warm-up, then for the steady frames, and checks
+// that the steady ones made nothing and kept memory flat.
+template <class Frame>
+void checkSteady(const std::string& what, Frame&& frame) {
+    Device& dev = test::device();
+    for (int i = 0; i < kWarmupFrames; ++i) {
+        SFX_REQUIRE_OK(frame());
+        SFX_REQUIRE_OK(dev.flush());
+    }
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+    const DeviceStats before = dev.stats();
+    const double rssBefore = test::residentMiB();
+    for (int i = 0; i < kSteadyFrames; ++i) {
+        Status s = frame();
+        if (s) s = dev.flush();
+        if (!s) FAIL(what << " frame " << i << ": " << s.toString());
+    }
+    const double growth = test::residentMiB() - rssBefore;
+    const DeviceStats after = dev.stats();
+    std::printf("steady frames %s %s: %d frames, resident %+.2f MiB, device memory %llu bytes in %llu allocations\n",
+                test::label().c_str(), what.c_str(), kSteadyFrames, growth,
+                static_cast<unsigned long long>(after.deviceMemoryBytes),
+                static_cast<unsigned long long>(after.memoryAllocations.live));
+    INFO(what);
+    test::checkNothingMade(before, after);
+    test::checkResidentFlat(dev.caps().backend, growth);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+}  // namespace
+
+TEST_CASE("steady frames: AO of each technique makes no object and keeps memory flat", "[steady][ao]") {
+    Device& dev = test::device();
+    const samples::AnalyticScene scene = samples::cornerScene(kWidth, kHeight);
+    const std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
+    TextureHandle depthTex = dev.createTexture({kWidth, kHeight, 1, Format::R32F, kTextureSampled, "steady-depth"}).value();
+    SFX_REQUIRE_OK(dev.writeTexture(depthTex, 0, depth.data(), depth.size() * sizeof(float)));
+    const Format outFormat = dev.caps().renderableFormat[size_t(Format::R16F)] ? Format::R16F : Format::RGBA8;
+    TextureHandle outTex =
+        dev.createTexture({kWidth, kHeight, 1, outFormat, kTextureSampled | kTextureRenderTarget, "steady-ao"}).value();
+    for (AoTechnique technique : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}) {
+        AoSettings settings;
+        settings.technique = technique;
+        // Hardware depth in the desc: the linearisation pass (and on the high tier the MIP) runs too.
+        Result<std::unique_ptr<AmbientObscurance>> ao =
+            AmbientObscurance::create(dev, {kWidth, kHeight, test::tierProfile(), settings, DepthKind::Hardware});
+        INFO(ao.status().toString());
+        REQUIRE(ao.isOk());
+        AoInputs in;
+        in.depth = DepthSource{depthTex, DepthKind::Linear, scene.camera};
+        in.output = outTex;
+        checkSteady(std::string("ao ") + toString(technique), [&] { return ao.value()->dispatch(in); });
+    }
+    SFX_REQUIRE_OK(dev.destroyTexture(depthTex));
+    SFX_REQUIRE_OK(dev.destroyTexture(outTex));
+}
+
+TEST_CASE("steady frames: motion blur makes no object and keeps memory flat", "[steady][motionblur]") {
+    Device& dev = test::device();
+    const samples::AnalyticScene scene = samples::tiltedPlaneScene(kWidth, kHeight);
+    const std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
+    TextureHandle depthTex = dev.createTexture({kWidth, kHeight, 1, Format::R32F, kTextureSampled, "steady-depth"}).value();
+    SFX_REQUIRE_OK(dev.writeTexture(depthTex, 0, depth.data(), depth.size() * sizeof(float)));
+    std::vector<uint16_t> color(size_t(kWidth) * kHeight * 4, floatToHalf(1.0f));
+    std::vector<float> velocity(size_t(kWidth) * kHeight * 4);
+    for (size_t i = 0; i < size_t(kWidth) * kHeight; ++i) {
+        color[i * 4 + 0] = floatToHalf(float(i % kWidth) / kWidth);
+        color[i * 4 + 1] = floatToHalf(float(i / kWidth) / kHeight);
+        velocity[i * 4 + 0] = 6.0f;  // pixels per shutter interval
+        velocity[i * 4 + 1] = -3.0f;
+    }
+    TextureHandle colorTex = dev.createTexture({kWidth, kHeight, 1, Format::RGBA16F, kTextureSampled, "steady-colour"}).value();
+    TextureHandle velocityTex = dev.createTexture({kWidth, kHeight, 1, Format::RGBA32F, kTextureSampled, "steady-velocity"}).value();
+    SFX_REQUIRE_OK(dev.writeTexture(colorTex, 0, color.data(), color.size() * sizeof(uint16_t)));
+    SFX_REQUIRE_OK(dev.writeTexture(velocityTex, 0, velocity.data(), velocity.size() * sizeof(float)));
+    Result<std::unique_ptr<MotionBlur>> mb =
+        MotionBlur::create(dev, {kWidth, kHeight, test::tierProfile(), Format::RGBA16F, DepthKind::Hardware});
+    INFO(mb.status().toString());
+    REQUIRE(mb.isOk());
+    MotionBlurInputs in;
+    in.color = colorTex;
+    in.depth = DepthSource{depthTex, DepthKind::Linear, scene.camera};
+    in.velocity = velocityTex;
+    checkSteady("motion blur (velocity texture)", [&] { return mb.value()->dispatch(in); });
+    in.velocity = {};  // camera-only velocity from depth
+    in.camera.previousViewProjection[3][0] = 0.02;
+    checkSteady("motion blur (camera velocity)", [&] { return mb.value()->dispatch(in); });
+    for (TextureHandle t : {depthTex, colorTex, velocityTex}) SFX_REQUIRE_OK(dev.destroyTexture(t));
+}
