@@ -91,7 +91,7 @@ Result<GLuint> GlDevice::compileShader(const std::string& programName, GLenum ty
     GL(glGetShaderInfoLog, shader, GLsizei(log.size()), nullptr, log.data());
     GL(glDeleteShader, shader);
     const char* stage = type == GL_VERTEX_SHADER ? "vertex" : type == GL_FRAGMENT_SHADER ? "fragment" : "compute";
-    // GL only: Vulkan consumes SPIR-V, checked by SPIRV-Tools instead (vulkan_pipelines.cpp).
+    // GL only: Vulkan consumes SPIR-V, which sfxc validated at build time (vulkan_pipelines.cpp).
     return validation::fail(validation::Error::ShaderCompile, {programName, stage, toString(caps_.dialect), log.c_str()});
 }
 
