@@ -81,8 +81,17 @@ Status program(const CompiledProgram& p, const DeviceCaps& caps) {
         if (caps.dialect == ShaderDialect::Spirv) {
             if (s.spirv.size() < 5 || s.spirv[0] != 0x07230203u) return fail(Error::ProgramNoSpirv, {p.name, toString(s.stage)});
         } else if (s.glsl[size_t(caps.dialect)].empty()) {
-            if (p.tier == Tier::High && (caps.dialect == ShaderDialect::Essl300 || caps.dialect == ShaderDialect::Glsl330))
-                return fail(Error::ProgramHighTierDialect, {p.name, toString(caps.dialect)});
+            // sfxc leaves out every stage's text for a dialect the program's tier does not target
+            // (the tier table's dialects) and keeps the others; a program with no text at all,
+            // or one stage missing, is a broken program instead.
+            const bool noStageHasIt = std::all_of(p.stages.begin(), p.stages.end(), [&](const StageCode& other) {
+                return other.glsl[size_t(caps.dialect)].empty();
+            });
+            const bool otherDialects = std::any_of(p.stages.begin(), p.stages.end(), [](const StageCode& other) {
+                return std::any_of(std::begin(other.glsl), std::end(other.glsl), [](const std::string& g) { return !g.empty(); });
+            });
+            const bool tierLacksDialect = noStageHasIt && otherDialects;
+            if (tierLacksDialect) return fail(Error::ProgramTierDialect, {p.name, toString(p.tier), toString(caps.dialect)});
             return fail(Error::ProgramNoSource, {p.name, toString(caps.dialect), toString(s.stage)});
         }
     }

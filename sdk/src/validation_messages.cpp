@@ -44,7 +44,7 @@ constexpr ErrorEntry kTable[] = {
     {E::ProgramStorageImageUnsupported, C::UnsupportedFeature, "ProgramStorageImageUnsupported", "program '{}' uses storage image '{}', but this device has no storage images{}"},
     {E::ProgramFragmentStorageUnsupported, C::UnsupportedFeature, "ProgramFragmentStorageUnsupported", "program '{}' uses '{}' from its fragment stage, but this device has no fragment-stage stores and atomics{}"},
     {E::ProgramNoSpirv, C::ShaderError, "ProgramNoSpirv", "program '{}' has no valid SPIR-V module for its {} stage (empty, or a bad magic number)"},
-    {E::ProgramHighTierDialect, C::UnsupportedTier, "ProgramHighTierDialect", "program '{}' is built for the high tier; a device on {} runs only current-tier programs"},
+    {E::ProgramTierDialect, C::UnsupportedTier, "ProgramTierDialect", "program '{}' is built for the {} tier, whose dialects do not include {}; allowed a program of a tier that targets it"},
     {E::ProgramNoSource, C::ShaderError, "ProgramNoSource", "program '{}' has no {} source for its {} stage"},
 
     {E::PipelineProgramCompute, C::InvalidArgument, "PipelineProgramCompute", "GraphicsPipelineDesc.program is compute program '{}'; allowed a program with vertex and fragment stages"},

@@ -45,7 +45,7 @@ enum class Error : uint32_t {
     ProgramStorageImageUnsupported,
     ProgramFragmentStorageUnsupported,
     ProgramNoSpirv,
-    ProgramHighTierDialect,
+    ProgramTierDialect,
     ProgramNoSource,
     // Pipelines.
     PipelineProgramCompute,
