@@ -24,6 +24,13 @@ constexpr double kMaxSteadyGrowthMiB = 2.0;
 // reported as a known failure (CHECK_NOFAIL) instead of failing the run; every other check holds.
 inline void checkResidentFlat(BackendKind backend, double growthMiB) {
     INFO("resident growth " << growthMiB << " MiB");
+#if defined(__SANITIZE_ADDRESS__)
+    // AddressSanitizer keeps freed memory in its quarantine, so resident memory grows with every
+    // free: the sanitizer run checks memory errors and object counts, the normal build this bound.
+    WARN("resident growth not bounded under AddressSanitizer: " << growthMiB << " MiB");
+    (void)backend;
+    return;
+#endif
     if (backend == BackendKind::Vulkan)
         CHECK_NOFAIL(growthMiB < kMaxSteadyGrowthMiB);
     else
