@@ -11,6 +11,9 @@ namespace sfx::detail {
 
 // The generated program `name` for `tier`, created on `device`; shaders::find's status when
 // this build has no such program. One definition for every effect context.
+// The colour formats an effect reads and writes as RGBA colour (motion blur, transparency).
+inline bool isColorFormat(Format f) { return f == Format::RGBA8 || f == Format::RGBA16F || f == Format::RGBA32F; }
+
 inline Result<ProgramHandle> loadProgram(Device& device, const char* name, Tier tier) {
     Result<const CompiledProgram*> program = shaders::find(name, tier);
     if (!program) return program.status();

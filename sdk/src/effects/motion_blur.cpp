@@ -12,6 +12,7 @@
 namespace sfx {
 namespace {
 
+using detail::isColorFormat;
 using detail::loadProgram;
 
 // The uniform blocks of the mb_*.frag passes, declared once in sfx_shared_mb.h for C++ and GLSL.
@@ -19,7 +20,6 @@ using PackParams = shared::MbPackParams;
 using TileParams = shared::MbTileParams;
 using ReconstructParams = shared::MbReconstructParams;
 
-bool isColorFormat(Format f) { return f == Format::RGBA8 || f == Format::RGBA16F || f == Format::RGBA32F; }
 bool isVelocityFormat(Format f) {
     return f == Format::RG16F || f == Format::RG32F || f == Format::RGBA16F || f == Format::RGBA32F;
 }

@@ -15,9 +15,9 @@
 namespace sfx {
 namespace {
 
+using detail::isColorFormat;
 using detail::loadProgram;
 
-bool isColorFormat(Format f) { return f == Format::RGBA8 || f == Format::RGBA16F || f == Format::RGBA32F; }
 bool isOpaqueDepthFormat(Format f) { return f == Format::D16 || f == Format::D24S8 || f == Format::D32F; }
 
 Status checkProfile(const TierProfile& p) {
