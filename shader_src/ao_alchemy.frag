@@ -15,13 +15,12 @@ void main() {
     float screenRadius = r * params.pixelsPerUnit / z;
     float phi = aoRotationAngle(p);
     float sum = 0.0;
-    for (int i = 0; i < SFX_AO_MAX_SAMPLES; ++i) {
-        if (i >= params.samples) break;
-        float rho = sqrt((float(i) + 0.5) / float(params.samples)) * screenRadius;
+    for (int i = 0; i < kAoSamples; ++i) {
+        float rho = sqrt((float(i) + 0.5) / float(kAoSamples)) * screenRadius;
         float theta = float(i) * SFX_AO_GOLDEN_ANGLE + phi;
         ivec2 q = aoTap(p, rho * vec2(cos(theta), sin(theta)), size);
         vec3 v = aoPosition(q, aoDepth(q)) - C;
         sum += aoAlchemyTerm(dot(v, v), dot(v, n), z, r, params.bias, params.epsilon);
     }
-    aoWrite(aoFinish(2.0 * params.intensity * r / float(params.samples) * sum), z, false);
+    aoWrite(aoFinish(2.0 * params.intensity * r / float(kAoSamples) * sum), z, false);
 }

@@ -13,6 +13,11 @@ layout(set = 0, binding = 0) uniform sampler2D uDepth;  // linear depth (the AO 
 layout(set = 0, binding = 1) uniform sampler2D uSource;  // packed target: depth key in b, a
 // BlurParams (binding 2): sfx_shared_ao.h.
 layout(location = 0) out vec4 outAo;
+// Fixed per pipeline (sfx_shared_ao.h); AmbientObscurance gives every one.
+layout(constant_id = SFX_AO_SC_BLUR_RADIUS) const int kRadius = 1;
+layout(constant_id = SFX_AO_SC_BLUR_MODERATE_RADIUS) const int kModerateRadius = 1;
+layout(constant_id = SFX_AO_SC_BLUR_CREASE) const int kCrease = 0;
+layout(constant_id = SFX_AO_SC_BLUR_FINAL_PASS) const int kFinalPass = 0;
 
 float blurDepth(ivec2 q, vec4 s) {
 #ifndef SFX_AO_PACKED_DEPTH_TARGET
@@ -30,34 +35,33 @@ void main() {
     vec4 c = texelFetch(uSource, p, 0);
     float z0 = blurDepth(p, c);
     if (!(z0 < params.maxDepth)) {
-        outAo = params.finalPass != 0 ? vec4(1.0) : c;
+        outAo = kFinalPass != 0 ? vec4(1.0) : c;
         return;
     }
     float accWide = 0.0, wWide = 0.0, accModerate = 0.0, wModerate = 0.0;
-    for (int k = -SFX_AO_MAX_BLUR_RADIUS; k <= SFX_AO_MAX_BLUR_RADIUS; ++k) {
-        if (k < -params.radius || k > params.radius) continue;
+    for (int k = -kRadius; k <= kRadius; ++k) {
         ivec2 q = p + k * params.direction;
         if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) continue;
         vec4 s = texelFetch(uSource, q, 0);
         float edge = aoBlurEdgeWeight(blurDepth(q, s), z0);
-        float w = aoBlurGaussian(k, params.radius) * edge;
+        float w = aoBlurGaussian(k, kRadius) * edge;
         accWide += w * s.r;
         wWide += w;
-        if (params.crease != 0 && abs(k) <= params.moderateRadius) {
-            float wm = aoBlurGaussian(k, params.moderateRadius) * edge;
+        if (kCrease != 0 && abs(k) <= kModerateRadius) {
+            float wm = aoBlurGaussian(k, kModerateRadius) * edge;
             // The first pass blurs the raw result (r) twice; the second blurs each in its channel.
-            accModerate += wm * (params.finalPass != 0 ? s.g : s.r);
+            accModerate += wm * (kFinalPass != 0 ? s.g : s.r);
             wModerate += wm;
         }
     }
     float wide = accWide / wWide;
-    float moderate = params.crease != 0 ? accModerate / wModerate : wide;
-    if (params.finalPass == 0) {
+    float moderate = kCrease != 0 ? accModerate / wModerate : wide;
+    if (kFinalPass == 0) {
         outAo = vec4(wide, moderate, c.b, c.a);
         return;
     }
     float v = wide;
-    if (params.crease != 0) {
+    if (kCrease != 0) {
         float occ = 0.5 * (SFX_AO_CREASE_WIDE_GAIN * (1.0 - wide) + SFX_AO_CREASE_MODERATE_GAIN * (1.0 - moderate));
         v = clamp(1.0 - occ, 0.0, 1.0);
     }

@@ -23,24 +23,23 @@ void main() {
     vec3 C = aoPosition(p, z);
     vec3 n = aoNormal(p, C, z, size);
     float screenRadius = params.radius * params.pixelsPerUnit / z;
-    if (params.maxRadiusPx > 0.0) screenRadius = min(screenRadius, params.maxRadiusPx);
+    if (kAoClampRadius != 0) screenRadius = min(screenRadius, params.maxRadiusPx);
     float phi = aoRotationAngle(p);
-    int offsets = params.mirrored != 0 ? params.samples / 2 : params.samples;
+    const int offsets = kAoMirrored != 0 ? kAoSamples / 2 : kAoSamples;
     float sum = 0.0;
-    for (int i = 0; i < SFX_AO_MAX_SAMPLES; ++i) {
-        if (i >= offsets) break;
+    for (int i = 0; i < offsets; ++i) {
         float alpha = (float(i) + 0.5) / float(offsets);
         float h = alpha * screenRadius;
         float theta = SFX_AO_TWO_PI * alpha * params.spiralTurns + phi;
         vec2 offset = h * vec2(cos(theta), sin(theta));
         int level = 0;
 #ifdef SFX_AO_DEPTH_MIP  // generated from the tier table (TierProfile::aoUsesDepthMip)
-        if (params.mipLevels > 1 && h >= 1.0)
-            level = clamp(int(floor(log2(h))) - SFX_AO_MIP_LEVEL_OFFSET, 0, params.mipLevels - 1);
+        if (kAoMipLevels > 1 && h >= 1.0)
+            level = clamp(int(floor(log2(h))) - SFX_AO_MIP_LEVEL_OFFSET, 0, kAoMipLevels - 1);
 #endif
         sum += scalableTap(p, offset, level, size, C, n);
-        if (params.mirrored != 0) sum += scalableTap(p, -offset, level, size, C, n);
+        if (kAoMirrored != 0) sum += scalableTap(p, -offset, level, size, C, n);
     }
-    float a = 2.0 * params.intensity / float(params.samples) * sum;
+    float a = 2.0 * params.intensity / float(kAoSamples) * sum;
     aoWrite(sky ? 1.0 : aoFinish(a * a), z, sky);
 }

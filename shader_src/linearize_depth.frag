@@ -7,9 +7,11 @@
 layout(set = 0, binding = 0) uniform sampler2D uHardwareDepth;
 
 layout(location = 0) out float outLinearDepth;
+// 1: the source already holds linear depth; only the clamp applies.
+layout(constant_id = SFX_DEPTH_SC_LINEAR_INPUT) const int kLinearInput = 0;
 
 void main() {
     float d = texelFetch(uHardwareDepth, ivec2(gl_FragCoord.xy), 0).r;
-    outLinearDepth = params.linearInput != 0.0 ? sfxLinearDepthOrFar(d, params.maxDepth)
+    outLinearDepth = kLinearInput != 0 ? sfxLinearDepthOrFar(d, params.maxDepth)
                                                : sfxLinearizeDepth(d, params.ndcScale, params.denomOffset, params.numerator, params.maxDepth);
 }

@@ -13,13 +13,14 @@ layout(set = 0, binding = 1) uniform sampler2D uVelocity;  // unused in camera-o
 // params: the uniform block declared in sfx_shared_mb.h.
 
 layout(location = 0) out vec4 outPacked;
+layout(constant_id = SFX_MB_SC_CAMERA_ONLY) const int kCameraOnly = 0;
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     // uLinearDepth may be the host's linear depth itself (LinearDepth passing through).
     float z = sfxLinearDepthOrFar(texelFetch(uLinearDepth, p, 0).r, params.maxDepth);
     vec2 v;
-    if (params.cameraOnly != 0.0) {
+    if (kCameraOnly != 0) {
         v = mbCameraVelocity(gl_FragCoord.xy, params.clipFromView.zw, params.target.xy, z, params.clipFromView.x,
                              params.clipFromView.y, params.reprojection);
     } else {

@@ -14,6 +14,9 @@ layout(set = 0, binding = 2) uniform sampler2D uNeighborMax;
 // params: the uniform block declared in sfx_shared_mb.h.
 
 layout(location = 0) out vec4 outColor;
+// Fixed per pipeline (sfx_shared_mb.h); MotionBlur gives both.
+layout(constant_id = SFX_MB_SC_PAIRS) const int kPairs = 1;
+layout(constant_id = SFX_MB_SC_JITTER_SIZE) const int kJitterSize = 2;
 
 vec2 decodeVelocity(vec2 e) {
     return vec2(mbDecodeVelocity(e.x, params.radius), mbDecodeVelocity(e.y, params.radius));
@@ -35,16 +38,16 @@ void main() {
     vec2 vC = decodeVelocity(packedC.xy);
     float zC = packedC.z + packedC.w;
     float speedC = length(vC);
-    float jitter = mbJitter(p.x, p.y, params.jitterSize);
+    float jitter = mbJitter(p.x, p.y, kJitterSize);
 
     float wC = mbCentreWeight(params.centreWeight, speedC);
     vec4 sum = colorC * wC;
     float total = wC;
-    float perSample = mbSampleScale(params.pairs);
-    for (int i = 0; i < params.pairs; ++i) {
+    float perSample = mbSampleScale(kPairs);
+    for (int i = 0; i < kPairs; ++i) {
         vec2 v = mbPairUsesCentre(i, speedC) ? vC : vN;
         for (int s = 0; s < 2; ++s) {
-            vec2 off = roundAway(mbSampleT(i, params.pairs, jitter, s == 0 ? 1.0 : -1.0) * v);
+            vec2 off = roundAway(mbSampleT(i, kPairs, jitter, s == 0 ? 1.0 : -1.0) * v);
             // Clamped to the image: a sample never leaves it, however large the velocity.
             ivec2 q = clamp(p + ivec2(off), ivec2(0), size - 1);
             float dist = length(vec2(q - p));

@@ -2,24 +2,24 @@
 // Motion blur pass 2: per N x N tile (N = the maximum radius), the velocity of largest
 // magnitude. Magnitudes are compared on the decoded (centred) value, never on the [0,1] code.
 // Ties keep the first in row-major scan order, as the CPU reference does.
-#define SFX_WANT_MB_TILE_PARAMS 1
 #include "sfx_shared.h"
 #include "sfx_shared_mb.h"
 
 layout(set = 0, binding = 0) uniform sampler2D uPacked;
-// params: the uniform block declared in sfx_shared_mb.h.
 
 layout(location = 0) out vec2 outTileMax;
+// N, [1, SFX_MB_MAX_RADIUS_LIMIT_PX]; MotionBlur gives it.
+layout(constant_id = SFX_MB_SC_TILE_SIZE) const int kTileSize = 1;
 
 void main() {
     ivec2 size = textureSize(uPacked, 0);
-    ivec2 origin = ivec2(gl_FragCoord.xy) * params.tileSize;
+    ivec2 origin = ivec2(gl_FragCoord.xy) * kTileSize;
     vec2 best = vec2(0.5);
     float bestLen2 = -1.0;
-    for (int j = 0; j < params.tileSize; ++j) {
+    for (int j = 0; j < kTileSize; ++j) {
         int y = origin.y + j;
         if (y >= size.y) break;
-        for (int i = 0; i < params.tileSize; ++i) {
+        for (int i = 0; i < kTileSize; ++i) {
             int x = origin.x + i;
             if (x >= size.x) break;
             vec2 e = texelFetch(uPacked, ivec2(x, y), 0).xy;

@@ -120,19 +120,21 @@ bool sfxColorIsFinite(vec4 c) { return sfxIsFinite(c.r) && sfxIsFinite(c.g) && s
 vec4 sfxColor(vec4 c) { return vec4(sfxColorChannel(c.r), sfxColorChannel(c.g), sfxColorChannel(c.b), sfxColorChannel(c.a)); }
 #endif
 
-// Parameters of the linearisation pass (linearize_depth.frag), filled by LinearDepth.
+// Parameters of the linearisation pass (linearize_depth.frag), filled by LinearDepth. Whether
+// the source is linear already is a specialisation constant (a branch, never a uniform: see
+// sfx_shared_ao.h), its id this one.
+#define SFX_DEPTH_SC_LINEAR_INPUT 0
 #if defined(__cplusplus) || defined(SFX_WANT_LINEARIZE_PARAMS)
 SFX_BLOCK(LinearizeParams, 1)
     SFX_M_FLOAT(ndcScale)     // 1 for [0,1] clip depth, 2 for [-1,1]
     SFX_M_FLOAT(denomOffset)  // ndcOffset + A
     SFX_M_FLOAT(numerator)    // B
     SFX_M_FLOAT(maxDepth)     // far plane, or SFX_SKY_DEPTH for an infinite projection
-    SFX_M_FLOAT(linearInput)  // 1: the source already holds linear depth; only the clamp applies
-    SFX_M_FLOAT(pad0) SFX_M_FLOAT(pad1) SFX_M_FLOAT(pad2)
+    SFX_M_FLOAT(pad0) SFX_M_FLOAT(pad1) SFX_M_FLOAT(pad2) SFX_M_FLOAT(pad3)
 SFX_BLOCK_END(params)
 #endif
 #ifdef __cplusplus
-static_assert(sizeof(LinearizeParams) == 32 && offsetof(LinearizeParams, linearInput) == 16);
+static_assert(sizeof(LinearizeParams) == 32 && offsetof(LinearizeParams, maxDepth) == 12);
 #endif
 
 // The depth MIP pyramid of the high tier holds at most this many levels (level 0 included).

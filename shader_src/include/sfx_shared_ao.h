@@ -65,7 +65,7 @@ SFX_CONST(float, SFX_AO_CREASE_MODERATE_GAIN, 1.4)
 // fraction of the centre's depth: occlusion is never carried across a depth discontinuity.
 SFX_CONST(float, SFX_AO_BLUR_DEPTH_TOLERANCE, 0.05)
 SFX_CONST(int, SFX_AO_MAX_BLUR_RADIUS, 8)
-// Most taps a GPU pass takes (the uniform loop bound); the CPU reference has no limit.
+// Most taps a GPU pass takes (what settings validation allows); the CPU reference has no limit.
 SFX_CONST(int, SFX_AO_MAX_SAMPLES, 64)
 
 // ---- Per-tap terms (SFX_FN / SFX_REAL: double in the reference, float in the shaders) -------
@@ -189,6 +189,23 @@ float aoUnpackDepthKey(vec2 ba) {
 }
 #endif
 
+// ---- Specialisation constants of the AO passes (layout(constant_id); the pipeline fixes them) --
+// Every loop count and branch that is constant for an effect instance is one, never a uniform:
+// lavapipe inlines uniforms that decide control flow and recompiles the shader each time they
+// are bound (megabytes of resident memory per frame). Ids as plain macros, for both languages.
+// The obscurance passes (ao_alchemy/ao_scalable/ao_crease.frag):
+#define SFX_AO_SC_SAMPLES 0        // taps (Alchemy, Scalable)
+#define SFX_AO_SC_MIRRORED 1       // 1: Scalable taps come in mirrored pairs
+#define SFX_AO_SC_MIP_LEVELS 2     // depth MIP levels Scalable reads (1: full resolution only)
+#define SFX_AO_SC_NORMAL_SOURCE 3  // 0 derived from depth, 1 signed float, 2 unorm8
+#define SFX_AO_SC_PACK_DEPTH 4     // 1: the depth key goes to b and a (RGBA8 target, blur on)
+#define SFX_AO_SC_CLAMP_RADIUS 5   // 1: the screen radius is clamped to maxRadiusPx
+// The bilateral blur (ao_blur.frag):
+#define SFX_AO_SC_BLUR_RADIUS 0           // taps each side
+#define SFX_AO_SC_BLUR_MODERATE_RADIUS 1  // Crease's second, moderate blur
+#define SFX_AO_SC_BLUR_CREASE 2           // 1: also the moderate blur, blended in the final pass
+#define SFX_AO_SC_BLUR_FINAL_PASS 3       // 0: horizontal into the intermediate, 1: vertical out
+
 // ---- Uniform blocks of the AO passes (SFX_BLOCK: one declaration for GLSL and C++) ----------
 // The obscurance passes (ao_alchemy/ao_scalable/ao_crease.frag), filled by AmbientObscurance.
 #if defined(__cplusplus) || defined(SFX_AO_PASS)
@@ -196,9 +213,8 @@ SFX_BLOCK(AoParams, 2)
     SFX_M_VEC4(projInfo)
     SFX_M_FLOAT(radius) SFX_M_FLOAT(intensity) SFX_M_FLOAT(contrast) SFX_M_FLOAT(bias)
     SFX_M_FLOAT(epsilon) SFX_M_FLOAT(pixelsPerUnit) SFX_M_FLOAT(maxRadiusPx) SFX_M_FLOAT(maxDepth)
-    SFX_M_INT(samples) SFX_M_INT(mirrored) SFX_M_INT(mipLevels)
-    SFX_M_INT(normalSource)  // 0 derived from depth, 1 signed float, 2 unorm8
-    SFX_M_FLOAT(spiralTurns) SFX_M_FLOAT(keyNear) SFX_M_FLOAT(keyInvLog2Range) SFX_M_FLOAT(packDepth)
+    SFX_M_INT(pad2) SFX_M_INT(pad3) SFX_M_INT(pad4) SFX_M_INT(pad5)  // counts: constants above
+    SFX_M_FLOAT(spiralTurns) SFX_M_FLOAT(keyNear) SFX_M_FLOAT(keyInvLog2Range) SFX_M_FLOAT(pad6)
     SFX_M_FLOAT(creaseRange) SFX_M_FLOAT(creaseBias) SFX_M_FLOAT(creaseAverager) SFX_M_FLOAT(creaseMinimum)
     SFX_M_FLOAT(fadeStart) SFX_M_FLOAT(invFadeRange) SFX_M_FLOAT(pad0) SFX_M_FLOAT(pad1)
 SFX_BLOCK_END(params)
@@ -207,16 +223,15 @@ SFX_BLOCK_END(params)
 #if defined(__cplusplus) || defined(SFX_AO_BLUR_PASS)
 SFX_BLOCK(BlurParams, 2)
     SFX_M_IVEC2(direction)
-    SFX_M_INT(radius) SFX_M_INT(moderateRadius)
-    SFX_M_INT(crease) SFX_M_INT(finalPass) SFX_M_INT(pad0) SFX_M_INT(pad1)
-    SFX_M_FLOAT(maxDepth) SFX_M_FLOAT(keyNear) SFX_M_FLOAT(keyLog2Range) SFX_M_FLOAT(pad2)
+    SFX_M_INT(pad0) SFX_M_INT(pad1)  // radii and pass: the specialisation constants above
+    SFX_M_INT(pad2) SFX_M_INT(pad3) SFX_M_INT(pad4) SFX_M_INT(pad5)
+    SFX_M_FLOAT(maxDepth) SFX_M_FLOAT(keyNear) SFX_M_FLOAT(keyLog2Range) SFX_M_FLOAT(pad6)
 SFX_BLOCK_END(params)
 #endif
 #ifdef __cplusplus
-static_assert(sizeof(AoParams) == 112 && offsetof(AoParams, radius) == 16 && offsetof(AoParams, samples) == 48 &&
+static_assert(sizeof(AoParams) == 112 && offsetof(AoParams, radius) == 16 && offsetof(AoParams, maxDepth) == 44 &&
               offsetof(AoParams, spiralTurns) == 64 && offsetof(AoParams, fadeStart) == 96);
-static_assert(sizeof(BlurParams) == 48 && offsetof(BlurParams, radius) == 8 && offsetof(BlurParams, crease) == 16 &&
-              offsetof(BlurParams, maxDepth) == 32);
+static_assert(sizeof(BlurParams) == 48 && offsetof(BlurParams, direction) == 0 && offsetof(BlurParams, maxDepth) == 32);
 #endif
 
 #ifdef __cplusplus
@@ -229,6 +244,13 @@ layout(set = 0, binding = 0) uniform sampler2D uDepth;    // linear depth (+ MIP
 layout(set = 0, binding = 1) uniform sampler2D uNormals;  // host normals; the depth again when derived
 // AoParams (binding 2) is declared above, with the C++ side.
 layout(location = 0) out vec4 outAo;
+// Defaults are placeholders: AmbientObscurance gives every one.
+layout(constant_id = SFX_AO_SC_SAMPLES) const int kAoSamples = 1;
+layout(constant_id = SFX_AO_SC_MIRRORED) const int kAoMirrored = 0;
+layout(constant_id = SFX_AO_SC_MIP_LEVELS) const int kAoMipLevels = 1;
+layout(constant_id = SFX_AO_SC_NORMAL_SOURCE) const int kAoNormalSource = 0;
+layout(constant_id = SFX_AO_SC_PACK_DEPTH) const int kAoPackDepth = 0;
+layout(constant_id = SFX_AO_SC_CLAMP_RADIUS) const int kAoClampRadius = 0;
 
 // uDepth may be the host's linear depth itself (LinearDepth passing through): clamp on fetch.
 float aoDepthAt(ivec2 q, int level) { return sfxLinearDepthOrFar(texelFetch(uDepth, q, level).r, params.maxDepth); }
@@ -252,9 +274,9 @@ vec3 aoDerivedNormal(ivec2 p, vec3 C, float z, ivec2 size) {
 }
 
 vec3 aoNormal(ivec2 p, vec3 C, float z, ivec2 size) {
-    if (params.normalSource != 0) {
+    if (kAoNormalSource != 0) {
         vec3 n = texelFetch(uNormals, p, 0).xyz;
-        if (params.normalSource == 2) n = n * 2.0 - 1.0;
+        if (kAoNormalSource == 2) n = n * 2.0 - 1.0;
         n = aoHostNormalOrZero(n);  // the host-normal rule above
         if (n != vec3(0.0)) return n;
     }
@@ -265,7 +287,7 @@ vec3 aoNormal(ivec2 p, vec3 C, float z, ivec2 size) {
 // gets the key 1 exactly (surfaces stay below it), so the blur can tell sky apart.
 void aoWrite(float visibility, float z, bool sky) {
     float v = clamp(visibility, 0.0, 1.0);
-    if (params.packDepth != 0.0) {
+    if (kAoPackDepth != 0) {
         float key = sky ? 1.0 : min(log2(z / params.keyNear) * params.keyInvLog2Range, 65534.0 / 65535.0);
         outAo = vec4(v, v, aoPackDepthKey(key));
     } else {

@@ -172,6 +172,14 @@ SFX_MB_FN SFX_MB_REAL mbCentreWeight(SFX_MB_REAL centreWeight, SFX_MB_REAL centr
     return centreWeight / max(centreSpeed, 1.0);
 }
 
+// ---- Specialisation constants of the motion blur passes (branches and loop counts) -----------
+// Never uniforms: lavapipe recompiles a shader whose control flow reads uniform values each
+// time they are bound (see sfx_shared_ao.h). Ids as plain macros, for both languages.
+#define SFX_MB_SC_CAMERA_ONLY 0  // mb_pack: 1 = velocity from depth and the camera motion
+#define SFX_MB_SC_TILE_SIZE 0    // mb_tile_max: N, the tile edge (the blur radius in pixels)
+#define SFX_MB_SC_PAIRS 0        // mb_reconstruct: sample pairs, (taps - 1) / 2
+#define SFX_MB_SC_JITTER_SIZE 1  // mb_reconstruct: 2 = checkerboard, 4 = 4x4 randomised
+
 // ---- Uniform blocks of the motion blur passes (SFX_BLOCK: one declaration for GLSL and C++) ----
 // Pass 1, mb_pack.frag.
 #if defined(__cplusplus) || defined(SFX_WANT_MB_PACK_PARAMS)
@@ -181,17 +189,11 @@ SFX_BLOCK(MbPackParams, 2)
     SFX_M_VEC4(target)           // x = W, y = H
     SFX_M_FLOAT(radius)          // k: maximum blur radius in pixels at this size
     SFX_M_FLOAT(velocityScale)   // 0.5 * exposure: displacement across the shutter -> blur radius
-    SFX_M_FLOAT(cameraOnly)      // 1: velocity from depth and the camera motion
+    SFX_M_FLOAT(pad0)
     SFX_M_FLOAT(maxDepth)        // far plane, or SFX_SKY_DEPTH: out-of-range linear depth becomes this
 SFX_BLOCK_END(params)
 #endif
-// Pass 2, mb_tile_max.frag.
-#if defined(__cplusplus) || defined(SFX_WANT_MB_TILE_PARAMS)
-SFX_BLOCK(MbTileParams, 1)
-    SFX_M_INT(tileSize)  // N, [1, SFX_MB_MAX_RADIUS_LIMIT_PX]
-    SFX_M_INT(pad0) SFX_M_INT(pad1) SFX_M_INT(pad2)
-SFX_BLOCK_END(params)
-#endif
+// Pass 2, mb_tile_max.frag, has no uniforms (its tile size is SFX_MB_SC_TILE_SIZE).
 // Pass 4, mb_reconstruct.frag.
 #if defined(__cplusplus) || defined(SFX_WANT_MB_RECONSTRUCT_PARAMS)
 SFX_BLOCK(MbReconstructParams, 3)
@@ -200,15 +202,12 @@ SFX_BLOCK(MbReconstructParams, 3)
     SFX_M_FLOAT(centreWeight)  // MotionBlurSettings.centreWeight
     SFX_M_FLOAT(pad0)
     SFX_M_INT(tileSize)        // N: pixel -> tile of the neighbour-max texture
-    SFX_M_INT(pairs)           // sample pairs: (taps - 1) / 2
-    SFX_M_INT(jitterSize)      // 2 = checkerboard, 4 = 4x4 randomised
-    SFX_M_INT(pad1)
+    SFX_M_INT(pad1) SFX_M_INT(pad2) SFX_M_INT(pad3)  // pairs, jitter: constants above
 SFX_BLOCK_END(params)
 #endif
 #ifdef __cplusplus
 static_assert(sizeof(MbPackParams) == 112 && offsetof(MbPackParams, clipFromView) == 64 &&
               offsetof(MbPackParams, target) == 80 && offsetof(MbPackParams, radius) == 96);
-static_assert(sizeof(MbTileParams) == 16);
 static_assert(sizeof(MbReconstructParams) == 32 && offsetof(MbReconstructParams, tileSize) == 16);
 #endif
 

@@ -108,3 +108,98 @@ TEST_CASE("steady frames: motion blur makes no object and keeps memory flat", "[
     checkSteady("motion blur (camera velocity)", [&] { return mb.value()->dispatch(in); });
     for (TextureHandle t : {depthTex, colorTex, velocityTex}) SFX_REQUIRE_OK(dev.destroyTexture(t));
 }
+
+namespace {
+
+// The depth texture, AO output, colour and velocity of one size, for the resize cases.
+struct SizedInputs {
+    TextureHandle depth, aoOut, color, velocity;
+    samples::AnalyticScene scene;
+};
+
+SizedInputs makeInputs(uint32_t w, uint32_t h) {
+    Device& dev = test::device();
+    SizedInputs s{{}, {}, {}, {}, samples::cornerScene(w, h)};
+    const std::vector<float> depth(s.scene.linearDepth.values.begin(), s.scene.linearDepth.values.end());
+    s.depth = dev.createTexture({w, h, 1, Format::R32F, kTextureSampled, "resize-depth"}).value();
+    SFX_REQUIRE_OK(dev.writeTexture(s.depth, 0, depth.data(), depth.size() * sizeof(float)));
+    const Format outFormat = dev.caps().renderableFormat[size_t(Format::R16F)] ? Format::R16F : Format::RGBA8;
+    s.aoOut = dev.createTexture({w, h, 1, outFormat, kTextureSampled | kTextureRenderTarget, "resize-ao"}).value();
+    const std::vector<uint16_t> color(size_t(w) * h * 4, floatToHalf(0.5f));
+    std::vector<float> velocity(size_t(w) * h * 4, 0.0f);
+    for (size_t i = 0; i < size_t(w) * h; ++i) velocity[i * 4] = 5.0f;
+    s.color = dev.createTexture({w, h, 1, Format::RGBA16F, kTextureSampled, "resize-colour"}).value();
+    s.velocity = dev.createTexture({w, h, 1, Format::RGBA32F, kTextureSampled, "resize-velocity"}).value();
+    SFX_REQUIRE_OK(dev.writeTexture(s.color, 0, color.data(), color.size() * sizeof(uint16_t)));
+    SFX_REQUIRE_OK(dev.writeTexture(s.velocity, 0, velocity.data(), velocity.size() * sizeof(float)));
+    return s;
+}
+
+void destroyInputs(const SizedInputs& s) {
+    for (TextureHandle t : {s.depth, s.aoOut, s.color, s.velocity}) SFX_REQUIRE_OK(test::device().destroyTexture(t));
+}
+
+// Resizes with `resize`, dispatches at the new size with `frame`, and checks that no program or
+// pipeline was made (and that the size-dependent textures were: the resize did happen).
+template <class Resize, class Frame>
+void checkResizeKeepsPipelines(const std::string& what, Resize&& resize, Frame&& frame) {
+    Device& dev = test::device();
+    const DeviceStats before = dev.stats();
+    SFX_REQUIRE_OK(resize());
+    SFX_REQUIRE_OK(frame());
+    SFX_REQUIRE_OK(dev.flush());
+    const DeviceStats after = dev.stats();
+    INFO(what << ": programs created " << before.programs.created << " -> " << after.programs.created << ", pipelines created "
+              << before.pipelines.created << " -> " << after.pipelines.created);
+    CHECK(after.programs.created == before.programs.created);
+    CHECK(after.pipelines.created == before.pipelines.created);
+    CHECK(after.textures.created > before.textures.created);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+}  // namespace
+
+TEST_CASE("resize: AO and motion blur rebuild textures, never programs or pipelines", "[steady][resize]") {
+    Device& dev = test::device();
+    constexpr uint32_t kW2 = 200, kH2 = 120;  // the same depth MIP level count as 160x90
+    const SizedInputs a = makeInputs(kWidth, kHeight), b = makeInputs(kW2, kH2);
+    for (AoTechnique technique : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}) {
+        AoSettings settings;
+        settings.technique = technique;
+        Result<std::unique_ptr<AmbientObscurance>> ao =
+            AmbientObscurance::create(dev, {kWidth, kHeight, test::tierProfile(), settings, DepthKind::Hardware});
+        INFO(ao.status().toString());
+        REQUIRE(ao.isOk());
+        auto aoFrame = [&](const SizedInputs& s) {
+            AoInputs in;
+            in.depth = DepthSource{s.depth, DepthKind::Linear, s.scene.camera};
+            in.output = s.aoOut;
+            return ao.value()->dispatch(in);
+        };
+        SFX_REQUIRE_OK(aoFrame(a));
+        SFX_REQUIRE_OK(dev.flush());
+        const std::string what = std::string("ao ") + toString(technique);
+        checkResizeKeepsPipelines(what + " grow", [&] { return ao.value()->resize(kW2, kH2); }, [&] { return aoFrame(b); });
+        checkResizeKeepsPipelines(what + " shrink", [&] { return ao.value()->resize(kWidth, kHeight); }, [&] { return aoFrame(a); });
+    }
+
+    Result<std::unique_ptr<MotionBlur>> mb =
+        MotionBlur::create(dev, {kWidth, kHeight, test::tierProfile(), Format::RGBA16F, DepthKind::Hardware});
+    INFO(mb.status().toString());
+    REQUIRE(mb.isOk());
+    MotionBlurSettings settings;
+    settings.referenceRows = 0;  // the radius in output pixels, so the tile size does not follow the height
+    auto mbFrame = [&](const SizedInputs& s) {
+        MotionBlurInputs in;
+        in.color = s.color;
+        in.depth = DepthSource{s.depth, DepthKind::Linear, s.scene.camera};
+        in.velocity = s.velocity;
+        return mb.value()->dispatch(in, settings);
+    };
+    SFX_REQUIRE_OK(mbFrame(a));
+    SFX_REQUIRE_OK(dev.flush());
+    checkResizeKeepsPipelines("motion blur grow", [&] { return mb.value()->resize(kW2, kH2); }, [&] { return mbFrame(b); });
+    checkResizeKeepsPipelines("motion blur shrink", [&] { return mb.value()->resize(kWidth, kHeight); }, [&] { return mbFrame(a); });
+    destroyInputs(a);
+    destroyInputs(b);
+}

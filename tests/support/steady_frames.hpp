@@ -16,25 +16,19 @@ namespace sfx::test {
 // below the megabytes per frame that a per-frame allocation or shader compile costs.
 constexpr double kMaxSteadyGrowthMiB = 2.0;
 
-// Resident memory must stay flat; on Vulkan it does not yet. lavapipe recompiles a fragment
-// shader whose loop bounds and branches read uniform values each time those are bound (it
-// inlines them), and keeps the code: about 0.8 MiB per frame for Alchemy and Scalable AO, 2 MiB
-// for Crease, 0.1-0.3 MiB for motion blur at 160x90. Until the effects' loop counts and
-// technique branches are specialisation constants (issue 8, item 3), the Vulkan growth is
-// reported as a known failure (CHECK_NOFAIL) instead of failing the run; every other check holds.
+// Resident memory must stay flat on every backend. (Before the effects' loop counts and branches
+// became specialisation constants, lavapipe recompiled their fragment shaders at every bind of
+// the uniforms that decided them and kept the code: 0.8-2 MiB per frame.)
 inline void checkResidentFlat(BackendKind backend, double growthMiB) {
+    (void)backend;  // the same bound on every backend
     INFO("resident growth " << growthMiB << " MiB");
 #if defined(__SANITIZE_ADDRESS__)
     // AddressSanitizer keeps freed memory in its quarantine, so resident memory grows with every
     // free: the sanitizer run checks memory errors and object counts, the normal build this bound.
     WARN("resident growth not bounded under AddressSanitizer: " << growthMiB << " MiB");
-    (void)backend;
     return;
 #endif
-    if (backend == BackendKind::Vulkan)
-        CHECK_NOFAIL(growthMiB < kMaxSteadyGrowthMiB);
-    else
-        CHECK(growthMiB < kMaxSteadyGrowthMiB);
+    CHECK(growthMiB < kMaxSteadyGrowthMiB);
 }
 
 inline double residentMiB() {

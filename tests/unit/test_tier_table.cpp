@@ -135,7 +135,6 @@ TEST_CASE("shared uniform blocks: the C++ structs have the compiled blocks' size
         {"ao_blur", "BlurParams", sizeof(shared::BlurParams), shared::BlurParams::kBinding},
         {"linearize_depth", "LinearizeParams", sizeof(shared::LinearizeParams), shared::LinearizeParams::kBinding},
         {"mb_pack", "MbPackParams", sizeof(shared::MbPackParams), shared::MbPackParams::kBinding},
-        {"mb_tile_max", "MbTileParams", sizeof(shared::MbTileParams), shared::MbTileParams::kBinding},
         {"mb_reconstruct", "MbReconstructParams", sizeof(shared::MbReconstructParams), shared::MbReconstructParams::kBinding},
         {"raster_gbuffer", "RasterParams", sizeof(shared::RasterParams), shared::RasterParams::kBinding},
     };

@@ -142,8 +142,9 @@ public:
 private:
     AmbientObscurance(Device& device, const AoDesc& desc);
     Status allocate();
+    Status allocateTargets();
+    void releaseTargets();
     void release();
-    Result<PipelineHandle> pipelineFor(uint32_t programIndex, Format format);
     Status createPassTimers();
     void destroyPassTimers();
 
@@ -155,12 +156,8 @@ private:
     Format targetFormat_ = Format::Undefined;
     BufferHandle aoParams_, blurParamsH_, blurParamsV_;
     ProgramHandle aoProgram_, blurProgram_;
-    struct CachedPipeline {
-        uint32_t program;  // 0 = AO pass, 1 = blur pass
-        Format format;
-        PipelineHandle pipeline;
-    };
-    std::vector<CachedPipeline> pipelines_;
+    // Pipelines by program, format and specialisation constants; kept across resize.
+    std::unique_ptr<detail::PipelineCache> pipelines_;
     bool profiling_ = false;
     std::vector<TimerHandle> passTimers_;  // one per plan() pass while profiling, else empty
 };

@@ -12,6 +12,10 @@
 
 namespace sfx {
 
+namespace detail {
+class PipelineCache;  // the effects' pipelines by specialisation constants (internal)
+}
+
 enum class DepthKind : uint32_t {
     Hardware,  // the depth buffer as rendered (D16, D24S8, D32F), mapped by the camera's projection
     Linear,    // already positive eye-space distance along the view axis, R32F
@@ -65,6 +69,7 @@ public:
 private:
     LinearDepth(Device& device, const LinearDepthDesc& desc);
     Status allocate();
+    Status allocateTexture();
     void release();
 
     Device& device_;
@@ -73,7 +78,8 @@ private:
     TextureHandle hostTexture_;  // the source of the last dispatch, when passing through
     BufferHandle params_;
     ProgramHandle linearizeProgram_, mipProgram_;
-    PipelineHandle linearizePipeline_, mipPipeline_;
+    // Linearisation (one per DepthKind seen) and MIP pipelines; kept across resize.
+    std::unique_ptr<detail::PipelineCache> pipelines_;
     DepthReconstruction reconstruction_;
 };
 

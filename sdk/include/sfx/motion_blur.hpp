@@ -129,8 +129,10 @@ public:
 private:
     MotionBlur(Device& device, const MotionBlurDesc& desc);
     Status allocate();
+    Status allocateTargets();
     Status allocateTiles(uint32_t radiusPx);
     void release();
+    void releaseTargets();
     void releaseTiles();
 
     Device& device_;
@@ -138,9 +140,10 @@ private:
     std::unique_ptr<LinearDepth> depth_;
     TextureHandle packed_, tileMax_, neighborMax_, output_;
     uint32_t tileRadius_ = 0;  // the radius the tile textures were sized for
-    BufferHandle packParams_, tileParams_, reconstructParams_;
+    BufferHandle packParams_, reconstructParams_;
     ProgramHandle packProgram_, tileProgram_, neighborProgram_, reconstructProgram_;
-    PipelineHandle packPipeline_, tilePipeline_, neighborPipeline_, reconstructPipeline_;
+    // Pipelines by specialisation constants (camera-only, tile size, taps); kept across resize.
+    std::unique_ptr<detail::PipelineCache> pipelines_;
 };
 
 }  // namespace sfx

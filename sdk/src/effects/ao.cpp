@@ -48,7 +48,8 @@ Result<std::unique_ptr<AmbientObscurance>> AmbientObscurance::create(Device& dev
     return ao;
 }
 
-AmbientObscurance::AmbientObscurance(Device& device, const AoDesc& desc) : device_(device), desc_(desc) {}
+AmbientObscurance::AmbientObscurance(Device& device, const AoDesc& desc)
+    : device_(device), desc_(desc), pipelines_(std::make_unique<detail::PipelineCache>(device)) {}
 
 AmbientObscurance::~AmbientObscurance() { release(); }
 
@@ -74,13 +75,7 @@ Status AmbientObscurance::allocate() {
         targetFormat_ = aoTargetFormat(desc_.profile);
         if (!device_.caps().renderableFormat[size_t(targetFormat_)])
             return {StatusCode::UnsupportedFormat, std::string("AO target format ") + toString(targetFormat_) + " is not renderable on this device"};
-        for (TextureHandle* t : {&aoTarget_, &blurTarget_}) {
-            TextureDesc td{desc_.width, desc_.height, 1, targetFormat_, kTextureSampled | kTextureRenderTarget,
-                           t == &aoTarget_ ? "sfx-ao-raw" : "sfx-ao-blur"};
-            Result<TextureHandle> tex = device_.createTexture(td);
-            if (!tex) return tex.status();
-            *t = tex.value();
-        }
+        SFX_TRY(allocateTargets());
         for (BufferHandle* b : {&blurParamsH_, &blurParamsV_}) {
             Result<BufferHandle> buf = device_.createBuffer({sizeof(BlurParams), kBufferUniform, "sfx-ao-blur-params"});
             if (!buf) return buf.status();
@@ -93,6 +88,26 @@ Status AmbientObscurance::allocate() {
     // The pass count follows the settings (MIP levels, blur), so timers follow each allocation.
     if (profiling_) SFX_TRY(createPassTimers());
     return Status::ok();
+}
+
+// The size-dependent part: the blur's intermediate targets (none without blur).
+Status AmbientObscurance::allocateTargets() {
+    if (config_.blurRadius == 0) return Status::ok();
+    for (TextureHandle* t : {&aoTarget_, &blurTarget_}) {
+        TextureDesc td{desc_.width, desc_.height, 1, targetFormat_, kTextureSampled | kTextureRenderTarget,
+                       t == &aoTarget_ ? "sfx-ao-raw" : "sfx-ao-blur"};
+        Result<TextureHandle> tex = device_.createTexture(td);
+        if (!tex) return tex.status();
+        *t = tex.value();
+    }
+    return Status::ok();
+}
+
+void AmbientObscurance::releaseTargets() {
+    for (TextureHandle* t : {&aoTarget_, &blurTarget_}) {
+        if (!t->isNull()) (void)device_.destroyTexture(*t);
+        *t = {};
+    }
 }
 
 Status AmbientObscurance::createPassTimers() {
@@ -144,8 +159,7 @@ Result<std::vector<PassTiming>> AmbientObscurance::passTimings() {
 
 void AmbientObscurance::release() {
     // Destroy calls on null handles report InvalidHandle; there is nothing to release then.
-    for (const CachedPipeline& p : pipelines_) (void)device_.destroyPipeline(p.pipeline);
-    pipelines_.clear();
+    pipelines_->clear();
     for (ProgramHandle* p : {&aoProgram_, &blurProgram_}) {
         if (!p->isNull()) (void)device_.destroyProgram(*p);
         *p = {};
@@ -154,42 +168,46 @@ void AmbientObscurance::release() {
         if (!b->isNull()) (void)device_.destroyBuffer(*b);
         *b = {};
     }
-    for (TextureHandle* t : {&aoTarget_, &blurTarget_}) {
-        if (!t->isNull()) (void)device_.destroyTexture(*t);
-        *t = {};
-    }
+    releaseTargets();
     targetFormat_ = Format::Undefined;
     destroyPassTimers();
     depth_.reset();
 }
 
-Result<PipelineHandle> AmbientObscurance::pipelineFor(uint32_t programIndex, Format format) {
-    for (const CachedPipeline& p : pipelines_)
-        if (p.program == programIndex && p.format == format) return p.pipeline;
-    GraphicsPipelineDesc pd;
-    pd.program = programIndex == 0 ? aoProgram_ : blurProgram_;
-    pd.colorFormats = {format};
-    pd.debugName = programIndex == 0 ? "sfx-ao" : "sfx-ao-blur";
-    Result<PipelineHandle> pipeline = device_.createGraphicsPipeline(pd);
-    if (!pipeline) return pipeline.status();
-    pipelines_.push_back({programIndex, format, pipeline.value()});
-    return pipeline.value();
-}
-
 Status AmbientObscurance::resize(uint32_t width, uint32_t height) {
     SFX_TRY(detail::checkTargetSize(device_, width, height, ""));
     if (width == desc_.width && height == desc_.height && depth_) return Status::ok();
-    release();
+    Result<AoConfig> config = resolveAoConfig(desc_.settings, desc_.profile, maxMipLevels(width, height));
+    if (!config) return config.status();
     desc_.width = width;
     desc_.height = height;
-    return allocate();
+    // The MIP level count follows the size only below 2^levels pixels; then everything is rebuilt.
+    if (!depth_ || config->depthMipLevels != config_.depthMipLevels) {
+        release();
+        return allocate();
+    }
+    // Otherwise only textures follow the size: programs and pipelines (their constants do not
+    // depend on it) stay, and the size-dependent uniforms are written at every dispatch.
+    releaseTargets();
+    Status s = depth_->resize(width, height);
+    if (s) s = allocateTargets();
+    if (!s) release();  // dispatch then reports the failed resize
+    return s;
 }
 
 Status AmbientObscurance::setSettings(const AoSettings& settings) {
     SFX_TRY(validateAoSettings(settings, desc_.profile));
+    Result<AoConfig> config = resolveAoConfig(settings, desc_.profile, maxMipLevels(desc_.width, desc_.height));
+    if (!config) return config.status();
     desc_.settings = settings;
-    // Programs, MIP levels and blur targets all follow from the settings; rebuilding is cheap
-    // next to a frame and keeps one code path.
+    // Looks, counts and radii are uniforms and specialisation constants: a dispatch compiles the
+    // pipeline a changed constant needs (the pipeline cache keeps the others). Only a technique,
+    // MIP level count or blur on/off change reallocates programs and textures.
+    if (depth_ && config->technique == config_.technique && config->depthMipLevels == config_.depthMipLevels &&
+        (config->blurRadius > 0) == (config_.blurRadius > 0)) {
+        config_ = config.value();
+        return Status::ok();
+    }
     release();
     return allocate();
 }
@@ -244,14 +262,9 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
     p.pixelsPerUnit = float(rec.pixelsPerUnitAtUnitDepth);
     p.maxRadiusPx = float(config_.maxRadiusPx);
     p.maxDepth = float(rec.maxDepth);
-    p.samples = int32_t(config_.samples);
-    p.mirrored = config_.mirrored ? 1 : 0;
-    p.mipLevels = int32_t(config_.depthMipLevels);
-    p.normalSource = normalSource;
     p.spiralTurns = float(config_.spiralTurns);
     p.keyNear = float(keyNear);
     p.keyInvLog2Range = float(1.0 / keyLog2Range);
-    p.packDepth = blur && targetFormat_ == Format::RGBA8 ? 1.0f : 0.0f;
     p.creaseRange = config_.crease.range;
     p.creaseBias = config_.crease.bias;
     p.creaseAverager = config_.crease.averager;
@@ -262,7 +275,15 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
 
     // Obscurance: straight into the output without blur.
     const TextureHandle aoDest = blur ? aoTarget_ : in.output;
-    Result<PipelineHandle> aoPipeline = pipelineFor(0, blur ? targetFormat_ : out->format);
+    const std::vector<SpecializationConstant> aoConstants = {
+        {SFX_AO_SC_SAMPLES, int32_t(config_.samples)},
+        {SFX_AO_SC_MIRRORED, config_.mirrored ? 1 : 0},
+        {SFX_AO_SC_MIP_LEVELS, int32_t(config_.depthMipLevels)},
+        {SFX_AO_SC_NORMAL_SOURCE, normalSource},
+        {SFX_AO_SC_PACK_DEPTH, blur && targetFormat_ == Format::RGBA8 ? 1 : 0},
+        {SFX_AO_SC_CLAMP_RADIUS, config_.maxRadiusPx > 0.0 ? 1 : 0},
+    };
+    Result<PipelineHandle> aoPipeline = pipelines_->get(aoProgram_, blur ? targetFormat_ : out->format, aoConstants, "sfx-ao");
     if (!aoPipeline) return aoPipeline.status();
     RenderPassDesc pass;
     pass.colors = {ColorAttachment{aoDest, 0, LoadOp::DontCare, {}}};
@@ -283,10 +304,6 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
         BlurParams b{};
         b.direction[0] = passIndex == 0 ? 1 : 0;
         b.direction[1] = passIndex == 0 ? 0 : 1;
-        b.radius = radius;
-        b.moderateRadius = std::max(1, radius / 2);
-        b.crease = config_.technique == AoTechnique::Crease ? 1 : 0;
-        b.finalPass = passIndex;
         b.maxDepth = float(rec.maxDepth);
         b.keyNear = float(keyNear);
         b.keyLog2Range = float(keyLog2Range);
@@ -294,7 +311,14 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
         SFX_TRY(device_.writeBuffer(buffer, 0, &b, sizeof b));
         const TextureHandle src = passIndex == 0 ? aoTarget_ : blurTarget_;
         const TextureHandle dst = passIndex == 0 ? blurTarget_ : in.output;
-        Result<PipelineHandle> bp = pipelineFor(1, passIndex == 0 ? targetFormat_ : out->format);
+        const std::vector<SpecializationConstant> blurConstants = {
+            {SFX_AO_SC_BLUR_RADIUS, radius},
+            {SFX_AO_SC_BLUR_MODERATE_RADIUS, std::max(1, radius / 2)},
+            {SFX_AO_SC_BLUR_CREASE, config_.technique == AoTechnique::Crease ? 1 : 0},
+            {SFX_AO_SC_BLUR_FINAL_PASS, passIndex},
+        };
+        Result<PipelineHandle> bp = pipelines_->get(blurProgram_, passIndex == 0 ? targetFormat_ : out->format, blurConstants,
+                                                    passIndex == 0 ? "sfx-ao-blur-h" : "sfx-ao-blur-v");
         if (!bp) return bp.status();
         RenderPassDesc bpass;
         bpass.colors = {ColorAttachment{dst, 0, LoadOp::DontCare, {}}};

@@ -35,61 +35,59 @@ Result<std::unique_ptr<LinearDepth>> LinearDepth::create(Device& device, const L
     return depth;
 }
 
-LinearDepth::LinearDepth(Device& device, const LinearDepthDesc& desc) : device_(device), desc_(desc) {}
+LinearDepth::LinearDepth(Device& device, const LinearDepthDesc& desc)
+    : device_(device), desc_(desc), pipelines_(std::make_unique<detail::PipelineCache>(device)) {}
 
 LinearDepth::~LinearDepth() { release(); }
 
 Status LinearDepth::allocate() {
+    // Linear input without a pyramid is used where it lies: nothing to allocate.
+    if (passThrough()) return allocateTexture();
+    Result<BufferHandle> params = device_.createBuffer({sizeof(LinearizeParams), kBufferUniform, "sfx-linearize-params"});
+    if (!params) return params.status();
+    params_ = params.value();
+    Result<ProgramHandle> lin = loadProgram(device_, gen::linearize_depth::kName, desc_.tier);
+    if (!lin) return lin.status();
+    linearizeProgram_ = lin.value();
+    // The pipeline for the input kind of the desc, made here; a dispatch of the other kind makes its own.
+    Result<PipelineHandle> lp = pipelines_->get(linearizeProgram_, Format::R32F,
+                                                {{SFX_DEPTH_SC_LINEAR_INPUT, desc_.input == DepthKind::Linear ? 1 : 0}},
+                                                "sfx-linearize-depth");
+    if (!lp) return lp.status();
+    if (desc_.mipLevels > 1) {
+        Result<ProgramHandle> mip = loadProgram(device_, gen::depth_mip::kName, desc_.tier);
+        if (!mip) return mip.status();
+        mipProgram_ = mip.value();
+        // The MIP pass has one pipeline (no constants): made here, so no dispatch compiles it.
+        Result<PipelineHandle> mp = pipelines_->get(mipProgram_, Format::R32F, {}, "sfx-depth-mip");
+        if (!mp) return mp.status();
+    }
+    return allocateTexture();
+}
+
+// The size-dependent part: the linear depth texture (programs and pipelines do not depend on it).
+Status LinearDepth::allocateTexture() {
     const uint32_t allowed = maxMipLevels(std::max(desc_.width, 1u), std::max(desc_.height, 1u));
     if (desc_.width > 0 && desc_.height > 0 && desc_.mipLevels > allowed)
         return invalidArgument("LinearDepthDesc.mipLevels", std::to_string(desc_.mipLevels),
                                "[1, " + std::to_string(allowed) + "] for " + std::to_string(desc_.width) + "x" +
                                    std::to_string(desc_.height));
-    // Linear input without a pyramid is used where it lies: nothing to allocate.
     if (passThrough()) return Status::ok();
     TextureDesc td{desc_.width, desc_.height, desc_.mipLevels, Format::R32F, kTextureSampled | kTextureRenderTarget,
                    "sfx-linear-depth"};
     Result<TextureHandle> tex = device_.createTexture(td);
     if (!tex) return tex.status();
     texture_ = tex.value();
-    Result<BufferHandle> params = device_.createBuffer({sizeof(LinearizeParams), kBufferUniform, "sfx-linearize-params"});
-    if (!params) return params.status();
-    params_ = params.value();
-
-    Result<ProgramHandle> lin = loadProgram(device_, gen::linearize_depth::kName, desc_.tier);
-    if (!lin) return lin.status();
-    linearizeProgram_ = lin.value();
-    GraphicsPipelineDesc pd;
-    pd.program = linearizeProgram_;
-    pd.colorFormats = {Format::R32F};
-    pd.debugName = "sfx-linearize-depth";
-    Result<PipelineHandle> lp = device_.createGraphicsPipeline(pd);
-    if (!lp) return lp.status();
-    linearizePipeline_ = lp.value();
-
-    if (desc_.mipLevels > 1) {
-        Result<ProgramHandle> mip = loadProgram(device_, gen::depth_mip::kName, desc_.tier);
-        if (!mip) return mip.status();
-        mipProgram_ = mip.value();
-        pd.program = mipProgram_;
-        pd.debugName = "sfx-depth-mip";
-        Result<PipelineHandle> mp = device_.createGraphicsPipeline(pd);
-        if (!mp) return mp.status();
-        mipPipeline_ = mp.value();
-    }
     return Status::ok();
 }
 
 void LinearDepth::release() {
     // Destroy calls on null handles report InvalidHandle; there is nothing to release then.
-    if (!mipPipeline_.isNull()) (void)device_.destroyPipeline(mipPipeline_);
-    if (!linearizePipeline_.isNull()) (void)device_.destroyPipeline(linearizePipeline_);
+    pipelines_->clear();
     if (!mipProgram_.isNull()) (void)device_.destroyProgram(mipProgram_);
     if (!linearizeProgram_.isNull()) (void)device_.destroyProgram(linearizeProgram_);
     if (!params_.isNull()) (void)device_.destroyBuffer(params_);
     if (!texture_.isNull()) (void)device_.destroyTexture(texture_);
-    mipPipeline_ = {};
-    linearizePipeline_ = {};
     mipProgram_ = {};
     linearizeProgram_ = {};
     params_ = {};
@@ -100,10 +98,13 @@ void LinearDepth::release() {
 Status LinearDepth::resize(uint32_t width, uint32_t height) {
     SFX_TRY(detail::checkTargetSize(device_, width, height, ""));
     if (width == desc_.width && height == desc_.height) return Status::ok();
-    release();
+    // Only the texture follows the size; programs and pipelines stay.
+    if (!texture_.isNull()) (void)device_.destroyTexture(texture_);
+    texture_ = {};
+    hostTexture_ = {};
     desc_.width = width;
     desc_.height = height;
-    return allocate();
+    return allocateTexture();
 }
 
 Status LinearDepth::dispatch(const DepthSource& source, std::span<const TimerHandle> passTimers) {
@@ -146,14 +147,23 @@ Status LinearDepth::dispatch(const DepthSource& source, std::span<const TimerHan
     p.denomOffset = float(reconstruction_.denomOffset);
     p.numerator = float(reconstruction_.numerator);
     p.maxDepth = float(reconstruction_.maxDepth);
-    p.linearInput = source.kind == DepthKind::Linear ? 1.0f : 0.0f;
     SFX_TRY(device_.writeBuffer(params_, 0, &p, sizeof p));
+    // The source's kind is a branch of the shader: a specialisation constant (one pipeline each).
+    const int32_t linearInput = source.kind == DepthKind::Linear ? 1 : 0;
+    Result<PipelineHandle> linearize =
+        pipelines_->get(linearizeProgram_, Format::R32F, {{SFX_DEPTH_SC_LINEAR_INPUT, linearInput}}, "sfx-linearize-depth");
+    if (!linearize) return linearize.status();
+    Result<PipelineHandle> mipPipeline = PipelineHandle{};
+    if (desc_.mipLevels > 1) {
+        mipPipeline = pipelines_->get(mipProgram_, Format::R32F, {}, "sfx-depth-mip");
+        if (!mipPipeline) return mipPipeline.status();
+    }
 
     RenderPassDesc pass;
     pass.colors = {ColorAttachment{texture_, 0, LoadOp::DontCare, {}}};
     pass.debugName = "sfx-linearize-depth";
     DrawDesc draw;
-    draw.pipeline = linearizePipeline_;
+    draw.pipeline = linearize.value();
     draw.bindings.textures = {TextureBinding{gen::linearize_depth::uHardwareDepth, source.texture, 0, 1, {}}};
     draw.bindings.uniformBuffers = {BufferBinding{gen::linearize_depth::LinearizeParams, params_, 0, 0}};
     if (!passTimers.empty()) SFX_TRY(device_.beginTimer(passTimers[0]));
@@ -165,7 +175,7 @@ Status LinearDepth::dispatch(const DepthSource& source, std::span<const TimerHan
         mipPass.colors = {ColorAttachment{texture_, level, LoadOp::DontCare, {}}};
         mipPass.debugName = "sfx-depth-mip";
         DrawDesc mipDraw;
-        mipDraw.pipeline = mipPipeline_;
+        mipDraw.pipeline = mipPipeline.value();
         mipDraw.bindings.textures = {TextureBinding{gen::depth_mip::uPreviousLevel, texture_, level - 1, 1, {}}};
         if (!passTimers.empty()) SFX_TRY(device_.beginTimer(passTimers[level]));
         SFX_TRY(device_.renderPass(mipPass, std::span<const DrawDesc>(&mipDraw, 1)));

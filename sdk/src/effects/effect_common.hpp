@@ -1,7 +1,9 @@
 // Internal helpers shared by the effect contexts in sdk/src/effects/ (not installed).
 #pragma once
 
+#include <cstddef>
 #include <string>
+#include <vector>
 
 #include "sfx/hal.hpp"
 #include "sfx/tier.hpp"
@@ -29,5 +31,67 @@ inline Status checkTargetSize(const Device& device, uint32_t width, uint32_t hei
     if (height == 0 || height > maxSize) return invalidArgument(what + "height", std::to_string(height), range);
     return Status::ok();
 }
+
+// The graphics pipelines of an effect's full-screen passes, one per (program, colour format,
+// specialisation constants): a dispatch asks for the one it needs and only a combination not
+// seen yet compiles one. Loop counts and branches are specialisation constants (never
+// uniforms: lavapipe recompiles shaders whose control flow reads uniform values), so steady
+// frames reuse their pipelines and a settings change compiles just the passes it affects.
+class PipelineCache {
+public:
+    explicit PipelineCache(Device& device) : device_(device) {}
+    ~PipelineCache() { clear(); }
+    PipelineCache(const PipelineCache&) = delete;
+    PipelineCache& operator=(const PipelineCache&) = delete;
+
+    Result<PipelineHandle> get(ProgramHandle program, Format format, const std::vector<SpecializationConstant>& constants,
+                               const char* debugName) {
+        for (const Entry& e : entries_)
+            if (e.program == program && e.format == format && sameConstants(e.constants, constants)) return e.pipeline;
+        // Combinations left behind by earlier settings go first, oldest first, once there are many.
+        if (entries_.size() >= kMaxEntries) {
+            (void)device_.destroyPipeline(entries_.front().pipeline);
+            entries_.erase(entries_.begin());
+        }
+        GraphicsPipelineDesc pd;
+        pd.program = program;
+        pd.colorFormats = {format};
+        pd.debugName = debugName;
+        pd.constants = constants;
+        Result<PipelineHandle> pipeline = device_.createGraphicsPipeline(pd);
+        if (!pipeline) return pipeline.status();
+        entries_.push_back({program, format, constants, pipeline.value()});
+        return pipeline.value();
+    }
+    // Destroys the pipelines of `program` (before the program itself is destroyed).
+    void forget(ProgramHandle program) {
+        for (size_t i = entries_.size(); i-- > 0;)
+            if (entries_[i].program == program) {
+                (void)device_.destroyPipeline(entries_[i].pipeline);
+                entries_.erase(entries_.begin() + std::ptrdiff_t(i));
+            }
+    }
+    void clear() {
+        for (const Entry& e : entries_) (void)device_.destroyPipeline(e.pipeline);
+        entries_.clear();
+    }
+
+private:
+    static constexpr size_t kMaxEntries = 32;
+    struct Entry {
+        ProgramHandle program;
+        Format format;
+        std::vector<SpecializationConstant> constants;
+        PipelineHandle pipeline;
+    };
+    static bool sameConstants(const std::vector<SpecializationConstant>& a, const std::vector<SpecializationConstant>& b) {
+        if (a.size() != b.size()) return false;
+        for (size_t i = 0; i < a.size(); ++i)
+            if (a[i].id != b[i].id || a[i].value != b[i].value) return false;
+        return true;
+    }
+    Device& device_;
+    std::vector<Entry> entries_;
+};
 
 }  // namespace sfx::detail

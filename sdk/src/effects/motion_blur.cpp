@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "effect_common.hpp"
 #include "sfx_shaders.hpp"
@@ -17,7 +19,6 @@ using detail::loadProgram;
 
 // The uniform blocks of the mb_*.frag passes, declared once in sfx_shared_mb.h for C++ and GLSL.
 using PackParams = shared::MbPackParams;
-using TileParams = shared::MbTileParams;
 using ReconstructParams = shared::MbReconstructParams;
 
 bool isVelocityFormat(Format f) {
@@ -103,7 +104,8 @@ Result<std::unique_ptr<MotionBlur>> MotionBlur::create(Device& device, const Mot
     return mb;
 }
 
-MotionBlur::MotionBlur(Device& device, const MotionBlurDesc& desc) : device_(device), desc_(desc) {}
+MotionBlur::MotionBlur(Device& device, const MotionBlurDesc& desc)
+    : device_(device), desc_(desc), pipelines_(std::make_unique<detail::PipelineCache>(device)) {}
 
 MotionBlur::~MotionBlur() { release(); }
 
@@ -112,6 +114,31 @@ Status MotionBlur::allocate() {
     if (!depth) return depth.status();
     depth_ = std::move(depth.value());
 
+    Result<BufferHandle> pp = device_.createBuffer({sizeof(PackParams), kBufferUniform, "sfx-mb-pack-params"});
+    if (!pp) return pp.status();
+    packParams_ = pp.value();
+    Result<BufferHandle> rp = device_.createBuffer({sizeof(ReconstructParams), kBufferUniform, "sfx-mb-reconstruct-params"});
+    if (!rp) return rp.status();
+    reconstructParams_ = rp.value();
+
+    // Programs here; their pipelines at the first dispatch that needs them (the specialisation
+    // constants follow the inputs and settings), kept in pipelines_ across resize.
+    const std::pair<const char*, ProgramHandle*> programs[] = {
+        {gen::mb_pack::kName, &packProgram_},
+        {gen::mb_tile_max::kName, &tileProgram_},
+        {gen::mb_neighbor_max::kName, &neighborProgram_},
+        {gen::mb_reconstruct::kName, &reconstructProgram_},
+    };
+    for (const auto& [name, out] : programs) {
+        Result<ProgramHandle> prog = loadProgram(device_, name, desc_.profile.tier);
+        if (!prog) return prog.status();
+        *out = prog.value();
+    }
+    return allocateTargets();
+}
+
+// The size-dependent part: the packed and output textures (the tiles follow at dispatch).
+Status MotionBlur::allocateTargets() {
     const uint32_t rt = kTextureSampled | kTextureRenderTarget;
     Result<TextureHandle> packed = device_.createTexture({desc_.width, desc_.height, 1, Format::RGBA16F, rt, "sfx-mb-packed"});
     if (!packed) return packed.status();
@@ -119,42 +146,15 @@ Status MotionBlur::allocate() {
     Result<TextureHandle> out = device_.createTexture({desc_.width, desc_.height, 1, desc_.colorFormat, rt, "sfx-mb-output"});
     if (!out) return out.status();
     output_ = out.value();
-
-    Result<BufferHandle> pp = device_.createBuffer({sizeof(PackParams), kBufferUniform, "sfx-mb-pack-params"});
-    if (!pp) return pp.status();
-    packParams_ = pp.value();
-    Result<BufferHandle> tp = device_.createBuffer({sizeof(TileParams), kBufferUniform, "sfx-mb-tile-params"});
-    if (!tp) return tp.status();
-    tileParams_ = tp.value();
-    Result<BufferHandle> rp = device_.createBuffer({sizeof(ReconstructParams), kBufferUniform, "sfx-mb-reconstruct-params"});
-    if (!rp) return rp.status();
-    reconstructParams_ = rp.value();
-
-    struct Stage {
-        const char* program;
-        Format format;
-        ProgramHandle* programOut;
-        PipelineHandle* pipelineOut;
-    };
-    const Stage stages[] = {
-        {gen::mb_pack::kName, Format::RGBA16F, &packProgram_, &packPipeline_},
-        {gen::mb_tile_max::kName, Format::RG16F, &tileProgram_, &tilePipeline_},
-        {gen::mb_neighbor_max::kName, Format::RG16F, &neighborProgram_, &neighborPipeline_},
-        {gen::mb_reconstruct::kName, desc_.colorFormat, &reconstructProgram_, &reconstructPipeline_},
-    };
-    for (const Stage& st : stages) {
-        Result<ProgramHandle> prog = loadProgram(device_, st.program, desc_.profile.tier);
-        if (!prog) return prog.status();
-        *st.programOut = prog.value();
-        GraphicsPipelineDesc pd;
-        pd.program = prog.value();
-        pd.colorFormats = {st.format};
-        pd.debugName = st.program;
-        Result<PipelineHandle> pipe = device_.createGraphicsPipeline(pd);
-        if (!pipe) return pipe.status();
-        *st.pipelineOut = pipe.value();
-    }
     return Status::ok();
+}
+
+void MotionBlur::releaseTargets() {
+    releaseTiles();
+    for (TextureHandle* t : {&packed_, &output_}) {
+        if (!t->isNull()) (void)device_.destroyTexture(*t);
+        *t = {};
+    }
 }
 
 Status MotionBlur::allocateTiles(uint32_t radiusPx) {
@@ -182,33 +182,36 @@ void MotionBlur::releaseTiles() {
 
 void MotionBlur::release() {
     // Destroy calls on null handles report InvalidHandle; there is nothing to release then.
-    for (PipelineHandle* p : {&packPipeline_, &tilePipeline_, &neighborPipeline_, &reconstructPipeline_}) {
-        if (!p->isNull()) (void)device_.destroyPipeline(*p);
-        *p = {};
-    }
+    pipelines_->clear();
     for (ProgramHandle* p : {&packProgram_, &tileProgram_, &neighborProgram_, &reconstructProgram_}) {
         if (!p->isNull()) (void)device_.destroyProgram(*p);
         *p = {};
     }
-    for (BufferHandle* b : {&packParams_, &tileParams_, &reconstructParams_}) {
+    for (BufferHandle* b : {&packParams_, &reconstructParams_}) {
         if (!b->isNull()) (void)device_.destroyBuffer(*b);
         *b = {};
     }
-    releaseTiles();
-    for (TextureHandle* t : {&packed_, &output_}) {
-        if (!t->isNull()) (void)device_.destroyTexture(*t);
-        *t = {};
-    }
+    releaseTargets();
     depth_.reset();
 }
 
 Status MotionBlur::resize(uint32_t width, uint32_t height) {
     SFX_TRY(detail::checkTargetSize(device_, width, height, ""));
     if (width == desc_.width && height == desc_.height && !output_.isNull()) return Status::ok();
-    release();
     desc_.width = width;
     desc_.height = height;
-    return allocate();
+    if (!depth_ || packProgram_.isNull()) {
+        release();
+        return allocate();
+    }
+    // Only textures follow the size; programs and pipelines stay. (The tile size is the blur
+    // radius, which scales with the height when referenceRows is set: a dispatch at a new radius
+    // compiles that tile-max pipeline once, the cache keeps it.)
+    releaseTargets();
+    Status s = depth_->resize(width, height);
+    if (s) s = allocateTargets();
+    if (!s) release();  // dispatch then reports the failed resize
+    return s;
 }
 
 Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings& settings) {
@@ -261,20 +264,31 @@ Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings
     pack.target[1] = float(desc_.height);
     pack.radius = float(p.radiusPx);
     pack.velocityScale = float(0.5 * p.exposure);
-    pack.cameraOnly = cameraOnly ? 1.0f : 0.0f;
     pack.maxDepth = float(depth_->reconstruction().maxDepth);
     SFX_TRY(device_.writeBuffer(packParams_, 0, &pack, sizeof pack));
-    TileParams tile{};
-    tile.tileSize = int32_t(p.radiusPx);
-    SFX_TRY(device_.writeBuffer(tileParams_, 0, &tile, sizeof tile));
     ReconstructParams rec{};
     rec.radius = float(p.radiusPx);
     rec.softExtent = float(p.softDepthExtent);
     rec.centreWeight = float(p.centreWeight);
     rec.tileSize = int32_t(p.radiusPx);
-    rec.pairs = int32_t(p.pairs);
-    rec.jitterSize = int32_t(p.jitterSize);
     SFX_TRY(device_.writeBuffer(reconstructParams_, 0, &rec, sizeof rec));
+
+    // Branches and loop counts: specialisation constants, one pipeline per combination seen.
+    auto pipeline = [&](ProgramHandle program, Format format, std::vector<SpecializationConstant> constants, const char* name) {
+        return pipelines_->get(program, format, constants, name);
+    };
+    Result<PipelineHandle> packPipeline =
+        pipeline(packProgram_, Format::RGBA16F, {{SFX_MB_SC_CAMERA_ONLY, cameraOnly ? 1 : 0}}, gen::mb_pack::kName);
+    if (!packPipeline) return packPipeline.status();
+    Result<PipelineHandle> tilePipeline =
+        pipeline(tileProgram_, Format::RG16F, {{SFX_MB_SC_TILE_SIZE, int32_t(p.radiusPx)}}, gen::mb_tile_max::kName);
+    if (!tilePipeline) return tilePipeline.status();
+    Result<PipelineHandle> neighborPipeline = pipeline(neighborProgram_, Format::RG16F, {}, gen::mb_neighbor_max::kName);
+    if (!neighborPipeline) return neighborPipeline.status();
+    Result<PipelineHandle> reconstructPipeline =
+        pipeline(reconstructProgram_, desc_.colorFormat,
+                 {{SFX_MB_SC_PAIRS, int32_t(p.pairs)}, {SFX_MB_SC_JITTER_SIZE, int32_t(p.jitterSize)}}, gen::mb_reconstruct::kName);
+    if (!reconstructPipeline) return reconstructPipeline.status();
 
     auto run = [&](TextureHandle target, const char* name, PipelineHandle pipeline, BindingSet bindings) -> Status {
         RenderPassDesc pass;
@@ -291,23 +305,22 @@ Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings
     packBind.textures = {TextureBinding{gen::mb_pack::uLinearDepth, depth_->texture(), 0, 1, {}},
                          TextureBinding{gen::mb_pack::uVelocity, cameraOnly ? depth_->texture() : in.velocity, 0, 1, {}}};
     packBind.uniformBuffers = {BufferBinding{gen::mb_pack::MbPackParams, packParams_, 0, 0}};
-    SFX_TRY(run(packed_, "sfx-mb-pack", packPipeline_, packBind));
+    SFX_TRY(run(packed_, "sfx-mb-pack", packPipeline.value(), packBind));
 
     BindingSet tileBind;
     tileBind.textures = {TextureBinding{gen::mb_tile_max::uPacked, packed_, 0, 1, {}}};
-    tileBind.uniformBuffers = {BufferBinding{gen::mb_tile_max::MbTileParams, tileParams_, 0, 0}};
-    SFX_TRY(run(tileMax_, "sfx-mb-tile-max", tilePipeline_, tileBind));
+    SFX_TRY(run(tileMax_, "sfx-mb-tile-max", tilePipeline.value(), tileBind));
 
     BindingSet neighborBind;
     neighborBind.textures = {TextureBinding{gen::mb_neighbor_max::uTileMax, tileMax_, 0, 1, {}}};
-    SFX_TRY(run(neighborMax_, "sfx-mb-neighbor-max", neighborPipeline_, neighborBind));
+    SFX_TRY(run(neighborMax_, "sfx-mb-neighbor-max", neighborPipeline.value(), neighborBind));
 
     BindingSet recBind;
     recBind.textures = {TextureBinding{gen::mb_reconstruct::uColor, in.color, 0, 1, {}},
                         TextureBinding{gen::mb_reconstruct::uPacked, packed_, 0, 1, {}},
                         TextureBinding{gen::mb_reconstruct::uNeighborMax, neighborMax_, 0, 1, {}}};
     recBind.uniformBuffers = {BufferBinding{gen::mb_reconstruct::MbReconstructParams, reconstructParams_, 0, 0}};
-    return run(output_, "sfx-mb-reconstruct", reconstructPipeline_, recBind);
+    return run(output_, "sfx-mb-reconstruct", reconstructPipeline.value(), recBind);
 }
 
 Plan MotionBlur::plan(const MotionBlurSettings& settings) const {
@@ -328,7 +341,7 @@ Plan MotionBlur::plan(const MotionBlurSettings& settings) const {
     plan.resources.push_back(plannedTexture("motion_blur", "neighbour max", {tw, th, 1, Format::RG16F, rt}));
     plan.resources.push_back(plannedTexture("motion_blur", "output", {desc_.width, desc_.height, 1, desc_.colorFormat, rt}));
     plan.resources.push_back({"motion_blur", "uniforms", Format::Undefined, 0, 0, 1,
-                              sizeof(PackParams) + sizeof(TileParams) + sizeof(ReconstructParams)});
+                              sizeof(PackParams) + sizeof(ReconstructParams)});
     return plan;
 }
 
