@@ -28,7 +28,9 @@ GlDevice::GlDevice(std::unique_ptr<GlPlatform> platform, Api api, const DeviceOp
 
 GlDevice::~GlDevice() {
     if (!loaded_ || !makeCurrent()) return;
-    textures_.forEachAlive([&](GlTexture& t) { gl_.glDeleteTextures(1, &t.name); });
+    textures_.forEachAlive([&](GlTexture& t) {
+        if (!t.external) gl_.glDeleteTextures(1, &t.name);
+    });
     buffers_.forEachAlive([&](GlBuffer& b) { gl_.glDeleteBuffers(1, &b.name); });
     samplers_.forEachAlive([&](GlSampler& s) { gl_.glDeleteSamplers(1, &s.name); });
     programs_.forEachAlive([&](GlProgram& p) { gl_.glDeleteProgram(p.name); });

@@ -37,6 +37,7 @@ inline std::string str(uint64_t v) { return std::to_string(v); }
 struct GlTexture {
     TextureDesc desc;
     GLuint name = 0;
+    bool external = false;  // a host's texture (gl_external_textures.cpp): never deleted by the SDK
 };
 struct GlBuffer {
     BufferDesc desc;
@@ -93,6 +94,9 @@ public:
     const DeviceCaps& caps() const override { return caps_; }
 
     Result<TextureHandle> createTexture(const TextureDesc& desc) override;
+    // gl_external_textures.cpp: host textures in, SDK textures out.
+    Result<TextureHandle> importExternal(const ExternalTexture& texture);
+    Result<NativeTexture> native(TextureHandle h) const;
     Status destroyTexture(TextureHandle h) override;
     Result<TextureDesc> textureDesc(TextureHandle h) const override;
     Status writeTexture(TextureHandle h, uint32_t mip, const void* data, size_t bytes) override;

@@ -19,6 +19,7 @@ namespace sfx::gl {
     X(PFNGLFINISHPROC, glFinish)                                        \
     X(PFNGLGENTEXTURESPROC, glGenTextures)                              \
     X(PFNGLDELETETEXTURESPROC, glDeleteTextures)                        \
+    X(PFNGLISTEXTUREPROC, glIsTexture)                                  \
     X(PFNGLBINDTEXTUREPROC, glBindTexture)                              \
     X(PFNGLACTIVETEXTUREPROC, glActiveTexture)                          \
     X(PFNGLTEXSTORAGE2DPROC, glTexStorage2D)                            \

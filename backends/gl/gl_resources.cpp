@@ -35,9 +35,10 @@ Status GlDevice::destroyTexture(TextureHandle h) {
     SFX_TRY(textures_.check(h, "texture"));
     SFX_TRY(enter());
     GlTexture t = textures_.remove(h);
+    forgetFbosOf(t.name);
+    if (t.external) return takeDeviceError(Status::ok());  // the host's to delete
     storage_.remove();
     bytesHeld_ -= textureBytes(t.desc);
-    forgetFbosOf(t.name);
     GL(glDeleteTextures, 1, &t.name);
     return takeDeviceError(Status::ok());
 }

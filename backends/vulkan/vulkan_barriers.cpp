@@ -128,7 +128,7 @@ void VulkanDevice::barriers(VkCommandBuffer cb, const Uses& uses) {
         b.newLayout = e.use.layout;
         b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
         b.image = e.texture->image;
-        b.subresourceRange = {fullAspect(e.texture->desc.format), e.mip, 1, 0, 1};
+        b.subresourceRange = e.texture->range(fullAspect(e.texture->desc.format), e.mip, 1);
         batchFor(batches, h.src, e.use.stages).images.push_back(b);
     }
     for (const BufferUse& u : buffers) {

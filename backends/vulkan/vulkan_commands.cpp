@@ -27,6 +27,7 @@ Result<VkCommandBuffer> VulkanDevice::recording() {
 
 Status VulkanDevice::submitAndWait() {
     if (!recording_) return Status::ok();
+    handBackExternal(commandBuffer_);
     recording_ = false;
     SFX_VK(vk_.vkEndCommandBuffer(commandBuffer_));
     VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
@@ -48,6 +49,7 @@ Status VulkanDevice::flush() {
     if (hostCommandBuffer_) {
         // The host ends and submits its command buffer; what it used (garbage, staging blocks)
         // lives until it is done, which the next setCommandBuffer may assume.
+        handBackExternal(hostCommandBuffer_);
         hostCommandBuffer_ = VK_NULL_HANDLE;
         markEndedTimersFlushed(true, 0);
         return Status::ok();

@@ -17,6 +17,7 @@ Result<TextureHandle> VulkanDevice::createTexture(const TextureDesc& desc) {
 Status VulkanDevice::destroyTexture(TextureHandle h) {
     SFX_TRY(textures_.check(h, "texture"));
     VulkanTexture t = textures_.remove(h);
+    if (t.external) SFX_TRY(forgetExternal(h, t));  // back in the host's layout first
     clearSetCache();  // sets may name its views
     retire(t);
     releaseIdleGarbage();

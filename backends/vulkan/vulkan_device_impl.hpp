@@ -59,6 +59,10 @@ public:
     // vulkan_commands.cpp
     Status setHostCommandBuffer(VkCommandBuffer cb);
 
+    // vulkan_external_images.cpp: host images in, SDK images out, and their state contract.
+    Result<TextureHandle> importExternal(const ExternalImage& image);
+    Result<NativeImage> native(TextureHandle texture);
+
     const DeviceCaps& caps() const override { return caps_; }
     DeviceStats stats() const override;  // vulkan_memory.cpp
 
@@ -138,6 +142,12 @@ private:
     Result<VkImageView> attachmentView(VulkanTexture& t, uint32_t mip);
     Result<VkImageView> storageView(VulkanTexture& t, uint32_t mip) { return sampledView(t, mip, 1); }
 
+    // vulkan_external_images.cpp: the barrier that returns an imported image used since the last
+    // hand-back to the host's layout (every flush, and before the SDK forgets the image).
+    void handBack(VkCommandBuffer cb, VulkanTexture& t);
+    void handBackExternal(VkCommandBuffer cb);
+    Status forgetExternal(TextureHandle h, VulkanTexture& t);
+
     // vulkan_barriers.cpp: the barriers `uses` need after what was recorded before.
     void barriers(VkCommandBuffer cb, const Uses& uses);
 
@@ -201,6 +211,7 @@ private:
     HandlePool<ProgramTag, VulkanProgram> programs_;
     HandlePool<PipelineTag, VulkanPipeline> pipelines_;
     HandlePool<TimerTag, VulkanTimer> timers_;
+    std::vector<TextureHandle> externals_;  // imported images, handed back at every flush
 
 public:  // set up by the factory functions
     InstanceSetup setup_;

@@ -10,9 +10,11 @@ void VulkanDevice::retire(VulkanTexture& t) {
     for (auto& v : t.views) g.views.push_back(v.second);
     for (VkImageView v : t.attachmentViews)
         if (v) g.views.push_back(v);
-    g.images.push_back(t.image);
-    g.memories.push_back(t.memory);
-    g.memoryBytes += t.memoryBytes;
+    if (!t.external) {  // a host's image and its view are the host's to destroy
+        g.images.push_back(t.image);
+        g.memories.push_back(t.memory);
+        g.memoryBytes += t.memoryBytes;
+    }
     t = VulkanTexture{};
 }
 

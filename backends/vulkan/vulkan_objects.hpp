@@ -58,6 +58,16 @@ struct VulkanTexture {
     std::vector<AccessState> mips;                               // layout and last use per mip
     std::map<std::pair<uint32_t, uint32_t>, VkImageView> views;  // (baseMip, mipCount) -> sampled view
     std::vector<VkImageView> attachmentViews;                    // per mip, all aspects
+    // An imported host image (vulkan_external_images.cpp): never destroyed by the SDK; its mip i
+    // is the image's mip baseMip + i of `layer`, and every flush hands it back in hostLayout.
+    bool external = false;
+    uint32_t baseMip = 0, layer = 0;
+    VkImageLayout hostLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VkImageUsageFlags vkUsage = 0;
+    VkImageView hostView = VK_NULL_HANDLE;  // the host's sampled view of all mips, or none
+    VkImageSubresourceRange range(VkImageAspectFlags aspect, uint32_t mip, uint32_t count) const {
+        return {aspect, baseMip + mip, count, layer, 1};
+    }
 };
 
 struct VulkanProgram {

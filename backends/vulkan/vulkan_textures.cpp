@@ -50,6 +50,7 @@ Result<TextureHandle> VulkanDevice::makeTexture(const TextureDesc& desc) {
 }
 
 Result<VkImageView> VulkanDevice::sampledView(VulkanTexture& t, uint32_t baseMip, uint32_t mipCount) {
+    if (t.hostView && baseMip == 0 && mipCount == t.desc.mipLevels) return t.hostView;
     auto key = std::make_pair(baseMip, mipCount);
     auto it = t.views.find(key);
     if (it != t.views.end()) return it->second;
@@ -57,7 +58,7 @@ Result<VkImageView> VulkanDevice::sampledView(VulkanTexture& t, uint32_t baseMip
     vci.image = t.image;
     vci.viewType = VK_IMAGE_VIEW_TYPE_2D;
     vci.format = t.format;
-    vci.subresourceRange = {dataAspect(t.desc.format), baseMip, mipCount, 0, 1};
+    vci.subresourceRange = t.range(dataAspect(t.desc.format), baseMip, mipCount);
     VkImageView view;
     SFX_VK(vk_.vkCreateImageView(device_, &vci, nullptr, &view));
     imageViewCount_.add();
@@ -71,13 +72,15 @@ Result<VkImageView> VulkanDevice::attachmentView(VulkanTexture& t, uint32_t mip)
     vci.image = t.image;
     vci.viewType = VK_IMAGE_VIEW_TYPE_2D;
     vci.format = t.format;
-    vci.subresourceRange = {fullAspect(t.desc.format), mip, 1, 0, 1};
+    vci.subresourceRange = t.range(fullAspect(t.desc.format), mip, 1);
     SFX_VK(vk_.vkCreateImageView(device_, &vci, nullptr, &t.attachmentViews[mip]));
     imageViewCount_.add();
     return t.attachmentViews[mip];
 }
 
 Status VulkanDevice::uploadTexture(VulkanTexture& t, uint32_t mip, const void* data, size_t bytes) {
+    if (t.external && !(t.vkUsage & VK_IMAGE_USAGE_TRANSFER_DST_BIT))
+        return {StatusCode::UnsupportedFeature, "writeTexture: texture is an imported image without VK_IMAGE_USAGE_TRANSFER_DST_BIT"};
     Result<VkCommandBuffer> cb = recording();
     if (!cb) return cb.status();
     Result<StagingSlice> staging = stage(bytes);
@@ -92,13 +95,15 @@ Status VulkanDevice::uploadTexture(VulkanTexture& t, uint32_t mip, const void* d
                           {}});
     VkBufferImageCopy region{};
     region.bufferOffset = staging->offset;
-    region.imageSubresource = {dataAspect(t.desc.format), mip, 0, 1};
+    region.imageSubresource = {dataAspect(t.desc.format), t.baseMip + mip, t.layer, 1};
     region.imageExtent = {mipExtent(t.desc.width, mip), mipExtent(t.desc.height, mip), 1};
     vk_.vkCmdCopyBufferToImage(cb.value(), staging->buffer, t.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
     return Status::ok();
 }
 
 Status VulkanDevice::downloadTexture(VulkanTexture& t, uint32_t mip, void* out, size_t bytes) {
+    if (t.external && !(t.vkUsage & VK_IMAGE_USAGE_TRANSFER_SRC_BIT))
+        return {StatusCode::UnsupportedFeature, "readTexture: texture is an imported image without VK_IMAGE_USAGE_TRANSFER_SRC_BIT"};
     Result<VkCommandBuffer> cb = recording();
     if (!cb) return cb.status();
     Result<StagingSlice> staging = stage(bytes);
@@ -109,7 +114,7 @@ Status VulkanDevice::downloadTexture(VulkanTexture& t, uint32_t mip, void* out, 
                           {}});
     VkBufferImageCopy region{};
     region.bufferOffset = readback.offset;
-    region.imageSubresource = {dataAspect(t.desc.format), mip, 0, 1};
+    region.imageSubresource = {dataAspect(t.desc.format), t.baseMip + mip, t.layer, 1};
     region.imageExtent = {mipExtent(t.desc.width, mip), mipExtent(t.desc.height, mip), 1};
     vk_.vkCmdCopyImageToBuffer(cb.value(), t.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1, &region);
     // Makes the copy visible to the host read below.

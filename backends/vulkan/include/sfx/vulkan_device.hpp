@@ -40,4 +40,57 @@ Result<std::unique_ptr<Device>> wrapDevice(const ExternalVulkan& external, const
 // finished executing the previous one by then. InvalidArgument when `device` is not Vulkan.
 Status setCommandBuffer(Device& device, VkCommandBuffer commandBuffer);
 
+// ---- Host images in, SDK images out (vulkan_external_images.cpp; docs/integration.md, "Host
+// images and the state contract") ---------------------------------------------------------------
+
+// A host VkImage the SDK may read or write as a texture: depth, normals, colour, velocity or an
+// effect's output. The SDK's mip i is the host's mip baseMip + i of array layer `layer`.
+struct ExternalImage {
+    VkImage image = VK_NULL_HANDLE;
+    // Its format: either as sfx::Format or as VkFormat (one of the VkFormats of the Formats:
+    // R8_UNORM, R8G8B8A8_UNORM, R16_SFLOAT, R16G16_SFLOAT, R16G16B16A16_SFLOAT, R32_SFLOAT,
+    // R32G32_SFLOAT, R32G32B32A32_SFLOAT, R32_UINT, D16_UNORM, D24_UNORM_S8_UINT, D32_SFLOAT);
+    // when both are set they must name the same format.
+    Format format = Format::Undefined;
+    VkFormat vkFormat = VK_FORMAT_UNDEFINED;
+    uint32_t width = 0, height = 0;  // of the host's mip baseMip
+    uint32_t baseMip = 0;
+    uint32_t mipLevels = 1;          // the SDK sees [baseMip, baseMip + mipLevels)
+    uint32_t layer = 0;              // a 2D image or one layer of an array (must be < the image's layers)
+    VkImageUsageFlags vkUsage = 0;   // what the image was created with
+    // What the SDK may do with it (TextureUsage bits), each needing its Vulkan usage:
+    // kTextureSampled SAMPLED, kTextureStorage STORAGE, kTextureRenderTarget COLOR_ATTACHMENT
+    // or DEPTH_STENCIL_ATTACHMENT. readTexture / writeTexture need TRANSFER_SRC / TRANSFER_DST.
+    uint32_t usage = kTextureSampled;
+    // Optional: a 2D view of exactly the SDK's mips and layer, data aspect only (depth for depth
+    // formats), which the SDK then samples through instead of making its own. Never destroyed.
+    VkImageView view = VK_NULL_HANDLE;
+    // The state contract: the layout the host leaves the image in whenever it hands the device
+    // work (any SDK call) and gets back at every flush(). Not UNDEFINED or PREINITIALIZED; a
+    // depth format takes a depth layout, a colour format a colour one (GENERAL, READ_ONLY_OPTIMAL,
+    // ATTACHMENT_OPTIMAL, SHADER_READ_ONLY_OPTIMAL, TRANSFER_SRC/DST_OPTIMAL fit both).
+    VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    const char* debugName = "";
+};
+
+// A texture of the device for the host's image. The SDK never destroys the image or the host's
+// view: destroyTexture forgets them (the views the SDK made of it go at the next flush, so the
+// host keeps the image alive until then). InvalidArgument naming the field and its allowed
+// values for a null image, a format or layout outside the lists above, a usage the image lacks,
+// a size the device cannot hold; InvalidArgument when `device` is not Vulkan.
+Result<TextureHandle> importImage(Device& device, const ExternalImage& image);
+
+// The Vulkan objects of a texture, imported or the SDK's own: the image, a 2D view of all its
+// mips (data aspect), its format and layout. For an imported image `layout` is the contract's
+// (ExternalImage.layout); for the SDK's own texture it is the layout of mip 0 after the commands
+// recorded so far, and the host synchronises its own use of it after a flush().
+struct NativeImage {
+    VkImage image = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
+    uint32_t baseMip = 0, layer = 0;  // where the SDK's mip 0 is in `image`
+};
+Result<NativeImage> nativeImage(Device& device, TextureHandle texture);
+
 }  // namespace sfx::vulkan

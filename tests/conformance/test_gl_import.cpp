@@ -1,0 +1,204 @@
+// Host GL textures in, SDK textures out (sfx::gl::importTexture / nativeTexture) on a device
+// wrapping the host's current context: AO reads the host's depth texture and writes the host's
+// output texture, matching the SDK's own textures; bad imports are named errors; the SDK never
+// deletes a host texture. Tagged [gl]: conformance_main runs it on GL backends only.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "analytic_scenes.hpp"
+#include "hal_fixture.hpp"
+#include "sfx/ao.hpp"
+
+#if __has_include("sfx/gl_device.hpp") && __has_include(<EGL/egl.h>) && __has_include(<GL/osmesa.h>)
+#define SFX_TEST_GL_IMPORT 1
+#define EGL_NO_X11 1
+#include <EGL/egl.h>
+#include <GL/osmesa.h>
+
+#include "sfx/gl_device.hpp"
+#include "sfx/half.hpp"
+#endif
+
+#ifdef SFX_TEST_GL_IMPORT
+namespace sfx {
+namespace {
+
+// Two GPU runs of the same AO on the same context and inputs differ by at most one R16F step at 1.
+constexpr double kSamePathTolerance = 1.0 / 1024.0;
+
+// The host's own GL calls, through its loader.
+struct HostGl {
+    void (*genTextures)(int, uint32_t*);
+    void (*deleteTextures)(int, const uint32_t*);
+    void (*bindTexture)(uint32_t, uint32_t);
+    void (*texStorage2D)(uint32_t, int, uint32_t, int, int);
+    void (*texSubImage2D)(uint32_t, int, int, int, int, int, uint32_t, uint32_t, const void*);
+    void (*pixelStorei)(uint32_t, int);
+    unsigned char (*isTexture)(uint32_t);
+    explicit HostGl(gl::GetProcAddressFn loader) {
+        genTextures = reinterpret_cast<decltype(genTextures)>(loader("glGenTextures"));
+        deleteTextures = reinterpret_cast<decltype(deleteTextures)>(loader("glDeleteTextures"));
+        bindTexture = reinterpret_cast<decltype(bindTexture)>(loader("glBindTexture"));
+        texStorage2D = reinterpret_cast<decltype(texStorage2D)>(loader("glTexStorage2D"));
+        texSubImage2D = reinterpret_cast<decltype(texSubImage2D)>(loader("glTexSubImage2D"));
+        pixelStorei = reinterpret_cast<decltype(pixelStorei)>(loader("glPixelStorei"));
+        isTexture = reinterpret_cast<decltype(isTexture)>(loader("glIsTexture"));
+    }
+    // A GL_TEXTURE_2D with one level of immutable storage, filled from `data` when given.
+    uint32_t texture(uint32_t internalFormat, uint32_t w, uint32_t h, uint32_t format = 0, uint32_t type = 0,
+                     const void* data = nullptr) {
+        uint32_t name = 0;
+        genTextures(1, &name);
+        bindTexture(0x0DE1, name);
+        texStorage2D(0x0DE1, 1, internalFormat, int(w), int(h));
+        if (data) {
+            pixelStorei(0x0CF5 /* GL_UNPACK_ALIGNMENT */, 1);
+            texSubImage2D(0x0DE1, 0, 0, 0, int(w), int(h), format, type, data);
+        }
+        bindTexture(0x0DE1, 0);
+        return name;
+    }
+};
+
+// Visibility of an R16F or RGBA8 output, as doubles.
+std::vector<double> visibility(Device& d, TextureHandle t, Format f, uint32_t w, uint32_t h) {
+    std::vector<double> out(size_t(w) * h);
+    if (f == Format::R16F) {
+        std::vector<uint16_t> texels(out.size());
+        SFX_REQUIRE_OK(d.readTexture(t, 0, texels.data(), texels.size() * 2));
+        for (size_t i = 0; i < out.size(); ++i) out[i] = halfToFloat(texels[i]);
+    } else {
+        std::vector<uint8_t> texels(out.size() * 4);
+        SFX_REQUIRE_OK(d.readTexture(t, 0, texels.data(), texels.size()));
+        for (size_t i = 0; i < out.size(); ++i) out[i] = texels[4 * i] / 255.0;
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("gl import: AO reads a host depth texture and writes a host texture", "[gl][import]") {
+    Device& host = test::device();
+    SFX_REQUIRE_OK(host.flush());  // the test device's context is now current: play the host
+    const bool osmesa = test::backendConfig().platform == "osmesa";
+    gl::GetProcAddressFn loader = osmesa ? reinterpret_cast<gl::GetProcAddressFn>(&OSMesaGetProcAddress)
+                                         : reinterpret_cast<gl::GetProcAddressFn>(&eglGetProcAddress);
+    HostGl hostGl(loader);
+    REQUIRE(hostGl.isTexture);
+    DeviceOptions options;
+    options.ceiling = host.caps().ceiling;
+    options.validation = true;
+    const gl::Api api = host.caps().backend == BackendKind::GLES ? gl::Api::GLES : gl::Api::DesktopGL;
+    Result<std::unique_ptr<Device>> wrapped = gl::wrapCurrentContext(loader, api, options);
+    INFO(wrapped.status().toString());
+    REQUIRE(wrapped.isOk());
+    Device& d = *wrapped.value();
+
+    constexpr uint32_t w = 96, h = 54;
+    const samples::AnalyticScene scene = samples::cornerScene(w, h);
+    const std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
+    const bool halfOut = d.caps().renderableFormat[size_t(Format::R16F)];
+    const Format outFormat = halfOut ? Format::R16F : Format::RGBA8;
+    const uint32_t outInternal = halfOut ? 0x822D /* GL_R16F */ : 0x8058 /* GL_RGBA8 */;
+    const uint32_t depthName = hostGl.texture(0x822E /* GL_R32F */, w, h, 0x1903 /* GL_RED */, 0x1406 /* GL_FLOAT */, depth.data());
+    const uint32_t outName = hostGl.texture(outInternal, w, h);
+
+    gl::ExternalTexture de;
+    de.name = depthName;
+    de.format = Format::R32F;
+    de.width = w;
+    de.height = h;
+    gl::ExternalTexture oe = de;
+    oe.name = outName;
+    oe.format = Format::Undefined;
+    oe.internalFormat = outInternal;
+    oe.usage = kTextureSampled | kTextureRenderTarget;
+    Result<TextureHandle> depthTex = gl::importTexture(d, de);
+    Result<TextureHandle> outTex = gl::importTexture(d, oe);
+    INFO(depthTex.status().toString() << " / " << outTex.status().toString());
+    REQUIRE((depthTex.isOk() && outTex.isOk()));
+    CHECK(d.textureDesc(outTex.value()).value().format == outFormat);
+    Result<gl::NativeTexture> native = gl::nativeTexture(d, outTex.value());
+    REQUIRE(native.isOk());
+    CHECK(native->name == outName);
+    CHECK(native->internalFormat == outInternal);
+
+    Result<std::unique_ptr<AmbientObscurance>> ao =
+        AmbientObscurance::create(d, {w, h, test::tierProfile(), AoSettings{}, DepthKind::Linear});
+    INFO(ao.status().toString());
+    REQUIRE(ao.isOk());
+    AoInputs in;
+    in.depth = DepthSource{depthTex.value(), DepthKind::Linear, scene.camera};
+    in.output = outTex.value();
+    SFX_REQUIRE_OK(ao.value()->dispatch(in));
+    const std::vector<double> imported = visibility(d, outTex.value(), outFormat, w, h);
+
+    // The SDK's own textures holding the same depth.
+    TextureHandle ownDepth = d.createTexture({w, h, 1, Format::R32F, kTextureSampled}).value();
+    SFX_REQUIRE_OK(d.writeTexture(ownDepth, 0, depth.data(), depth.size() * 4));
+    TextureHandle ownOut = d.createTexture({w, h, 1, outFormat, kTextureSampled | kTextureRenderTarget}).value();
+    in.depth.texture = ownDepth;
+    in.output = ownOut;
+    SFX_REQUIRE_OK(ao.value()->dispatch(in));
+    const std::vector<double> own = visibility(d, ownOut, outFormat, w, h);
+    double worst = 0;
+    for (size_t i = 0; i < own.size(); ++i) worst = std::max(worst, std::abs(imported[i] - own[i]));
+    WARN(test::label() << ": AO of imported GL textures vs the SDK's own, worst pixel " << worst);
+    CHECK(worst <= kSamePathTolerance);
+    CHECK(*std::min_element(own.begin(), own.end()) < 0.9);  // the corner occludes: not a blank picture
+
+    // Bad imports are named errors.
+    auto refused = [&](gl::ExternalTexture e, const char* argument, const char* allowed) {
+        Result<TextureHandle> r = gl::importTexture(d, e);
+        INFO(argument << ": " << r.status().toString());
+        REQUIRE_FALSE(r.isOk());
+        CHECK(r.status().code() == StatusCode::InvalidArgument);
+        CHECK(r.status().message().find(argument) != std::string::npos);
+        CHECK(r.status().message().find(allowed) != std::string::npos);
+    };
+    gl::ExternalTexture e = de;
+    e.name = 0;
+    refused(e, "ExternalTexture.name", "texture name");
+    e = de;
+    e.target = 0x8513;  // GL_TEXTURE_CUBE_MAP
+    refused(e, "ExternalTexture.target", "GL_TEXTURE_2D");
+    e = de;
+    e.internalFormat = 0x8051;  // GL_RGB8
+    refused(e, "ExternalTexture.internalFormat", "GL_RGBA16F");
+    e = de;
+    e.internalFormat = outInternal;  // disagrees with format R32F
+    refused(e, "ExternalTexture.format", "Undefined or the format of internalFormat");
+    e = de;
+    e.format = Format::Undefined;
+    refused(e, "ExternalTexture.format", "internalFormat");
+    e = de;
+    e.name = 0x7fffffffu;  // no texture of this context
+    refused(e, "ExternalTexture.name", "a texture of this context");
+    e = de;
+    e.height = 0;
+    refused(e, "importTexture", "height");
+    CHECK(gl::nativeTexture(d, TextureHandle{}).status().code() == StatusCode::InvalidHandle);
+
+    // destroyTexture forgets: the host's textures live on, with their contents.
+    ao.value().reset();
+    for (TextureHandle t : {depthTex.value(), outTex.value(), ownDepth, ownOut}) SFX_REQUIRE_OK(d.destroyTexture(t));
+    CHECK(hostGl.isTexture(depthName));
+    CHECK(hostGl.isTexture(outName));
+    Result<TextureHandle> again = gl::importTexture(d, oe);
+    REQUIRE(again.isOk());
+    CHECK(visibility(d, again.value(), outFormat, w, h) == imported);
+    CHECK(d.takeValidationMessages().empty());
+    wrapped.value().reset();  // with `again` still imported
+    CHECK(hostGl.isTexture(outName));  // nor does the device's teardown delete it
+    hostGl.deleteTextures(1, &depthName);
+    hostGl.deleteTextures(1, &outName);
+    SFX_REQUIRE_OK(host.flush());
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+}  // namespace sfx
+#endif

@@ -1,0 +1,293 @@
+// A host engine's Vulkan objects for the import tests (tests/vulkan/test_vulkan_import.cpp): an
+// instance with the validation layer and synchronization validation, a 1.3 device with dynamic
+// rendering, a command buffer, and the images, buffers, barriers, uploads and readbacks a host
+// makes itself, without the SDK.
+#pragma once
+
+#include <catch2/catch.hpp>
+
+#include <vulkan/vulkan.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "sfx/vulkan_device.hpp"
+
+namespace sfx::hostvk {
+
+inline VKAPI_ATTR VkBool32 VKAPI_CALL hostCallback(VkDebugUtilsMessageSeverityFlagBitsEXT, VkDebugUtilsMessageTypeFlagsEXT,
+                                            const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
+    static_cast<std::vector<std::string>*>(user)->push_back(data->pMessage ? data->pMessage : "");
+    return VK_FALSE;
+}
+
+// A host engine: instance with the validation layer (synchronization validation on), a 1.3
+// device with dynamic rendering, one queue, a command buffer and a fence.
+struct Host {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+    VkPhysicalDevice physical = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE;
+    uint32_t family = 0;
+    VkCommandPool pool = VK_NULL_HANDLE;
+    VkCommandBuffer cb = VK_NULL_HANDLE;
+    std::vector<std::string> errors;
+    std::string skipReason;
+
+    bool create() {
+        uint32_t count = 0;
+        vkEnumerateInstanceLayerProperties(&count, nullptr);
+        std::vector<VkLayerProperties> layers(count);
+        vkEnumerateInstanceLayerProperties(&count, layers.data());
+        bool validation = false;
+        for (const auto& l : layers) validation |= std::strcmp(l.layerName, "VK_LAYER_KHRONOS_validation") == 0;
+        if (!validation) {
+            skipReason = "VK_LAYER_KHRONOS_validation is not installed (these tests need synchronization validation)";
+            return false;
+        }
+        const char* layer = "VK_LAYER_KHRONOS_validation";
+        const char* exts[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME};
+        const VkValidationFeatureEnableEXT sync = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
+        VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+        features.enabledValidationFeatureCount = 1;
+        features.pEnabledValidationFeatures = &sync;
+        VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+        app.apiVersion = VK_API_VERSION_1_3;
+        VkInstanceCreateInfo ci{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+        ci.pNext = &features;
+        ci.pApplicationInfo = &app;
+        ci.enabledLayerCount = 1;
+        ci.ppEnabledLayerNames = &layer;
+        ci.enabledExtensionCount = 2;
+        ci.ppEnabledExtensionNames = exts;
+        if (vkCreateInstance(&ci, nullptr, &instance) != VK_SUCCESS) {
+            skipReason = "no Vulkan instance";
+            return false;
+        }
+        auto createMessenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
+        VkDebugUtilsMessengerCreateInfoEXT mi{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+        mi.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT;
+        mi.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT;
+        mi.pfnUserCallback = hostCallback;
+        mi.pUserData = &errors;
+        createMessenger(instance, &mi, nullptr, &messenger);
+        count = 0;
+        vkEnumeratePhysicalDevices(instance, &count, nullptr);
+        std::vector<VkPhysicalDevice> gpus(count);
+        vkEnumeratePhysicalDevices(instance, &count, gpus.data());
+        for (VkPhysicalDevice gpu : gpus) {
+            VkPhysicalDeviceProperties p;
+            vkGetPhysicalDeviceProperties(gpu, &p);
+            if (p.apiVersion >= VK_API_VERSION_1_3) {
+                physical = gpu;
+                break;
+            }
+        }
+        if (!physical) {
+            skipReason = "no Vulkan 1.3 device";
+            return false;
+        }
+        uint32_t qCount = 0;
+        vkGetPhysicalDeviceQueueFamilyProperties(physical, &qCount, nullptr);
+        std::vector<VkQueueFamilyProperties> families(qCount);
+        vkGetPhysicalDeviceQueueFamilyProperties(physical, &qCount, families.data());
+        for (uint32_t i = 0; i < qCount; ++i)
+            if ((families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) && (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT)) {
+                family = i;
+                break;
+            }
+        VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+        v13.dynamicRendering = VK_TRUE;
+        const float priority = 1.0f;
+        VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+        qci.queueFamilyIndex = family;
+        qci.queueCount = 1;
+        qci.pQueuePriorities = &priority;
+        VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+        dci.pNext = &v13;
+        dci.queueCreateInfoCount = 1;
+        dci.pQueueCreateInfos = &qci;
+        if (vkCreateDevice(physical, &dci, nullptr, &device) != VK_SUCCESS) {
+            skipReason = "vkCreateDevice failed";
+            return false;
+        }
+        vkGetDeviceQueue(device, family, 0, &queue);
+        VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+        pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+        pci.queueFamilyIndex = family;
+        vkCreateCommandPool(device, &pci, nullptr, &pool);
+        VkCommandBufferAllocateInfo cai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+        cai.commandPool = pool;
+        cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+        cai.commandBufferCount = 1;
+        vkAllocateCommandBuffers(device, &cai, &cb);
+        return true;
+    }
+
+    vulkan::ExternalVulkan external() const {
+        return {instance, physical, device, queue, family, vkGetInstanceProcAddr, true};
+    }
+
+    uint32_t memoryType(uint32_t bits, VkMemoryPropertyFlags want) const {
+        VkPhysicalDeviceMemoryProperties mp;
+        vkGetPhysicalDeviceMemoryProperties(physical, &mp);
+        for (uint32_t i = 0; i < mp.memoryTypeCount; ++i)
+            if ((bits & (1u << i)) && (mp.memoryTypes[i].propertyFlags & want) == want) return i;
+        return 0;
+    }
+
+    void begin() {
+        VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+        REQUIRE(vkBeginCommandBuffer(cb, &bi) == VK_SUCCESS);
+    }
+    void submitAndWait() {
+        REQUIRE(vkEndCommandBuffer(cb) == VK_SUCCESS);
+        VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+        si.commandBufferCount = 1;
+        si.pCommandBuffers = &cb;
+        REQUIRE(vkQueueSubmit(queue, 1, &si, VK_NULL_HANDLE) == VK_SUCCESS);
+        REQUIRE(vkQueueWaitIdle(queue) == VK_SUCCESS);
+    }
+
+    ~Host() {
+        if (device) {
+            vkDeviceWaitIdle(device);
+            if (pool) vkDestroyCommandPool(device, pool, nullptr);
+            vkDestroyDevice(device, nullptr);
+        }
+        if (messenger) {
+            auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+                vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
+            destroy(instance, messenger, nullptr);
+        }
+        if (instance) vkDestroyInstance(instance, nullptr);
+    }
+};
+
+// A host-visible buffer for the host's uploads and readbacks.
+struct HostBuffer {
+    const Host& host;
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    void* mapped = nullptr;
+    HostBuffer(const Host& h, VkDeviceSize size) : host(h) {
+        VkBufferCreateInfo bci{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+        bci.size = size;
+        bci.usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+        REQUIRE(vkCreateBuffer(h.device, &bci, nullptr, &buffer) == VK_SUCCESS);
+        VkMemoryRequirements req;
+        vkGetBufferMemoryRequirements(h.device, buffer, &req);
+        VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+        ai.allocationSize = req.size;
+        ai.memoryTypeIndex = h.memoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+        REQUIRE(vkAllocateMemory(h.device, &ai, nullptr, &memory) == VK_SUCCESS);
+        vkBindBufferMemory(h.device, buffer, memory, 0);
+        vkMapMemory(h.device, memory, 0, VK_WHOLE_SIZE, 0, &mapped);
+    }
+    ~HostBuffer() {
+        vkDestroyBuffer(host.device, buffer, nullptr);
+        vkFreeMemory(host.device, memory, nullptr);
+    }
+};
+
+// A host image of one mip with `layers` layers, and a 2D view of layer `viewLayer`.
+struct HostImage {
+    const Host& host;
+    VkImage image = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+    VkFormat format;
+    VkImageAspectFlags aspect;
+    uint32_t width, height;
+    HostImage(const Host& h, VkFormat f, VkImageUsageFlags usage, uint32_t w, uint32_t hgt, uint32_t layers = 1,
+              uint32_t viewLayer = 0)
+        : host(h), format(f), width(w), height(hgt) {
+        aspect = (f == VK_FORMAT_D32_SFLOAT || f == VK_FORMAT_D16_UNORM) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
+        VkImageCreateInfo ici{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+        ici.imageType = VK_IMAGE_TYPE_2D;
+        ici.format = f;
+        ici.extent = {w, hgt, 1};
+        ici.mipLevels = 1;
+        ici.arrayLayers = layers;
+        ici.samples = VK_SAMPLE_COUNT_1_BIT;
+        ici.tiling = VK_IMAGE_TILING_OPTIMAL;
+        ici.usage = usage;
+        ici.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+        REQUIRE(vkCreateImage(h.device, &ici, nullptr, &image) == VK_SUCCESS);
+        VkMemoryRequirements req;
+        vkGetImageMemoryRequirements(h.device, image, &req);
+        VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+        ai.allocationSize = req.size;
+        ai.memoryTypeIndex = h.memoryType(req.memoryTypeBits, 0);
+        REQUIRE(vkAllocateMemory(h.device, &ai, nullptr, &memory) == VK_SUCCESS);
+        vkBindImageMemory(h.device, image, memory, 0);
+        VkImageViewCreateInfo vci{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+        vci.image = image;
+        vci.viewType = VK_IMAGE_VIEW_TYPE_2D;
+        vci.format = f;
+        vci.subresourceRange = {aspect, 0, 1, viewLayer, 1};
+        REQUIRE(vkCreateImageView(h.device, &vci, nullptr, &view) == VK_SUCCESS);
+    }
+    ~HostImage() {
+        vkDestroyImageView(host.device, view, nullptr);
+        vkDestroyImage(host.device, image, nullptr);
+        vkFreeMemory(host.device, memory, nullptr);
+    }
+};
+
+inline void imageBarrier(VkCommandBuffer cb, const HostImage& img, uint32_t layer, VkImageLayout from, VkImageLayout to,
+                  VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
+    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    b.srcAccessMask = srcAccess;
+    b.dstAccessMask = dstAccess;
+    b.oldLayout = from;
+    b.newLayout = to;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = img.image;
+    b.subresourceRange = {img.aspect, 0, 1, layer, 1};
+    vkCmdPipelineBarrier(cb, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &b);
+}
+
+// The host fills layer `layer` of `img` and leaves it in `layout`, everything made visible.
+inline void hostUpload(Host& host, const HostImage& img, uint32_t layer, const void* data, size_t bytes, VkImageLayout layout) {
+    HostBuffer staging(host, bytes);
+    std::memcpy(staging.mapped, data, bytes);
+    host.begin();
+    imageBarrier(host.cb, img, layer, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {img.aspect, 0, layer, 1};
+    region.imageExtent = {img.width, img.height, 1};
+    vkCmdCopyBufferToImage(host.cb, staging.buffer, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    imageBarrier(host.cb, img, layer, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, layout, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                 VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
+    host.submitAndWait();
+}
+
+// The host copies its image (in `layout`) out, and leaves it in `layout`.
+inline std::vector<uint8_t> hostDownload(Host& host, const HostImage& img, VkImageLayout layout, size_t bytes) {
+    HostBuffer readback(host, bytes);
+    host.begin();
+    imageBarrier(host.cb, img, 0, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                 VK_ACCESS_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {img.aspect, 0, 0, 1};
+    region.imageExtent = {img.width, img.height, 1};
+    vkCmdCopyImageToBuffer(host.cb, img.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1, &region);
+    imageBarrier(host.cb, img, 0, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                 VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
+    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(host.cb, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0, nullptr);
+    host.submitAndWait();
+    std::vector<uint8_t> out(bytes);
+    std::memcpy(out.data(), readback.mapped, bytes);
+    return out;
+}
+
+}  // namespace sfx::hostvk
