@@ -69,7 +69,7 @@ render::RenderResult renderScene(const scene::Scene& scene, std::vector<uint32_t
     Result<render::RenderResult> out = r.value()->render();
     INFO(out.status().toString());
     REQUIRE(out.isOk());
-    REQUIRE(out->opaque.has_value());
+    REQUIRE(out->opaque.has_value() == scene.hasTranslucency());  // the transparency step's inputs, only when it ran
     return std::move(out.value());
 }
 
@@ -294,4 +294,18 @@ TEST_CASE("scene renderer OIT: a bad draw order is a named error", "[render][oit
     REQUIRE_FALSE(r.isOk());
     CHECK(r.status().code() == StatusCode::InvalidArgument);
     CHECK(r.status().message().find("RenderOptions.transparentDrawOrder") == 0);
+}
+
+TEST_CASE("scene renderer OIT: a scene without translucent objects plans no OIT pass or resource", "[render][oit][conformance]") {
+    scene::Scene scene = loadScene("panes.json");
+    scene.objects.erase(std::remove_if(scene.objects.begin(), scene.objects.end(), [](const scene::SceneObject& o) { return o.translucent(); }),
+                        scene.objects.end());
+    render::RenderPlan plan;
+    const render::RenderResult r = renderScene(scene, {}, &plan);
+    for (const render::PlanLine& l : plan.lines)
+        if (l.effect == "transparency") CHECK(l.kind == render::PlanLine::Kind::Omitted);
+    CHECK(plan.describe().find("nothing in the scene is transparent: no A-buffer, node pool or OIT pass") != std::string::npos);
+    CHECK_FALSE(r.stats.transparencyRan);
+    CHECK(r.stats.oit.poolBytes == 0);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
