@@ -307,7 +307,8 @@ int main(int argc, char** argv) {
     (void)device->destroyTimer(timer.value());
 
     // 4. A scene file through the scene renderer, as `sfx render` draws it: its plan (what the
-    //    scene needs and nothing more) and the picture.
+    //    scene needs and nothing more), AO on the opaque objects, the translucent ones through
+    //    sfx::Transparency on the chosen tier (A-buffer or weighted blended), and the picture.
     if (!sceneFile.empty()) {
         Result<scene::Scene> file = scene::loadSceneFile(sceneFile);
         if (!file) return fail(file.status());
@@ -320,6 +321,7 @@ int main(int argc, char** argv) {
         Result<render::RenderResult> picture = sr.value()->render();
         if (!picture) return fail(picture.status());
         for (const std::string& w : picture->warnings) std::cout << "[" << sceneFile << "] warning: " << w << "\n";
+        std::cout << "[" << sceneFile << "] " << picture->stats.describe();
         const std::string path = outDir + "/scene_" + fs::path(sceneFile).stem().string() + ".png";
         if (Status s = render::writeRendered(path, picture->color, "--scene-file output"); !s) return fail(s);
         std::cout << "[" << sceneFile << "] wrote " << path << "\n";

@@ -1,7 +1,7 @@
 // The scene renderer (sfx_render, behind `sfx render`) on every backend x tier: unlit objects
 // and the background keep their colours exactly, AO only darkens lambert surfaces and does
-// darken some, the plan holds only what the scene and options need, and transparent objects
-// are reported, never skipped silently.
+// darken some, the plan holds only what the scene and options need (no transparency pass or
+// resource without a translucent object), and translucent objects go through sfx::Transparency.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -107,7 +107,7 @@ TEST_CASE("scene renderer: unlit and background exact, AO only darkens lambert s
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
-TEST_CASE("scene renderer: transparent objects are reported, not skipped silently", "[render][conformance]") {
+TEST_CASE("scene renderer: translucent objects through sfx::Transparency, or not at all with --oit off", "[render][conformance]") {
     std::string text = kScene;
     const std::string unlitKey = "\"shading\": \"unlit\"";
     text.replace(text.find(unlitKey), unlitKey.size(), unlitKey + ", \"opacity\": 0.5");
@@ -115,12 +115,26 @@ TEST_CASE("scene renderer: transparent objects are reported, not skipped silentl
     render::RenderOptions options;
     render::RenderPlan plan;
     const render::RenderResult r = renderWith(scene, options, &plan);
-    REQUIRE(r.warnings.size() == 1);
-    CHECK(r.warnings[0].find("1 transparent") != std::string::npos);
-    CHECK(plan.describe().find("transparency not yet available: 1 transparent") != std::string::npos);
+    CHECK(r.warnings.empty());
+    CHECK(hasPass(plan, "transparency"));
+    CHECK(plan.describe().find("1 translucent objects through sfx::Transparency") != std::string::npos);
     CHECK(r.stats.transparentObjects == 1);
     CHECK(r.stats.opaqueObjects == 2);
-    CHECK_FALSE(r.stats.transparencyRan);
+    CHECK(r.stats.transparencyRan);
+    CHECK(r.stats.abuffer == (test::tier() == Tier::High));
+
+    render::RenderOptions off;
+    off.oit = false;
+    render::RenderPlan offPlan;
+    const render::RenderResult o = renderWith(scene, off, &offPlan);
+    REQUIRE(o.warnings.size() == 1);
+    CHECK(o.warnings[0].find("--oit off: 1 transparent") != std::string::npos);
+    CHECK_FALSE(hasPass(offPlan, "transparency"));
+    CHECK_FALSE(o.stats.transparencyRan);
+    // The quad's pixels differ (half of it over the opaque picture); the rest is the same.
+    size_t changed = 0;
+    for (size_t i = 0; i < o.color.pixels.size(); ++i) changed += o.color.pixels[i] != r.color.pixels[i];
+    CHECK(changed > 20);
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
@@ -132,6 +146,7 @@ TEST_CASE("scene renderer: bad options are named errors", "[render][bad-input]")
     } cases[] = {{[](render::RenderOptions& o) { o.aoRadius = 0.0f; }, "--ao-radius"},
                  {[](render::RenderOptions& o) { o.aoLayers = 0; }, "--ao-layers"},
                  {[](render::RenderOptions& o) { o.maxLayers = 0; }, "--max-layers"},
+                 {[](render::RenderOptions& o) { o.maxLayers = 24; }, "--max-layers"},
                  {[](render::RenderOptions& o) { o.nodes = 9; }, "--nodes"},
                  {[](render::RenderOptions& o) { o.width = scene::kMaxSceneSize + 1; }, "--width"}};
     for (const auto& c : cases) {

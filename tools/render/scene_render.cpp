@@ -1,4 +1,5 @@
-// The scene renderer: scene file -> the samples' G-buffer raster pass -> AO -> composite.
+// The scene renderer: scene file -> the samples' G-buffer raster pass -> AO -> composite ->
+// translucent objects through sfx::Transparency (scene_transparency.cpp).
 #include "sfx/scene_render.hpp"
 
 #include <algorithm>
@@ -6,6 +7,7 @@
 #include <sstream>
 
 #include "scene.hpp"
+#include "scene_transparency.hpp"
 #include "sfx/half.hpp"
 #include "sfx_shared_raster.h"
 
@@ -13,7 +15,6 @@ namespace sfx::render {
 namespace {
 
 constexpr uint32_t kMaxAoLayers = 1;  // multilayer AO (more than one opaque layer) is not built yet
-constexpr uint32_t kMaxKeptLayers = 64;
 constexpr uint32_t kMaxCompressedNodes = 4;
 
 std::string mib(uint64_t bytes) {
@@ -64,8 +65,9 @@ Status validateOptions(const RenderOptions& o) {
     if (o.aoLayers < 1 || o.aoLayers > kMaxAoLayers)
         return invalidArgument("--ao-layers", std::to_string(o.aoLayers),
                                "1 (multilayer AO over more opaque layers is not available in this build)");
-    if (o.maxLayers < 1 || o.maxLayers > kMaxKeptLayers)
-        return invalidArgument("--max-layers", std::to_string(o.maxLayers), "[1, " + std::to_string(kMaxKeptLayers) + "]");
+    if (o.maxLayers != keptLayers(TransparencyQuality::Standard) && o.maxLayers != keptLayers(TransparencyQuality::High))
+        return invalidArgument("--max-layers", std::to_string(o.maxLayers),
+                               "16 or 32 (the fragments the A-buffer resolve keeps exact per pixel)");
     if (o.nodes < 1 || o.nodes > kMaxCompressedNodes)
         return invalidArgument("--nodes", std::to_string(o.nodes), "[1, " + std::to_string(kMaxCompressedNodes) + "]");
     return Status::ok();
@@ -104,23 +106,20 @@ std::string RenderStats::describe() const {
     std::ostringstream s;
     s << "objects: " << opaqueObjects << " opaque, " << transparentObjects << " transparent; " << triangles << " opaque triangles\n";
     if (!transparencyRan) {
-        s << "fragments stored: 0, dropped: 0, pool bytes: 0 (no transparency pass ran"
-          << (transparentObjects ? ": transparency not yet available" : ": nothing in the scene is transparent") << ")\n";
-        s << "depth complexity: not measured (it is measured by the transparency pass)\n";
+        s << "transparency: no pass ran (" << (transparentObjects ? "--oit off" : "nothing in the scene is transparent")
+          << "): fragments 0, stored 0, dropped 0, pool nodes 0, pool bytes 0\n";
+    } else if (!abuffer) {
+        s << "transparency: weighted blended OIT, " << transparentTriangles
+          << " triangles; no pool and no fragment counts on this path (fragments are blended, not stored)\n";
     } else {
-        s << "fragments stored: " << fragmentsStored << ", dropped: " << fragmentsDropped << ", pool bytes: " << poolBytes << "\n";
-        s << "depth complexity: mean " << meanDepthComplexity << ", max " << maxDepthComplexity << "\n";
+        s << "transparency: A-buffer, " << transparentTriangles << " triangles, " << transparencyFrames << " frame(s)";
+        if (firstFrameDropped) s << " (the first frame's guessed pool dropped " << firstFrameDropped << " fragments; redrawn)";
+        s << "\n";
+        s << "fragments: " << oit.fragments << ", stored: " << oit.stored << ", dropped: " << oit.dropped
+          << ", pool nodes: " << oit.poolNodes << ", pool bytes: " << oit.poolBytes << "\n";
+        s << "depth complexity: mean " << meanDepthComplexity << " fragments per pixel\n";
     }
     return s.str();
-}
-
-TransparencyOutcome renderTransparent(Device&, const TransparencyRequest& request, io::Image&, RenderStats&) {
-    TransparencyOutcome out;
-    const std::string n = std::to_string(request.objects.size());
-    out.plan.push_back({PlanLine::Kind::Omitted, "transparency", "oit", 0, 0, 0,
-                        "transparency not yet available: " + n + " transparent objects are not drawn"});
-    out.warnings.push_back("transparency not yet available: " + n + " transparent objects skipped");
-    return out;
 }
 
 struct SceneRender::Impl {
@@ -132,6 +131,7 @@ struct SceneRender::Impl {
     std::vector<size_t> transparent;
     std::unique_ptr<samples::SceneRenderer> raster;
     std::unique_ptr<AmbientObscurance> ao;
+    std::unique_ptr<SceneTransparency> transparency;  // only with a translucent object and --oit auto
     TextureHandle aoOutput;
     Format aoFormat = Format::Undefined;
     uint32_t width = 0, height = 0;
@@ -141,6 +141,7 @@ struct SceneRender::Impl {
         : device(d), tier(t), file(f), options(o) {}
     ~Impl() {
         ao.reset();
+        transparency.reset();
         if (!aoOutput.isNull()) (void)device.destroyTexture(aoOutput);
     }
 };
@@ -181,6 +182,12 @@ Result<std::unique_ptr<SceneRender>> SceneRender::create(Device& device, const t
             device.createTexture({impl->width, impl->height, 1, impl->aoFormat, kTextureSampled | kTextureRenderTarget, "render-ao"});
         if (!out) return out.status();
         impl->aoOutput = out.value();
+    }
+    if (!impl->transparent.empty() && options.oit) {
+        Result<std::unique_ptr<SceneTransparency>> t = SceneTransparency::create(
+            device, tier, file, impl->transparent, options.transparentDrawOrder, impl->width, impl->height, options.maxLayers);
+        if (!t) return t.status();
+        impl->transparency = std::move(t.value());
     }
     return std::unique_ptr<SceneRender>(new SceneRender(std::move(impl)));
 }
@@ -229,8 +236,8 @@ RenderPlan SceneRender::plan() const {
         p.lines.push_back({K::Omitted, "transparency", "oit", 0, 0, 0,
                            "--oit off: " + std::to_string(m.transparent.size()) + " transparent objects are not drawn"});
     } else {
-        p.lines.push_back({K::Omitted, "transparency", "oit", 0, 0, 0,
-                           "transparency not yet available: " + std::to_string(m.transparent.size()) + " transparent objects"});
+        const std::vector<PlanLine> t = m.transparency->plan();
+        p.lines.insert(p.lines.end(), t.begin(), t.end());
     }
     return p;
 }
@@ -304,6 +311,20 @@ Result<RenderResult> SceneRender::render() {
         Result<ReadTargets> t = readTargets(m.device, g.value(), m.aoOutput, m.aoFormat);
         if (!t) return t.status();
         result.color = composite(t.value(), m.width, m.height, m.file.background);
+        if (m.transparency) {
+            const glm::dmat4 view = m.scene.view();
+            RenderResult::OpaqueInputs kept;
+            SFX_TRY(m.transparency->render(g->depth, view, g->camera.projection, result.color, result.stats,
+                                           m.options.keepOpaqueInputs ? &kept.color : nullptr));
+            if (m.options.keepOpaqueInputs) {
+                kept.storedDepth.resize(size_t(m.width) * m.height);
+                SFX_TRY(m.device.readTexture(g->depth, 0, kept.storedDepth.data(), kept.storedDepth.size() * sizeof(float)));
+                kept.view = view;
+                kept.projection = g->camera.projection;
+                kept.clipDepth = g->camera.clipDepth;
+                result.opaque = std::move(kept);
+            }
+        }
         if (m.ao) {
             io::Image ao(m.width, m.height, 1);
             ao.pixels = t->visibility;
@@ -314,15 +335,8 @@ Result<RenderResult> SceneRender::render() {
     Status s = work();
     m.raster->destroy(g.value());
     SFX_TRY(s);
-    if (!m.transparent.empty()) {
-        if (m.options.oit) {
-            TransparencyRequest request{&m.file, m.transparent, &m.options};
-            TransparencyOutcome t = renderTransparent(m.device, request, result.color, result.stats);
-            result.warnings.insert(result.warnings.end(), t.warnings.begin(), t.warnings.end());
-        } else {
-            result.warnings.push_back("--oit off: " + std::to_string(m.transparent.size()) + " transparent objects not drawn");
-        }
-    }
+    if (!m.transparent.empty() && !m.options.oit)
+        result.warnings.push_back("--oit off: " + std::to_string(m.transparent.size()) + " transparent objects not drawn");
     return result;
 }
 

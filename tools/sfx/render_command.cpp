@@ -1,6 +1,7 @@
 // sfx render: draws a scene file (docs/scene_files.md) through the SDK on any backend and tier:
-// opaque objects into the G-buffer, ambient obscurance, the composite; writes the picture
-// (.pfm/.exr linear RGB, .png sRGB) and optionally the AO buffer, the plan and the statistics.
+// opaque objects into the G-buffer, ambient obscurance, the composite, translucent objects through
+// sfx::Transparency; writes the picture (.pfm/.exr linear RGB, .png sRGB) and optionally the AO
+// buffer, the plan and the statistics (always the transparency counts when that step ran).
 #include <iostream>
 
 #include "cli_common.hpp"
@@ -73,7 +74,8 @@ int runRender(const RenderFlags& f) {
     std::cout << "sfx render: " << f.scenePath << " on " << dev.caps().summary() << ", tier " << toString(opened->tier.tier) << ", "
               << renderer.value()->width() << "x" << renderer.value()->height() << ", ao " << f.ao << " -> " << f.outPath
               << (f.aoOutPath.empty() ? "" : " and " + f.aoOutPath) << "\n";
-    if (f.showStats) std::cout << "stats:\n" << result->stats.describe();
+    // The transparency counts (fragments, stored, dropped, pool) are printed whenever that step ran.
+    if (f.showStats || result->stats.transparencyRan) std::cout << "stats:\n" << result->stats.describe();
     return 0;
 }
 
@@ -82,7 +84,7 @@ int runRender(const RenderFlags& f) {
 Command addRenderCommand(CLI::App& app) {
     auto flags = std::make_shared<RenderFlags>();
     Command c;
-    c.app = app.add_subcommand("render", "Render a scene file: opaque objects, ambient obscurance, composite");
+    c.app = app.add_subcommand("render", "Render a scene file: opaque objects, ambient obscurance, composite, OIT");
     c.app->add_option("--scene", flags->scenePath, "scene file (JSON, docs/scene_files.md)")->required();
     c.app->add_option("--out", flags->outPath, "picture: .pfm or .exr (linear RGB) or .png (sRGB)")->required();
     flags->device.add(*c.app);
@@ -94,10 +96,10 @@ Command addRenderCommand(CLI::App& app) {
     c.app->add_option("--ao-layers", flags->aoLayers, "opaque depth layers AO tests (multilayer AO); 1 = the visible layer")
         ->capture_default_str();
     c.app->add_option("--oit", flags->oit, "auto (transparent objects through OIT) | off (not drawn)")->capture_default_str();
-    c.app->add_option("--max-layers", flags->maxLayers, "K: transparent fragments kept exact per pixel, [1, 64]")->capture_default_str();
+    c.app->add_option("--max-layers", flags->maxLayers, "K: transparent fragments the A-buffer resolve keeps exact per pixel, 16 or 32")->capture_default_str();
     c.app->add_option("--nodes", flags->nodes, "M: nodes per compressed list for AO through transparency, [1, 4]")->capture_default_str();
     c.app->add_flag("--plan", flags->showPlan, "print the passes, resources and bytes, and why each is there");
-    c.app->add_flag("--stats", flags->showStats, "print fragments stored, depth complexity, dropped fragments, pool bytes");
+    c.app->add_flag("--stats", flags->showStats, "print objects, triangles, transparent fragments, stored, dropped, pool nodes and bytes");
     c.run = [flags] { return runRender(*flags); };
     return c;
 }

@@ -1,9 +1,11 @@
 // The scene renderer behind `sfx render` and the demo: a scene file (sfx/scene_file.hpp) drawn
 // through the HAL into the SDK's own textures (the samples' G-buffer raster pass), ambient
 // obscurance on it, and a composite: lambert objects get colour * (ambient * AO + light * n.l),
-// unlit objects their colour exactly. It models only what the scene and the options ask for
-// (no AO resources with AO off, no transparency resources when nothing is transparent), and
-// its plan says what each pass and resource is for.
+// unlit objects their colour exactly; then the translucent objects through sfx::Transparency
+// (the A-buffer on the high tier, weighted blended OIT on the current one) over that picture.
+// It models only what the scene and the options ask for (no AO resources with AO off, no
+// transparency effect, pool or pass when nothing is transparent), and its plan says what each
+// pass and resource is for.
 #pragma once
 
 #include <cstdint>
@@ -14,6 +16,7 @@
 
 #include "sfx/ao.hpp"
 #include "sfx/image_io.hpp"
+#include "sfx/oit.hpp"
 #include "sfx/plan.hpp"
 #include "sfx/scene_file.hpp"
 #include "sfx/tiers.hpp"
@@ -32,8 +35,14 @@ struct RenderOptions {
     float aoRadius = 0.5f;           // AoSettings.radius
     uint32_t aoLayers = 1;           // opaque depth layers AO tests; 1 = single-layer AO
     bool oit = true;                 // false: transparent objects are not drawn (--oit off)
-    uint32_t maxLayers = 16;         // K: fragments kept exact per pixel by the transparency resolve
+    uint32_t maxLayers = 16;         // K: fragments kept exact per pixel by the A-buffer resolve: 16 or 32
     uint32_t nodes = 4;              // M: nodes of a compressed list
+    // The order the translucent objects are drawn in: a permutation of 0..N-1 over the scene's
+    // N translucent objects in file order; empty = file order. Each keeps its draw id (its index
+    // in the file), so on the high tier the picture does not depend on it (the tests check).
+    std::vector<uint32_t> transparentDrawOrder;
+    // Also return what the transparency step composited over (RenderResult::opaque), for tests.
+    bool keepOpaqueInputs = false;
 };
 // InvalidArgument naming the field (by its `sfx render` flag, e.g. "--ao-radius") and its allowed values.
 Status validateOptions(const RenderOptions& options);
@@ -52,31 +61,17 @@ struct RenderPlan {
     std::string describe() const;
 };
 
-// What the transparency path stored, or could not; zero where it did not run.
+// What the frame drew; the transparency numbers are zero where it did not run.
 struct RenderStats {
-    uint32_t opaqueObjects = 0, transparentObjects = 0, triangles = 0;
-    uint64_t fragmentsStored = 0, fragmentsDropped = 0, poolBytes = 0;
-    double meanDepthComplexity = 0, maxDepthComplexity = 0;
+    uint32_t opaqueObjects = 0, transparentObjects = 0, triangles = 0, transparentTriangles = 0;
     bool transparencyRan = false;
+    bool abuffer = false;             // the high tier's A-buffer; false: weighted blended (no pool, no counts)
+    uint32_t transparencyFrames = 0;  // frames drawn until one dropped no fragment (1, or 2 when the first pool was short)
+    uint64_t firstFrameDropped = 0;   // fragments the first frame dropped (its pool is a guess)
+    TransparencyStats oit;            // the last frame's counts (A-buffer only)
+    double meanDepthComplexity = 0;   // oit.fragments per pixel of the picture (A-buffer only)
     std::string describe() const;
 };
-
-// The seam where order-independent transparency plugs in: given the scene's transparent
-// objects over the composited opaque picture, it composites them (and may add passes and
-// resources to the plan and numbers to the stats). Until the transparency effect exists it
-// draws nothing and says so (warning and plan line); the renderer never skips them silently.
-struct TransparencyRequest {
-    const scene::Scene* scene = nullptr;
-    std::vector<size_t> objects;  // indices into scene->objects, all translucent
-    const RenderOptions* options = nullptr;
-};
-struct TransparencyOutcome {
-    bool drawn = false;
-    std::vector<PlanLine> plan;
-    std::vector<std::string> warnings;
-};
-TransparencyOutcome renderTransparent(Device& device, const TransparencyRequest& request, io::Image& color,
-                                      RenderStats& stats);
 
 struct RenderResult {
     io::Image color;               // linear RGB, row 0 = top
@@ -84,6 +79,14 @@ struct RenderResult {
     RenderPlan plan;
     RenderStats stats;
     std::vector<std::string> warnings;  // printable: what was asked but not drawn
+    // With RenderOptions::keepOpaqueInputs and a transparency step: its inputs, row 0 = top.
+    struct OpaqueInputs {
+        io::Image color;                // linear RGB exactly as the effect read it (RGBA16F halves)
+        std::vector<float> storedDepth; // the D32F depth attachment the draws were tested against
+        glm::dmat4 view{1.0}, projection{1.0};
+        ClipDepthRange clipDepth = ClipDepthRange::ZeroToOne;
+    };
+    std::optional<OpaqueInputs> opaque;
 };
 
 class SceneRender {
