@@ -1,15 +1,23 @@
 // Sizes at the edges: 1x1, one row, one column, odd and prime sizes. Every effect runs on them
 // with finite output and agrees with its CPU reference, so the motion blur tiles and the AO
 // depth MIP chain are right where the size is no multiple of the tile or of 2; a size above the
-// device's limit is a named error.
+// device's limit is a named error. 7680x4320 runs every effect once for finite output (its
+// own CTest entries, sizes_8k.*: the case is hidden from the conformance entries).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <random>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "analytic_scenes.hpp"
 #include "effect_runs.hpp"
 #include "sfx/half.hpp"
+#include "sfx/oit.hpp"
 #include "skips.hpp"
 #include "test_device.hpp"
 
@@ -126,6 +134,179 @@ TEST_CASE("sizes: large and odd sizes run every effect with finite output", "[si
         for (const auto& px : out.values)
             for (double ch : px) nonFinite += std::isfinite(ch) ? 0 : 1;
         CHECK(nonFinite == 0);
+    }
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+namespace {
+
+// True when every value of a raw readback of `format` is finite (half, float) or the format
+// cannot hold a non-finite value (unorm).
+bool allFinite(Format format, const std::vector<uint8_t>& raw) {
+    if (format == Format::R16F || format == Format::RG16F || format == Format::RGBA16F) {
+        for (size_t i = 0; i + 1 < raw.size(); i += 2) {
+            const uint16_t h = uint16_t(raw[i] | (raw[i + 1] << 8));
+            if ((h & 0x7C00u) == 0x7C00u) return false;
+        }
+        return true;
+    }
+    if (format == Format::R32F || format == Format::RG32F || format == Format::RGBA32F) {
+        for (size_t i = 0; i + 3 < raw.size(); i += 4) {
+            float f;
+            std::memcpy(&f, &raw[i], 4);
+            if (!std::isfinite(f)) return false;
+        }
+    }
+    return true;
+}
+
+Status readWhole(Device& d, TextureHandle t, Format* format, std::vector<uint8_t>& raw) {
+    Result<TextureDesc> desc = d.textureDesc(t);
+    if (!desc) return desc.status();
+    *format = desc->format;
+    raw.assign(size_t(mipLevelBytes(desc.value(), 0)), 0);
+    return d.readTexture(t, 0, raw.data(), raw.size());
+}
+
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+TEST_CASE("sizes: 7680x4320 (or the device's maximum) runs every effect once with finite output", "[.][sizes][8k]") {
+    if (drawsNothing()) SFX_SKIP("the null backend draws nothing: GPU results are not compared on " << test::label());
+    Device& dev = test::device();
+    const uint32_t maxSize = dev.caps().limits.maxTextureSize;
+    const uint32_t w = std::min<uint32_t>(7680, maxSize), h = std::min<uint32_t>(4320, maxSize);
+    INFO(test::label() << " " << w << "x" << h);
+    const size_t n = size_t(w) * h;
+    // Inputs built directly as the device holds them (no double-precision grids of 33M pixels):
+    // a plane tilted in x with a step in y, a colour ramp and a velocity field of up to 40 px.
+    std::vector<float> depth(n), velocity(n * 2);
+    std::vector<uint16_t> color(n * 4);
+    for (size_t i = 0; i < n; ++i) {
+        const float x = float(i % w) / float(w), y = float(i / w) / float(h);
+        depth[i] = 2.0f + 6.0f * x + (y > 0.5f ? 1.0f : 0.0f);
+        velocity[i * 2] = 40.0f * (x - 0.5f), velocity[i * 2 + 1] = -7.0f * y;
+        color[i * 4] = floatToHalf(x), color[i * 4 + 1] = floatToHalf(y), color[i * 4 + 2] = floatToHalf(0.5f);
+        color[i * 4 + 3] = floatToHalf(1.0f);
+    }
+    struct Inputs {
+        Device& dev;
+        TextureHandle depth, color, velocity;
+        ~Inputs() {
+            for (TextureHandle t : {depth, color, velocity})
+                if (!t.isNull()) (void)dev.destroyTexture(t);
+        }
+    } tex{dev, {}, {}, {}};
+    tex.depth = dev.createTexture({w, h, 1, Format::R32F, kTextureSampled, "8k-depth"}).value();
+    tex.color = dev.createTexture({w, h, 1, Format::RGBA16F, kTextureSampled | kTextureRenderTarget, "8k-colour"}).value();
+    tex.velocity = dev.createTexture({w, h, 1, Format::RG32F, kTextureSampled, "8k-velocity"}).value();
+    SFX_REQUIRE_OK(dev.writeTexture(tex.depth, 0, depth.data(), depth.size() * 4));
+    SFX_REQUIRE_OK(dev.writeTexture(tex.color, 0, color.data(), color.size() * 2));
+    SFX_REQUIRE_OK(dev.writeTexture(tex.velocity, 0, velocity.data(), velocity.size() * 4));
+    depth = {}, velocity = {}, color = {};
+    PerspectiveDesc pd;
+    pd.aspect = double(w) / double(h);
+    const CameraProjection camera = makePerspective(pd).value();
+    std::vector<uint8_t> raw;
+    Format format = Format::Undefined;
+
+    {  // AO, one technique (Scalable: the depth MIP on the high tier), hardware depth in the desc.
+        const auto t0 = std::chrono::steady_clock::now();
+        const Format of = test::pickFormat(dev, {Format::R16F, Format::R32F, Format::RGBA8}, true);
+        TextureHandle out = dev.createTexture({w, h, 1, of, kTextureSampled | kTextureRenderTarget, "8k-ao"}).value();
+        auto ao = AmbientObscurance::create(dev, {w, h, test::tierProfile(), test::aoTestSettings(AoTechnique::Scalable), DepthKind::Hardware});
+        INFO(ao.status().toString());
+        REQUIRE(ao.isOk());
+        AoInputs in;
+        in.depth = DepthSource{tex.depth, DepthKind::Linear, camera};
+        in.output = out;
+        SFX_REQUIRE_OK(ao.value()->dispatch(in));
+        SFX_REQUIRE_OK(dev.flush());
+        SFX_REQUIRE_OK(readWhole(dev, out, &format, raw));
+        CHECK(allFinite(format, raw));
+        ao.value().reset();
+        SFX_REQUIRE_OK(dev.destroyTexture(out));
+        std::printf("sizes %s: AO scalable %ux%u in %.2f s\n", test::label().c_str(), w, h, secondsSince(t0));
+    }
+    {  // Motion blur with a velocity texture.
+        const auto t0 = std::chrono::steady_clock::now();
+        auto mb = MotionBlur::create(dev, {w, h, test::tierProfile(), Format::RGBA16F, DepthKind::Hardware});
+        INFO(mb.status().toString());
+        REQUIRE(mb.isOk());
+        MotionBlurInputs in;
+        in.color = tex.color;
+        in.depth = DepthSource{tex.depth, DepthKind::Linear, camera};
+        in.velocity = tex.velocity;
+        // The tier's radius in output pixels: scaled to 4320 rows (from 720) it would be beyond
+        // the 64 px limit, which is InvalidArgument (MotionBlurSettings.maxRadiusPx).
+        MotionBlurSettings s;
+        s.referenceRows = 0;
+        SFX_REQUIRE_OK(mb.value()->dispatch(in, s));
+        SFX_REQUIRE_OK(dev.flush());
+        SFX_REQUIRE_OK(readWhole(dev, mb.value()->output(), &format, raw));
+        CHECK(allFinite(format, raw));
+        std::printf("sizes %s: motion blur %ux%u in %.2f s\n", test::label().c_str(), w, h, secondsSince(t0));
+    }
+    {  // Transparency: three overlapping translucent quads over the colour ramp, no opaque depth.
+        const auto t0 = std::chrono::steady_clock::now();
+        TextureHandle opaqueDepth = dev.createTexture({w, h, 1, Format::D32F, kTextureSampled | kTextureRenderTarget, "8k-opaque-depth"}).value();
+        {
+            std::vector<float> far(n, 1.0f);
+            SFX_REQUIRE_OK(dev.writeTexture(opaqueDepth, 0, far.data(), far.size() * 4));
+        }
+        const float c[6][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
+        std::vector<TransparentVertex> quad;
+        for (const auto& p : c) quad.push_back({{p[0] * 0.7f, p[1] * 0.7f, 0.0f}, {0.0f, 0.0f, 1.0f}});
+        BufferHandle vb = dev.createBuffer({quad.size() * sizeof(TransparentVertex), kBufferVertex, "8k-quad"}).value();
+        SFX_REQUIRE_OK(dev.writeBuffer(vb, 0, quad.data(), quad.size() * sizeof(TransparentVertex)));
+        std::vector<TransparentDraw> draws;
+        for (uint32_t i = 0; i < 3; ++i) {
+            TransparentDraw d;
+            d.vertices = vb;
+            d.vertexCount = 6;
+            d.model = glm::translate(glm::mat4(1.0f), glm::vec3(0.2f * float(i) - 0.2f, 0.0f, -2.0f - float(i)));
+            d.color = glm::vec3(0.9f - 0.3f * float(i), 0.4f, 0.2f + 0.3f * float(i));
+            d.opacity = 0.5f;
+            d.id = i;
+            draws.push_back(d);
+        }
+        const bool zeroToOne = dev.caps().clipDepth == ClipDepthRange::ZeroToOne;
+        glm::mat4 proj(1.0f);  // orthographic along -z, near 0.5, far 20
+        proj[2][2] = zeroToOne ? -1.0f / 19.5f : -2.0f / 19.5f;
+        proj[3][2] = zeroToOne ? -0.5f / 19.5f : -1.0f / 19.5f - 1.0f;
+        TransparencyDesc desc;
+        desc.width = w;
+        desc.height = h;
+        desc.profile = test::tierProfile();
+        // Room for the three layers where they overlap, not the default 4 nodes per pixel (4 GiB here).
+        desc.initialPoolNodes = 3 * n / 2;
+        auto oit = Transparency::create(dev, desc);
+        INFO(oit.status().toString());
+        REQUIRE(oit.isOk());
+        TransparencyInputs in;
+        in.opaqueColor = tex.color;
+        in.opaqueDepth = opaqueDepth;
+        in.projection = proj;
+        in.draws = draws;
+        SFX_REQUIRE_OK(oit.value()->render(in));
+        SFX_REQUIRE_OK(dev.flush());
+        auto st = oit.value()->stats();
+        REQUIRE(st.isOk());
+        // The pool is bounded by the device's storage buffer size, far below 33M pixels' layers
+        // on llvmpipe: what does not fit is dropped and counted (docs/oit.md), never garbage.
+        CHECK(st->stored + st->dropped == st->fragments);
+        std::printf("sizes %s: transparency %llu fragments, %llu stored, %llu dropped (pool %llu nodes)\n",
+                    test::label().c_str(), (unsigned long long)st->fragments, (unsigned long long)st->stored,
+                    (unsigned long long)st->dropped, (unsigned long long)st->poolNodes);
+        SFX_REQUIRE_OK(readWhole(dev, oit.value()->output(), &format, raw));
+        CHECK(allFinite(format, raw));
+        oit.value().reset();
+        SFX_REQUIRE_OK(dev.destroyBuffer(vb));
+        SFX_REQUIRE_OK(dev.destroyTexture(opaqueDepth));
+        std::printf("sizes %s: transparency %ux%u in %.2f s\n", test::label().c_str(), w, h, secondsSince(t0));
     }
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }

@@ -1,0 +1,88 @@
+// A test-only HAL decorator that makes a real device fail on purpose: the k-th resource creation
+// (texture, buffer, sampler, program, pipeline or timer), the k-th submit (flush, or a read,
+// which flushes first), or device loss from the k-th call on (every call after it fails, as
+// on a GPU reset). Everything else is forwarded to the wrapped device, whose handles pass
+// through unchanged, so the wrapped device's stats() tell whether a failed attempt leaked.
+//
+// Destroys are always forwarded, even after a simulated loss: releasing objects of a lost
+// device is legal on every API (Vulkan requires it), and an effect that cleans up after an
+// error must be able to.
+#pragma once
+
+#include <cstdint>
+
+#include "sfx/hal.hpp"
+
+namespace sfx::test {
+
+class FaultInjectingDevice final : public Device {
+public:
+    explicit FaultInjectingDevice(Device& inner) : inner_(inner) {}
+
+    // Each arms one fault, counted from now (1 = the next one) and clears any other.
+    void failCreation(uint64_t k);  // the k-th create* fails with DeviceError (out of memory)
+    void failSubmit(uint64_t k);    // the k-th flush / readTexture / readBuffer fails with DeviceError
+    void loseDevice(uint64_t k);    // the k-th call and every later one fail with DeviceError (device lost)
+    void clearFaults();             // a working device again (after a loss too)
+
+    // Counts since construction or the last resetCounts(): what a fault-free run goes through,
+    // so a test knows the range of k.
+    uint64_t creations() const { return creations_; }
+    uint64_t submits() const { return submits_; }
+    uint64_t calls() const { return calls_; }
+    void resetCounts() { creations_ = submits_ = calls_ = 0; }
+    bool faultFired() const { return fired_; }  // since the fault was armed
+    bool lost() const { return lost_; }
+
+    Device& inner() { return inner_; }
+
+    const DeviceCaps& caps() const override { return inner_.caps(); }
+
+    Result<TextureHandle> createTexture(const TextureDesc& desc) override;
+    Status destroyTexture(TextureHandle texture) override { return inner_.destroyTexture(texture); }
+    Result<TextureDesc> textureDesc(TextureHandle texture) const override { return inner_.textureDesc(texture); }
+    Status writeTexture(TextureHandle texture, uint32_t mip, const void* data, size_t bytes) override;
+    Status readTexture(TextureHandle texture, uint32_t mip, void* out, size_t bytes) override;
+
+    Result<BufferHandle> createBuffer(const BufferDesc& desc) override;
+    Status destroyBuffer(BufferHandle buffer) override { return inner_.destroyBuffer(buffer); }
+    Status writeBuffer(BufferHandle buffer, uint64_t offset, const void* data, size_t bytes) override;
+    Status readBuffer(BufferHandle buffer, uint64_t offset, void* out, size_t bytes) override;
+
+    Result<SamplerHandle> createSampler(const SamplerDesc& desc) override;
+    Status destroySampler(SamplerHandle sampler) override { return inner_.destroySampler(sampler); }
+
+    Result<ProgramHandle> createProgram(const CompiledProgram& program) override;
+    Status destroyProgram(ProgramHandle program) override { return inner_.destroyProgram(program); }
+
+    Result<PipelineHandle> createGraphicsPipeline(const GraphicsPipelineDesc& desc) override;
+    Result<PipelineHandle> createComputePipeline(const ComputePipelineDesc& desc) override;
+    Status destroyPipeline(PipelineHandle pipeline) override { return inner_.destroyPipeline(pipeline); }
+
+    Result<TimerHandle> createTimer() override;
+    Status destroyTimer(TimerHandle timer) override { return inner_.destroyTimer(timer); }
+
+    Status renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) override;
+    Status dispatch(const DispatchDesc& dispatch) override;
+    Status beginTimer(TimerHandle timer) override;
+    Status endTimer(TimerHandle timer) override;
+    Status flush() override;
+    Result<TimerReading> readTimer(TimerHandle timer) override;
+
+    DeviceStats stats() const override { return inner_.stats(); }
+    std::vector<std::string> takeValidationMessages() override { return inner_.takeValidationMessages(); }
+
+private:
+    enum class Fault { None, Creation, Submit, Loss };
+    // Counts a call and says why it fails (Ok: forward it). `what` names the call.
+    Status enter(const char* what, bool creation, bool submit);
+
+    Device& inner_;
+    Fault fault_ = Fault::None;
+    uint64_t at_ = 0;  // the armed fault's k, counted from when it was armed
+    uint64_t armedCreations_ = 0, armedSubmits_ = 0, armedCalls_ = 0;
+    uint64_t creations_ = 0, submits_ = 0, calls_ = 0;
+    bool fired_ = false, lost_ = false;
+};
+
+}  // namespace sfx::test

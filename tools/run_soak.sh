@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# The soak run of docs/robustness.md ("Soak"): builds samples/soak and runs it, by default 10000
+# frames on every compiled backend, each backend in a process of its own so that one backend's
+# resident memory is not the baseline of the next. Exit status 0 when every backend passed.
+# Usage: tools/run_soak.sh [--frames N] [--backends vulkan,gles,gl-egl,gl-osmesa] [--progress N] [--no-validation]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD_DIR=${SFX_BUILD_DIR:-build}
+if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
+  cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+fi
+cmake --build "$BUILD_DIR" -j"$(nproc)" --target soak >/dev/null
+export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-/tmp/xdg-$USER}
+mkdir -p "$XDG_RUNTIME_DIR"
+backends="vulkan,gles,gl-egl,gl-osmesa"
+args=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --backends) backends="$2"; shift 2 ;;
+    *) args+=("$1"); shift ;;
+  esac
+done
+status=0
+for b in ${backends//,/ }; do
+  "$BUILD_DIR"/samples/soak --backends "$b" "${args[@]}" || status=1
+done
+exit $status
