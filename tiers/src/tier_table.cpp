@@ -69,9 +69,9 @@ TierProfile currentDefault() {
     p.aoBlurRadiusPx = 2;  // 5-tap separable bilateral
     // The look fitted against ray-traced truth (samples/fit_ao, docs/trade.md); before the
     // calibration every tier had the papers' 1, 1, 1e-4 / 0.02, range 1, bias 0.25.
-    p.aoLook[0] = {.intensity = 0.755f, .contrast = 0.750f, .bias = 2.5e-4f};                             // alchemy
-    p.aoLook[1] = {.intensity = 4.47f, .contrast = 2.55f, .bias = 0.281f};                                // scalable
-    p.aoLook[2] = {.intensity = 4.07f, .contrast = 3.40f, .bias = 0, .creaseRange = 0.430f, .creaseBias = 0.25f};  // crease
+    p.aoLook[0] = {.intensity = 0.472871f, .contrast = 1.38237f, .bias = 3.70406e-6f};                             // alchemy
+    p.aoLook[1] = {.intensity = 3.70852f, .contrast = 10.0f, .bias = 0.398438f};                                // scalable
+    p.aoLook[2] = {.intensity = 3.22266f, .contrast = 4.21697f, .bias = 0, .creaseRange = 0.5516f, .creaseBias = 0.238152f};  // crease
     p.aoPackedDepthTarget = true;  // ao_blur.frag reads the key packed in the RGBA8 AO target
     p.mbTaps = 7;                  // 6 samples + centre
     p.mbMaxRadiusPx = 10.0f;
@@ -90,9 +90,9 @@ TierProfile highDefault() {
     p.aoDepthMipLevels = uint32_t(shared::SFX_DEPTH_MIP_MAX_LEVELS);
     p.aoAlchemySamples = 12;  // the paper's 12 samples per pixel
     p.aoBlurRadiusPx = 6;     // 13-tap, as Alchemy's filter
-    p.aoLook[0] = {.intensity = 0.755f, .contrast = 0.806f, .bias = 1e-5f};                               // alchemy
-    p.aoLook[1] = {.intensity = 4.47f, .contrast = 1.78f, .bias = 0.102f};                                // scalable
-    p.aoLook[2] = {.intensity = 18.2f, .contrast = 0.604f, .bias = 0, .creaseRange = 0.467f, .creaseBias = 0.25f};  // crease
+    p.aoLook[0] = {.intensity = 0.392128f, .contrast = 1.77828f, .bias = 1e-7f};                               // alchemy
+    p.aoLook[1] = {.intensity = 4.07247f, .contrast = 5.42469f, .bias = 0.261719f};                                // scalable
+    p.aoLook[2] = {.intensity = 14.4122f, .contrast = 1.15478f, .bias = 0, .creaseRange = 0.430292f, .creaseBias = 0.238152f};  // crease
     p.aoPackedDepthTarget = false;  // RG16F AO target; the blur reads the linear depth texture
     p.mbTaps = 9;                   // 8 samples + centre
     p.mbMaxRadiusPx = 18.0f;
@@ -114,20 +114,20 @@ Preset variant(const char* name, TierProfile p, uint32_t alchemy, uint32_t scala
 // samples/trade_presets (tools/run_trade.sh) on llvmpipe; the figures of docs/trade.md.
 std::vector<Preset> currentPresets() {
     const TierProfile d = currentDefault();
-    return {{kDefaultPreset, d, {{26.95, 23.82, 22.45}, 31.05}},
-            variant("low", d, 3, 2, 1, 5, 8.0f, {{25.62, 23.20, 22.35}, 28.69}),
-            variant("medium", d, 6, 4, 2, 7, 10.0f, {{26.95, 23.82, 22.45}, 31.05}),
-            variant("high", d, 10, 6, 3, 9, 14.0f, {{27.13, 24.24, 22.54}, 33.79}),
-            variant("ultra", d, 16, 10, 4, 13, 18.0f, {{27.08, 23.68, 22.76}, 34.77})};
+    return {{kDefaultPreset, d, {{27.40, 23.95, 22.54}, 31.05}},
+            variant("low", d, 3, 2, 1, 5, 8.0f, {{25.96, 23.20, 22.43}, 28.69}),
+            variant("medium", d, 6, 4, 2, 7, 10.0f, {{27.40, 23.95, 22.54}, 31.05}),
+            variant("high", d, 10, 6, 3, 9, 14.0f, {{27.65, 24.42, 22.62}, 33.79}),
+            variant("ultra", d, 16, 10, 4, 13, 18.0f, {{27.64, 24.00, 22.84}, 34.77})};
 }
 
 std::vector<Preset> highPresets() {
     const TierProfile d = highDefault();
-    return {{kDefaultPreset, d, {{26.98, 25.53, 23.21}, 34.38}},
-            variant("low", d, 4, 4, 2, 5, 10.0f, {{26.76, 25.58, 22.10}, 30.49}),
-            variant("medium", d, 8, 6, 4, 7, 14.0f, {{27.11, 26.09, 22.77}, 32.77}),
-            variant("high", d, 12, 9, 6, 9, 18.0f, {{26.98, 25.53, 23.21}, 34.38}),
-            variant("ultra", d, 24, 16, 8, 15, 24.0f, {{26.77, 25.17, 23.36}, 34.67})};
+    return {{kDefaultPreset, d, {{27.46, 25.81, 23.31}, 34.38}},
+            variant("low", d, 4, 4, 2, 5, 10.0f, {{27.14, 25.75, 22.25}, 30.49}),
+            variant("medium", d, 8, 6, 4, 7, 14.0f, {{27.62, 26.26, 22.90}, 32.77}),
+            variant("high", d, 12, 9, 6, 9, 18.0f, {{27.46, 25.81, 23.31}, 34.38}),
+            variant("ultra", d, 24, 16, 8, 15, 24.0f, {{27.26, 25.47, 23.48}, 34.67})};
 }
 
 std::vector<TierRow> makeTable() {
