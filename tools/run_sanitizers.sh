@@ -22,7 +22,8 @@ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSFX_WERROR=ON -DSFX
       "${SFX_LAUNCHER[@]}" >/dev/null
 # Only what the selected tests run (no demo or benchmarks).
 TARGETS=(sfx_unit_tests sfx_conformance sfx_cli sfxc)
-if grep -q '^SFX_BACKEND_VULKAN:BOOL=ON' build-asan/CMakeCache.txt; then TARGETS+=(sfx_vulkan_external_tests); fi
+if grep -q '^SFX_BACKEND_VULKAN:BOOL=ON' build-asan/CMakeCache.txt; then TARGETS+=(sfx_vulkan_external_tests sfx_vulkan_import_tests); fi
+TARGETS+=(sfx_best_device_fallback)
 cmake --build build-asan -j"$JOBS" --target "${TARGETS[@]}"
 conformance=()
 for backend in $BACKENDS; do conformance+=("conformance\\.$backend\\."); done
@@ -33,9 +34,11 @@ pattern="^($(IFS='|'; echo "${conformance[*]}"))"
 # unload their modules first, so LeakSanitizer reports 100+ MB from "<unknown module>" that no
 # suppression can name. Leaks in the SDK's own code are caught by the unit run, which drives the
 # effects, the validation and the handle pools through the null backend.
-# vulkan.external drives lavapipe through a host's own Vulkan device, so it goes with them.
-(cd build-asan && ctest --output-on-failure -j"$JOBS" -L unit -E '^vulkan\.external$' "$@" &&
-  ASAN_OPTIONS="$ASAN_OPTIONS:detect_leaks=0" ctest --output-on-failure -j"$JOBS" -R "$pattern|^vulkan\.external$" "$@")
+# vulkan.external and vulkan.import drive lavapipe through a host's own Vulkan device, and the
+# fallback.* entries open real devices with others hidden, so they go with them.
+gpu_units='^(vulkan\.external|vulkan\.import|fallback\..*)$'
+(cd build-asan && ctest --output-on-failure -j"$JOBS" -L unit -E "$gpu_units" "$@" &&
+  ASAN_OPTIONS="$ASAN_OPTIONS:detect_leaks=0" ctest --output-on-failure -j"$JOBS" -R "$pattern|$gpu_units" "$@")
 echo "run_sanitizers: ASan+UBSan unit and conformance ($BACKENDS) clean after $((SECONDS - start)) s"
 
 # ---- 2. libFuzzer targets: replay the seed corpora -------------------------------------------
