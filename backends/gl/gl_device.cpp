@@ -73,6 +73,12 @@ Status GlDevice::enter() {
     if (options_.validation && hostContext())
         while (gl_.glGetError() != GL_NO_ERROR) {
         }
+    // The host may have changed the pixel-store alignment since the last call: the SDK's uploads
+    // and readbacks are tightly packed, and the state contract leaves both at 1.
+    if (hostContext()) {
+        gl_.glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        gl_.glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    }
     return Status::ok();
 }
 

@@ -1,0 +1,90 @@
+#include "egl_context.hpp"
+
+#define EGL_NO_X11 1
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+
+#include <cstdio>
+#include <cstring>
+#include <iterator>
+
+namespace engine_gl {
+namespace {
+
+sfx::Status unavailable(const std::string& why) { return {sfx::StatusCode::BackendUnavailable, "engine_gl EGL: " + why}; }
+
+std::string eglFailed(const char* call) {
+    char hex[16];
+    std::snprintf(hex, sizeof hex, "0x%04x", unsigned(eglGetError()));
+    return std::string(call) + " failed (EGL error " + hex + ")";
+}
+
+bool hasExtension(const char* list, const char* name) {
+    if (!list) return false;
+    const size_t n = std::strlen(name);
+    for (const char* p = list; (p = std::strstr(p, name)) != nullptr; p += n)
+        if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
+    return false;
+}
+
+EGLenum eglApi(ContextApi api) { return api == ContextApi::GLES ? EGL_OPENGL_ES_API : EGL_OPENGL_API; }
+
+}  // namespace
+
+const char* toString(ContextApi api) { return api == ContextApi::GLES ? "gles" : "gl"; }
+
+void* EglContext::getProcAddress(const char* name) { return reinterpret_cast<void*>(eglGetProcAddress(name)); }
+
+sfx::Result<std::unique_ptr<EglContext>> EglContext::open(ContextApi api) {
+    if (!hasExtension(eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS), "EGL_MESA_platform_surfaceless"))
+        return unavailable("the EGL client has no EGL_MESA_platform_surfaceless");
+    auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    if (!getPlatformDisplay) return unavailable("no eglGetPlatformDisplayEXT");
+    EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    EGLint major = 0, minor = 0;
+    if (display == EGL_NO_DISPLAY || !eglInitialize(display, &major, &minor)) return unavailable(eglFailed("eglInitialize"));
+    // The surfaceless display is one object per process: it is not terminated here, so that an
+    // SDK device (or anyone else) using it keeps working after this context is gone.
+    if (!hasExtension(eglQueryString(display, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context"))
+        return unavailable("the display has no EGL_KHR_surfaceless_context");
+    if (!eglBindAPI(eglApi(api))) return unavailable(eglFailed("eglBindAPI"));
+
+    const EGLint renderable = api == ContextApi::GLES ? EGL_OPENGL_ES3_BIT : EGL_OPENGL_BIT;
+    const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, renderable, EGL_SURFACE_TYPE, EGL_DONT_CARE, EGL_NONE};
+    EGLConfig config = nullptr;
+    EGLint count = 0;
+    if (!eglChooseConfig(display, configAttribs, &config, 1, &count) || count == 0)
+        return unavailable(std::string("no EGL config renders ") + (api == ContextApi::GLES ? "GL ES 3" : "desktop GL"));
+
+    struct Version {
+        EGLint major, minor;
+    };
+    const Version es[] = {{3, 2}, {3, 1}, {3, 0}};
+    const Version desktop[] = {{4, 5}, {4, 3}, {3, 3}};
+    EGLContext context = EGL_NO_CONTEXT;
+    for (size_t i = 0; i < std::size(es) && context == EGL_NO_CONTEXT; ++i) {
+        const Version v = api == ContextApi::GLES ? es[i] : desktop[i];
+        EGLint attribs[8] = {EGL_CONTEXT_MAJOR_VERSION, v.major, EGL_CONTEXT_MINOR_VERSION, v.minor, EGL_NONE, EGL_NONE, EGL_NONE};
+        if (api == ContextApi::DesktopGL) {
+            attribs[4] = EGL_CONTEXT_OPENGL_PROFILE_MASK;
+            attribs[5] = EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT;
+        }
+        context = eglCreateContext(display, config, EGL_NO_CONTEXT, attribs);
+    }
+    if (context == EGL_NO_CONTEXT) return unavailable(eglFailed("eglCreateContext"));
+    std::unique_ptr<EglContext> out(new EglContext(display, context, api));
+    if (!out->makeCurrent()) return unavailable(eglFailed("eglMakeCurrent(surfaceless)"));
+    return out;
+}
+
+bool EglContext::makeCurrent() {
+    return eglBindAPI(eglApi(api_)) && eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_);
+}
+
+EglContext::~EglContext() {
+    eglBindAPI(eglApi(api_));
+    if (eglGetCurrentContext() == context_) eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    eglDestroyContext(display_, context_);
+}
+
+}  // namespace engine_gl
