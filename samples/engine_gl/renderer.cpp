@@ -16,9 +16,9 @@ constexpr double kOrbitPerFrame = 0.6 * kPi / 180.0;  // the camera circles the 
 
 sfx::Status failed(const std::string& what) { return {sfx::StatusCode::DeviceError, "engine_gl: " + what}; }
 
-void uniform(HostGl& gl, GLuint program, const char* name, const glm::dmat4& m) {
+void uniform(HostGl& gl, GLint location, const glm::dmat4& m) {
     const glm::mat4 f(m);
-    gl.UniformMatrix4fv(gl.GetUniformLocation(program, name), 1, GL_FALSE, glm::value_ptr(f));
+    gl.UniformMatrix4fv(location, 1, GL_FALSE, glm::value_ptr(f));
 }
 
 }  // namespace
@@ -83,6 +83,11 @@ sfx::Status Renderer::createGlObjects() {
     sfx::Result<HostPrograms> programs = buildPrograms(gl_, context_.api());
     if (!programs) return programs.status();
     programs_ = programs.value();
+    const GLuint g = programs_.gbuffer;
+    uniforms_ = {gl_.GetUniformLocation(g, "uModelView"),   gl_.GetUniformLocation(g, "uProjection"),
+                 gl_.GetUniformLocation(g, "uPreviousClip"), gl_.GetUniformLocation(g, "uNormalMatrix"),
+                 gl_.GetUniformLocation(g, "uColour"),       gl_.GetUniformLocation(g, "uViewport"),
+                 gl_.GetUniformLocation(programs_.composite, "uSunView")};
     depth_ = {makeTarget(GL_DEPTH_COMPONENT32F), GL_DEPTH_COMPONENT32F};
     normals_ = {makeTarget(GL_RGBA16F), GL_RGBA16F};
     velocity_ = {makeTarget(GL_RG16F), GL_RG16F};
@@ -223,16 +228,16 @@ void Renderer::drawGBuffer(uint32_t frame) {
     for (GLint i : {GLint(kGBufferNormals), GLint(kGBufferVelocity), GLint(kGBufferAlbedo)}) gl_.ClearBufferfv(GL_COLOR, i, zero);
     gl_.ClearBufferfv(GL_DEPTH, 0, far);
     gl_.UseProgram(programs_.gbuffer);
-    gl_.Uniform2f(gl_.GetUniformLocation(programs_.gbuffer, "uViewport"), GLfloat(options_.width), GLfloat(options_.height));
+    gl_.Uniform2f(uniforms_.viewport, GLfloat(options_.width), GLfloat(options_.height));
     const glm::dmat4 v = view(frame), vPrevious = view(previous);
     for (const Mesh& m : meshes_) {
         const glm::dmat4 modelView = v * model(m, frame);
-        uniform(gl_, programs_.gbuffer, "uModelView", modelView);
-        uniform(gl_, programs_.gbuffer, "uProjection", camera_.projection);
-        uniform(gl_, programs_.gbuffer, "uPreviousClip", camera_.projection * vPrevious * model(m, previous));
+        uniform(gl_, uniforms_.modelView, modelView);
+        uniform(gl_, uniforms_.projection, camera_.projection);
+        uniform(gl_, uniforms_.previousClip, camera_.projection * vPrevious * model(m, previous));
         const glm::mat3 normalMatrix(glm::transpose(glm::inverse(glm::dmat3(modelView))));
-        gl_.UniformMatrix3fv(gl_.GetUniformLocation(programs_.gbuffer, "uNormalMatrix"), 1, GL_FALSE, glm::value_ptr(normalMatrix));
-        gl_.Uniform3f(gl_.GetUniformLocation(programs_.gbuffer, "uColour"), m.colour.r, m.colour.g, m.colour.b);
+        gl_.UniformMatrix3fv(uniforms_.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
+        gl_.Uniform3f(uniforms_.colour, m.colour.r, m.colour.g, m.colour.b);
         gl_.BindVertexArray(m.vao);
         gl_.DrawElements(GL_TRIANGLES, m.indexCount, GL_UNSIGNED_INT, nullptr);
     }
@@ -283,7 +288,7 @@ sfx::Status Renderer::renderFrame(uint32_t index) {
                    {{kUnitAlbedo, albedo_.texture}, {kUnitNormals, normals_.texture}, {kUnitAo, aoOutput_.texture}});
     const glm::dvec3 sunWorld = glm::normalize(glm::dvec3(0.4, 0.9, 0.35));
     const glm::vec3 sun(glm::normalize(glm::dmat3(view(index)) * sunWorld));
-    gl_.Uniform3f(gl_.GetUniformLocation(programs_.composite, "uSunView"), sun.x, sun.y, sun.z);
+    gl_.Uniform3f(uniforms_.sun, sun.x, sun.y, sun.z);
     gl_.DrawArrays(GL_TRIANGLES, 0, 3);
     SFX_TRY(hostErrors("composite pass"));
 

@@ -100,6 +100,9 @@ private:
     RendererOptions options_;
     HostGl gl_;
     HostPrograms programs_;
+    struct Uniforms {  // looked up once: a frame only sets values
+        GLint modelView = -1, projection = -1, previousClip = -1, normalMatrix = -1, colour = -1, viewport = -1, sun = -1;
+    } uniforms_;
     GLuint sampler_ = 0, emptyVao_ = 0;
     Target depth_, normals_, velocity_, albedo_, lit_, aoOutput_, presented_;
     GLuint gbufferFbo_ = 0, litFbo_ = 0, presentFbo_ = 0;

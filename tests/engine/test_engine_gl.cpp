@@ -92,6 +92,12 @@ std::string describe(const sfx::DeviceStats& s) {
            c("readback-copies", s.stagingBuffers) + c("framebuffers", s.framebuffers) + "bytes " + std::to_string(s.deviceMemoryBytes);
 }
 
+std::string describe(const HostGlCounts& c) {
+    return "objects created " + std::to_string(c.objectsCreated) + ", deleted " + std::to_string(c.objectsDeleted) +
+           ", storage " + std::to_string(c.allocations) + ", uploads " + std::to_string(c.uploads) + ", readbacks " +
+           std::to_string(c.readbacks);
+}
+
 // (c): the GL state the docs promise after an SDK call, and the host's state it must not touch:
 // a host texture and sampler parked on the last unit, and every other unit either cleared or as
 // the host left it.
@@ -211,6 +217,7 @@ void runEngine(ContextApi api) {
         INFO("after warm-up: " << describe(loop->sdkAfterWarmup) << "\nat the end:    " << describe(loop->sdkAtEnd));
         CHECK(loop->sdkAfterWarmup == loop->sdkAtEnd);
         CHECK(loop->sdkAtEnd.stagingBuffers.created == 0);  // not one readback copy in any frame
+        INFO("host after warm-up: " << describe(loop->hostAfterWarmup) << "\nhost at the end:    " << describe(loop->hostAtEnd));
         CHECK(loop->hostAfterWarmup == loop->hostAtEnd);
         CHECK(loop->hostAtEnd.readbacks == 0);
         CHECK(loop->hostAtEnd.uploads == 4);  // the two meshes' vertex and index buffers, at create
