@@ -6,7 +6,6 @@
 
 #include <cstdio>
 #include <cstring>
-#include <iterator>
 
 namespace engine_gl {
 namespace {
@@ -59,10 +58,12 @@ sfx::Result<std::unique_ptr<EglContext>> EglContext::open(ContextApi api) {
     struct Version {
         EGLint major, minor;
     };
-    const Version es[] = {{3, 2}, {3, 1}, {3, 0}};
-    const Version desktop[] = {{4, 5}, {4, 3}, {3, 3}};
+    // Newest first: a driver gives the newest it has.
+    constexpr size_t kVersions = 3;
+    const Version es[kVersions] = {{3, 2}, {3, 1}, {3, 0}};
+    const Version desktop[kVersions] = {{4, 5}, {4, 3}, {3, 3}};
     EGLContext context = EGL_NO_CONTEXT;
-    for (size_t i = 0; i < std::size(es) && context == EGL_NO_CONTEXT; ++i) {
+    for (size_t i = 0; i < kVersions && context == EGL_NO_CONTEXT; ++i) {
         const Version v = api == ContextApi::GLES ? es[i] : desktop[i];
         EGLint attribs[8] = {EGL_CONTEXT_MAJOR_VERSION, v.major, EGL_CONTEXT_MINOR_VERSION, v.minor, EGL_NONE, EGL_NONE, EGL_NONE};
         if (api == ContextApi::DesktopGL) {

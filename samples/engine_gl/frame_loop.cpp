@@ -19,12 +19,14 @@ sfx::Result<FrameLoopResult> runFrames(Renderer& renderer, uint32_t warmup, uint
     takeMessages();
     out.sdkAfterWarmup = renderer.device().stats();
     out.hostAfterWarmup = renderer.gl().counts();
-    std::vector<double> ms;
+    std::vector<double> ms, dispatchMs;
     ms.reserve(steady);  // before the steady frames: the loop itself allocates nothing either
+    dispatchMs.reserve(steady);
     for (uint32_t f = warmup; f < warmup + steady; ++f) {
         const auto start = std::chrono::steady_clock::now();
         SFX_TRY(renderer.renderFrame(f));
         ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        dispatchMs.push_back(renderer.lastDispatchMs());
     }
     out.sdkAtEnd = renderer.device().stats();
     out.hostAtEnd = renderer.gl().counts();
@@ -33,6 +35,8 @@ sfx::Result<FrameLoopResult> runFrames(Renderer& renderer, uint32_t warmup, uint
         std::sort(ms.begin(), ms.end());
         out.medianFrameMs = ms[ms.size() / 2];
         out.minFrameMs = ms.front();
+        std::sort(dispatchMs.begin(), dispatchMs.end());
+        out.medianDispatchMs = dispatchMs[dispatchMs.size() / 2];
     }
     return out;
 }

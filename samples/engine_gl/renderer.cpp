@@ -1,5 +1,6 @@
 #include "renderer.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -281,7 +282,10 @@ sfx::Status Renderer::renderFrame(uint32_t index) {
     aoIn.depth = sfx::DepthSource{imported_.depth, sfx::DepthKind::Hardware, camera_};
     aoIn.normals = imported_.normals;
     aoIn.output = imported_.ao;
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point aoStart = Clock::now();
     SFX_TRY(ao_->dispatch(aoIn));
+    const Clock::duration aoTime = Clock::now() - aoStart;
     if (hooks.after) hooks.after(SdkCall::AmbientObscurance);
 
     bindFullScreen(litFbo_, programs_.composite,
@@ -297,7 +301,9 @@ sfx::Status Renderer::renderFrame(uint32_t index) {
     blurIn.color = imported_.lit;
     blurIn.depth = aoIn.depth;
     blurIn.velocity = imported_.velocity;
+    const Clock::time_point blurStart = Clock::now();
     SFX_TRY(blur_->dispatch(blurIn, blurSettings_));
+    lastDispatchMs_ = std::chrono::duration<double, std::milli>(aoTime + (Clock::now() - blurStart)).count();
     if (hooks.after) hooks.after(SdkCall::MotionBlur);
 
     bindFullScreen(presentFbo_, programs_.present, {{kUnitBlurred, blurredName_}});

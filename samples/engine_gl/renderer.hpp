@@ -67,6 +67,9 @@ public:
     const sfx::MotionBlurDesc& motionBlurDesc() const { return blur_->desc(); }
     const sfx::MotionBlurSettings& motionBlurSettings() const { return blurSettings_; }
     const sfx::CameraProjection& camera() const { return camera_; }  // every frame's projection
+    // CPU time of the last frame's two dispatch() calls (the SDK's per-frame overhead; on GL
+    // they issue commands, the GPU work waits for the flush).
+    double lastDispatchMs() const { return lastDispatchMs_; }
     uint32_t width() const { return options_.width; }
     uint32_t height() const { return options_.height; }
     FrameHooks hooks;
@@ -117,6 +120,7 @@ private:
     std::unique_ptr<sfx::AmbientObscurance> ao_;
     std::unique_ptr<sfx::MotionBlur> blur_;
     sfx::MotionBlurSettings blurSettings_;
+    double lastDispatchMs_ = 0;
 };
 
 }  // namespace engine_gl

@@ -209,7 +209,8 @@ void runEngine(ContextApi api) {
         INFO(loop.status().toString());
         REQUIRE(loop.isOk());
         WARN(label << ": " << kWarmupFrames + kSteadyFrames << " frames at " << kWidth << "x" << kHeight << ", median "
-                   << loop->medianFrameMs << " ms per steady frame; SDK stats " << describe(loop->sdkAtEnd));
+                   << loop->medianFrameMs << " ms per steady frame (" << loop->medianDispatchMs
+                   << " ms in the dispatch() calls); SDK stats " << describe(loop->sdkAtEnd));
         CHECK(loop->sdkMessages.empty());
         INFO(loop->sdkMessages);
 
