@@ -79,6 +79,14 @@ TextureHandle upload(Device& d, Format format, const std::vector<uint8_t>& bytes
     return t.value();
 }
 
+std::vector<uint8_t> hostImage(engine::EngineRenderer& r, engine::HostImageKind kind, size_t bytes) {
+    Result<std::vector<uint8_t>> texels = r.readImage(kind);
+    INFO(texels.status().toString());
+    REQUIRE(texels.isOk());
+    REQUIRE(texels->size() == bytes);
+    return texels.value();
+}
+
 std::vector<uint8_t> readBack(Device& d, TextureHandle t, size_t bytes) {
     std::vector<uint8_t> out(bytes);
     const Status s = d.readTexture(t, 0, out.data(), out.size());
@@ -128,13 +136,11 @@ TEST_CASE("engine vulkan: the sample's frames make nothing and match the SDK's o
 
     // The last frame's inputs and outputs, read back once, after the measured frames.
     const size_t n = size_t(kWidth) * kHeight;
-    const std::vector<uint8_t> depth = r.readImage(engine::HostImageKind::Depth).value();
-    const std::vector<uint8_t> normals = r.readImage(engine::HostImageKind::Normals).value();
-    const std::vector<uint8_t> velocity = r.readImage(engine::HostImageKind::Velocity).value();
-    const std::vector<uint8_t> lit = r.readImage(engine::HostImageKind::Lit).value();
-    const std::vector<uint8_t> hostAo = r.readImage(engine::HostImageKind::Ao).value();
-    REQUIRE(depth.size() == n * 4);
-    REQUIRE(hostAo.size() == n * 2);
+    const std::vector<uint8_t> depth = hostImage(r, engine::HostImageKind::Depth, n * 4);
+    const std::vector<uint8_t> normals = hostImage(r, engine::HostImageKind::Normals, n * 8);
+    const std::vector<uint8_t> velocity = hostImage(r, engine::HostImageKind::Velocity, n * 4);
+    const std::vector<uint8_t> lit = hostImage(r, engine::HostImageKind::Lit, n * 8);
+    const std::vector<uint8_t> hostAo = hostImage(r, engine::HostImageKind::Ao, n * 2);
     const std::vector<uint8_t> hostBlur = readBack(d, r.motionBlur().output(), n * 8);
 
     // Not a blank picture: the bunny occludes the floor, and it moves.
