@@ -57,13 +57,16 @@ Status VulkanDevice::flush() {
     return submitAndWait();
 }
 
-Status VulkanDevice::setHostCommandBuffer(VkCommandBuffer cb) {
+Status VulkanDevice::setHostCommandBuffer(VkCommandBuffer cb, bool previousFinished) {
     if (hostCommandBuffer_) SFX_TRY(flush());  // detach the previous one
     // Work recorded on our own command buffer comes first.
     SFX_TRY(submitAndWait());
-    // The previous host command buffer has finished by now (documented contract).
-    releaseGarbage(hostPending_);
-    recycleStaging(stagingHost_);
+    // The previous host command buffers have finished by now (documented contract), unless the
+    // host says it attaches again before submitting them: then their staging and garbage wait.
+    if (previousFinished) {
+        releaseGarbage(hostPending_);
+        recycleStaging(stagingHost_);
+    }
     hostCommandBuffer_ = cb;
     return Status::ok();
 }

@@ -57,7 +57,7 @@ public:
     Status initWrapped(const ExternalVulkan& ext, const DeviceOptions& options);
 
     // vulkan_commands.cpp
-    Status setHostCommandBuffer(VkCommandBuffer cb);
+    Status setHostCommandBuffer(VkCommandBuffer cb, bool previousFinished);
 
     // vulkan_external_images.cpp: host images in, SDK images out, and their state contract.
     Result<TextureHandle> importExternal(const ExternalImage& image);

@@ -288,10 +288,10 @@ Result<std::unique_ptr<Device>> wrapDevice(const ExternalVulkan& external, const
     return std::unique_ptr<Device>(std::move(device));
 }
 
-Status setCommandBuffer(Device& device, VkCommandBuffer commandBuffer) {
+Status setCommandBuffer(Device& device, VkCommandBuffer commandBuffer, bool previousFinished) {
     auto* vk = dynamic_cast<VulkanDevice*>(&device);
     if (!vk) return invalidArgument("device", std::string("a ") + toString(device.caps().backend) + " device", "a Vulkan device");
-    return vk->setHostCommandBuffer(commandBuffer);
+    return vk->setHostCommandBuffer(commandBuffer, previousFinished);
 }
 
 }  // namespace sfx::vulkan

@@ -1,7 +1,7 @@
-// A host engine's Vulkan objects for the import tests (tests/vulkan/test_vulkan_import.cpp): an
-// instance with the validation layer and synchronization validation, a 1.3 device with dynamic
-// rendering, a command buffer, and the images, buffers, barriers, uploads and readbacks a host
-// makes itself, without the SDK.
+// A host engine's Vulkan objects for the tests on host devices (tests/vulkan/test_vulkan_import.cpp,
+// test_vulkan_external.cpp): an instance with the validation layer and synchronization
+// validation, a 1.3 device with dynamic rendering, a command buffer, and the images, buffers,
+// barriers, uploads and readbacks a host makes itself, without the SDK.
 #pragma once
 
 #include <catch2/catch.hpp>
@@ -23,7 +23,7 @@ inline VKAPI_ATTR VkBool32 VKAPI_CALL hostCallback(VkDebugUtilsMessageSeverityFl
 }
 
 // A host engine: instance with the validation layer (synchronization validation on), a 1.3
-// device with dynamic rendering, one queue, a command buffer and a fence.
+// device with dynamic rendering, one queue and a command buffer.
 struct Host {
     VkInstance instance = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
@@ -33,17 +33,18 @@ struct Host {
     uint32_t family = 0;
     VkCommandPool pool = VK_NULL_HANDLE;
     VkCommandBuffer cb = VK_NULL_HANDLE;
-    std::vector<std::string> errors;
+    std::vector<std::string> errors;  // the host messenger's warnings and errors
+    bool validation = false;          // the layer is on (always, when create() required it)
     std::string skipReason;
 
-    bool create() {
+    // requireValidation false: without the layer installed the host runs without it.
+    bool create(bool requireValidation = true) {
         uint32_t count = 0;
         vkEnumerateInstanceLayerProperties(&count, nullptr);
         std::vector<VkLayerProperties> layers(count);
         vkEnumerateInstanceLayerProperties(&count, layers.data());
-        bool validation = false;
         for (const auto& l : layers) validation |= std::strcmp(l.layerName, "VK_LAYER_KHRONOS_validation") == 0;
-        if (!validation) {
+        if (!validation && requireValidation) {
             skipReason = "VK_LAYER_KHRONOS_validation is not installed (these tests need synchronization validation)";
             return false;
         }
@@ -56,24 +57,26 @@ struct Host {
         VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
         app.apiVersion = VK_API_VERSION_1_3;
         VkInstanceCreateInfo ci{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-        ci.pNext = &features;
+        ci.pNext = validation ? &features : nullptr;
         ci.pApplicationInfo = &app;
-        ci.enabledLayerCount = 1;
+        ci.enabledLayerCount = validation ? 1 : 0;
         ci.ppEnabledLayerNames = &layer;
-        ci.enabledExtensionCount = 2;
+        ci.enabledExtensionCount = validation ? 2 : 0;
         ci.ppEnabledExtensionNames = exts;
         if (vkCreateInstance(&ci, nullptr, &instance) != VK_SUCCESS) {
             skipReason = "no Vulkan instance";
             return false;
         }
-        auto createMessenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
-        VkDebugUtilsMessengerCreateInfoEXT mi{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-        mi.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT;
-        mi.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT;
-        mi.pfnUserCallback = hostCallback;
-        mi.pUserData = &errors;
-        createMessenger(instance, &mi, nullptr, &messenger);
+        if (validation) {
+            auto createMessenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+                vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
+            VkDebugUtilsMessengerCreateInfoEXT mi{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+            mi.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT;
+            mi.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT;
+            mi.pfnUserCallback = hostCallback;
+            mi.pUserData = &errors;
+            createMessenger(instance, &mi, nullptr, &messenger);
+        }
         count = 0;
         vkEnumeratePhysicalDevices(instance, &count, nullptr);
         std::vector<VkPhysicalDevice> gpus(count);
@@ -128,7 +131,7 @@ struct Host {
     }
 
     vulkan::ExternalVulkan external() const {
-        return {instance, physical, device, queue, family, vkGetInstanceProcAddr, true};
+        return {instance, physical, device, queue, family, vkGetInstanceProcAddr, validation};
     }
 
     uint32_t memoryType(uint32_t bits, VkMemoryPropertyFlags want) const {

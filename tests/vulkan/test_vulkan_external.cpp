@@ -6,13 +6,13 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdio>
-#include <cstring>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
 #include "analytic_scenes.hpp"
+#include "host_vulkan.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/half.hpp"
 #include "sfx/motion_blur.hpp"
@@ -22,135 +22,9 @@
 #include "steady_frames.hpp"
 
 using namespace sfx;
+using hostvk::Host;
 
 namespace {
-
-// Errors the host's own messenger sees: at the end, leaks of SDK objects would show here.
-struct HostMessages {
-    std::vector<std::string> errors;
-};
-
-VKAPI_ATTR VkBool32 VKAPI_CALL hostCallback(VkDebugUtilsMessageSeverityFlagBitsEXT, VkDebugUtilsMessageTypeFlagsEXT,
-                                            const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
-    static_cast<HostMessages*>(user)->errors.push_back(data->pMessage ? data->pMessage : "");
-    return VK_FALSE;
-}
-
-// What a host engine would have made before handing it to the SDK.
-struct Host {
-    VkInstance instance = VK_NULL_HANDLE;
-    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
-    VkPhysicalDevice physical = VK_NULL_HANDLE;
-    VkDevice device = VK_NULL_HANDLE;
-    VkQueue queue = VK_NULL_HANDLE;
-    uint32_t family = 0;
-    HostMessages messages;
-    bool validation = false;
-    std::string skipReason;
-
-    bool create() {
-        uint32_t count = 0;
-        vkEnumerateInstanceLayerProperties(&count, nullptr);
-        std::vector<VkLayerProperties> layers(count);
-        vkEnumerateInstanceLayerProperties(&count, layers.data());
-        for (const auto& l : layers) validation |= std::strcmp(l.layerName, "VK_LAYER_KHRONOS_validation") == 0;
-        const char* layer = "VK_LAYER_KHRONOS_validation";
-        const char* exts[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME};
-        // Synchronization validation as well as the core checks, as on the SDK's own devices.
-        const VkValidationFeatureEnableEXT syncValidation = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
-        VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
-        features.enabledValidationFeatureCount = 1;
-        features.pEnabledValidationFeatures = &syncValidation;
-        VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-        app.apiVersion = VK_API_VERSION_1_3;
-        VkInstanceCreateInfo ci{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-        ci.pApplicationInfo = &app;
-        ci.enabledLayerCount = validation ? 1 : 0;
-        ci.ppEnabledLayerNames = &layer;
-        ci.enabledExtensionCount = validation ? 2 : 0;
-        ci.ppEnabledExtensionNames = exts;
-        if (validation) ci.pNext = &features;
-        if (vkCreateInstance(&ci, nullptr, &instance) != VK_SUCCESS) {
-            skipReason = "no Vulkan instance";
-            return false;
-        }
-        if (validation) {
-            auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-                vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
-            VkDebugUtilsMessengerCreateInfoEXT mi{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-            mi.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT;
-            mi.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT;
-            mi.pfnUserCallback = hostCallback;
-            mi.pUserData = &messages;
-            create(instance, &mi, nullptr, &messenger);
-        }
-        count = 0;
-        vkEnumeratePhysicalDevices(instance, &count, nullptr);
-        std::vector<VkPhysicalDevice> gpus(count);
-        vkEnumeratePhysicalDevices(instance, &count, gpus.data());
-        for (VkPhysicalDevice gpu : gpus) {
-            VkPhysicalDeviceProperties p;
-            vkGetPhysicalDeviceProperties(gpu, &p);
-            if (p.apiVersion >= VK_API_VERSION_1_3) {
-                physical = gpu;
-                break;
-            }
-        }
-        if (!physical) {
-            skipReason = "no Vulkan 1.3 device";
-            return false;
-        }
-        uint32_t qCount = 0;
-        vkGetPhysicalDeviceQueueFamilyProperties(physical, &qCount, nullptr);
-        std::vector<VkQueueFamilyProperties> families(qCount);
-        vkGetPhysicalDeviceQueueFamilyProperties(physical, &qCount, families.data());
-        for (uint32_t i = 0; i < qCount; ++i)
-            if ((families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) && (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT)) {
-                family = i;
-                break;
-            }
-        VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-        v13.dynamicRendering = VK_TRUE;
-        const float priority = 1.0f;
-        VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-        qci.queueFamilyIndex = family;
-        qci.queueCount = 1;
-        qci.pQueuePriorities = &priority;
-        VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-        dci.pNext = &v13;
-        dci.queueCreateInfoCount = 1;
-        dci.pQueueCreateInfos = &qci;
-        if (vkCreateDevice(physical, &dci, nullptr, &device) != VK_SUCCESS) {
-            skipReason = "vkCreateDevice failed";
-            return false;
-        }
-        vkGetDeviceQueue(device, family, 0, &queue);
-        return true;
-    }
-
-    ~Host() {
-        if (device) vkDestroyDevice(device, nullptr);
-        if (messenger) {
-            auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-                vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
-            destroy(instance, messenger, nullptr);
-        }
-        if (instance) vkDestroyInstance(instance, nullptr);
-    }
-};
-
-// A host command pool (its buffers resettable by begin) with one primary command buffer.
-void makeCommandBuffer(const Host& host, VkCommandPool& pool, VkCommandBuffer& cb) {
-    VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    pci.queueFamilyIndex = host.family;
-    REQUIRE(vkCreateCommandPool(host.device, &pci, nullptr, &pool) == VK_SUCCESS);
-    VkCommandBufferAllocateInfo cai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    cai.commandPool = pool;
-    cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    cai.commandBufferCount = 1;
-    REQUIRE(vkAllocateCommandBuffers(host.device, &cai, &cb) == VK_SUCCESS);
-}
 
 void clearTo(Device& d, TextureHandle t, float value) {
     RenderPassDesc pass;
@@ -162,7 +36,7 @@ void clearTo(Device& d, TextureHandle t, float value) {
 
 TEST_CASE("vulkan: wrapped host device, host command buffer, host objects survive the SDK", "[vulkan]") {
     Host host;
-    if (!host.create()) SFX_SKIP(host.skipReason);
+    if (!host.create(false)) SFX_SKIP(host.skipReason);  // runs without the layer too
     vulkan::ExternalVulkan ext;
     ext.instance = host.instance;
     ext.physicalDevice = host.physical;
@@ -172,9 +46,8 @@ TEST_CASE("vulkan: wrapped host device, host command buffer, host objects surviv
     ext.getInstanceProcAddr = vkGetInstanceProcAddr;
     ext.debugUtilsEnabled = host.validation;
 
-    VkCommandPool pool = VK_NULL_HANDLE;
-    VkCommandBuffer cb = VK_NULL_HANDLE;
-    makeCommandBuffer(host, pool, cb);
+    const VkCommandPool pool = host.pool;
+    const VkCommandBuffer cb = host.cb;
 
     std::vector<std::pair<LogSeverity, std::string>> logged;  // DeviceOptions::log
     {
@@ -238,7 +111,7 @@ TEST_CASE("vulkan: wrapped host device, host command buffer, host objects surviv
             CHECK_FALSE(d.takeValidationMessages().empty());
             // Left untaken, the next one reaches the log callback when the device goes, not stderr.
             createBadSampler();
-            host.messages.errors.clear();
+            host.errors.clear();
         }
         REQUIRE(d.destroyTexture(tex.value()).isOk());
         CHECK(logged.empty());
@@ -259,10 +132,11 @@ TEST_CASE("vulkan: wrapped host device, host command buffer, host objects surviv
     REQUIRE(vkCreateBuffer(host.device, &bci, nullptr, &buffer) == VK_SUCCESS);
     vkDestroyBuffer(host.device, buffer, nullptr);
     vkDestroyCommandPool(host.device, pool, nullptr);
+    host.pool = VK_NULL_HANDLE;
     vkDestroyDevice(host.device, nullptr);  // the layer reports any SDK object still alive
     host.device = VK_NULL_HANDLE;
-    for (const auto& m : host.messages.errors) UNSCOPED_INFO("host validation: " << m);
-    CHECK(host.messages.errors.empty());
+    for (const auto& m : host.errors) UNSCOPED_INFO("host validation: " << m);
+    CHECK(host.errors.empty());
 }
 
 TEST_CASE("vulkan: own device opens, and wrapDevice rejects missing host objects", "[vulkan]") {
@@ -287,12 +161,10 @@ TEST_CASE("vulkan: own device opens, and wrapDevice rejects missing host objects
 // (tests/conformance/test_steady_frames.cpp), with synchronization validation watching.
 TEST_CASE("vulkan: steady frames in a host command buffer make nothing", "[vulkan][steady]") {
     Host host;
-    if (!host.create()) SFX_SKIP(host.skipReason);
+    if (!host.create(false)) SFX_SKIP(host.skipReason);  // runs without the layer too
     vulkan::ExternalVulkan ext{host.instance, host.physical, host.device, host.queue, host.family,
                                vkGetInstanceProcAddr, host.validation};
-    VkCommandPool pool = VK_NULL_HANDLE;
-    VkCommandBuffer cb = VK_NULL_HANDLE;
-    makeCommandBuffer(host, pool, cb);
+    const VkCommandBuffer cb = host.cb;
     VkFence fence = VK_NULL_HANDLE;
     VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     REQUIRE(vkCreateFence(host.device, &fci, nullptr, &fence) == VK_SUCCESS);
@@ -348,9 +220,9 @@ TEST_CASE("vulkan: steady frames in a host command buffer make nothing", "[vulka
             test::checkResidentFlat(d.caps().backend, growth);
             const std::vector<std::string> messages = d.takeValidationMessages();
             for (const std::string& m : messages) UNSCOPED_INFO("validation: " << m);
-            for (const std::string& m : host.messages.errors) UNSCOPED_INFO("host validation: " << m);
+            for (const std::string& m : host.errors) UNSCOPED_INFO("host validation: " << m);
             CHECK(messages.empty());
-            CHECK(host.messages.errors.empty());
+            CHECK(host.errors.empty());
         };
         for (AoTechnique technique : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}) {
             AoSettings settings;
@@ -373,5 +245,4 @@ TEST_CASE("vulkan: steady frames in a host command buffer make nothing", "[vulka
         for (TextureHandle t : {depthTex, outTex, colorTex}) REQUIRE(d.destroyTexture(t).isOk());
     }
     vkDestroyFence(host.device, fence, nullptr);
-    vkDestroyCommandPool(host.device, pool, nullptr);
 }

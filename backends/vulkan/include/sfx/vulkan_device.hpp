@@ -37,8 +37,11 @@ Result<std::unique_ptr<Device>> wrapDevice(const ExternalVulkan& external, const
 // to its own command buffers); reads of textures and buffers refuse while it is set, since they
 // need a submit. Pass VK_NULL_HANDLE to stop as well. Staging memory and descriptor sets used by
 // a host command buffer are released at the next setCommandBuffer call, so the host must have
-// finished executing the previous one by then. InvalidArgument when `device` is not Vulkan.
-Status setCommandBuffer(Device& device, VkCommandBuffer commandBuffer);
+// finished executing the previous one by then. A host that attaches again before that — a
+// second window in the same frame's command buffer, with a host pass between two effects —
+// passes previousFinished = false: what the earlier windows used is then kept until a later
+// call with true. InvalidArgument when `device` is not Vulkan.
+Status setCommandBuffer(Device& device, VkCommandBuffer commandBuffer, bool previousFinished = true);
 
 // ---- Host images in, SDK images out (vulkan_external_images.cpp; docs/integration.md, "Host
 // images and the state contract") ---------------------------------------------------------------

@@ -1,0 +1,21 @@
+# cmake -DINPUT=<file.spv> -DOUTPUT=<file.hpp> -DNAME=<identifier> -P embed_spirv.cmake
+# Writes a header holding the SPIR-V words of INPUT as `inline constexpr uint32_t NAME[]`.
+file(READ ${INPUT} hex HEX)
+string(LENGTH "${hex}" length)
+set(words "")
+set(i 0)
+while(i LESS length)
+  # SPIR-V is little-endian 32-bit words: reverse the four bytes of each.
+  string(SUBSTRING "${hex}" ${i} 8 word)
+  string(SUBSTRING "${word}" 0 2 b0)
+  string(SUBSTRING "${word}" 2 2 b1)
+  string(SUBSTRING "${word}" 4 2 b2)
+  string(SUBSTRING "${word}" 6 2 b3)
+  string(APPEND words "0x${b3}${b2}${b1}${b0}u,")
+  math(EXPR i "${i} + 8")
+  math(EXPR column "${i} % 64")
+  if(column EQUAL 0)
+    string(APPEND words "\n")
+  endif()
+endwhile()
+file(WRITE ${OUTPUT} "// Generated from ${INPUT} by embed_spirv.cmake.\n#pragma once\n#include <cstdint>\ninline constexpr uint32_t ${NAME}[] = {\n${words}};\n")
