@@ -2,6 +2,7 @@
 // included), settings changes and tier changes, to find what a short test cannot: slow leaks
 // of host memory or device objects, and validation errors on rare transitions.
 //   soak [--backends vulkan,gles,gl-egl,gl-osmesa] [--frames 10000] [--progress 1000] [--no-validation]
+//        [--memory-report-only]
 // Every frame: AO (technique cycling) and motion blur (settings cycling) dispatched and flushed.
 // Every kFramesPerChange frames the size changes; the tier changes every kSizes.size() changes
 // (both effects are made again). Checks per backend:
@@ -10,6 +11,9 @@
 //   - Device::stats() live counts are what they were before the first frame once everything is
 //     destroyed, and the backend's caches (descriptor sets, staging) do not grow after warm-up;
 //   - no validation message (validation on unless --no-validation).
+// --memory-report-only prints the growth without checking it: for a run whose resident memory
+// includes the API's validation layers, which grow on their own under object churn (Vulkan's:
+// docs/robustness.md, "Soak"); tools/run_soak.sh checks memory in a run without them.
 // Exit 0 when every backend passed, 1 when one failed, 2 on bad arguments.
 #include <unistd.h>
 
@@ -25,9 +29,12 @@
 
 #include "sfx/ao.hpp"
 #include "sfx/backends.hpp"
+#include "sfx/depth.hpp"
 #include "sfx/half.hpp"
 #include "sfx/motion_blur.hpp"
 #include "sfx/tiers.hpp"
+#include "sfx_shaders.hpp"
+#include "sfx_shared_mb.h"
 
 using namespace sfx;
 
@@ -125,7 +132,7 @@ struct Effects {
 };
 
 // One backend's soak; false when a check failed.
-bool soak(const BackendConfig& config, int frames, int progressEvery, bool validation) {
+bool soak(const BackendConfig& config, int frames, int progressEvery, bool validation, bool checkMemory) {
     const std::string name = toString(config);
     DeviceOptions options;
     options.validation = validation;
@@ -240,20 +247,117 @@ bool soak(const BackendConfig& config, int frames, int progressEvery, bool valid
     double growth = 0;
     if (frames > warmup && rssWarm > 0) {
         growth = (rssPeak - rssWarm) / rssWarm * 100.0;
-        if (growth > 1.0) fail(frames, "resident memory grew " + std::to_string(growth) + "% after warm-up (allowed 1%)");
+        if (growth > 1.0 && checkMemory) fail(frames, "resident memory grew " + std::to_string(growth) + "% after warm-up (allowed 1%)");
     }
-    std::printf("soak %s: %s, %d frames in %.1f s (%.2f ms/frame), resident peak in the last warm-up cycle %.1f MiB, after it %.1f MiB "
-                "(%+.2f%%), at end %.1f MiB; live objects at start [%s], at end [%s]; %zu validation messages\n",
-                name.c_str(), ok ? "PASS" : "FAIL", frames, secs, 1000.0 * secs / frames, rssWarm, rssPeak, growth,
+    std::printf("soak %s: %s, %d frames in %.1f s (%.2f ms/frame), validation %s, resident peak in the last warm-up cycle %.1f MiB, "
+                "after it %.1f MiB (%+.2f%%%s), at end %.1f MiB; live objects at start [%s], at end [%s]; %zu validation messages\n",
+                name.c_str(), ok ? "PASS" : "FAIL", frames, secs, 1000.0 * secs / frames, validation ? "on" : "off", rssWarm, rssPeak,
+                growth, checkMemory ? "" : ", not checked: --memory-report-only",
                 rssEnd, counts(start.s).c_str(), counts(end).c_str(), messages.size());
     return ok;
+}
+
+// --churn KIND N: one object kind made and destroyed N times on one backend, resident memory
+// printed every tenth; to tell which layer keeps memory when the soak's effects are made again.
+//   ao, mb: the effect created at 320x180, dispatched once, flushed, destroyed;
+//   program: the motion blur reconstruct program created and destroyed;
+//   pipeline: its graphics pipeline created and destroyed (the program kept);
+//   program+pipeline: both, as an effect's re-creation does (KIND:PROGRAM another program);
+//   depth:LEVELS: sfx::LinearDepth with LEVELS pyramid levels from hardware depth.
+int churn(const BackendConfig& config, const std::string& kindAndProgram, int n, bool validation) {
+    // KIND[:PROGRAM] for program, pipeline and program+pipeline (default mb_reconstruct).
+    const size_t colon = kindAndProgram.find(':');
+    const std::string kind = kindAndProgram.substr(0, colon);
+    const std::string programName = colon == std::string::npos ? gen::mb_reconstruct::kName : kindAndProgram.substr(colon + 1);
+    const bool isReconstruct = programName == gen::mb_reconstruct::kName;
+    const Format passFormat = programName.rfind("mb_", 0) == 0 ? (programName == "mb_pack" ? Format::RGBA16F : isReconstruct ? Format::RGBA16F : Format::RG16F)
+                              : programName.rfind("ao_", 0) == 0 ? Format::R16F
+                                                                 : Format::R32F;
+    DeviceOptions options;
+    options.validation = validation;
+    Result<std::unique_ptr<Device>> opened = openDevice(config, options);
+    if (!opened) {
+        std::printf("churn %s: skipped, %s\n", toString(config).c_str(), opened.status().toString().c_str());
+        return 0;
+    }
+    Device& dev = *opened.value();
+    const Tier tier = tiers::choose(dev.caps()).value().tier;
+    const TierProfile& profile = tiers::profile(tier);
+    const Size s{320, 180};
+    HostTargets host(dev);
+    if (Status st = host.make(s); !st) return std::printf("churn: %s\n", st.toString().c_str()), 1;
+    Result<const CompiledProgram*> found = shaders::find(kind == "depth" ? gen::mb_reconstruct::kName : programName.c_str(), tier);
+    if (!found) return std::printf("churn: %s\n", found.status().toString().c_str()), 2;
+    const CompiledProgram& compiled = *found.value();
+    ProgramHandle kept;
+    if (kind == "pipeline") kept = dev.createProgram(compiled).value();
+    const DeviceStats start = dev.stats();
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int i = 0; i < n; ++i) {
+        Status st;
+        if (kind == "ao") {
+            auto ao = AmbientObscurance::create(dev, {s.w, s.h, profile, AoSettings{}, DepthKind::Hardware});
+            if (!ao) return std::printf("churn: %s\n", ao.status().toString().c_str()), 1;
+            AoInputs in;
+            in.depth = DepthSource{host.depth, DepthKind::Linear, camera(s)};
+            in.output = host.aoOut;
+            st = ao.value()->dispatch(in);
+        } else if (kind == "mb") {
+            auto mb = MotionBlur::create(dev, {s.w, s.h, profile, Format::RGBA16F, DepthKind::Hardware});
+            if (!mb) return std::printf("churn: %s\n", mb.status().toString().c_str()), 1;
+            MotionBlurInputs in;
+            in.color = host.color;
+            in.depth = DepthSource{host.depth, DepthKind::Linear, camera(s)};
+            in.velocity = host.velocity;
+            MotionBlurSettings settings;
+            settings.maxRadiusPx = 8;
+            st = mb.value()->dispatch(in, settings);
+        } else if (kind == "depth") {  // depth:LEVELS, the linear depth pyramid AO builds
+            const uint32_t levels = colon == std::string::npos ? 4u : uint32_t(std::atoi(programName.c_str()));
+            auto depth = LinearDepth::create(dev, {s.w, s.h, tier, levels, DepthKind::Hardware});
+            if (!depth) return std::printf("churn: %s\n", depth.status().toString().c_str()), 1;
+            st = depth.value()->dispatch(DepthSource{host.depth, DepthKind::Linear, camera(s)});
+        } else if (kind == "program" || kind == "program+pipeline" || kind == "pipeline") {
+            ProgramHandle program = kept;
+            if (program.isNull()) program = dev.createProgram(compiled).value();
+            if (kind != "program") {
+                GraphicsPipelineDesc pd;
+                pd.program = program;
+                pd.colorFormats = {passFormat};
+                if (isReconstruct) pd.constants = {{SFX_MB_SC_PAIRS, 4}};
+                Result<PipelineHandle> pl = dev.createGraphicsPipeline(pd);
+                if (!pl) return std::printf("churn: %s\n", pl.status().toString().c_str()), 1;
+                (void)dev.destroyPipeline(pl.value());
+            }
+            if (kept.isNull()) (void)dev.destroyProgram(program);
+            // Something to submit: lavapipe frees a destroyed pipeline at the next submit.
+            const float z = 1.0f + float(i % 7);
+            std::vector<float> depth(size_t(s.w) * s.h, z);
+            st = dev.writeTexture(host.depth, 0, depth.data(), depth.size() * sizeof(float));
+        } else {
+            std::fprintf(stderr, "soak: --churn is '%s'; allowed ao, mb, depth[:LEVELS], program, pipeline, program+pipeline[:PROGRAM]\n", kind.c_str());
+            return 2;
+        }
+        if (!st) return std::printf("churn: %s\n", st.toString().c_str()), 1;
+        if (Status f = dev.flush(); !f) return std::printf("churn: %s\n", f.toString().c_str()), 1;
+        for (const std::string& m : dev.takeValidationMessages()) std::printf("churn: validation: %s\n", m.c_str());
+        if ((i + 1) % std::max(1, n / 10) == 0)
+            std::printf("churn %s %s: %d / %d, %.1f s, resident %.2f MiB\n", toString(config).c_str(), kind.c_str(), i + 1,
+                        n, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), residentMiB());
+        std::fflush(stdout);
+    }
+    const DeviceStats end = dev.stats();
+    std::printf("churn: live objects at start [%s], at end [%s]\n", counts(start).c_str(), counts(end).c_str());
+    if (!kept.isNull()) (void)dev.destroyProgram(kept);
+    return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
     int frames = 10000, progress = 1000;
-    bool validation = true;
+    bool validation = true, checkMemory = true;
+    std::string churnKind;
     std::vector<BackendConfig> backends = compiledBackends();
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -264,6 +368,10 @@ int main(int argc, char** argv) {
                 std::fprintf(stderr, "soak: --frames is '%s'; allowed a positive integer\n", argv[i]);
                 return 2;
             }
+        } else if (a == "--churn" && hasValue) {
+            churnKind = argv[++i];
+        } else if (a == "--memory-report-only") {
+            checkMemory = false;
         } else if (a == "--no-validation") {
             validation = false;  // to tell the API's validation layers from the driver in a finding
         } else if (a == "--progress" && hasValue) {
@@ -281,11 +389,17 @@ int main(int argc, char** argv) {
             }
         } else {
             std::fprintf(stderr, "usage: soak [--backends vulkan,gles,gl-egl,gl-osmesa] [--frames 10000] [--progress 1000]\n"
-                                 "            [--no-validation]\n");
+                                 "            [--no-validation] [--memory-report-only]\n"
+                                 "       soak --backends B --churn ao|mb|depth[:LEVELS]|program|pipeline|program+pipeline[:PROGRAM] --frames N\n");
             return a == "--help" ? 0 : 2;
         }
     }
+    if (!churnKind.empty()) {
+        int rc = 0;
+        for (const BackendConfig& c : backends) rc = std::max(rc, churn(c, churnKind, frames, validation));
+        return rc;
+    }
     bool ok = true;
-    for (const BackendConfig& c : backends) ok = soak(c, frames, progress, validation) && ok;
+    for (const BackendConfig& c : backends) ok = soak(c, frames, progress, validation, checkMemory) && ok;
     return ok ? 0 : 1;
 }

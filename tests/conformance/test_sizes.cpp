@@ -92,6 +92,67 @@ TEST_CASE("sizes: motion blur tiles at 1x1, one row, one column and odd sizes ma
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
+TEST_CASE("sizes: at 4320 rows the tier's default motion blur radius caps at the shaders' limit", "[sizes][motion_blur]") {
+    // The tier's radius is defined at 720 rows (10 or 18 px), 60 or 108 px at 4320: the high
+    // tier's exceeds the 64 px the shaders hold. The default caps and says so; a radius the
+    // caller chose that scales beyond the limit stays a named error.
+    const uint32_t rows = std::min(4320u, test::device().caps().limits.maxTextureSize);
+    const TierProfile& profile = test::tierProfile();
+    const double scaled = std::round(double(profile.mbMaxRadiusPx) * double(rows) / 720.0);
+    const MotionBlurParams p = resolveMotionBlur(profile, {}, rows).value();
+    INFO(test::label() << ": tier radius " << profile.mbMaxRadiusPx << " px at 720 rows, " << scaled << " px at " << rows);
+    if (scaled > 64.0) {
+        CHECK(p.radiusCapped);
+        CHECK(p.radiusPx == 64u);
+        CHECK(p.scaledRadiusPx == scaled);
+    } else {
+        CHECK_FALSE(p.radiusCapped);
+        CHECK(p.radiusPx == uint32_t(scaled));
+    }
+    // The same radius given explicitly is refused, naming the field.
+    MotionBlurSettings explicitRadius;
+    explicitRadius.maxRadiusPx = 18.0f;
+    const Result<MotionBlurParams> refused = resolveMotionBlur(profile, explicitRadius, 4320);
+    INFO(refused.status().toString());
+    CHECK(refused.status().code() == StatusCode::InvalidArgument);
+    CHECK(refused.status().message().find("MotionBlurSettings.maxRadiusPx") != std::string::npos);
+
+    // A narrow output with the full height, default settings: dispatch runs and matches the
+    // reference at the capped radius, and the plan names the cap.
+    const uint32_t w = 6;
+    auto mb = MotionBlur::create(test::device(), {w, rows, profile, Format::RGBA16F, DepthKind::Linear});
+    REQUIRE(mb.isOk());
+    const std::string tilePass = mb.value()->plan().passes.at(mb.value()->plan().passes.size() - 3).name;
+    INFO(tilePass);
+    CHECK((tilePass.find("capped at the shaders' 64 px limit") != std::string::npos) == p.radiusCapped);
+    if (drawsNothing()) return;
+    // Colour a slow vertical sine (period 1500 rows): a sample one row off the reference's
+    // changes it by under 2e-3, while the blur over +-64 rows (and the wrong radius) moves it by
+    // more. One depth, one vertical velocity beyond the radius: every pixel clamps to it alike.
+    // (A velocity of (3, 200) instead puts 4% of channels 3-5e-3 off the reference on the high
+    // tier at 60 and 64 px, not at 32: samples across the 6 columns, not isolated yet.)
+    ColorGrid c(w, rows);
+    Grid z(w, rows, 4.0);
+    VelocityGrid vel(w, rows, {0.0, 200.0});
+    for (uint32_t y = 0; y < rows; ++y)
+        for (uint32_t x = 0; x < w; ++x) {
+            const double s = std::sin(6.283185307179586 * double(y) / 1500.0);
+            c.values[y * w + x] = {roundToHalf(0.5 + 0.4 * s), roundToHalf(0.5 - 0.3 * s), roundToHalf(0.25 + 0.01 * x), 1.0};
+        }
+    const ColorGrid gpu = test::runMotionBlur(test::device(), profile, c, z, &vel, {});
+    const double maxDepth = makeDepthReconstruction(test::motionBlurTestCamera(w, rows), w, rows).value().maxDepth;
+    const ColorGrid ref = motionBlur(c, z, vel, p, maxDepth).color;
+    size_t far = 0;
+    for (size_t i = 0; i < ref.values.size(); ++i)
+        for (int ch = 0; ch < 4; ++ch) {
+            REQUIRE(std::isfinite(gpu.values[i][ch]));
+            if (std::abs(gpu.values[i][ch] - ref.values[i][ch]) > 2e-3) ++far;
+        }
+    INFO("channels beyond 2e-3: " << far);
+    CHECK(double(far) <= 0.03 * double(ref.values.size() * 4));
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
 TEST_CASE("sizes: above the device's maximum texture size is a named error", "[sizes]") {
     Device& d = test::device();
     const uint32_t tooWide = d.caps().limits.maxTextureSize + 1;
@@ -240,11 +301,8 @@ TEST_CASE("sizes: 7680x4320 (or the device's maximum) runs every effect once wit
         in.color = tex.color;
         in.depth = DepthSource{tex.depth, DepthKind::Linear, camera};
         in.velocity = tex.velocity;
-        // The tier's radius in output pixels: scaled to 4320 rows (from 720) it would be beyond
-        // the 64 px limit, which is InvalidArgument (MotionBlurSettings.maxRadiusPx).
-        MotionBlurSettings s;
-        s.referenceRows = 0;
-        SFX_REQUIRE_OK(mb.value()->dispatch(in, s));
+        // Default settings: the tier's radius scaled to the height, capped at the 64 px limit.
+        SFX_REQUIRE_OK(mb.value()->dispatch(in, {}));
         SFX_REQUIRE_OK(dev.flush());
         SFX_REQUIRE_OK(readWhole(dev, mb.value()->output(), &format, raw));
         CHECK(allFinite(format, raw));

@@ -38,8 +38,11 @@ inline constexpr float kMbMinSoftDepthExtent = 1e-6f;
 struct MotionBlurSettings {
     // Maximum blur radius in pixels at referenceRows rows of output; the radius used is
     // round(maxRadiusPx * height / referenceRows), at least 1, so the look holds at any size.
-    // 0 = the tier's (TierProfile::mbMaxRadiusPx: 10 px current, 18 px high); else (0, 64] pixels, and the scaled radius
-    // must stay <= 64 (SFX_MB_MAX_RADIUS_LIMIT_PX).
+    // 0 = the tier's (TierProfile::mbMaxRadiusPx: 10 px current, 18 px high), whose scaled
+    // radius is capped at 64 px (SFX_MB_MAX_RADIUS_LIMIT_PX, the shaders' limit; from 2560 rows
+    // at 18 px, 4608 at 10 px) and MotionBlurParams::radiusCapped says so; else (0, 64] pixels,
+    // and this explicit radius scaled must stay <= 64 (InvalidArgument otherwise: a radius the
+    // caller chose is never changed silently).
     float maxRadiusPx = 0.0f;
     // Rows at which maxRadiusPx is defined; 0 = no scaling (maxRadiusPx is in output pixels).
     // [0, 16384]; default 720.
@@ -67,6 +70,10 @@ struct MotionBlurParams {
     uint32_t pairs = 0;         // (taps - 1) / 2 mirrored sample pairs
     uint32_t jitterSize = 0;    // 2 = checkerboard, 4 = 4x4 randomised
     uint32_t radiusPx = 0;      // k: clamp radius and tile size, output pixels, [1, 64]
+    // The tier-default radius scaled to the output height exceeded the 64 px limit and
+    // radiusPx is that limit; scaledRadiusPx is the radius before the cap (0 when not capped).
+    bool radiusCapped = false;
+    double scaledRadiusPx = 0;
     double softDepthExtent = 0;
     double centreWeight = 0;
     double exposure = 0;

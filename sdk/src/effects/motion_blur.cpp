@@ -77,7 +77,15 @@ Result<MotionBlurParams> resolveMotionBlur(const TierProfile& profile, const Mot
     p.jitterSize = profile.mbJitterSize;
     const double base = s.maxRadiusPx != 0.0f ? double(s.maxRadiusPx) : double(profile.mbMaxRadiusPx);
     const double scaled = s.referenceRows == 0 ? base : base * double(height) / double(s.referenceRows);
-    const double radius = std::max(1.0, std::round(scaled));
+    double radius = std::max(1.0, std::round(scaled));
+    // The tier's default is a look defined at referenceRows; at very tall outputs it is held
+    // at the shaders' limit rather than refused (the plan names the cap). A radius the
+    // caller chose is refused instead, since capping it would change what was asked for.
+    if (radius > limit && s.maxRadiusPx == 0.0f) {
+        p.radiusCapped = true;
+        p.scaledRadiusPx = radius;
+        radius = limit;
+    }
     if (radius > limit)
         return invalidArgument("MotionBlurSettings.maxRadiusPx", std::to_string(s.maxRadiusPx) + " (" + std::to_string(radius) +
                                    " px at " + std::to_string(height) + " rows)",
@@ -329,7 +337,11 @@ Plan MotionBlur::plan(const MotionBlurSettings& settings) const {
     Result<MotionBlurParams> resolved = resolveMotionBlur(desc_.profile, settings, std::max(desc_.height, 1u));
     const uint32_t radius = resolved ? resolved->radiusPx : 1;
     const uint32_t tw = tilesFor(desc_.width, radius), th = tilesFor(desc_.height, radius);
-    const std::string tile = " (" + std::to_string(radius) + "x" + std::to_string(radius) + " tiles)";
+    std::string tile = " (" + std::to_string(radius) + "x" + std::to_string(radius) + " tiles";
+    if (resolved && resolved->radiusCapped)
+        tile += "; the tier's default radius, " + num(resolved->scaledRadiusPx) + " px at " + std::to_string(desc_.height) +
+                " rows, capped at the shaders' 64 px limit";
+    tile += ")";
     plan.passes.push_back({"motion_blur", "pack velocity + depth", desc_.width, desc_.height});
     plan.passes.push_back({"motion_blur", "tile max" + tile, tw, th});
     plan.passes.push_back({"motion_blur", "neighbour max 3x3", tw, th});
