@@ -29,8 +29,11 @@ void main() {
     float alpha = clamp(draw.color.a, 0.0, 1.0);
     vec4 premultiplied = vec4(draw.color.rgb * alpha, alpha);
     uvec4 lo, hi;
-    oitPackNode(premultiplied, -vViewPosition.z, normalize(vNormal), gl_FrontFacing, uint(draw.drawId), vPrimitive, next,
-                lo, hi);
+    // Front-facing means the authored normal faces the camera (the paper's W(p)), whatever the
+    // winding or the API's y direction: the same rule as the reference's.
+    vec3 normal = normalize(vNormal);
+    bool front = dot(normal, vViewPosition) < 0.0;
+    oitPackNode(premultiplied, -vViewPosition.z, normal, front, uint(draw.drawId), vPrimitive, next, lo, hi);
     pool.nodes[2u * index] = lo;
     pool.nodes[2u * index + 1u] = hi;
 }

@@ -27,8 +27,38 @@ SFX_BLOCK_END(draw)
 SFX_BLOCK(OitResolveParams, 4)
     SFX_M_INT(maxLayers)  // K: fragments kept exactly per pixel, [1, SFX_OIT_MAX_KEPT_LAYERS]
     SFX_M_INT(capacity)   // nodes in the pool: no list walk takes more steps than this
+    SFX_M_INT(pad0) SFX_M_INT(pad1)
+    // The compressing resolve (oit_resolve_compress.frag) only: the opaque depth's linearisation
+    // (sfxLinearizeDepth) and the range [zNear, zFar] depths are normalised over.
+    SFX_M_FLOAT(ndcScale) SFX_M_FLOAT(denomOffset) SFX_M_FLOAT(numerator) SFX_M_FLOAT(maxDepth)
+    SFX_M_FLOAT(zNear) SFX_M_FLOAT(zFar) SFX_M_FLOAT(pad2) SFX_M_FLOAT(pad3)
 SFX_BLOCK_END(resolve)
 #endif
+
+// Specialisation constants of the compressing resolve: M, and whether only the back half is
+// searched for the node to drop (SFX_OIT_SC_* ids, plain macros for both languages).
+#define SFX_OIT_SC_COMPRESS_NODES 0
+#define SFX_OIT_SC_COMPRESS_BACK_HALF 1
+
+// The compressed lists (storage buffer OitCompressed): SFX_OIT_COMPRESSED_WORDS words per pixel,
+// pixel (x, y) at word (y * width + x) * SFX_OIT_COMPRESSED_WORDS: the x, y and z of the packed
+// texel of sfx_shared_oit.h (16-bit depths of nodes 0-3, 8-bit opacities). 12 bytes per pixel.
+SFX_CONST(int, SFX_OIT_COMPRESSED_WORDS, 3)
+
+// Opacity-based AO through the layers (oit_ao.frag, oit_ao_compressed.frag).
+#if defined(__cplusplus) || defined(SFX_WANT_OIT_AO_PARAMS)
+SFX_BLOCK(OitAoParams, 4)
+    SFX_M_VEC4(projInfo)
+    SFX_M_FLOAT(radius) SFX_M_FLOAT(intensity) SFX_M_FLOAT(contrast) SFX_M_FLOAT(bias)
+    SFX_M_FLOAT(epsilon) SFX_M_FLOAT(pixelsPerUnit) SFX_M_FLOAT(maxRadiusPx) SFX_M_FLOAT(maxDepth)
+    SFX_M_FLOAT(spiralTurns) SFX_M_FLOAT(ndcScale) SFX_M_FLOAT(denomOffset) SFX_M_FLOAT(numerator)
+    SFX_M_FLOAT(zNear) SFX_M_FLOAT(zFar) SFX_M_INT(capacity) SFX_M_INT(pad0)
+SFX_BLOCK_END(ao)
+#endif
+// Its specialisation constants: the technique (0 Alchemy, 1 Scalable), taps, mirrored pairs.
+#define SFX_OIT_SC_AO_TECHNIQUE 0
+#define SFX_OIT_SC_AO_SAMPLES 1
+#define SFX_OIT_SC_AO_MIRRORED 2
 
 // The node pool's fixed header (storage buffer OitPool, before the nodes):
 //   count     nodes handed out by the fill's atomicAdd this frame, stored or not (> capacity:
@@ -38,6 +68,8 @@ SFX_CONST(int, SFX_OIT_POOL_HEADER_BYTES, 16)
 
 #ifdef __cplusplus
 static_assert(sizeof(OitDrawParams) == 224 && offsetof(OitDrawParams, drawId) == 208);
+static_assert(sizeof(OitResolveParams) == 48 && offsetof(OitResolveParams, ndcScale) == 16);
+static_assert(sizeof(OitAoParams) == 80 && offsetof(OitAoParams, radius) == 16 && offsetof(OitAoParams, capacity) == 72);
 }  // namespace sfx::shared
 #endif
 

@@ -185,7 +185,8 @@ Result<std::unique_ptr<SceneRender>> SceneRender::create(Device& device, const t
     }
     if (!impl->transparent.empty() && options.oit) {
         Result<std::unique_ptr<SceneTransparency>> t = SceneTransparency::create(
-            device, tier, file, impl->transparent, options.transparentDrawOrder, impl->width, impl->height, options.maxLayers);
+            device, tier, file, impl->transparent, options.transparentDrawOrder, impl->width, impl->height, options.maxLayers,
+            LayerAoOptions{options.ao, options.aoRadius, options.nodes});
         if (!t) return t.status();
         impl->transparency = std::move(t.value());
     }
@@ -314,8 +315,19 @@ Result<RenderResult> SceneRender::render() {
         if (m.transparency) {
             const glm::dmat4 view = m.scene.view();
             RenderResult::OpaqueInputs kept;
+            // With AO through the layers the opaque picture is shaded again with its opaque visibility.
+            const ReadTargets& targets = t.value();
+            auto recomposite = [&](const std::vector<float>& visibility) {
+                ReadTargets shaded = targets;
+                shaded.visibility = visibility;
+                return composite(shaded, m.width, m.height, m.file.background);
+            };
+            std::optional<io::Image> layerAo;
+            if (m.transparency->aoThroughLayers()) layerAo.emplace();
             SFX_TRY(m.transparency->render(g->depth, view, g->camera.projection, result.color, result.stats,
-                                           m.options.keepOpaqueInputs ? &kept.color : nullptr));
+                                           m.options.keepOpaqueInputs ? &kept.color : nullptr, recomposite,
+                                           layerAo ? &*layerAo : nullptr));
+            if (layerAo) result.ao = std::move(layerAo);
             if (m.options.keepOpaqueInputs) {
                 kept.storedDepth.resize(size_t(m.width) * m.height);
                 SFX_TRY(m.device.readTexture(g->depth, 0, kept.storedDepth.data(), kept.storedDepth.size() * sizeof(float)));
@@ -325,7 +337,7 @@ Result<RenderResult> SceneRender::render() {
                 result.opaque = std::move(kept);
             }
         }
-        if (m.ao) {
+        if (m.ao && !result.ao) {
             io::Image ao(m.width, m.height, 1);
             ao.pixels = t->visibility;
             result.ao = std::move(ao);

@@ -12,7 +12,7 @@ namespace sfx::render {
 Result<std::unique_ptr<SceneTransparency>> SceneTransparency::create(Device& device, const tiers::TierChoice& tier,
                                                                      const scene::Scene& file, const std::vector<size_t>& objects,
                                                                      const std::vector<uint32_t>& drawOrder, uint32_t width,
-                                                                     uint32_t height, uint32_t maxLayers) {
+                                                                     uint32_t height, uint32_t maxLayers, const LayerAoOptions& layerAo) {
     std::vector<uint32_t> order = drawOrder;
     if (order.empty()) {
         order.resize(objects.size());
@@ -37,6 +37,20 @@ Result<std::unique_ptr<SceneTransparency>> SceneTransparency::create(Device& dev
     desc.colorFormat = Format::RGBA16F;
     desc.depthFormat = Format::D32F;  // the samples' raster pass depth attachment
     desc.quality = maxLayers > keptLayers(TransparencyQuality::Standard) ? TransparencyQuality::High : TransparencyQuality::Standard;
+    // AO through the layers where the tier keeps layers and the technique has an opacity-based
+    // form (Alchemy, Scalable): the taps read the lists compressed to M nodes.
+    if (tier.profile.abufferOit && layerAo.technique &&
+        (*layerAo.technique == AoTechnique::Alchemy || *layerAo.technique == AoTechnique::Scalable)) {
+        AoSettings s;
+        s.technique = *layerAo.technique;
+        s.radius = layerAo.radius;
+        Result<AoConfig> c = resolveAoConfig(s, tier.profile, 1);
+        if (!c) return c.status();
+        desc.compressedNodes = layerAo.nodes;
+        desc.ao.enabled = true;
+        desc.ao.config = c.value();
+        desc.ao.occluders = TransparencyAoOccluders::Compressed;
+    }
     Result<std::unique_ptr<Transparency>> effect = Transparency::create(device, desc);
     if (!effect) return effect.status();
     t->effect_ = std::move(effect.value());
@@ -110,25 +124,38 @@ std::vector<PlanLine> SceneTransparency::plan() const {
                      "non-indexed TransparentVertex triangle lists, one per mesh the translucent objects use"});
     lines.push_back({K::Host, "transparency", "upload + read back", width_, height_, 0,
                      "the composited opaque picture up to the effect, its output back (the composite runs on the host)"});
-    lines.push_back({K::Omitted, "transparency", "shading of layers", 0, 0, 0,
-                     "translucent objects are flat: colour x opacity, no lighting and no AO on them (opacity-based AO not built)"});
+    if (effect_->aoThroughLayers()) {
+        lines.push_back({K::Host, "transparency", "recomposite with AO through layers", width_, height_, 0,
+                         "the opaque picture shaded again with the layer AO's opaque visibility (translucent occluders by "
+                         "opacity), composited in one more frame; --ao-out gets the visibility blended through the layers"});
+        lines.push_back({K::Omitted, "transparency", "shading of layers", 0, 0, 0,
+                         "translucent layers are flat colour x opacity: their own AO is in the blended AO buffer, not in the picture"});
+    } else {
+        lines.push_back({K::Omitted, "transparency", "shading of layers", 0, 0, 0,
+                         effect_->usesAbuffer()
+                             ? "translucent objects are flat: colour x opacity; no AO through layers (--ao off or crease)"
+                             : "translucent objects are flat: colour x opacity; AO uses the opaque layer only (current tier keeps no layers)"});
+    }
     return lines;
 }
 
 Status SceneTransparency::render(TextureHandle opaqueDepth, const glm::dmat4& view, const glm::dmat4& projection, io::Image& color,
-                                 RenderStats& stats, io::Image* uploaded) {
+                                 RenderStats& stats, io::Image* uploaded, const Recomposite& recomposite, io::Image* layerAo) {
     const size_t pixels = size_t(width_) * height_;
     std::vector<uint16_t> halves(pixels * 4);
-    for (size_t i = 0; i < pixels; ++i) {
-        for (int c = 0; c < 3; ++c) halves[i * 4 + size_t(c)] = floatToHalf(color.pixels[i * 3 + size_t(c)]);
-        halves[i * 4 + 3] = floatToHalf(1.0f);
-    }
-    if (uploaded) {
-        *uploaded = io::Image(width_, height_, 3);
-        for (size_t i = 0; i < pixels; ++i)
-            for (size_t c = 0; c < 3; ++c) uploaded->pixels[i * 3 + c] = halfToFloat(halves[i * 4 + c]);
-    }
-    SFX_TRY(device_.writeTexture(opaqueColor_, 0, halves.data(), halves.size() * sizeof(uint16_t)));
+    auto upload = [&](const io::Image& picture) -> Status {
+        for (size_t i = 0; i < pixels; ++i) {
+            for (int c = 0; c < 3; ++c) halves[i * 4 + size_t(c)] = floatToHalf(picture.pixels[i * 3 + size_t(c)]);
+            halves[i * 4 + 3] = floatToHalf(1.0f);
+        }
+        if (uploaded) {
+            *uploaded = io::Image(width_, height_, 3);
+            for (size_t i = 0; i < pixels; ++i)
+                for (size_t c = 0; c < 3; ++c) uploaded->pixels[i * 3 + c] = halfToFloat(halves[i * 4 + c]);
+        }
+        return device_.writeTexture(opaqueColor_, 0, halves.data(), halves.size() * sizeof(uint16_t));
+    };
+    SFX_TRY(upload(color));
 
     std::vector<TransparentDraw> draws;
     for (const Object& o : objects_) {
@@ -159,6 +186,23 @@ Status SceneTransparency::render(TextureHandle opaqueDepth, const glm::dmat4& vi
         stats.transparencyFrames = frame + 1;
         if (frame == 0) stats.firstFrameDropped = s.dropped;
         if (s.dropped == 0) break;
+    }
+    if (!effect_->aoOutput().isNull()) {
+        std::vector<uint16_t> ao(pixels * 2);
+        SFX_TRY(device_.readTexture(effect_->aoOutput(), 0, ao.data(), ao.size() * sizeof(uint16_t)));
+        std::vector<float> opaqueVisibility(pixels);
+        for (size_t i = 0; i < pixels; ++i) opaqueVisibility[i] = halfToFloat(ao[i * 2 + 1]);
+        if (layerAo) {
+            *layerAo = io::Image(width_, height_, 1);
+            for (size_t i = 0; i < pixels; ++i) layerAo->pixels[i] = halfToFloat(ao[i * 2]);
+        }
+        if (recomposite) {
+            // The same lists, over the opaque picture shaded with the layer AO.
+            SFX_TRY(upload(recomposite(opaqueVisibility)));
+            SFX_TRY(effect_->render(in));
+            SFX_TRY(device_.flush());
+            stats.transparencyFrames += 1;
+        }
     }
     SFX_TRY(device_.readTexture(effect_->output(), 0, halves.data(), halves.size() * sizeof(uint16_t)));
     for (size_t i = 0; i < pixels; ++i)

@@ -6,13 +6,23 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "sfx/oit.hpp"
 #include "sfx/scene_render.hpp"
 
 namespace sfx::render {
+
+// AO through the translucent layers (high tier, --ao alchemy or scalable): the effect's
+// opacity-based AO with taps reading the lists compressed to `nodes` nodes.
+struct LayerAoOptions {
+    std::optional<AoTechnique> technique;  // nullopt or Crease: none
+    float radius = 0.5f;
+    uint32_t nodes = 4;  // M, [1, 4]
+};
 
 class SceneTransparency {
 public:
@@ -22,7 +32,8 @@ public:
     // order). `maxLayers` is 16 or 32 (validateOptions).
     static Result<std::unique_ptr<SceneTransparency>> create(Device& device, const tiers::TierChoice& tier, const scene::Scene& file,
                                                               const std::vector<size_t>& objects, const std::vector<uint32_t>& drawOrder,
-                                                              uint32_t width, uint32_t height, uint32_t maxLayers);
+                                                              uint32_t width, uint32_t height, uint32_t maxLayers,
+                                                              const LayerAoOptions& layerAo = {});
     ~SceneTransparency();
     SceneTransparency(const SceneTransparency&) = delete;
     SceneTransparency& operator=(const SceneTransparency&) = delete;
@@ -36,8 +47,14 @@ public:
     // drops fragments (the first frame's pool is a guess) is drawn again with the pool the effect
     // grew from its count, at most twice. Fills the transparency fields of `stats`; `uploaded`,
     // when given, receives the opaque colour exactly as the effect read it (half floats).
+    // With AO through the layers, `recomposite` is given the AO's opaque-surface visibility (now
+    // with the translucent occluders, opacity-weighted) and returns the opaque picture shaded
+    // with it, which is composited in one more frame; `layerAo` receives the blended visibility
+    // through the layers (what --ao-out writes).
+    using Recomposite = std::function<io::Image(const std::vector<float>& opaqueVisibility)>;
     Status render(TextureHandle opaqueDepth, const glm::dmat4& view, const glm::dmat4& projection, io::Image& color,
-                  RenderStats& stats, io::Image* uploaded);
+                  RenderStats& stats, io::Image* uploaded, const Recomposite& recomposite = {}, io::Image* layerAo = nullptr);
+    bool aoThroughLayers() const { return effect_->aoThroughLayers(); }
 
 private:
     SceneTransparency(Device& device) : device_(device) {}

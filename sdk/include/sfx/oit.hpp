@@ -26,6 +26,17 @@
 //   - the next render() grows the pool so the same scene is exact again.
 // Nothing is allocated until a render() has a transparent draw; render() with no draw copies
 // nothing and output() is then the opaque colour itself.
+//
+// High tier, optional (docs/oit.md):
+//   - list compression (the paper's section III-B): the resolve also compresses each pixel's list
+//     into M <= 4 (normalised depth, opacity) nodes, the opaque surface entering at opacity 1,
+//     dropping argmin alpha * (1 - z') (only from the back half if asked); 12 bytes per pixel
+//     (16-bit depth, 8-bit opacity per node) in a pixel-indexed storage buffer;
+//   - opacity-based AO through the layers (the paper's eq. 1-4, Algorithm 1), Alchemy or
+//     Scalable per-tap terms, every tap keeping the largest opacity-weighted occlusion over the
+//     fragments at its pixel (brute force: walking the list; compressed: reading the M nodes),
+//     the receivers' visibilities blended by opacity after the sort into aoOutput(), separately
+//     from colour. The current tier has neither: its AO is the host's opaque AO (plan() says so).
 #pragma once
 
 #include <glm/glm.hpp>
@@ -33,6 +44,8 @@
 #include <memory>
 #include <span>
 
+#include "sfx/ao.hpp"
+#include "sfx/camera.hpp"
 #include "sfx/hal.hpp"
 #include "sfx/plan.hpp"
 #include "sfx/tier.hpp"
@@ -79,6 +92,23 @@ enum class TransparencyQuality : uint32_t {
     High,      // K = 32
 };
 
+// Where the AO taps find their occluders.
+enum class TransparencyAoOccluders : uint32_t {
+    BruteForce,  // every fragment of the tap pixel's list, and its opaque surface
+    Compressed,  // the tap pixel's M compressed nodes (needs TransparencyDesc::compressedNodes)
+};
+
+// Opacity-based AO through the layers (high tier; ignored on the current tier).
+struct TransparencyAoDesc {
+    bool enabled = false;
+    // technique Alchemy or Scalable; radius (0, 1e4], intensity [0, 1e3], contrast [0, 100], bias
+    // [0, 1], epsilon (0, 1], samples [1, 64], mirrored, spiralTurns, maxRadiusPx >= 0 are used;
+    // depthMipLevels, blurRadius, normals and crease are not (lists have no MIP; the output is
+    // raw, for the host to filter; the opaque normal comes from depth).
+    AoConfig config;
+    TransparencyAoOccluders occluders = TransparencyAoOccluders::BruteForce;
+};
+
 struct TransparencyDesc {
     uint32_t width = 0, height = 0;  // [1, caps.limits.maxTextureSize]
     TierProfile profile;             // tiers::profile(tier) or tiers::choose(caps)->profile
@@ -88,6 +118,10 @@ struct TransparencyDesc {
     // Nodes of the first frame's pool, before any count is known; 0 = kOitInitialNodesPerPixel
     // per pixel. Later frames size it from the scene.
     uint64_t initialPoolNodes = 0;
+    // M: nodes per compressed list, [0, 4] (high tier); 0 = no compression.
+    uint32_t compressedNodes = 0;
+    bool compressBackHalfOnly = true;  // drop only from the back half: the front half is kept
+    TransparencyAoDesc ao;
 };
 
 // What the last flushed frame did (high tier; zeros on the current tier, which has no pool).
@@ -116,6 +150,13 @@ public:
     Status render(const TransparencyInputs& inputs);
     // The composited colour (colorFormat); the opaque colour itself after a frame with no draw.
     TextureHandle output() const { return output_; }
+    // AO through the layers (RG16F: r the blended visibility, g the opaque surface's), when
+    // desc.ao is enabled on the high tier and the frame had a draw; null otherwise.
+    TextureHandle aoOutput() const { return aoOutput_; }
+    // The compressed lists (SFX_OIT_COMPRESSED_WORDS uint32 per pixel, row 0 first; layout in
+    // sfx_shared_oit.h / sfx_shared_oit_params.h), when compressedNodes > 0 on the high tier.
+    BufferHandle compressedLists() const { return compressed_; }
+    bool aoThroughLayers() const { return abuffer_ && desc_.ao.enabled; }
     // The last frame's counts; a device read (flushes).
     Result<TransparencyStats> stats();
     bool usesAbuffer() const { return abuffer_; }
@@ -135,6 +176,9 @@ private:
                                         const BindingSet& shared) const;
     Status renderAbuffer(const TransparencyInputs& inputs);
     Status renderWeighted(const TransparencyInputs& inputs);
+    Status ensureLayerTargets();
+    Status renderLayerAo(const TransparencyInputs& inputs, const DepthReconstruction& rec);
+    void planLayerAo(Plan& plan) const;
     Result<uint32_t> readCounter();
     void release();
 
@@ -142,13 +186,13 @@ private:
     TransparencyDesc desc_;
     bool abuffer_ = false;
     TextureHandle output_;  // ownedOutput_, or the host's opaque colour after a frame with no draw
-    TextureHandle ownedOutput_, heads_, accum_, weight_;
-    BufferHandle pool_, resolveParams_;
+    TextureHandle ownedOutput_, heads_, accum_, weight_, aoOutput_, ownedAo_;
+    BufferHandle pool_, resolveParams_, compressed_, aoParams_;
     uint64_t poolNodes_ = 0;
     bool poolUsed_ = false;  // a fill has run since the pool was made: its counter is the scene's
     std::vector<BufferHandle> drawParams_;
-    ProgramHandle clearProgram_, fillProgram_, resolveProgram_, accumProgram_, weightedResolveProgram_;
-    PipelineHandle clearPipeline_, fillPipeline_, resolvePipeline_, accumPipeline_, weightedResolvePipeline_;
+    ProgramHandle clearProgram_, fillProgram_, resolveProgram_, accumProgram_, weightedResolveProgram_, aoProgram_;
+    PipelineHandle clearPipeline_, fillPipeline_, resolvePipeline_, accumPipeline_, weightedResolvePipeline_, aoPipeline_;
     TransparencyStats last_;
 };
 

@@ -13,6 +13,9 @@
 #include "sfx_shared_oit_params.h"
 
 namespace sfx {
+
+Status checkLayerSettings(const TransparencyDesc& desc);  // oit_layers.cpp
+
 namespace {
 
 using detail::isColorFormat;
@@ -48,6 +51,7 @@ Result<std::unique_ptr<Transparency>> Transparency::create(Device& device, const
     if (!caps.renderableFormat[size_t(desc.colorFormat)])
         return Status{StatusCode::UnsupportedFormat, std::string("TransparencyDesc.colorFormat ") + toString(desc.colorFormat) +
                                                          " is not renderable on this device"};
+    SFX_TRY(checkLayerSettings(desc));
     std::unique_ptr<Transparency> t(new Transparency(device, desc));
     if (desc.profile.abufferOit) {
         if (!caps.fragmentStoresAndAtomics || !caps.computeShaders)
@@ -71,10 +75,15 @@ void Transparency::release() {
     auto buffer = [&](BufferHandle& h) { drop(h, &Device::destroyBuffer); };
     auto pipeline = [&](PipelineHandle& h) { drop(h, &Device::destroyPipeline); };
     auto program = [&](ProgramHandle& h) { drop(h, &Device::destroyProgram); };
-    for (PipelineHandle* p : {&clearPipeline_, &fillPipeline_, &resolvePipeline_, &accumPipeline_, &weightedResolvePipeline_})
+    for (PipelineHandle* p :
+         {&clearPipeline_, &fillPipeline_, &resolvePipeline_, &accumPipeline_, &weightedResolvePipeline_, &aoPipeline_})
         pipeline(*p);
-    for (ProgramHandle* p : {&clearProgram_, &fillProgram_, &resolveProgram_, &accumProgram_, &weightedResolveProgram_}) program(*p);
-    for (TextureHandle* t : {&ownedOutput_, &heads_, &accum_, &weight_}) texture(*t);
+    for (ProgramHandle* p : {&clearProgram_, &fillProgram_, &resolveProgram_, &accumProgram_, &weightedResolveProgram_, &aoProgram_})
+        program(*p);
+    for (TextureHandle* t : {&ownedOutput_, &heads_, &accum_, &weight_, &ownedAo_}) texture(*t);
+    buffer(compressed_);
+    buffer(aoParams_);
+    aoOutput_ = {};
     for (BufferHandle& b : drawParams_) buffer(b);
     drawParams_.clear();
     buffer(pool_);
@@ -117,7 +126,24 @@ Status Transparency::ensurePrograms() {
             clearPipeline_ = pl.value();
         }
         SFX_TRY(graphics(gen::oit_fill::kName, &fillProgram_, &fillPipeline_, geometry));
-        SFX_TRY(graphics(gen::oit_resolve::kName, &resolveProgram_, &resolvePipeline_, fullscreen));
+        // With compression the resolve also writes the compressed lists (M and the drop search are
+        // specialisation constants: fixed per effect, compiled once).
+        GraphicsPipelineDesc resolve = fullscreen;
+        if (desc_.compressedNodes > 0)
+            resolve.constants = {{SFX_OIT_SC_COMPRESS_NODES, int32_t(desc_.compressedNodes)},
+                                 {SFX_OIT_SC_COMPRESS_BACK_HALF, desc_.compressBackHalfOnly ? 1 : 0}};
+        SFX_TRY(graphics(desc_.compressedNodes > 0 ? gen::oit_resolve_compress::kName : gen::oit_resolve::kName, &resolveProgram_,
+                         &resolvePipeline_, resolve));
+        if (desc_.ao.enabled) {
+            const AoConfig& c = desc_.ao.config;
+            GraphicsPipelineDesc ao;
+            ao.colorFormats = {Format::RG16F};
+            ao.constants = {{SFX_OIT_SC_AO_TECHNIQUE, c.technique == AoTechnique::Alchemy ? 0 : 1},
+                            {SFX_OIT_SC_AO_SAMPLES, int32_t(c.samples)},
+                            {SFX_OIT_SC_AO_MIRRORED, c.mirrored ? 1 : 0}};
+            const bool compressed = desc_.ao.occluders == TransparencyAoOccluders::Compressed;
+            SFX_TRY(graphics(compressed ? gen::oit_ao_compressed::kName : gen::oit_ao::kName, &aoProgram_, &aoPipeline_, ao));
+        }
     } else {
         geometry.colorFormats = {Format::RGBA16F, Format::RGBA16F};
         geometry.blend = {true, BlendFactor::One, BlendFactor::One, true, BlendFactor::Zero, BlendFactor::OneMinusSrcAlpha};
@@ -144,6 +170,7 @@ Status Transparency::ensureTargets() {
             if (!b) return b.status();
             resolveParams_ = b.value();
         }
+        SFX_TRY(ensureLayerTargets());
         if (pool_.isNull())
             SFX_TRY(ensurePool(desc_.initialPoolNodes != 0 ? desc_.initialPoolNodes
                                                             : uint64_t(kOitInitialNodesPerPixel) * desc_.width * desc_.height));
@@ -231,11 +258,13 @@ Plan Transparency::plan(bool hasTransparentDraws) const {
                                              std::to_string(kOitPoolHeadroom).substr(0, 3) + ")",
                                   Format::Undefined, 0, 0, 1, uint64_t(shared::SFX_OIT_POOL_HEADER_BYTES) + nodes * kOitNodeBytes});
         plan.resources.push_back({"oit", "resolve uniforms", Format::Undefined, 0, 0, 1, sizeof(shared::OitResolveParams)});
+        planLayerAo(plan);
     } else {
         plan.passes.push_back({"oit", "weighted blended accumulate (one geometry pass, one blend state)", w, h});
         plan.passes.push_back({"oit", "weighted blended resolve (over opaque)", w, h});
         plan.resources.push_back(plannedTexture("oit", "accumulated weighted colour + revealage", {w, h, 1, Format::RGBA16F, rt}));
         plan.resources.push_back(plannedTexture("oit", "accumulated weight", {w, h, 1, Format::RGBA16F, rt}));
+        planLayerAo(plan);
     }
     plan.resources.push_back(plannedTexture("oit", "output (composited colour)", {w, h, 1, desc_.colorFormat, rt}));
     plan.resources.push_back({"oit", "draw uniforms (one block per draw)", Format::Undefined, 0, 0, 1,

@@ -80,6 +80,7 @@ Status Transparency::render(const TransparencyInputs& in) {
     if (in.opaqueColor.isNull()) return invalidArgument("TransparencyInputs.opaqueColor", "null", "the opaque colour texture");
     if (in.draws.empty()) {
         output_ = in.opaqueColor;  // nothing to composite
+        aoOutput_ = {};            // and no layer to shade: the host's opaque AO stands
         return Status::ok();
     }
     if (in.opaqueDepth.isNull()) return invalidArgument("TransparencyInputs.opaqueDepth", "null", "the opaque depth attachment");
@@ -92,10 +93,30 @@ Status Transparency::render(const TransparencyInputs& in) {
 }
 
 Status Transparency::renderAbuffer(const TransparencyInputs& in) {
+    // Compression and AO reconstruct linear depth and view positions from the projection.
+    const bool layers = desc_.compressedNodes > 0 || desc_.ao.enabled;
+    DepthReconstruction rec;
+    if (layers) {
+        Result<DepthReconstruction> r =
+            makeDepthReconstruction({glm::dmat4(in.projection), device_.caps().clipDepth}, desc_.width, desc_.height);
+        if (!r)
+            return invalidArgument("TransparencyInputs.projection", "not a perspective projection (" + r.status().message() + ")",
+                                   "a finite perspective projection looking down -z (needed by compression and AO)");
+        rec = r.value();
+        if (!(rec.maxDepth < double(shared::SFX_SKY_DEPTH)))
+            return invalidArgument("TransparencyInputs.projection", "an infinite far plane",
+                                   "a finite far plane (compressed depths are normalised over [near, far])");
+    }
     SFX_TRY(sizePoolFromLastFrame());
     shared::OitResolveParams rp{};
     rp.maxLayers = int32_t(keptLayers(desc_.quality));
     rp.capacity = int32_t(std::min<uint64_t>(poolNodes_, 0x7FFFFFFFull));
+    rp.ndcScale = float(rec.ndcScale);
+    rp.denomOffset = float(rec.denomOffset);
+    rp.numerator = float(rec.numerator);
+    rp.maxDepth = float(rec.maxDepth);
+    rp.zNear = float(rec.nearDepth);
+    rp.zFar = float(rec.maxDepth);
     SFX_TRY(device_.writeBuffer(resolveParams_, 0, &rp, sizeof rp));
 
     DispatchDesc clear;
@@ -121,11 +142,20 @@ Status Transparency::renderAbuffer(const TransparencyInputs& in) {
     resolve.debugName = "oit resolve";
     DrawDesc r;
     r.pipeline = resolvePipeline_;
-    r.bindings.textures = {{gen::oit_resolve::uOpaque, in.opaqueColor}};
-    r.bindings.uniformBuffers = {{gen::oit_resolve::OitResolveParams, resolveParams_}};
-    r.bindings.storageBuffers = {{gen::oit_resolve::OitPool, pool_}};
-    r.bindings.storageImages = {{gen::oit_resolve::uHeads, heads_}};
-    return device_.renderPass(resolve, {&r, 1});
+    if (desc_.compressedNodes > 0) {
+        namespace g = gen::oit_resolve_compress;
+        r.bindings.textures = {{g::uOpaque, in.opaqueColor}, {g::uOpaqueDepth, in.opaqueDepth}};
+        r.bindings.uniformBuffers = {{g::OitResolveParams, resolveParams_}};
+        r.bindings.storageBuffers = {{g::OitPool, pool_}, {g::OitCompressed, compressed_}};
+        r.bindings.storageImages = {{g::uHeads, heads_}};
+    } else {
+        r.bindings.textures = {{gen::oit_resolve::uOpaque, in.opaqueColor}};
+        r.bindings.uniformBuffers = {{gen::oit_resolve::OitResolveParams, resolveParams_}};
+        r.bindings.storageBuffers = {{gen::oit_resolve::OitPool, pool_}};
+        r.bindings.storageImages = {{gen::oit_resolve::uHeads, heads_}};
+    }
+    SFX_TRY(device_.renderPass(resolve, {&r, 1}));
+    return desc_.ao.enabled ? renderLayerAo(in, rec) : Status::ok();
 }
 
 Status Transparency::renderWeighted(const TransparencyInputs& in) {

@@ -118,9 +118,9 @@ Result<OitAoResult> opacityAmbientOcclusion(const FragmentImage& image, const Oi
             for (const OitFragment& f : sorted[i]) occluders[i].push_back({f.depth, f.alpha});
             if (!isSky(image.opaque[i].depth, rec.maxDepth)) occluders[i].push_back({image.opaque[i].depth, 1.0});
         } else {
-            CompressionConfig four = cc;
-            four.nodes = uint32_t(sh::SFX_OIT_COMPRESSED_NODES);
-            for (const CompressedNode& n : quantizeCompressed(compressList(image.fragments[i], image.opaque[i], rec.maxDepth, four)))
+            CompressionConfig m = cc;  // the texel holds at most 4 nodes
+            m.nodes = std::clamp(cc.nodes, 1u, uint32_t(sh::SFX_OIT_COMPRESSED_NODES));
+            for (const CompressedNode& n : quantizeCompressed(compressList(image.fragments[i], image.opaque[i], rec.maxDepth, m)))
                 if (n.opacity > 0.0) occluders[i].push_back({cc.zNear + n.depth * (cc.zFar - cc.zNear), n.opacity});
         }
     }

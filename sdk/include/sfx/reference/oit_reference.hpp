@@ -30,7 +30,7 @@ struct OitFragment {
     double alpha = 1.0;               // coverage in [0, 1]
     double depth = 1.0;               // positive linear view depth
     glm::dvec3 normal{0.0, 0.0, 1.0}; // the triangle's authored view-space unit normal (not flipped)
-    bool frontFacing = true;
+    bool frontFacing = true;          // the authored normal faces the camera: dot(normal, position) < 0
     uint32_t drawIndex = 0, primitiveId = 0;  // orders fragments at equal depth
 };
 
@@ -88,7 +88,7 @@ std::vector<CompressedNode> quantizeCompressed(const std::vector<CompressedNode>
 // is ignored: lists have no MIP); Crease, which has no opacity-based form, is InvalidArgument.
 enum class OitAoOccluders {
     BruteForce,  // every stored fragment at a sample's pixel, and its opaque surface (alpha 1)
-    Compressed,  // the sample pixel's M = 4 quantised nodes (compressList + quantizeCompressed)
+    Compressed,  // the sample pixel's M <= 4 quantised nodes (compressList + quantizeCompressed)
 };
 struct OitAoConfig {
     AoConfig ao;  // technique, radius, samples, intensity, ... as the opaque AO reference
