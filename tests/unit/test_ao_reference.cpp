@@ -349,6 +349,76 @@ TEST_CASE("ao reference: the bilateral blur does not carry occlusion across a de
     }
 }
 
+TEST_CASE("ao reference: the half-size depth takes depth MIP level 1's rotated-grid samples", "[ao][half-res]") {
+    const samples::AnalyticScene scene = samples::columnsScene(97, 65);
+    const Grid half = reference::halfSizeDepth(scene.linearDepth);
+    REQUIRE(half.width == 48);
+    REQUIRE(half.height == 32);
+    const std::vector<Grid> pyramid = reference::depthPyramid(scene.linearDepth, 2);
+    CHECK(half.values == pyramid[1].values);  // the high tier reuses MIP level 1 for it
+    // Each texel is one full-size sample (never an average), so positions stay exact.
+    for (uint32_t y = 0; y < half.height; ++y)
+        for (uint32_t x = 0; x < half.width; ++x) {
+            const shared::ivec2 s = shared::aoFullResPixel(shared::ivec2{int(x), int(y)}, shared::ivec2{97, 65});
+            REQUIRE(half.at(x, y) == scene.linearDepth.at(uint32_t(s.x), uint32_t(s.y)));
+        }
+}
+
+TEST_CASE("ao reference: the depth-aware upsample keeps edges and reproduces smooth input", "[ao][half-res]") {
+    // A near square (depth 2, AO 0.2) on a far wall (depth 10, AO 0.9), edge at an odd pixel.
+    const uint32_t w = 32, h = 16, edge = 13;
+    Grid full(w, h, 10.0);
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < edge; ++x) full.at(x, y) = 2.0;
+    const Grid half = reference::halfSizeDepth(full);
+    Grid halfAo(half.width, half.height);
+    for (size_t i = 0; i < halfAo.values.size(); ++i) halfAo.values[i] = half.values[i] < 5.0 ? 0.2 : 0.9;
+    const Grid up = reference::depthAwareUpsample(halfAo, half, full, 100.0);
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x) {
+            INFO(x << ", " << y);
+            // Every pixel gets only its own surface's AO, right up to the edge: no halo.
+            CHECK(up.at(x, y) == Approx(x < edge ? 0.2 : 0.9).margin(1e-12));
+        }
+    // A smooth surface (depths within the tolerance) with AO linear in x: the blend is the
+    // bilinear interpolation, exact for a linear ramp away from the clamped border but for the
+    // nearest-depth texel's fixed weight (1e-3 of a total near 1: under 1e-4 on a 0.04 spread).
+    Grid ramp(w, h, 5.0), rampHalf(w / 2, h / 2);
+    for (uint32_t y = 0; y < h / 2; ++y)
+        for (uint32_t x = 0; x < w / 2; ++x) rampHalf.at(x, y) = 0.02 * (2.0 * x + 0.5);
+    const Grid rampUp = reference::depthAwareUpsample(rampHalf, reference::halfSizeDepth(ramp), ramp, 100.0);
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 1; x + 1 < w; ++x) CHECK(rampUp.at(x, y) == Approx(0.02 * x).margin(1e-4));
+    // Sky at full size is unoccluded whatever the half-size texels hold.
+    Grid withSky = full;
+    withSky.at(20, 5) = 1e30;
+    CHECK(reference::depthAwareUpsample(halfAo, half, withSky, 100.0).at(20, 5) == 1.0);
+}
+
+TEST_CASE("ao reference: half resolution stays close to full resolution on analytic scenes", "[ao][half-res]") {
+    for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable})
+        for (Tier tier : kTiers) {
+            INFO(name(t, tier));
+            for (auto make : {&samples::cornerScene, &samples::sphereOnPlaneScene}) {
+                const samples::AnalyticScene scene = make(192, 128, 1.0);
+                AoConfig full = configFor(t, tier);
+                AoConfig half = full;  // the same settings at half size: blur and clamp in half-size pixels
+                half.halfResolution = true;
+                half.blurRadius = std::max(1u, (full.blurRadius + 1) / 2);
+                half.maxRadiusPx = full.maxRadiusPx / 2;
+                if (half.depthMipLevels > 1) --half.depthMipLevels;
+                const Grid a = reference::ambientVisibility(scene.aoInput(false), full);
+                const Grid b = reference::ambientVisibility(scene.aoInput(false), half);
+                requireValid(b);
+                double meanAbs = 0;
+                for (size_t i = 0; i < a.values.size(); ++i) meanAbs += std::abs(a.values[i] - b.values[i]);
+                meanAbs /= double(a.values.size());
+                INFO("mean |half - full| " << meanAbs);
+                CHECK(meanAbs < 0.03);  // the same bound as doubling the resolution
+            }
+        }
+}
+
 // Not a check: writes the G-buffer files the `sfx ao` CTest entries read (fixture ao_cli_files).
 TEST_CASE("ao cli fixture: write small G-buffer files", "[.ao-cli-fixture]") {
     const samples::AnalyticScene s = samples::cornerScene(64, 48);
