@@ -22,9 +22,11 @@ namespace {
 const AoTechnique kTechniques[] = {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease};
 const Tier kTiers[] = {Tier::Current, Tier::High};
 
-AoConfig configFor(AoTechnique t, Tier tier, double scale = 1.0, bool blur = true, double radius = 0.5) {
+AoConfig configFor(AoTechnique t, Tier tier, double scale = 1.0, bool blur = true, double radius = 0.5,
+                   AoResolution resolution = AoResolution::Tier) {
     AoSettings s;
     s.technique = t;
+    s.resolution = resolution;
     s.radius = float(radius * scale);
     s.blur = blur;
     // Scalable's squared sum makes faint occlusion fainter; 2 keeps the contact shadow measurable.
@@ -141,14 +143,25 @@ TEST_CASE("ao settings resolve to the tier table", "[ao]") {
     CHECK(sHigh.samples == 9);
     CHECK_FALSE(sHigh.mirrored);
     CHECK(sHigh.maxRadiusPx == 0);
-    CHECK(sHigh.depthMipLevels == 5);
-    CHECK(sHigh.blurRadius == 6);
+    // The default presets run at half resolution: pixel counts are half-size ones, the pyramid
+    // is read from level 1 (one level fewer), the blur keeps its footprint with (r + 1) / 2 taps.
+    CHECK(sHigh.halfResolution);
+    CHECK(sHigh.depthMipLevels == 4);
+    CHECK(sHigh.blurRadius == 3);
+    const AoConfig sHighFull = configFor(AoTechnique::Scalable, Tier::High, 1.0, true, 0.5, AoResolution::Full);
+    CHECK_FALSE(sHighFull.halfResolution);
+    CHECK(sHighFull.depthMipLevels == 5);
+    CHECK(sHighFull.blurRadius == 6);
     const AoConfig sCur = configFor(AoTechnique::Scalable, Tier::Current);
     CHECK(sCur.samples == 4);
     CHECK(sCur.mirrored);
-    CHECK(sCur.maxRadiusPx == Approx(20));
+    CHECK(sCur.halfResolution);
+    CHECK(sCur.maxRadiusPx == Approx(10));
     CHECK(sCur.depthMipLevels == 1);
-    CHECK(sCur.blurRadius == 2);
+    CHECK(sCur.blurRadius == 1);
+    const AoConfig sCurFull = configFor(AoTechnique::Scalable, Tier::Current, 1.0, true, 0.5, AoResolution::Full);
+    CHECK(sCurFull.maxRadiusPx == Approx(20));
+    CHECK(sCurFull.blurRadius == 2);
     CHECK(configFor(AoTechnique::Crease, Tier::High, 1.0, false).blurRadius == 0);
 }
 
@@ -401,12 +414,8 @@ TEST_CASE("ao reference: half resolution stays close to full resolution on analy
             INFO(name(t, tier));
             for (auto make : {&samples::cornerScene, &samples::sphereOnPlaneScene}) {
                 const samples::AnalyticScene scene = make(192, 128, 1.0);
-                AoConfig full = configFor(t, tier);
-                AoConfig half = full;  // the same settings at half size: blur and clamp in half-size pixels
-                half.halfResolution = true;
-                half.blurRadius = std::max(1u, (full.blurRadius + 1) / 2);
-                half.maxRadiusPx = full.maxRadiusPx / 2;
-                if (half.depthMipLevels > 1) --half.depthMipLevels;
+                const AoConfig full = configFor(t, tier, 1.0, true, 0.5, AoResolution::Full);
+                const AoConfig half = configFor(t, tier, 1.0, true, 0.5, AoResolution::Half);
                 const Grid a = reference::ambientVisibility(scene.aoInput(false), full);
                 const Grid b = reference::ambientVisibility(scene.aoInput(false), half);
                 requireValid(b);
