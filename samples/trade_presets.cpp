@@ -44,6 +44,7 @@ struct Options {
 
 struct Row {
     std::string backend, tier, preset, effect, technique;  // technique "-" for motion blur
+    std::string resolution = "-";                           // AO: "full" or "half"
     uint32_t taps = 0, blurOrRadius = 0;                    // AO: taps, blur half-width; MB: taps, max radius px
     double ms = 0, copyPasses = 0, psnr = 0, psnrOccluded = 0;
 };
@@ -131,9 +132,18 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
                 status = r.status();
                 break;
             }
+            // The copy pass again, right after: on a loaded machine the load drifts between
+            // configurations, and a ratio to a copy timed minutes earlier would drift with it.
+            Result<TimerReading> copyNow = budget::timeMedian(dev, o.runs, [&] { return copy.value()->record(); });
+            if (!copyNow) {
+                status = copyNow.status();
+                break;
+            }
+            const double copyMsNow = copyNow->milliseconds;
             const samples::AoScore& score = aoScores.at(preset.name + "/" + toString(t));
-            rows.push_back({backend, toString(tier), preset.name, "ao", toString(t), aoTaps(preset.params, t), preset.params.aoBlurRadiusPx,
-                            r->milliseconds, r->milliseconds / copyMs, score.psnr, score.psnrOccluded});
+            rows.push_back({backend, toString(tier), preset.name, "ao", toString(t), preset.params.aoHalfResolution ? "half" : "full",
+                            aoTaps(preset.params, t), preset.params.aoBlurRadiusPx, r->milliseconds, r->milliseconds / copyMsNow, score.psnr,
+                            score.psnrOccluded});
             std::cout << "  " << backend << "/" << toString(tier) << "/" << preset.name << "/" << toString(t) << ": " << fixed(r->milliseconds, 2)
                       << " ms = " << fixed(rows.back().copyPasses, 1) << " copy passes, PSNR " << fixed(score.psnr, 2) << " dB" << std::endl;
         }
@@ -148,7 +158,7 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
             break;
         }
         const MotionBlurParams p = resolveMotionBlur(preset.params, {}, o.costHeight).value();
-        rows.push_back({backend, toString(tier), preset.name, "motion-blur", "-", p.taps, p.radiusPx, mb->medianMs, mb->medianMs / copyMs,
+        rows.push_back({backend, toString(tier), preset.name, "motion-blur", "-", "-", p.taps, p.radiusPx, mb->medianMs, mb->medianMs / copyMs,
                         mbScores.at(preset.name), 0});
         std::cout << "  " << backend << "/" << toString(tier) << "/" << preset.name << "/motion blur: " << fixed(mb->medianMs, 2) << " ms = "
                   << fixed(rows.back().copyPasses, 1) << " copy passes, PSNR " << fixed(mbScores.at(preset.name), 2) << " dB" << std::endl;
@@ -160,7 +170,7 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
 std::string markdown(const Options& o, const std::vector<Row>& rows, const std::string& machine) {
     std::ostringstream md;
     md << "Measured by `build/samples/trade_presets` on " << machine << ". Cost at " << o.costWidth << "x" << o.costHeight
-       << " (median of " << o.runs << " HAL-timed runs; copy passes = that cost over one full-screen copy of the same size on the same device); AO PSNR "
+       << " (median of " << o.runs << " HAL-timed runs; copy passes = that cost over one full-screen copy of the same size on the same device, for AO timed right after each configuration); AO PSNR "
           "over the held-out views of the fit at radii 0.25-2 ("
        << o.truth.width << "x" << o.truth.height << "), motion blur PSNR against " << o.instants
        << " supersampled instants on the 2.5D scenes.\n\n";
@@ -168,10 +178,10 @@ std::string markdown(const Options& o, const std::vector<Row>& rows, const std::
         md << "![Pareto plot, AO, " << backend << "](images/pareto_ao_" << backend << ".svg)\n\n";
         md << "![Pareto plot, motion blur, " << backend << "](images/pareto_mb_" << backend << ".svg)\n\n";
     }
-    md << "| backend | tier | preset | effect | technique | taps | blur px / max radius px | ms | copy passes | PSNR | PSNR occluded |\n"
-          "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    md << "| backend | tier | preset | effect | technique | AO resolution | taps | blur px / max radius px | ms | copy passes | PSNR | PSNR occluded |\n"
+          "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const Row& r : rows)
-        md << "| " << r.backend << " | " << r.tier << " | " << r.preset << " | " << r.effect << " | " << r.technique << " | " << r.taps << " | "
+        md << "| " << r.backend << " | " << r.tier << " | " << r.preset << " | " << r.effect << " | " << r.technique << " | " << r.resolution << " | " << r.taps << " | "
            << r.blurOrRadius << " | " << fixed(r.ms, 2) << " | " << fixed(r.copyPasses, 1) << " | " << fixed(r.psnr, 2) << " | "
            << (r.effect == "ao" ? fixed(r.psnrOccluded, 2) : "-") << " |\n";
     return md.str();
@@ -233,9 +243,9 @@ int main(int argc, char** argv) {
     }
     std::filesystem::create_directories(o.outDir);
     std::ofstream csv(o.outDir + "/trade_presets.csv");
-    csv << "backend,tier,preset,effect,technique,taps,blur_or_max_radius_px,cost_width,cost_height,ms,copy_passes,psnr_db,psnr_occluded_db\n";
+    csv << "backend,tier,preset,effect,technique,ao_resolution,taps,blur_or_max_radius_px,cost_width,cost_height,ms,copy_passes,psnr_db,psnr_occluded_db\n";
     for (const Row& r : rows)
-        csv << r.backend << "," << r.tier << "," << r.preset << "," << r.effect << "," << r.technique << "," << r.taps << "," << r.blurOrRadius << ","
+        csv << r.backend << "," << r.tier << "," << r.preset << "," << r.effect << "," << r.technique << "," << r.resolution << "," << r.taps << "," << r.blurOrRadius << ","
             << o.costWidth << "," << o.costHeight << "," << fixed(r.ms, 3) << "," << fixed(r.copyPasses, 2) << "," << fixed(r.psnr, 3) << ","
             << fixed(r.psnrOccluded, 3) << "\n";
     Status st = writePlots(o, rows);

@@ -110,6 +110,39 @@ SFX_FN SFX_REAL aoBlurEdgeWeight(SFX_REAL zq, SFX_REAL z0) {
     return max(0.0, 1.0 - abs(zq - z0) / (SFX_REAL(SFX_AO_BLUR_DEPTH_TOLERANCE) * z0));
 }
 
+// ---- AO at half resolution ---------------------------------------------------------------
+// Half-size pixel q holds the depth of full-size pixel depthMipSource(q) (the rotated grid of
+// depth MIP level 1, clamped to the full image): a real sample, not an average, so the view
+// position the obscurance reconstructs there is exact (aoFullResPixel) and surfaces stay flat.
+#ifdef __cplusplus
+inline constexpr ivec2 aoFullResPixel(ivec2 q, ivec2 fullSize) {
+    ivec2 s = depthMipSource(q);
+    return ivec2{std::min(s.x, fullSize.x - 1), std::min(s.y, fullSize.y - 1)};
+}
+#else
+ivec2 aoFullResPixel(ivec2 q, ivec2 fullSize) { return min(depthMipSource(q), fullSize - 1); }
+#endif
+// The depth-aware upsample to full size: each full-size pixel blends the 2x2 half-size texels
+// around its centre (bilinear weights, x / 2 - 0.25 in half-size texels) times a depth weight
+// falling linearly to 0 as a texel's depth zq departs from the full-size depth z0 by
+// SFX_AO_UPSAMPLE_DEPTH_TOLERANCE of z0, so occlusion never bleeds across a silhouette. The
+// texel of nearest depth is always added with weight SFX_AO_UPSAMPLE_NEAREST_WEIGHT: where every
+// texel lies across an edge (thin features) it alone decides, and the blend stays continuous.
+SFX_CONST(float, SFX_AO_UPSAMPLE_DEPTH_TOLERANCE, 0.1)
+SFX_CONST(float, SFX_AO_UPSAMPLE_NEAREST_WEIGHT, 1.0e-3)
+// Along one axis, full-size index x: the lower half-size texel (may be -1: clamp it) and the
+// bilinear weight of the upper one (the lower one gets 1 minus it).
+SFX_FN int aoUpsampleBase(int x) { return (x + 1) / 2 - 1; }
+SFX_FN SFX_REAL aoUpsampleUpperWeight(int x) { return (x % 2) == 1 ? 0.25 : 0.75; }
+SFX_FN SFX_REAL aoUpsampleWeight(SFX_REAL bilinear, SFX_REAL zq, SFX_REAL z0) {
+    return bilinear * max(0.0, 1.0 - abs(zq - z0) / (SFX_REAL(SFX_AO_UPSAMPLE_DEPTH_TOLERANCE) * z0));
+}
+// The blend of the four taps: sum of w * ao, plus the nearest texel's ao at the fixed weight.
+SFX_FN SFX_REAL aoUpsampleResolve(SFX_REAL weightedSum, SFX_REAL weightSum, SFX_REAL nearestAo) {
+    SFX_REAL e = SFX_REAL(SFX_AO_UPSAMPLE_NEAREST_WEIGHT);
+    return (weightedSum + e * nearestAo) / (weightSum + e);
+}
+
 // ---- Normal from depth (no host normals) --------------------------------------------------
 // The one rule of the shaders (aoDerivedNormal below) and the reference (normalsFromDepth):
 // - Every depth it reads, the centre's and each neighbour's, goes through sfxLinearDepthOrFar
@@ -200,11 +233,15 @@ float aoUnpackDepthKey(vec2 ba) {
 #define SFX_AO_SC_NORMAL_SOURCE 3  // 0 derived from depth, 1 signed float, 2 unorm8
 #define SFX_AO_SC_PACK_DEPTH 4     // 1: the depth key goes to b and a (RGBA8 target, blur on)
 #define SFX_AO_SC_CLAMP_RADIUS 5   // 1: the screen radius is clamped to maxRadiusPx
+#define SFX_AO_SC_HALF_RES 6       // 1: half-size pass: positions and normals at aoFullResPixel
 // The bilateral blur (ao_blur.frag):
 #define SFX_AO_SC_BLUR_RADIUS 0           // taps each side
 #define SFX_AO_SC_BLUR_MODERATE_RADIUS 1  // Crease's second, moderate blur
 #define SFX_AO_SC_BLUR_CREASE 2           // 1: also the moderate blur, blended in the final pass
 #define SFX_AO_SC_BLUR_FINAL_PASS 3       // 0: horizontal into the intermediate, 1: vertical out
+// The upsample (ao_upsample.frag):
+#define SFX_AO_SC_UPSAMPLE_DEPTH_MIP 0  // 1: the half-size depth is level 1 of uDepth (GL keeps one
+                                        // mip range per texture, so it is not bound twice)
 
 // ---- Uniform blocks of the AO passes (SFX_BLOCK: one declaration for GLSL and C++) ----------
 // The obscurance passes (ao_alchemy/ao_scalable/ao_crease.frag), filled by AmbientObscurance.
@@ -213,7 +250,8 @@ SFX_BLOCK(AoParams, 2)
     SFX_M_VEC4(projInfo)
     SFX_M_FLOAT(radius) SFX_M_FLOAT(intensity) SFX_M_FLOAT(contrast) SFX_M_FLOAT(bias)
     SFX_M_FLOAT(epsilon) SFX_M_FLOAT(pixelsPerUnit) SFX_M_FLOAT(maxRadiusPx) SFX_M_FLOAT(maxDepth)
-    SFX_M_INT(pad2) SFX_M_INT(pad3) SFX_M_INT(pad4) SFX_M_INT(pad5)  // counts: constants above
+    SFX_M_INT(fullWidth) SFX_M_INT(fullHeight)  // the full-size image (aoFullResPixel's clamp)
+    SFX_M_INT(pad4) SFX_M_INT(pad5)  // counts: constants above
     SFX_M_FLOAT(spiralTurns) SFX_M_FLOAT(keyNear) SFX_M_FLOAT(keyInvLog2Range) SFX_M_FLOAT(pad6)
     SFX_M_FLOAT(creaseRange) SFX_M_FLOAT(creaseBias) SFX_M_FLOAT(creaseAverager) SFX_M_FLOAT(creaseMinimum)
     SFX_M_FLOAT(fadeStart) SFX_M_FLOAT(invFadeRange) SFX_M_FLOAT(pad0) SFX_M_FLOAT(pad1)
@@ -228,10 +266,17 @@ SFX_BLOCK(BlurParams, 2)
     SFX_M_FLOAT(maxDepth) SFX_M_FLOAT(keyNear) SFX_M_FLOAT(keyLog2Range) SFX_M_FLOAT(pad6)
 SFX_BLOCK_END(params)
 #endif
+// The depth-aware upsample (ao_upsample.frag).
+#if defined(__cplusplus) || defined(SFX_AO_UPSAMPLE_PASS)
+SFX_BLOCK(UpsampleParams, 3)
+    SFX_M_FLOAT(maxDepth) SFX_M_FLOAT(pad0) SFX_M_FLOAT(pad1) SFX_M_FLOAT(pad2)
+SFX_BLOCK_END(params)
+#endif
 #ifdef __cplusplus
 static_assert(sizeof(AoParams) == 112 && offsetof(AoParams, radius) == 16 && offsetof(AoParams, maxDepth) == 44 &&
               offsetof(AoParams, spiralTurns) == 64 && offsetof(AoParams, fadeStart) == 96);
 static_assert(sizeof(BlurParams) == 48 && offsetof(BlurParams, direction) == 0 && offsetof(BlurParams, maxDepth) == 32);
+static_assert(sizeof(UpsampleParams) == 16);
 #endif
 
 #ifdef __cplusplus
@@ -251,11 +296,14 @@ layout(constant_id = SFX_AO_SC_MIP_LEVELS) const int kAoMipLevels = 1;
 layout(constant_id = SFX_AO_SC_NORMAL_SOURCE) const int kAoNormalSource = 0;
 layout(constant_id = SFX_AO_SC_PACK_DEPTH) const int kAoPackDepth = 0;
 layout(constant_id = SFX_AO_SC_CLAMP_RADIUS) const int kAoClampRadius = 0;
+layout(constant_id = SFX_AO_SC_HALF_RES) const int kAoHalfRes = 0;
 
 // uDepth may be the host's linear depth itself (LinearDepth passing through): clamp on fetch.
 float aoDepthAt(ivec2 q, int level) { return sfxLinearDepthOrFar(texelFetch(uDepth, q, level).r, params.maxDepth); }
 float aoDepth(ivec2 q) { return aoDepthAt(q, 0); }
-vec3 aoPosition(ivec2 q, float z) { return reconstructViewPosition(vec2(q) + 0.5, z, params.projInfo); }
+// At half size a texel's position is its full-size source pixel's (aoFullResPixel).
+ivec2 aoSourcePixel(ivec2 q) { return kAoHalfRes != 0 ? aoFullResPixel(q, ivec2(params.fullWidth, params.fullHeight)) : q; }
+vec3 aoPosition(ivec2 q, float z) { return reconstructViewPosition(vec2(aoSourcePixel(q)) + 0.5, z, params.projInfo); }
 // The pixel a tap lands on: floor(centre + offset), clamped to the image (as the reference).
 ivec2 aoTap(ivec2 p, vec2 offset, ivec2 size) { return clamp(ivec2(floor(vec2(p) + 0.5 + offset)), ivec2(0), size - 1); }
 
@@ -275,7 +323,7 @@ vec3 aoDerivedNormal(ivec2 p, vec3 C, float z, ivec2 size) {
 
 vec3 aoNormal(ivec2 p, vec3 C, float z, ivec2 size) {
     if (kAoNormalSource != 0) {
-        vec3 n = texelFetch(uNormals, p, 0).xyz;
+        vec3 n = texelFetch(uNormals, aoSourcePixel(p), 0).xyz;  // host normals are full size
         if (kAoNormalSource == 2) n = n * 2.0 - 1.0;
         n = aoHostNormalOrZero(n);  // the host-normal rule above
         if (n != vec3(0.0)) return n;

@@ -48,29 +48,66 @@ const Tolerance& tolerance() { return kTolerance[size_t(test::tier())]; }
 
 AoSettings settingsFor(AoTechnique t, double scale = 1.0) { return test::aoTestSettings(t, scale); }
 
+// One dispatch of an existing context on `scene` (linear depth read in place, R32F output
+// where renderable, else RGBA8), read back.
+Grid dispatchOn(Device& dev, AmbientObscurance& ao, const samples::AnalyticScene& scene) {
+    std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
+    TextureHandle depthTex = dev.createTexture({scene.width, scene.height, 1, Format::R32F, kTextureSampled, "ao-test-depth"}).value();
+    SFX_REQUIRE_OK(dev.writeTexture(depthTex, 0, depth.data(), depth.size() * sizeof(float)));
+    const bool r32 = dev.caps().renderableFormat[size_t(Format::R32F)];
+    const Format of = r32 ? Format::R32F : Format::RGBA8;
+    TextureHandle outTex = dev.createTexture({scene.width, scene.height, 1, of, kTextureSampled | kTextureRenderTarget, "ao-test-out"}).value();
+    AoInputs in;
+    in.depth = DepthSource{depthTex, DepthKind::Linear, scene.camera};
+    in.output = outTex;
+    SFX_REQUIRE_OK(ao.dispatch(in));
+    SFX_REQUIRE_OK(dev.flush());
+    const size_t n = size_t(scene.width) * scene.height;
+    Grid out(scene.width, scene.height);
+    if (r32) {
+        std::vector<float> px(n);
+        SFX_REQUIRE_OK(dev.readTexture(outTex, 0, px.data(), px.size() * sizeof(float)));
+        for (size_t i = 0; i < n; ++i) out.values[i] = px[i];
+    } else {
+        std::vector<uint8_t> px(n * 4);
+        SFX_REQUIRE_OK(dev.readTexture(outTex, 0, px.data(), px.size()));
+        for (size_t i = 0; i < n; ++i) out.values[i] = px[i * 4] / 255.0;
+    }
+    for (TextureHandle t : {depthTex, outTex}) SFX_REQUIRE_OK(dev.destroyTexture(t));
+    return out;
+}
+
 }  // namespace
 
-TEST_CASE("ao: each technique matches its CPU reference", "[ao]") {
+TEST_CASE("ao: each technique matches its CPU reference, at full and half resolution", "[ao]") {
     if (drawsNothing()) SFX_SKIP("the null backend draws nothing: GPU results are not compared on " << test::label());
     // Float vs double tap positions move a rare tap to the neighbouring pixel (docs/ao.md):
     // an RMSE bound, a bound on the share of pixels off by more than `pixelTol`, a bound on the
     // worst pixel, and a bound on the mean signed error over the occluded pixels (reference
-    // below 1), which the many unoccluded pixels cannot dilute and which catches a bias.
+    // below 1), which the many unoccluded pixels cannot dilute and which catches a bias. At half
+    // resolution the reference runs the same half-size pipeline and upsample (config.halfResolution).
     const double rmseTol = tolerance().rmse;
     const double pixelTol = tolerance().pixel;
     const double worstTol = tolerance().worst;
     const double biasTol = kAoOccludedBiasBound;
     double worstSeen = 0, worstBias = 0;
+    for (AoResolution resolution : {AoResolution::Full, AoResolution::Half})
     for (AoTechnique t : kTechniques)
         for (bool blur : {false, true})
             for (bool gbuffer : {false, true})
                 for (auto make : {&samples::cornerScene, &samples::sphereOnPlaneScene, &samples::columnsScene}) {
+                    // Even sizes: an odd width puts a pixel centre exactly on the corner's crease, where the
+                    // normal rule's tie (both neighbours equally close) falls either way in float.
+                    const bool half = resolution == AoResolution::Half;
                     const samples::AnalyticScene scene = make(96, 64, 1.0);
                     AoSettings s = settingsFor(t);
                     s.blur = blur;
+                    s.resolution = resolution;
                     s.normals = gbuffer ? AoNormals::FromTexture : AoNormals::FromDepth;
-                    INFO(test::label() << " " << toString(t) << " " << scene.name << (blur ? " blur" : "") << (gbuffer ? " gbuffer-normals" : ""));
+                    INFO(test::label() << " " << toString(t) << " " << scene.name << " " << toString(resolution) << (blur ? " blur" : "")
+                                       << (gbuffer ? " gbuffer-normals" : ""));
                     const GpuAo gpu = runAo(scene, s);
+                    REQUIRE(gpu.config.halfResolution == half);
                     const Grid ref = reference::ambientVisibility(scene.aoInput(gbuffer), gpu.config);
                     double sq = 0, maxErr = 0, occludedSigned = 0;
                     size_t off = 0, occluded = 0;
@@ -235,6 +272,83 @@ TEST_CASE("ao: plan holds a depth MIP only for high-tier Scalable, blur targets 
             CHECK(blurPass == blur);
             CHECK(plan.bytesOf("ao") > 0);
         }
+}
+
+TEST_CASE("ao: at half resolution the plan holds half-size passes and textures and the upsample", "[ao][plan]") {
+    Device& dev = test::device();
+    const TierProfile& profile = test::tierProfile();
+    for (AoTechnique t : kTechniques)
+        for (bool blur : {false, true}) {
+            INFO(test::label() << " " << toString(t) << (blur ? " blur" : ""));
+            AoSettings s;
+            s.technique = t;
+            s.blur = blur;
+            s.resolution = AoResolution::Half;
+            auto ao = AmbientObscurance::create(dev, {65, 33, profile, s});
+            REQUIRE(ao.isOk());
+            const Plan plan = ao.value()->plan();
+            // Depth MIP level 1 is the half-size depth only where the pyramid exists anyway.
+            const bool mipHalf = t == AoTechnique::Scalable && profile.aoUsesDepthMip;
+            size_t halfPasses = 0, upsample = 0, halfDepthPass = 0;
+            for (const PlannedPass& p : plan.passes) {
+                if (p.effect != "ao") continue;
+                const bool isUpsample = p.name.find("upsample") != std::string::npos;
+                upsample += isUpsample;
+                halfDepthPass += p.name.rfind("half-size depth", 0) == 0;
+                if (isUpsample) {
+                    CHECK(p.width == 65);
+                    CHECK(p.height == 33);
+                } else {
+                    CHECK(p.width == 32);
+                    CHECK(p.height == 16);
+                    ++halfPasses;
+                }
+            }
+            CHECK(upsample == 1);
+            CHECK(halfDepthPass == (mipHalf ? 0u : 1u));
+            CHECK(halfPasses == (mipHalf ? 0u : 1u) + 1u + (blur ? 2u : 0u));
+            size_t halfDepthTexture = 0;
+            for (const PlannedResource& r : plan.resources) {
+                if (r.effect != "ao" || r.format == Format::Undefined) continue;
+                CHECK(r.width == 32);  // every AO texture is half size
+                CHECK(r.height == 16);
+                halfDepthTexture += r.name.rfind("half-size depth", 0) == 0;
+            }
+            CHECK(halfDepthTexture == (mipHalf ? 0u : 1u));
+            // Its full-resolution twin holds more AO bytes (full-size targets) unless it has none.
+            s.resolution = AoResolution::Full;
+            auto full = AmbientObscurance::create(dev, {65, 33, profile, s});
+            REQUIRE(full.isOk());
+            if (blur) CHECK(full.value()->plan().bytesOf("ao") > plan.bytesOf("ao"));
+        }
+}
+
+TEST_CASE("ao: switching resolution with setSettings and resize keeps matching the reference", "[ao]") {
+    if (drawsNothing()) SFX_SKIP("the null backend draws nothing: GPU results are not compared on " << test::label());
+    // runAo creates a fresh context; here one context goes full -> half -> resized -> full.
+    Device& dev = test::device();
+    for (AoTechnique t : kTechniques) {
+        INFO(test::label() << " " << toString(t));
+        AoSettings s = settingsFor(t);
+        s.resolution = AoResolution::Full;
+        auto created = AmbientObscurance::create(dev, {40, 30, test::tierProfile(), s});
+        REQUIRE(created.isOk());
+        AmbientObscurance& ao = *created.value();
+        s.resolution = AoResolution::Half;
+        SFX_REQUIRE_OK(ao.setSettings(s));
+        CHECK(ao.config().halfResolution);
+        for (auto [w, h] : {std::pair{40u, 30u}, std::pair{57u, 41u}}) {
+            SFX_REQUIRE_OK(ao.resize(w, h));
+            const samples::AnalyticScene scene = samples::sphereOnPlaneScene(w, h);
+            const Grid gpu = dispatchOn(dev, ao, scene);
+            SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+            const Grid ref = reference::ambientVisibility(scene.aoInput(false), ao.config());
+            double worst = 0;
+            for (size_t i = 0; i < ref.values.size(); ++i) worst = std::max(worst, std::abs(gpu.values[i] - ref.values[i]));
+            INFO(w << "x" << h << " worst pixel " << worst);
+            CHECK(worst <= tolerance().worst);
+        }
+    }
 }
 
 TEST_CASE("ao: profiling times exactly the planned passes and leaves the output unchanged", "[ao][profiling]") {

@@ -22,9 +22,11 @@ namespace {
 const AoTechnique kTechniques[] = {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease};
 const Tier kTiers[] = {Tier::Current, Tier::High};
 
-AoConfig configFor(AoTechnique t, Tier tier, double scale = 1.0, bool blur = true, double radius = 0.5) {
+AoConfig configFor(AoTechnique t, Tier tier, double scale = 1.0, bool blur = true, double radius = 0.5,
+                   AoResolution resolution = AoResolution::Tier) {
     AoSettings s;
     s.technique = t;
+    s.resolution = resolution;
     s.radius = float(radius * scale);
     s.blur = blur;
     // Scalable's squared sum makes faint occlusion fainter; 2 keeps the contact shadow measurable.
@@ -141,14 +143,25 @@ TEST_CASE("ao settings resolve to the tier table", "[ao]") {
     CHECK(sHigh.samples == 9);
     CHECK_FALSE(sHigh.mirrored);
     CHECK(sHigh.maxRadiusPx == 0);
-    CHECK(sHigh.depthMipLevels == 5);
-    CHECK(sHigh.blurRadius == 6);
+    // The default presets run at half resolution: pixel counts are half-size ones, the pyramid
+    // is read from level 1 (one level fewer), the blur keeps its footprint with (r + 1) / 2 taps.
+    CHECK(sHigh.halfResolution);
+    CHECK(sHigh.depthMipLevels == 4);
+    CHECK(sHigh.blurRadius == 3);
+    const AoConfig sHighFull = configFor(AoTechnique::Scalable, Tier::High, 1.0, true, 0.5, AoResolution::Full);
+    CHECK_FALSE(sHighFull.halfResolution);
+    CHECK(sHighFull.depthMipLevels == 5);
+    CHECK(sHighFull.blurRadius == 6);
     const AoConfig sCur = configFor(AoTechnique::Scalable, Tier::Current);
     CHECK(sCur.samples == 4);
     CHECK(sCur.mirrored);
-    CHECK(sCur.maxRadiusPx == Approx(20));
+    CHECK(sCur.halfResolution);
+    CHECK(sCur.maxRadiusPx == Approx(10));
     CHECK(sCur.depthMipLevels == 1);
-    CHECK(sCur.blurRadius == 2);
+    CHECK(sCur.blurRadius == 1);
+    const AoConfig sCurFull = configFor(AoTechnique::Scalable, Tier::Current, 1.0, true, 0.5, AoResolution::Full);
+    CHECK(sCurFull.maxRadiusPx == Approx(20));
+    CHECK(sCurFull.blurRadius == 2);
     CHECK(configFor(AoTechnique::Crease, Tier::High, 1.0, false).blurRadius == 0);
 }
 
@@ -347,6 +360,72 @@ TEST_CASE("ao reference: the bilateral blur does not carry occlusion across a de
         for (uint32_t y = 0; y < 4; ++y)
             for (uint32_t x = 0; x < 16; ++x) REQUIRE(h.at(x, y) == (x < 8 ? 0.0 : 1.0));
     }
+}
+
+TEST_CASE("ao reference: the half-size depth takes depth MIP level 1's rotated-grid samples", "[ao][half-res]") {
+    const samples::AnalyticScene scene = samples::columnsScene(97, 65);
+    const Grid half = reference::halfSizeDepth(scene.linearDepth);
+    REQUIRE(half.width == 48);
+    REQUIRE(half.height == 32);
+    const std::vector<Grid> pyramid = reference::depthPyramid(scene.linearDepth, 2);
+    CHECK(half.values == pyramid[1].values);  // the high tier reuses MIP level 1 for it
+    // Each texel is one full-size sample (never an average), so positions stay exact.
+    for (uint32_t y = 0; y < half.height; ++y)
+        for (uint32_t x = 0; x < half.width; ++x) {
+            const shared::ivec2 s = shared::aoFullResPixel(shared::ivec2{int(x), int(y)}, shared::ivec2{97, 65});
+            REQUIRE(half.at(x, y) == scene.linearDepth.at(uint32_t(s.x), uint32_t(s.y)));
+        }
+}
+
+TEST_CASE("ao reference: the depth-aware upsample keeps edges and reproduces smooth input", "[ao][half-res]") {
+    // A near square (depth 2, AO 0.2) on a far wall (depth 10, AO 0.9), edge at an odd pixel.
+    const uint32_t w = 32, h = 16, edge = 13;
+    Grid full(w, h, 10.0);
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < edge; ++x) full.at(x, y) = 2.0;
+    const Grid half = reference::halfSizeDepth(full);
+    Grid halfAo(half.width, half.height);
+    for (size_t i = 0; i < halfAo.values.size(); ++i) halfAo.values[i] = half.values[i] < 5.0 ? 0.2 : 0.9;
+    const Grid up = reference::depthAwareUpsample(halfAo, half, full, 100.0);
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x) {
+            INFO(x << ", " << y);
+            // Every pixel gets only its own surface's AO, right up to the edge: no halo.
+            CHECK(up.at(x, y) == Approx(x < edge ? 0.2 : 0.9).margin(1e-12));
+        }
+    // A smooth surface (depths within the tolerance) with AO linear in x: the blend is the
+    // bilinear interpolation, exact for a linear ramp away from the clamped border but for the
+    // nearest-depth texel's fixed weight (1e-3 of a total near 1: under 1e-4 on a 0.04 spread).
+    Grid ramp(w, h, 5.0), rampHalf(w / 2, h / 2);
+    for (uint32_t y = 0; y < h / 2; ++y)
+        for (uint32_t x = 0; x < w / 2; ++x) rampHalf.at(x, y) = 0.02 * (2.0 * x + 0.5);
+    const Grid rampUp = reference::depthAwareUpsample(rampHalf, reference::halfSizeDepth(ramp), ramp, 100.0);
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 1; x + 1 < w; ++x) CHECK(rampUp.at(x, y) == Approx(0.02 * x).margin(1e-4));
+    // Sky at full size is unoccluded whatever the half-size texels hold.
+    Grid withSky = full;
+    withSky.at(20, 5) = 1e30;
+    CHECK(reference::depthAwareUpsample(halfAo, half, withSky, 100.0).at(20, 5) == 1.0);
+}
+
+TEST_CASE("ao reference: half resolution stays close to full resolution on analytic scenes", "[ao][half-res]") {
+    for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable})
+        for (Tier tier : kTiers) {
+            INFO(name(t, tier));
+            for (auto make : {&samples::cornerScene, &samples::sphereOnPlaneScene}) {
+                const samples::AnalyticScene scene = make(192, 128, 1.0);
+                const AoConfig full = configFor(t, tier, 1.0, true, 0.5, AoResolution::Full);
+                const AoConfig half = configFor(t, tier, 1.0, true, 0.5, AoResolution::Half);
+                const Grid a = reference::ambientVisibility(scene.aoInput(false), full);
+                const Grid b = reference::ambientVisibility(scene.aoInput(false), half);
+                requireValid(b);
+                double meanAbs = 0;
+                for (size_t i = 0; i < a.values.size(); ++i) meanAbs += std::abs(a.values[i] - b.values[i]);
+                meanAbs /= double(a.values.size());
+                INFO("mean |half - full| " << meanAbs);
+                CHECK(meanAbs < 0.03);  // the same bound as doubling the resolution
+            }
+        }
 }
 
 // Not a check: writes the G-buffer files the `sfx ao` CTest entries read (fixture ao_cli_files).

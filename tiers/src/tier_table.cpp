@@ -73,6 +73,9 @@ TierProfile currentDefault() {
     p.aoLook[1] = {.intensity = 3.70852f, .contrast = 10.0f, .bias = 0.398438f};                                // scalable
     p.aoLook[2] = {.intensity = 3.22266f, .contrast = 4.21697f, .bias = 0, .creaseRange = 0.5516f, .creaseBias = 0.238152f};  // crease
     p.aoPackedDepthTarget = true;  // ao_blur.frag reads the key packed in the RGBA8 AO target
+    // Obscurance and blur at half size, a depth-aware upsample last: the cost goal of issue 10
+    // (docs/trade.md); the blur's 2 px become 1 half-size tap each side.
+    p.aoHalfResolution = true;
     p.mbTaps = 7;                  // 6 samples + centre
     p.mbMaxRadiusPx = 10.0f;
     p.mbJitterSize = 2;  // checkerboard
@@ -94,6 +97,7 @@ TierProfile highDefault() {
     p.aoLook[1] = {.intensity = 4.07247f, .contrast = 5.42469f, .bias = 0.261719f};                                // scalable
     p.aoLook[2] = {.intensity = 14.4122f, .contrast = 1.15478f, .bias = 0, .creaseRange = 0.430292f, .creaseBias = 0.238152f};  // crease
     p.aoPackedDepthTarget = false;  // RG16F AO target; the blur reads the linear depth texture
+    p.aoHalfResolution = true;      // as the current tier; the blur's 6 px become 3 half-size taps each side
     p.mbTaps = 9;                   // 8 samples + centre
     p.mbMaxRadiusPx = 18.0f;
     p.mbJitterSize = 4;  // 4x4 randomised
@@ -101,10 +105,13 @@ TierProfile highDefault() {
     return p;
 }
 
-// A preset of a tier: its default with other tap counts, blur width and motion blur radius
-// (uniforms only: the structure, and so the shaders, stay the default's).
-Preset variant(const char* name, TierProfile p, uint32_t alchemy, uint32_t scalable, uint32_t blur, uint32_t mbTaps, float mbRadius,
+// A preset of a tier: its default with other tap counts, blur width (output pixels), AO at full
+// or half resolution and motion blur radius (uniforms and specialisation constants only: the
+// tier's shader defines, and so its programs, stay the default's).
+enum class AoRes { Full, Half };
+Preset variant(const char* name, TierProfile p, AoRes res, uint32_t alchemy, uint32_t scalable, uint32_t blur, uint32_t mbTaps, float mbRadius,
                PresetAccuracy accuracy) {
+    p.aoHalfResolution = res == AoRes::Half;
     p.aoAlchemySamples = alchemy, p.aoScalableTaps = scalable, p.aoBlurRadiusPx = blur;
     p.mbTaps = mbTaps, p.mbMaxRadiusPx = mbRadius;
     return {name, p, accuracy};
@@ -114,20 +121,20 @@ Preset variant(const char* name, TierProfile p, uint32_t alchemy, uint32_t scala
 // samples/trade_presets (tools/run_trade.sh) on llvmpipe; the figures of docs/trade.md.
 std::vector<Preset> currentPresets() {
     const TierProfile d = currentDefault();
-    return {{kDefaultPreset, d, {{27.40, 23.95, 22.54}, 31.05}},
-            variant("low", d, 3, 2, 1, 5, 8.0f, {{25.96, 23.20, 22.43}, 28.69}),
-            variant("medium", d, 6, 4, 2, 7, 10.0f, {{27.40, 23.95, 22.54}, 31.05}),
-            variant("high", d, 10, 6, 3, 9, 14.0f, {{27.65, 24.42, 22.62}, 33.79}),
-            variant("ultra", d, 16, 10, 4, 13, 18.0f, {{27.64, 24.00, 22.84}, 34.77})};
+    return {{kDefaultPreset, d, {{26.97, 23.79, 24.07}, 31.05}},
+            variant("low", d, AoRes::Half, 3, 2, 1, 5, 8.0f, {{26.03, 23.50, 24.07}, 28.69}),
+            variant("medium", d, AoRes::Half, 6, 4, 2, 7, 10.0f, {{26.97, 23.79, 24.07}, 31.05}),
+            variant("high", d, AoRes::Half, 10, 6, 3, 9, 14.0f, {{27.26, 24.15, 24.10}, 33.79}),
+            variant("ultra", d, AoRes::Full, 16, 10, 4, 13, 18.0f, {{27.64, 24.00, 22.84}, 34.77})};
 }
 
 std::vector<Preset> highPresets() {
     const TierProfile d = highDefault();
-    return {{kDefaultPreset, d, {{27.46, 25.81, 23.31}, 34.38}},
-            variant("low", d, 4, 4, 2, 5, 10.0f, {{27.14, 25.75, 22.25}, 30.49}),
-            variant("medium", d, 8, 6, 4, 7, 14.0f, {{27.62, 26.26, 22.90}, 32.77}),
-            variant("high", d, 12, 9, 6, 9, 18.0f, {{27.46, 25.81, 23.31}, 34.38}),
-            variant("ultra", d, 24, 16, 8, 15, 24.0f, {{27.26, 25.47, 23.48}, 34.67})};
+    return {{kDefaultPreset, d, {{27.23, 25.63, 23.80}, 34.38}},
+            variant("low", d, AoRes::Half, 4, 4, 2, 5, 10.0f, {{26.50, 25.03, 23.62}, 30.49}),
+            variant("medium", d, AoRes::Half, 8, 6, 4, 7, 14.0f, {{27.29, 25.60, 23.72}, 32.77}),
+            variant("high", d, AoRes::Half, 12, 9, 6, 9, 18.0f, {{27.23, 25.63, 23.80}, 34.38}),
+            variant("ultra", d, AoRes::Full, 24, 16, 8, 15, 24.0f, {{27.26, 25.47, 23.48}, 34.67})};
 }
 
 std::vector<TierRow> makeTable() {

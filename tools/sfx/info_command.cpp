@@ -31,6 +31,7 @@ const ParameterRow kParameterRows[] = {
      [](const TierProfile& p) { return p.aoScalableMaxRadiusPx > 0 ? std::to_string(int(p.aoScalableMaxRadiusPx)) : std::string("none"); }},
     {"depth MIP levels read by AO", [](const TierProfile& p) { return std::to_string(p.aoDepthMipLevels); }},
     {"Alchemy samples per pixel", [](const TierProfile& p) { return std::to_string(p.aoAlchemySamples); }},
+    {"AO resolution (obscurance and blur)", [](const TierProfile& p) { return std::string(p.aoHalfResolution ? "half, depth-aware upsample" : "full"); }},
     {"AO bilateral blur half-width (px)", [](const TierProfile& p) { return std::to_string(p.aoBlurRadiusPx); }},
     {"AO blur depth source",
      [](const TierProfile& p) {

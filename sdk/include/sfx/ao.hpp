@@ -7,6 +7,7 @@
 // SFX_SKY_DEPTH, or the far plane) is 1.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -29,6 +30,18 @@ enum class AoNormals : uint32_t {
     FromTexture,  // AoInputs.normals: view-space unit normals, x right, y up, camera looking down -z.
                   // Float formats (RGBA16F, RGBA32F) hold signed xyz; RGBA8 holds xyz * 0.5 + 0.5.
 };
+
+// Where obscurance and blur run. Half: on a half-size depth (each texel a real full-size
+// sample, the depth MIP's rotated grid), then a depth-aware upsample to the output, weights
+// from the full-size depth so silhouettes stay sharp: about a quarter of the obscurance and blur
+// cost for one full-size pass (docs/ao.md). What most shipping AO does.
+enum class AoResolution : uint32_t {
+    Tier,  // the tier preset's (TierProfile::aoHalfResolution)
+    Full,
+    Half,
+};
+const char* toString(AoResolution resolution);  // "tier", "full", "half"
+bool parseAoResolution(const std::string& text, AoResolution* out);
 
 // Smallest AoSettings.radius and crease.range (world units). Below it epsilon * r^2 (the
 // centre-tap guard) is no longer a normal float: GPUs flush it to 0 and a tap on the centre
@@ -62,6 +75,8 @@ struct AoSettings {
                              // current tier: mirrored pairs); Crease 0 or 24 (its pattern is fixed)
     bool blur = true;        // the separable depth-aware bilateral blur (and crease's two-blur look)
     uint32_t blurRadius = 0; // 0 = tier default (TierProfile::aoBlurRadiusPx); else [1, SFX_AO_MAX_BLUR_RADIUS] px
+                             // of the output; at half resolution the blur takes (r + 1) / 2 half-size taps each side
+    AoResolution resolution = AoResolution::Tier;
     AoNormals normals = AoNormals::FromDepth;
     AoCreaseSettings crease;
 };
@@ -76,11 +91,13 @@ inline constexpr float kAoScalableDefaultBias = 0.02f;
 struct AoConfig {
     AoTechnique technique = AoTechnique::Scalable;
     double radius = 0.5, intensity = 1, contrast = 1, bias = 0.02, epsilon = 1e-4;
+    // Every pixel count below is in the obscurance pass's pixels: at half resolution half-size ones.
+    bool halfResolution = false;  // obscurance + blur at half size, then the depth-aware upsample
     uint32_t samples = 4;         // taps per pixel (Scalable mirrored: total, both signs)
     bool mirrored = false;        // Scalable: samples / 2 offsets, each also negated
     double spiralTurns = 7;       // Scalable spiral turns
     double maxRadiusPx = 0;       // Scalable: screen radius clamp, 0 = none
-    uint32_t depthMipLevels = 1;  // Scalable: depth MIP levels read (1 = full resolution only)
+    uint32_t depthMipLevels = 1;  // Scalable: depth MIP levels read, from the pass's size (1 = that size only)
     uint32_t blurRadius = 0;      // 0 = no blur
     AoNormals normals = AoNormals::FromDepth;
     AoCreaseSettings crease;
@@ -117,7 +134,8 @@ public:
     AmbientObscurance(const AmbientObscurance&) = delete;
     AmbientObscurance& operator=(const AmbientObscurance&) = delete;
 
-    // Records depth linearisation (+ MIP), the obscurance pass and, with blur, two blur passes.
+    // Records depth linearisation (+ MIP), at half resolution the half-size depth (unless MIP
+    // level 1 is it), the obscurance pass, with blur two blur passes, at half resolution the upsample.
     Status dispatch(const AoInputs& inputs);
     Status resize(uint32_t width, uint32_t height);
     // Validates, then reallocates only what the new settings need (MIP levels, blur targets).
@@ -152,10 +170,24 @@ private:
     AoDesc desc_;
     AoConfig config_;
     std::unique_ptr<LinearDepth> depth_;
+    // Records one pass, bracketed by its plan() timer while profiling (ao_half_res.cpp has the
+    // half-resolution passes).
+    Status timed(size_t passIndex, const std::function<Status()>& record);
+    Status allocateHalfRes();
+    Status recordHalfDepth(size_t passIndex);
+    Status recordUpsample(const AoInputs& in, Format outFormat, TextureHandle source, size_t passIndex);
+    // Half resolution: whether the half-size depth is depth MIP level 1 (high-tier Scalable),
+    // else halfDepth_ made by the ao_half_depth pass. The pass's size.
+    bool halfDepthFromMip() const;
+    uint32_t passWidth() const;
+    uint32_t passHeight() const;
+    TextureHandle halfDepthTexture() const;
+
     TextureHandle aoTarget_, blurTarget_;
+    TextureHandle halfDepth_;  // half resolution without a depth MIP: R32F, half size
     Format targetFormat_ = Format::Undefined;
-    BufferHandle aoParams_, blurParamsH_, blurParamsV_;
-    ProgramHandle aoProgram_, blurProgram_;
+    BufferHandle aoParams_, blurParamsH_, blurParamsV_, upsampleParams_;
+    ProgramHandle aoProgram_, blurProgram_, halfDepthProgram_, upsampleProgram_;
     // Pipelines by program, format and specialisation constants; kept across resize.
     std::unique_ptr<detail::PipelineCache> pipelines_;
     bool profiling_ = false;

@@ -58,6 +58,8 @@ struct TierProfile {
     // only). false (high): an RG16F target, and the blur reads the linear depth texture. The
     // table turns it into SFX_AO_PACKED_DEPTH_TARGET, which decides ao_blur.frag's bindings.
     bool aoPackedDepthTarget = false;
+    // AO at half resolution with a depth-aware upsample (AoResolution::Tier resolves to it).
+    bool aoHalfResolution = false;
     // Motion blur
     uint32_t mbTaps = 0;               // reconstruction taps including the centre
     float mbMaxRadiusPx = 0;           // maximum blur radius at the reference resolution

@@ -1,10 +1,12 @@
 // The AmbientObscurance effect: linear depth (+ MIP for high-tier Scalable AO), one obscurance
-// pass of the chosen technique, and a two-pass separable bilateral blur into the host's output.
+// pass of the chosen technique, and a two-pass separable bilateral blur into the host's output;
+// at half resolution both at half size and a depth-aware upsample last (ao_half_res.cpp).
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "sfx/ao.hpp"
+#include "ao_internal.hpp"
 #include "effect_common.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared_ao.h"
@@ -17,6 +19,7 @@ using detail::loadProgram;
 // The uniform blocks of the AO passes, declared once in sfx_shared_ao.h for C++ and GLSL.
 using shared::AoParams;
 using shared::BlurParams;
+using shared::UpsampleParams;
 
 const char* programName(AoTechnique t) {
     switch (t) {
@@ -31,10 +34,6 @@ bool isOutputFormat(Format f) {
     return f == Format::R8 || f == Format::RGBA8 || f == Format::R16F || f == Format::RG16F || f == Format::RGBA16F ||
            f == Format::R32F || f == Format::RGBA32F;
 }
-
-// TierProfile::aoPackedDepthTarget: depth packed into an RGBA8 AO target, or AO alone in RG16F
-// with the blur reading full-precision linear depth.
-Format aoTargetFormat(const TierProfile& profile) { return profile.aoPackedDepthTarget ? Format::RGBA8 : Format::RG16F; }
 
 }  // namespace
 
@@ -59,7 +58,9 @@ Status AmbientObscurance::allocate() {
     config_ = config.value();
     const Tier tier = desc_.profile.tier;
 
-    LinearDepthDesc dd{desc_.width, desc_.height, tier, config_.depthMipLevels, desc_.depthInput};
+    // At half size high-tier Scalable reads the pyramid from level 1: one level more to build.
+    const uint32_t depthLevels = halfDepthFromMip() ? config_.depthMipLevels + 1 : config_.depthMipLevels;
+    LinearDepthDesc dd{desc_.width, desc_.height, tier, depthLevels, desc_.depthInput};
     Result<std::unique_ptr<LinearDepth>> depth = LinearDepth::create(device_, dd);
     if (!depth) return depth.status();
     depth_ = std::move(depth.value());
@@ -71,11 +72,14 @@ Status AmbientObscurance::allocate() {
     if (!program) return program.status();
     aoProgram_ = program.value();
 
-    if (config_.blurRadius > 0) {
-        targetFormat_ = aoTargetFormat(desc_.profile);
+    if (config_.blurRadius > 0 || config_.halfResolution) {
+        targetFormat_ = detail::aoTargetFormat(desc_.profile);
         if (!device_.caps().renderableFormat[size_t(targetFormat_)])
             return {StatusCode::UnsupportedFormat, std::string("AO target format ") + toString(targetFormat_) + " is not renderable on this device"};
         SFX_TRY(allocateTargets());
+    }
+    if (config_.halfResolution) SFX_TRY(allocateHalfRes());
+    if (config_.blurRadius > 0) {
         for (BufferHandle* b : {&blurParamsH_, &blurParamsV_}) {
             Result<BufferHandle> buf = device_.createBuffer({sizeof(BlurParams), kBufferUniform, "sfx-ao-blur-params"});
             if (!buf) return buf.status();
@@ -90,21 +94,30 @@ Status AmbientObscurance::allocate() {
     return Status::ok();
 }
 
-// The size-dependent part: the blur's intermediate targets (none without blur).
+// The size-dependent part, at the pass's size: the raw AO target (with blur or at half
+// resolution), the blur intermediate (with blur) and the half-size depth (half resolution
+// without a depth MIP). Full resolution without blur needs none.
 Status AmbientObscurance::allocateTargets() {
-    if (config_.blurRadius == 0) return Status::ok();
-    for (TextureHandle* t : {&aoTarget_, &blurTarget_}) {
-        TextureDesc td{desc_.width, desc_.height, 1, targetFormat_, kTextureSampled | kTextureRenderTarget,
-                       t == &aoTarget_ ? "sfx-ao-raw" : "sfx-ao-blur"};
+    const bool half = config_.halfResolution, blur = config_.blurRadius > 0;
+    struct Wanted {
+        TextureHandle* texture;
+        bool needed;
+        Format format;
+        const char* name;
+    };
+    for (const Wanted& w : {Wanted{&aoTarget_, blur || half, targetFormat_, "sfx-ao-raw"}, Wanted{&blurTarget_, blur, targetFormat_, "sfx-ao-blur"},
+                            Wanted{&halfDepth_, half && !halfDepthFromMip(), Format::R32F, "sfx-ao-half-depth"}}) {
+        if (!w.needed) continue;
+        TextureDesc td{passWidth(), passHeight(), 1, w.format, kTextureSampled | kTextureRenderTarget, w.name};
         Result<TextureHandle> tex = device_.createTexture(td);
         if (!tex) return tex.status();
-        *t = tex.value();
+        *w.texture = tex.value();
     }
     return Status::ok();
 }
 
 void AmbientObscurance::releaseTargets() {
-    for (TextureHandle* t : {&aoTarget_, &blurTarget_}) {
+    for (TextureHandle* t : {&aoTarget_, &blurTarget_, &halfDepth_}) {
         if (!t->isNull()) (void)device_.destroyTexture(*t);
         *t = {};
     }
@@ -160,11 +173,11 @@ Result<std::vector<PassTiming>> AmbientObscurance::passTimings() {
 void AmbientObscurance::release() {
     // Destroy calls on null handles report InvalidHandle; there is nothing to release then.
     pipelines_->clear();
-    for (ProgramHandle* p : {&aoProgram_, &blurProgram_}) {
+    for (ProgramHandle* p : {&aoProgram_, &blurProgram_, &halfDepthProgram_, &upsampleProgram_}) {
         if (!p->isNull()) (void)device_.destroyProgram(*p);
         *p = {};
     }
-    for (BufferHandle* b : {&aoParams_, &blurParamsH_, &blurParamsV_}) {
+    for (BufferHandle* b : {&aoParams_, &blurParamsH_, &blurParamsV_, &upsampleParams_}) {
         if (!b->isNull()) (void)device_.destroyBuffer(*b);
         *b = {};
     }
@@ -179,15 +192,19 @@ Status AmbientObscurance::resize(uint32_t width, uint32_t height) {
     if (width == desc_.width && height == desc_.height && depth_) return Status::ok();
     Result<AoConfig> config = resolveAoConfig(desc_.settings, desc_.profile, maxMipLevels(width, height));
     if (!config) return config.status();
-    desc_.width = width;
-    desc_.height = height;
-    // The MIP level count follows the size only below 2^levels pixels; then everything is rebuilt.
-    if (!depth_ || config->depthMipLevels != config_.depthMipLevels) {
+    // The MIP level count follows the size only below 2^levels pixels, and with it whether MIP
+    // level 1 is the half-size depth; then everything is rebuilt.
+    const bool mipHalfDepthChanged = detail::mipGivesHalfDepth(config.value(), desc_.profile, width, height) != halfDepthFromMip();
+    if (!depth_ || config->depthMipLevels != config_.depthMipLevels || mipHalfDepthChanged) {
+        desc_.width = width;
+        desc_.height = height;
         release();
         return allocate();
     }
     // Otherwise only textures follow the size: programs and pipelines (their constants do not
     // depend on it) stay, and the size-dependent uniforms are written at every dispatch.
+    desc_.width = width;
+    desc_.height = height;
     releaseTargets();
     Status s = depth_->resize(width, height);
     if (s) s = allocateTargets();
@@ -204,7 +221,7 @@ Status AmbientObscurance::setSettings(const AoSettings& settings) {
     // pipeline a changed constant needs (the pipeline cache keeps the others). Only a technique,
     // MIP level count or blur on/off change reallocates programs and textures.
     if (depth_ && config->technique == config_.technique && config->depthMipLevels == config_.depthMipLevels &&
-        (config->blurRadius > 0) == (config_.blurRadius > 0)) {
+        (config->blurRadius > 0) == (config_.blurRadius > 0) && config->halfResolution == config_.halfResolution) {
         config_ = config.value();
         return Status::ok();
     }
@@ -236,21 +253,22 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
                                                         "; allowed RGBA16F/RGBA32F (signed xyz) or RGBA8 (xyz * 0.5 + 0.5)"};
     }
 
-    // Profiling: plan() order is the depth passes (linearize + one per MIP level past 0), the
-    // obscurance pass, then blur h and v. timed() records a pass bare when profiling is off.
+    // Profiling: plan() order is the depth passes (linearize + one per MIP level past 0), at half
+    // resolution the half-size depth unless MIP level 1 is it, the obscurance pass, blur h and v,
+    // at half resolution the upsample. timed() records a pass bare when profiling is off.
     const size_t depthPasses = depth_->plan().passes.size();  // none when passing linear depth through
     const std::span<const TimerHandle> timers(passTimers_);
-    auto timed = [&](size_t passIndex, auto record) -> Status {
-        if (timers.empty()) return record();
-        SFX_TRY(device_.beginTimer(timers[passIndex]));
-        SFX_TRY(record());
-        return device_.endTimer(timers[passIndex]);
-    };
     SFX_TRY(depth_->dispatch(in.depth, timers.empty() ? timers : timers.first(depthPasses)));
+    size_t passIndex = depthPasses;
+    const bool half = config_.halfResolution;
+    if (half && !halfDepthFromMip()) SFX_TRY(recordHalfDepth(passIndex++));
     const DepthReconstruction& rec = depth_->reconstruction();
     const bool blur = config_.blurRadius > 0;
     const double keyNear = std::max(rec.nearDepth, 1e-6);
     const double keyLog2Range = std::log2(double(shared::SFX_SKY_DEPTH) / keyNear);
+    // The depth the obscurance and blur passes read, and its MIP levels past their own size.
+    const TextureHandle passDepth = half ? halfDepthTexture() : depth_->texture();
+    const uint32_t passDepthBase = half && halfDepthFromMip() ? 1 : 0;
 
     AoParams p{};
     for (int i = 0; i < 4; ++i) p.projInfo[i] = float(rec.projInfo[i]);
@@ -259,9 +277,12 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
     p.contrast = float(config_.contrast);
     p.bias = float(config_.bias);
     p.epsilon = float(config_.epsilon);
-    p.pixelsPerUnit = float(rec.pixelsPerUnitAtUnitDepth);
+    // Screen radii are in the pass's pixels: half as many per unit at half size.
+    p.pixelsPerUnit = float(rec.pixelsPerUnitAtUnitDepth * (half ? 0.5 : 1.0));
     p.maxRadiusPx = float(config_.maxRadiusPx);
     p.maxDepth = float(rec.maxDepth);
+    p.fullWidth = int32_t(desc_.width);
+    p.fullHeight = int32_t(desc_.height);
     p.spiralTurns = float(config_.spiralTurns);
     p.keyNear = float(keyNear);
     p.keyInvLog2Range = float(1.0 / keyLog2Range);
@@ -273,8 +294,9 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
     p.invFadeRange = std::isinf(config_.crease.fadeEnd) ? 0.0f : float(1.0 / (double(config_.crease.fadeEnd) - config_.crease.fadeStart));
     SFX_TRY(device_.writeBuffer(aoParams_, 0, &p, sizeof p));
 
-    // Obscurance: straight into the output without blur.
-    const TextureHandle aoDest = blur ? aoTarget_ : in.output;
+    // Obscurance: straight into the output at full resolution without blur.
+    const bool direct = !blur && !half;
+    const TextureHandle aoDest = direct ? in.output : aoTarget_;
     const std::vector<SpecializationConstant> aoConstants = {
         {SFX_AO_SC_SAMPLES, int32_t(config_.samples)},
         {SFX_AO_SC_MIRRORED, config_.mirrored ? 1 : 0},
@@ -282,71 +304,99 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
         {SFX_AO_SC_NORMAL_SOURCE, normalSource},
         {SFX_AO_SC_PACK_DEPTH, blur && targetFormat_ == Format::RGBA8 ? 1 : 0},
         {SFX_AO_SC_CLAMP_RADIUS, config_.maxRadiusPx > 0.0 ? 1 : 0},
+        {SFX_AO_SC_HALF_RES, half ? 1 : 0},
     };
-    Result<PipelineHandle> aoPipeline = pipelines_->get(aoProgram_, blur ? targetFormat_ : out->format, aoConstants, "sfx-ao");
+    Result<PipelineHandle> aoPipeline = pipelines_->get(aoProgram_, direct ? out->format : targetFormat_, aoConstants, "sfx-ao");
     if (!aoPipeline) return aoPipeline.status();
     RenderPassDesc pass;
     pass.colors = {ColorAttachment{aoDest, 0, LoadOp::DontCare, {}}};
     pass.debugName = "sfx-ao";
     DrawDesc draw;
     draw.pipeline = aoPipeline.value();
-    // Without host normals the normals binding gets the depth texture: the shader never reads it
-    // then, but every declared sampler needs a valid texture.
-    const TextureHandle normals = normalSource ? in.normals : depth_->texture();
-    draw.bindings.textures = {TextureBinding{gen::ao_scalable::uDepth, depth_->texture(), 0, config_.depthMipLevels, {}},
-                              TextureBinding{gen::ao_scalable::uNormals, normals, 0, 1, {}}};
+    // Without host normals the normals binding gets the pass's depth, with the same mip range
+    // (GL keeps one range per texture): the shader never reads it then, but every declared
+    // sampler needs a valid texture.
+    const TextureBinding depthBinding{gen::ao_scalable::uDepth, passDepth, passDepthBase, config_.depthMipLevels, {}};
+    TextureBinding normalBinding = depthBinding;
+    normalBinding.binding = gen::ao_scalable::uNormals;
+    if (normalSource) normalBinding = TextureBinding{gen::ao_scalable::uNormals, in.normals, 0, 1, {}};
+    draw.bindings.textures = {depthBinding, normalBinding};
     draw.bindings.uniformBuffers = {BufferBinding{gen::ao_scalable::AoParams, aoParams_, 0, 0}};
-    SFX_TRY(timed(depthPasses, [&] { return device_.renderPass(pass, std::span<const DrawDesc>(&draw, 1)); }));
-    if (!blur) return Status::ok();
+    SFX_TRY(timed(passIndex++, [&] { return device_.renderPass(pass, std::span<const DrawDesc>(&draw, 1)); }));
 
-    const int radius = int(config_.blurRadius);
-    for (int passIndex = 0; passIndex < 2; ++passIndex) {
-        BlurParams b{};
-        b.direction[0] = passIndex == 0 ? 1 : 0;
-        b.direction[1] = passIndex == 0 ? 0 : 1;
-        b.maxDepth = float(rec.maxDepth);
-        b.keyNear = float(keyNear);
-        b.keyLog2Range = float(keyLog2Range);
-        const BufferHandle buffer = passIndex == 0 ? blurParamsH_ : blurParamsV_;
-        SFX_TRY(device_.writeBuffer(buffer, 0, &b, sizeof b));
-        const TextureHandle src = passIndex == 0 ? aoTarget_ : blurTarget_;
-        const TextureHandle dst = passIndex == 0 ? blurTarget_ : in.output;
-        const std::vector<SpecializationConstant> blurConstants = {
-            {SFX_AO_SC_BLUR_RADIUS, radius},
-            {SFX_AO_SC_BLUR_MODERATE_RADIUS, std::max(1, radius / 2)},
-            {SFX_AO_SC_BLUR_CREASE, config_.technique == AoTechnique::Crease ? 1 : 0},
-            {SFX_AO_SC_BLUR_FINAL_PASS, passIndex},
-        };
-        Result<PipelineHandle> bp = pipelines_->get(blurProgram_, passIndex == 0 ? targetFormat_ : out->format, blurConstants,
-                                                    passIndex == 0 ? "sfx-ao-blur-h" : "sfx-ao-blur-v");
-        if (!bp) return bp.status();
-        RenderPassDesc bpass;
-        bpass.colors = {ColorAttachment{dst, 0, LoadOp::DontCare, {}}};
-        bpass.debugName = passIndex == 0 ? "sfx-ao-blur-h" : "sfx-ao-blur-v";
-        DrawDesc bdraw;
-        bdraw.pipeline = bp.value();
-        bdraw.bindings.textures = {TextureBinding{gen::ao_blur::uSource, src, 0, 1, {}}};
-        if (!desc_.profile.aoPackedDepthTarget)
-            bdraw.bindings.textures.push_back(TextureBinding{gen::ao_blur::uDepth, depth_->texture(), 0, 1, {}});
-        bdraw.bindings.uniformBuffers = {BufferBinding{gen::ao_blur::BlurParams, buffer, 0, 0}};
-        SFX_TRY(timed(depthPasses + 1 + size_t(passIndex), [&] { return device_.renderPass(bpass, std::span<const DrawDesc>(&bdraw, 1)); }));
+    if (blur) {
+        const int radius = int(config_.blurRadius);
+        for (int blurPass = 0; blurPass < 2; ++blurPass) {
+            BlurParams b{};
+            b.direction[0] = blurPass == 0 ? 1 : 0;
+            b.direction[1] = blurPass == 0 ? 0 : 1;
+            b.maxDepth = float(rec.maxDepth);
+            b.keyNear = float(keyNear);
+            b.keyLog2Range = float(keyLog2Range);
+            const BufferHandle buffer = blurPass == 0 ? blurParamsH_ : blurParamsV_;
+            SFX_TRY(device_.writeBuffer(buffer, 0, &b, sizeof b));
+            // At half resolution the second pass goes back into the raw target, for the upsample.
+            const TextureHandle src = blurPass == 0 ? aoTarget_ : blurTarget_;
+            const TextureHandle dst = blurPass == 0 ? blurTarget_ : half ? aoTarget_ : in.output;
+            const std::vector<SpecializationConstant> blurConstants = {
+                {SFX_AO_SC_BLUR_RADIUS, radius},
+                {SFX_AO_SC_BLUR_MODERATE_RADIUS, std::max(1, radius / 2)},
+                {SFX_AO_SC_BLUR_CREASE, config_.technique == AoTechnique::Crease ? 1 : 0},
+                {SFX_AO_SC_BLUR_FINAL_PASS, blurPass},
+            };
+            Result<PipelineHandle> bp = pipelines_->get(blurProgram_, blurPass == 0 || half ? targetFormat_ : out->format, blurConstants,
+                                                        blurPass == 0 ? "sfx-ao-blur-h" : "sfx-ao-blur-v");
+            if (!bp) return bp.status();
+            RenderPassDesc bpass;
+            bpass.colors = {ColorAttachment{dst, 0, LoadOp::DontCare, {}}};
+            bpass.debugName = blurPass == 0 ? "sfx-ao-blur-h" : "sfx-ao-blur-v";
+            DrawDesc bdraw;
+            bdraw.pipeline = bp.value();
+            bdraw.bindings.textures = {TextureBinding{gen::ao_blur::uSource, src, 0, 1, {}}};
+            if (!desc_.profile.aoPackedDepthTarget)
+                bdraw.bindings.textures.push_back(TextureBinding{gen::ao_blur::uDepth, passDepth, passDepthBase, 1, {}});
+            bdraw.bindings.uniformBuffers = {BufferBinding{gen::ao_blur::BlurParams, buffer, 0, 0}};
+            SFX_TRY(timed(passIndex++, [&] { return device_.renderPass(bpass, std::span<const DrawDesc>(&bdraw, 1)); }));
+        }
     }
+    if (half) SFX_TRY(recordUpsample(in, out->format, aoTarget_, passIndex++));
     return Status::ok();
+}
+
+Status AmbientObscurance::timed(size_t passIndex, const std::function<Status()>& record) {
+    if (passTimers_.empty()) return record();
+    SFX_TRY(device_.beginTimer(passTimers_[passIndex]));
+    SFX_TRY(record());
+    return device_.endTimer(passTimers_[passIndex]);
 }
 
 Plan AmbientObscurance::plan() const {
     Plan plan;
     if (depth_) plan = depth_->plan();
-    plan.passes.push_back({"ao", std::string("obscurance (") + toString(config_.technique) + ")", desc_.width, desc_.height});
+    const bool half = config_.halfResolution, blur = config_.blurRadius > 0;
+    const uint32_t w = passWidth(), h = passHeight();
+    const std::string atHalf = half ? " at half size" : "";
+    if (half && !halfDepthFromMip())
+        plan.passes.push_back({"ao", "half-size depth (AO at half resolution; no depth MIP level 1 to reuse)", w, h});
+    plan.passes.push_back({"ao", std::string("obscurance (") + toString(config_.technique) + ")" + atHalf, w, h});
     plan.resources.push_back({"ao", "ao params", Format::Undefined, 0, 0, 1, sizeof(AoParams)});
-    if (config_.blurRadius > 0) {
-        plan.passes.push_back({"ao", "bilateral blur h", desc_.width, desc_.height});
-        plan.passes.push_back({"ao", "bilateral blur v", desc_.width, desc_.height});
-        const TextureDesc td{desc_.width, desc_.height, 1, aoTargetFormat(desc_.profile), kTextureSampled | kTextureRenderTarget};
-        plan.resources.push_back(plannedTexture("ao", desc_.profile.aoPackedDepthTarget ? "raw AO + packed depth (RGBA8)" : "raw AO (RG16F)", td));
-        plan.resources.push_back(plannedTexture("ao", "blur intermediate", td));
+    if (blur) {
+        plan.passes.push_back({"ao", "bilateral blur h" + atHalf, w, h});
+        plan.passes.push_back({"ao", "bilateral blur v" + atHalf, w, h});
+    }
+    if (half) plan.passes.push_back({"ao", "depth-aware upsample to full size (AO at half resolution)", desc_.width, desc_.height});
+    const TextureDesc td{w, h, 1, detail::aoTargetFormat(desc_.profile), kTextureSampled | kTextureRenderTarget};
+    const std::string raw = desc_.profile.aoPackedDepthTarget && blur ? "raw AO + packed depth (RGBA8)" :
+                            desc_.profile.aoPackedDepthTarget ? "raw AO (RGBA8)" : "raw AO (RG16F)";
+    if (blur || half) plan.resources.push_back(plannedTexture("ao", raw + (half ? ", half size: the upsample's source" : ""), td));
+    if (blur) {
+        plan.resources.push_back(plannedTexture("ao", "blur intermediate" + atHalf, td));
         plan.resources.push_back({"ao", "blur params", Format::Undefined, 0, 0, 1, 2 * sizeof(BlurParams)});
     }
+    if (half && !halfDepthFromMip())
+        plan.resources.push_back(plannedTexture("ao", "half-size depth (R32F): what obscurance, blur and upsample weights read at half size",
+                                                TextureDesc{w, h, 1, Format::R32F, kTextureSampled | kTextureRenderTarget}));
+    if (half) plan.resources.push_back({"ao", "upsample params", Format::Undefined, 0, 0, 1, sizeof(UpsampleParams)});
     return plan;
 }
 

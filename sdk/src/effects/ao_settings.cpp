@@ -1,4 +1,5 @@
 // AoSettings: names, validation (named errors, never silent clamps) and resolution against a tier.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -46,6 +47,24 @@ bool parseAoTechnique(const std::string& text, AoTechnique* out) {
     return false;
 }
 
+const char* toString(AoResolution resolution) {
+    switch (resolution) {
+        case AoResolution::Tier: return "tier";
+        case AoResolution::Full: return "full";
+        case AoResolution::Half: return "half";
+    }
+    return "unknown";
+}
+
+bool parseAoResolution(const std::string& text, AoResolution* out) {
+    for (AoResolution r : {AoResolution::Tier, AoResolution::Full, AoResolution::Half})
+        if (text == toString(r)) {
+            *out = r;
+            return true;
+        }
+    return false;
+}
+
 Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
     // A value-initialised TierProfile has every count at 0 and would divide by zero in the
     // shaders; it must come from tiers::profile() or tiers::choose().
@@ -83,6 +102,8 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
     if (s.blurRadius > uint32_t(shared::SFX_AO_MAX_BLUR_RADIUS))
         return invalidArgument("AoSettings.blurRadius", std::to_string(s.blurRadius),
                                "[0, " + std::to_string(shared::SFX_AO_MAX_BLUR_RADIUS) + "] (0 = tier default)");
+    if (uint32_t(s.resolution) > 2)
+        return invalidArgument("AoSettings.resolution", std::to_string(uint32_t(s.resolution)), "Tier, Full or Half");
     if (uint32_t(s.normals) > 1) return invalidArgument("AoSettings.normals", std::to_string(uint32_t(s.normals)), "FromDepth or FromTexture");
     const AoCreaseSettings& c = s.crease;
     if (c.range != kTierValue) SFX_TRY(checkRange("AoSettings.crease.range", c.range, kAoMinRadius, false, 1000, false, "[1e-4, 1000], or -1 for the tier's"));
@@ -107,7 +128,11 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
     c.crease = s.crease;
     c.crease.range = orTier(s.crease.range, look.creaseRange);
     c.crease.bias = orTier(s.crease.bias, look.creaseBias);
-    c.blurRadius = s.blur ? (s.blurRadius ? s.blurRadius : profile.aoBlurRadiusPx) : 0;
+    c.halfResolution = s.resolution == AoResolution::Half || (s.resolution == AoResolution::Tier && profile.aoHalfResolution);
+    // Pixel counts are the pass's: at half size the blur keeps its footprint in output pixels
+    // with (r + 1) / 2 taps each side, and the screen radius clamp halves.
+    const uint32_t blurPx = s.blurRadius ? s.blurRadius : profile.aoBlurRadiusPx;
+    c.blurRadius = s.blur ? (c.halfResolution ? std::max(1u, (blurPx + 1) / 2) : blurPx) : 0;
     switch (s.technique) {
         case AoTechnique::Alchemy:
             c.bias = orTier(s.bias, look.bias);
@@ -118,8 +143,10 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
             c.samples = s.samples ? s.samples : profile.aoScalableTaps;
             c.mirrored = profile.aoScalableMirrored;
             c.spiralTurns = c.mirrored ? shared::SFX_AO_SPIRAL_TURNS_MIRRORED : shared::SFX_AO_SPIRAL_TURNS_SPIRAL;
-            c.maxRadiusPx = profile.aoScalableMaxRadiusPx;
+            c.maxRadiusPx = profile.aoScalableMaxRadiusPx * (c.halfResolution ? 0.5 : 1.0);
             c.depthMipLevels = profile.aoUsesDepthMip ? std::max(1u, std::min(profile.aoDepthMipLevels, mipLevelsAllowed)) : 1;
+            // At half size the pass reads the pyramid from level 1: one level fewer of its own.
+            if (c.halfResolution) c.depthMipLevels = std::max(1u, c.depthMipLevels - 1);
             break;
         case AoTechnique::Crease:
             c.bias = 0;

@@ -22,10 +22,22 @@ void tapPixel(uint32_t x, uint32_t y, double ox, double oy, uint32_t w, uint32_t
     *qy = std::clamp(int(std::floor(double(y) + 0.5 + oy)), 0, int(h) - 1);
 }
 
-dvec3 positionAt(const DepthReconstruction& rec, int x, int y, double z) {
-    sh::dvec3 p = sh::reconstructViewPosition(double(x) + 0.5, double(y) + 0.5, z, rec.projInfo);
+// Where the pixels of a pass lie in the full-size image: themselves, or at half size each
+// texel's full-size source pixel (sh::aoFullResPixel), whose centre its position is.
+struct PixelMap {
+    bool half = false;
+    int fullWidth = 0, fullHeight = 0;
+    sh::ivec2 source(int x, int y) const {
+        return half ? sh::aoFullResPixel(sh::ivec2{x, y}, sh::ivec2{fullWidth, fullHeight}) : sh::ivec2{x, y};
+    }
+};
+
+dvec3 positionAt(const DepthReconstruction& rec, const PixelMap& map, int x, int y, double z) {
+    const sh::ivec2 q = map.source(x, y);
+    sh::dvec3 p = sh::reconstructViewPosition(double(q.x) + 0.5, double(q.y) + 0.5, z, rec.projInfo);
     return dvec3(p.x, p.y, p.z);
 }
+dvec3 positionAt(const DepthReconstruction& rec, int x, int y, double z) { return positionAt(rec, PixelMap{}, x, y, z); }
 
 }  // namespace
 
@@ -112,11 +124,13 @@ glm::dvec3 viewPosition(const AoInput& in, uint32_t x, uint32_t y) {
     return positionAt(in.reconstruction, int(x), int(y), in.linearDepth.at(x, y));
 }
 
-std::vector<glm::dvec3> normalsFromDepth(const Grid& d, const DepthReconstruction& rec) {
+namespace {
+
+std::vector<dvec3> mappedNormalsFromDepth(const Grid& d, const DepthReconstruction& rec, const PixelMap& map) {
     std::vector<dvec3> out(size_t(d.width) * d.height, dvec3(0, 0, 1));
     // The rule of sfx_shared_ao.h: every depth read as sfxLinearDepthOrFar makes it.
     auto depth = [&](int x, int y) { return sh::sfxLinearDepthOrFar(d.at(uint32_t(x), uint32_t(y)), rec.maxDepth); };
-    auto pos = [&](int x, int y) { return positionAt(rec, x, y, depth(x, y)); };
+    auto pos = [&](int x, int y) { return positionAt(rec, map, x, y, depth(x, y)); };
     const int w = int(d.width), h = int(d.height);
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
@@ -137,6 +151,10 @@ std::vector<glm::dvec3> normalsFromDepth(const Grid& d, const DepthReconstructio
     return out;
 }
 
+}  // namespace
+
+std::vector<glm::dvec3> normalsFromDepth(const Grid& d, const DepthReconstruction& rec) { return mappedNormalsFromDepth(d, rec, PixelMap{}); }
+
 Grid linearDepthOrFar(const Grid& linearDepth, double maxDepth) {
     Grid out = linearDepth;
     for (double& z : out.values) z = sh::sfxLinearDepthOrFar(z, maxDepth);
@@ -145,32 +163,39 @@ Grid linearDepthOrFar(const Grid& linearDepth, double maxDepth) {
 
 namespace {
 
-// The obscurance of `in`, whose linear depth already went through linearDepthOrFar.
-Grid rawVisibilityOfClamped(const AoInput& in, const AoConfig& c) {
-    const Grid& d = in.linearDepth;
+// The obscurance of one pass over its depth d (already through linearDepthOrFar): at full size
+// (map.half false) or half size, where positions come from each texel's full-size source pixel,
+// host normals (full size, may be empty) are read there and screen radii are in half-size
+// pixels (rec.pixelsPerUnitAtUnitDepth halved by the caller).
+Grid rawVisibilityOfPass(const Grid& d, const std::vector<dvec3>& hostNormals, const DepthReconstruction& rec, const PixelMap& map,
+                         const AoConfig& c) {
     // Host normals follow the rule of sfx_shared_ao.h: an unusable one (zero, NaN, infinite)
     // falls back to the derived normal of its pixel.
-    std::vector<dvec3> normals = normalsFromDepth(d, in.reconstruction);
-    for (size_t i = 0; i < in.normals.size(); ++i) {
-        const dvec3 n = sh::aoHostNormalOrZero(in.normals[i]);
-        if (n != dvec3(0.0)) normals[i] = n;
-    }
+    std::vector<dvec3> normals = mappedNormalsFromDepth(d, rec, map);
+    if (!hostNormals.empty())
+        for (uint32_t y = 0; y < d.height; ++y)
+            for (uint32_t x = 0; x < d.width; ++x) {
+                const sh::ivec2 q = map.source(int(x), int(y));
+                const uint32_t fullWidth = map.half ? uint32_t(map.fullWidth) : d.width;
+                const dvec3 n = sh::aoHostNormalOrZero(hostNormals[size_t(q.y) * fullWidth + size_t(q.x)]);
+                if (n != dvec3(0.0)) normals[size_t(y) * d.width + x] = n;
+            }
     std::vector<Grid> pyramid;
     if (c.technique == AoTechnique::Scalable) pyramid = depthPyramid(d, std::max(c.depthMipLevels, 1u));
     Grid out(d.width, d.height, 1.0);
     for (uint32_t y = 0; y < d.height; ++y) {
         for (uint32_t x = 0; x < d.width; ++x) {
             const double z = d.at(x, y);
-            if (isSky(z, in.reconstruction.maxDepth)) continue;
-            const dvec3 C = viewPosition(in, x, y);
+            if (isSky(z, rec.maxDepth)) continue;
+            const dvec3 C = positionAt(rec, map, int(x), int(y), z);
             const dvec3 n = normals[size_t(y) * d.width + x];
             double sum = 0;
-            for (const AoTap& t : aoTaps(c, in.reconstruction, d.width, d.height, x, y, z)) {
+            for (const AoTap& t : aoTaps(c, rec, d.width, d.height, x, y, z)) {
                 // A Scalable tap may read a coarse level's depth; its position is its own pixel.
                 const Grid& g = c.technique == AoTechnique::Scalable ? pyramid[size_t(t.level)] : d;
                 const uint32_t mx = std::min(uint32_t(t.x) >> t.level, g.width - 1);
                 const uint32_t my = std::min(uint32_t(t.y) >> t.level, g.height - 1);
-                const dvec3 v = positionAt(in.reconstruction, t.x, t.y, g.at(mx, my)) - C;
+                const dvec3 v = positionAt(rec, map, t.x, t.y, g.at(mx, my)) - C;
                 sum += aoTapTerm(c, glm::dot(v, v), glm::dot(v, n), z);
             }
             const double v = aoFinishVisibility(aoOcclusionFromSum(c, sum, z), c.contrast);
@@ -180,12 +205,70 @@ Grid rawVisibilityOfClamped(const AoInput& in, const AoConfig& c) {
     return out;
 }
 
+// The pass's blur: the two separable passes, or Crease's two-blur look.
+Grid blurOfPass(const Grid& raw, const Grid& d, double maxDepth, const AoConfig& c) {
+    if (c.blurRadius == 0) return raw;
+    const int r = int(c.blurRadius);
+    Grid wide = bilateralBlurPass(bilateralBlurPass(raw, d, maxDepth, r, 1, 0), d, maxDepth, r, 0, 1);
+    if (c.technique != AoTechnique::Crease) return wide;
+    const int rm = std::max(1, r / 2);
+    Grid moderate = bilateralBlurPass(bilateralBlurPass(raw, d, maxDepth, rm, 1, 0), d, maxDepth, rm, 0, 1);
+    Grid out(raw.width, raw.height, 1.0);
+    for (size_t i = 0; i < out.values.size(); ++i) {
+        const double occ = 0.5 * (double(shared::SFX_AO_CREASE_WIDE_GAIN) * (1.0 - wide.values[i]) +
+                                  double(shared::SFX_AO_CREASE_MODERATE_GAIN) * (1.0 - moderate.values[i]));
+        out.values[i] = saturate(1.0 - occ);
+    }
+    return out;
+}
+
 }  // namespace
 
 Grid rawVisibility(const AoInput& in, const AoConfig& c) {
-    AoInput clamped = in;
-    clamped.linearDepth = linearDepthOrFar(in.linearDepth, in.reconstruction.maxDepth);
-    return rawVisibilityOfClamped(clamped, c);
+    const Grid d = linearDepthOrFar(in.linearDepth, in.reconstruction.maxDepth);
+    return rawVisibilityOfPass(d, in.normals, in.reconstruction, PixelMap{}, c);
+}
+
+Grid halfSizeDepth(const Grid& linearDepth) {
+    Grid out(std::max(1u, linearDepth.width / 2), std::max(1u, linearDepth.height / 2));
+    const sh::ivec2 fullSize{int(linearDepth.width), int(linearDepth.height)};
+    for (uint32_t y = 0; y < out.height; ++y)
+        for (uint32_t x = 0; x < out.width; ++x) {
+            const sh::ivec2 s = sh::aoFullResPixel(sh::ivec2{int(x), int(y)}, fullSize);
+            out.at(x, y) = linearDepth.at(uint32_t(s.x), uint32_t(s.y));
+        }
+    return out;
+}
+
+Grid depthAwareUpsample(const Grid& halfVisibility, const Grid& halfDepth, const Grid& fullDepth, double maxDepth) {
+    Grid out(fullDepth.width, fullDepth.height, 1.0);
+    const int hw = int(halfVisibility.width), hh = int(halfVisibility.height);
+    for (uint32_t y = 0; y < out.height; ++y) {
+        for (uint32_t x = 0; x < out.width; ++x) {
+            const double z0 = sh::sfxLinearDepthOrFar(fullDepth.at(x, y), maxDepth);
+            if (isSky(z0, maxDepth)) continue;
+            const int bx = sh::aoUpsampleBase(int(x)), by = sh::aoUpsampleBase(int(y));
+            const double ux = sh::aoUpsampleUpperWeight(int(x)), uy = sh::aoUpsampleUpperWeight(int(y));
+            double acc = 0, wsum = 0, nearestAo = 1, nearestGap = -1;
+            for (int j = 0; j < 2; ++j)
+                for (int i = 0; i < 2; ++i) {  // the shader's order: ties keep the first
+                    const uint32_t qx = uint32_t(std::clamp(bx + i, 0, hw - 1)), qy = uint32_t(std::clamp(by + j, 0, hh - 1));
+                    const double zq = sh::sfxLinearDepthOrFar(halfDepth.at(qx, qy), maxDepth);
+                    const double a = halfVisibility.at(qx, qy);
+                    const double bilinear = (i == 1 ? ux : 1.0 - ux) * (j == 1 ? uy : 1.0 - uy);
+                    const double w = sh::aoUpsampleWeight(bilinear, zq, z0);
+                    acc += w * a;
+                    wsum += w;
+                    const double gap = std::abs(zq - z0);
+                    if (nearestGap < 0 || gap < nearestGap) {
+                        nearestGap = gap;
+                        nearestAo = a;
+                    }
+                }
+            out.at(x, y) = saturate(sh::aoUpsampleResolve(acc, wsum, nearestAo));
+        }
+    }
+    return out;
 }
 
 Grid bilateralBlurPass(const Grid& vis, const Grid& d, double maxDepth, int radius, int dx, int dy) {
@@ -214,23 +297,15 @@ Grid bilateralBlurPass(const Grid& vis, const Grid& d, double maxDepth, int radi
 
 Grid ambientVisibility(const AoInput& in, const AoConfig& c) {
     const double maxDepth = in.reconstruction.maxDepth;
-    AoInput clamped = in;
-    clamped.linearDepth = linearDepthOrFar(in.linearDepth, maxDepth);
-    Grid raw = rawVisibilityOfClamped(clamped, c);
-    if (c.blurRadius == 0) return raw;
-    const int r = int(c.blurRadius);
-    const Grid& d = clamped.linearDepth;
-    Grid wide = bilateralBlurPass(bilateralBlurPass(raw, d, maxDepth, r, 1, 0), d, maxDepth, r, 0, 1);
-    if (c.technique != AoTechnique::Crease) return wide;
-    const int rm = std::max(1, r / 2);
-    Grid moderate = bilateralBlurPass(bilateralBlurPass(raw, d, maxDepth, rm, 1, 0), d, maxDepth, rm, 0, 1);
-    Grid out(raw.width, raw.height, 1.0);
-    for (size_t i = 0; i < out.values.size(); ++i) {
-        const double occ = 0.5 * (double(shared::SFX_AO_CREASE_WIDE_GAIN) * (1.0 - wide.values[i]) +
-                                  double(shared::SFX_AO_CREASE_MODERATE_GAIN) * (1.0 - moderate.values[i]));
-        out.values[i] = saturate(1.0 - occ);
-    }
-    return out;
+    const Grid d = linearDepthOrFar(in.linearDepth, maxDepth);
+    if (!c.halfResolution) return blurOfPass(rawVisibilityOfPass(d, in.normals, in.reconstruction, PixelMap{}, c), d, maxDepth, c);
+    // Half resolution: the same passes on the half-size depth, then the upsample.
+    const Grid dh = halfSizeDepth(d);
+    DepthReconstruction halfRec = in.reconstruction;
+    halfRec.pixelsPerUnitAtUnitDepth *= 0.5;
+    const PixelMap map{true, int(d.width), int(d.height)};
+    const Grid half = blurOfPass(rawVisibilityOfPass(dh, in.normals, halfRec, map, c), dh, maxDepth, c);
+    return depthAwareUpsample(half, dh, d, maxDepth);
 }
 
 }  // namespace sfx::reference

@@ -56,8 +56,18 @@ Grid linearDepthOrFar(const Grid& linearDepth, double maxDepth);
 // to the centre's depth (SFX_AO_BLUR_DEPTH_TOLERANCE). Sky pixels pass through.
 Grid bilateralBlurPass(const Grid& visibility, const Grid& linearDepth, double maxDepth, int radius, int dx, int dy);
 
+// AO at half resolution (sfx_shared_ao.h): the half-size depth, texel (x, y) holding the depth
+// of full-size pixel aoFullResPixel(x, y) (depth MIP level 1's rotated grid), size max(1, w / 2).
+Grid halfSizeDepth(const Grid& linearDepth);
+// The depth-aware upsample of half-size visibility to fullDepth's size: per pixel the 2x2
+// half-size texels around it, bilinear times depth weights against the full-size depth, plus
+// the nearest-depth texel at SFX_AO_UPSAMPLE_NEAREST_WEIGHT. Sky (full-size) is 1.
+Grid depthAwareUpsample(const Grid& halfVisibility, const Grid& halfDepth, const Grid& fullDepth, double maxDepth);
+
 // The whole effect: raw visibility, then (blurRadius > 0) the two blur passes, or for Crease
-// its two-blur look (a wide and a moderate blur, blended with SFX_AO_CREASE_*_GAIN).
+// its two-blur look (a wide and a moderate blur, blended with SFX_AO_CREASE_*_GAIN). With
+// config.halfResolution all of it on halfSizeDepth (positions at each texel's full-size source
+// pixel, screen radii in half-size pixels), then depthAwareUpsample.
 Grid ambientVisibility(const AoInput& in, const AoConfig& config);
 
 }  // namespace sfx::reference

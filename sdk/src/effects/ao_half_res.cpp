@@ -1,0 +1,72 @@
+// AO at half resolution: the half-size depth (where no depth MIP level 1 holds it) and the
+// depth-aware upsample to the host's full-size output. The obscurance and blur passes are
+// ao.cpp's, run at passWidth() x passHeight().
+#include <algorithm>
+
+#include "ao_internal.hpp"
+#include "effect_common.hpp"
+#include "sfx/ao.hpp"
+#include "sfx_shaders.hpp"
+#include "sfx_shared_ao.h"
+
+namespace sfx {
+
+bool AmbientObscurance::halfDepthFromMip() const { return detail::mipGivesHalfDepth(config_, desc_.profile, desc_.width, desc_.height); }
+
+// Half size rounds down as MIP level 1 does (never below 1), so both half-size depths agree.
+uint32_t AmbientObscurance::passWidth() const { return config_.halfResolution ? std::max(1u, desc_.width / 2) : desc_.width; }
+uint32_t AmbientObscurance::passHeight() const { return config_.halfResolution ? std::max(1u, desc_.height / 2) : desc_.height; }
+
+TextureHandle AmbientObscurance::halfDepthTexture() const { return halfDepthFromMip() ? depth_->texture() : halfDepth_; }
+
+Status AmbientObscurance::allocateHalfRes() {
+    const Tier tier = desc_.profile.tier;
+    if (!halfDepthFromMip()) {
+        Result<ProgramHandle> program = detail::loadProgram(device_, gen::ao_half_depth::kName, tier);
+        if (!program) return program.status();
+        halfDepthProgram_ = program.value();
+    }
+    Result<ProgramHandle> upsample = detail::loadProgram(device_, gen::ao_upsample::kName, tier);
+    if (!upsample) return upsample.status();
+    upsampleProgram_ = upsample.value();
+    Result<BufferHandle> params = device_.createBuffer({sizeof(shared::UpsampleParams), kBufferUniform, "sfx-ao-upsample-params"});
+    if (!params) return params.status();
+    upsampleParams_ = params.value();
+    return Status::ok();
+}
+
+Status AmbientObscurance::recordHalfDepth(size_t passIndex) {
+    Result<PipelineHandle> pipeline = pipelines_->get(halfDepthProgram_, Format::R32F, {}, "sfx-ao-half-depth");
+    if (!pipeline) return pipeline.status();
+    RenderPassDesc pass;
+    pass.colors = {ColorAttachment{halfDepth_, 0, LoadOp::DontCare, {}}};
+    pass.debugName = "sfx-ao-half-depth";
+    DrawDesc draw;
+    draw.pipeline = pipeline.value();
+    draw.bindings.textures = {TextureBinding{gen::ao_half_depth::uDepth, depth_->texture(), 0, 1, {}}};
+    return timed(passIndex, [&] { return device_.renderPass(pass, std::span<const DrawDesc>(&draw, 1)); });
+}
+
+Status AmbientObscurance::recordUpsample(const AoInputs& in, Format outFormat, TextureHandle source, size_t passIndex) {
+    shared::UpsampleParams u{};
+    u.maxDepth = float(depth_->reconstruction().maxDepth);
+    SFX_TRY(device_.writeBuffer(upsampleParams_, 0, &u, sizeof u));
+    const bool mip = halfDepthFromMip();
+    Result<PipelineHandle> pipeline = pipelines_->get(upsampleProgram_, outFormat, {{SFX_AO_SC_UPSAMPLE_DEPTH_MIP, mip ? 1 : 0}}, "sfx-ao-upsample");
+    if (!pipeline) return pipeline.status();
+    RenderPassDesc pass;
+    pass.colors = {ColorAttachment{in.output, 0, LoadOp::DontCare, {}}};
+    pass.debugName = "sfx-ao-upsample";
+    DrawDesc draw;
+    draw.pipeline = pipeline.value();
+    // With the MIP, both depth bindings show levels 0 and 1 of the one texture: GL holds a single
+    // mip range per texture, so one texture bound with two ranges in a draw would see only one.
+    const uint32_t levels = mip ? 2 : 1;
+    draw.bindings.textures = {TextureBinding{gen::ao_upsample::uDepth, depth_->texture(), 0, levels, {}},
+                              TextureBinding{gen::ao_upsample::uHalfDepth, mip ? depth_->texture() : halfDepth_, 0, levels, {}},
+                              TextureBinding{gen::ao_upsample::uSource, source, 0, 1, {}}};
+    draw.bindings.uniformBuffers = {BufferBinding{gen::ao_upsample::UpsampleParams, upsampleParams_, 0, 0}};
+    return timed(passIndex, [&] { return device_.renderPass(pass, std::span<const DrawDesc>(&draw, 1)); });
+}
+
+}  // namespace sfx
