@@ -238,8 +238,9 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
 
     // Profiling: plan() order is the depth passes (linearize + one per MIP level past 0), the
     // obscurance pass, then blur h and v. timed() records a pass bare when profiling is off.
-    const size_t depthPasses = depth_->plan().passes.size();  // none when passing linear depth through
     const std::span<const TimerHandle> timers(passTimers_);
+    // plan() builds strings: asked only when profiling (timed() ignores the index otherwise).
+    const size_t depthPasses = timers.empty() ? 0 : depth_->plan().passes.size();  // none when passing linear depth through
     auto timed = [&](size_t passIndex, auto record) -> Status {
         if (timers.empty()) return record();
         SFX_TRY(device_.beginTimer(timers[passIndex]));
