@@ -52,8 +52,10 @@ void GlDevice::unbindResources(const BindingSet& b) {
     GL(glActiveTexture, GL_TEXTURE0);
 }
 
-PassTargets GlDevice::passTargets(const RenderPassDesc& pass) const {
-    PassTargets out;
+void GlDevice::passTargets(const RenderPassDesc& pass, PassTargets& out) const {
+    out.colors.clear();
+    out.depth = nullptr;
+    out.width = out.height = 0;
     for (const ColorAttachment& ca : pass.colors) {
         const GlTexture& t = textures_.get(ca.texture);
         if (out.width == 0) {
@@ -69,7 +71,6 @@ PassTargets GlDevice::passTargets(const RenderPassDesc& pass) const {
             out.height = out.depth->desc.height;
         }
     }
-    return out;
 }
 
 // Clears the attachments as their load ops ask, then runs the draws in order.

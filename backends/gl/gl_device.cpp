@@ -132,7 +132,8 @@ Result<TimerReading> GlDevice::readTimer(TimerHandle h) {
 Status GlDevice::renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) {
     SFX_TRY(validation::renderPass(pass, draws, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
     SFX_TRY(enter());
-    return takeDeviceError(encodeRenderPass(pass, draws, passTargets(pass)));
+    passTargets(pass, passTargets_);
+    return takeDeviceError(encodeRenderPass(pass, draws, passTargets_));
 }
 
 Status GlDevice::dispatch(const DispatchDesc& d) {

@@ -182,7 +182,8 @@ private:
 
     // ---- Commands (gl_commands.cpp) -------------------------------------------------------
     // The attachments of a render pass the shared validation accepted, and their one extent.
-    PassTargets passTargets(const RenderPassDesc& pass) const;
+    // Filled into `out` (cleared first: the device's passTargets_ keeps its capacity).
+    void passTargets(const RenderPassDesc& pass, PassTargets& out) const;
     bool filterable(Format f) const;
     void bindResources(const BindingSet& b);
     void unbindResources(const BindingSet& b);
@@ -222,6 +223,8 @@ private:
     std::map<GLuint, uint32_t> programUsers_;  // pipelines per GL program object
     std::set<GLuint> destroyedPrograms_;       // destroyed programs whose pipelines still draw
     std::map<FboKey, GLuint> fbos_;
+    FboKey fboKey_;             // reused to build the key of each lookup
+    PassTargets passTargets_;   // reused by every render pass
     // For stats(): texture and buffer storage (the textures readTexture copies depth through
     // included, and counted again as readback copies), framebuffer objects, and the bytes of
     // the HAL's textures and buffers alive.

@@ -13,7 +13,8 @@ GLenum GlDevice::depthAttachmentPoint(Format f) const {
 
 // A framebuffer object per attachment set, made once and kept until a texture goes.
 Result<GLuint> GlDevice::framebuffer(const ColorTargets& colors, const GlTexture* depth, uint32_t depthMip) {
-    FboKey key;
+    FboKey& key = fboKey_;  // the device's, reused: a found FBO costs no allocation
+    key.clear();
     for (const auto& [t, mip] : colors) key.push_back((uint64_t(t->name) << 32) | mip);
     key.push_back(depth ? (uint64_t(depth->name) << 32) | depthMip : ~uint64_t(0));
     auto it = fbos_.find(key);

@@ -2,7 +2,8 @@
 // per image mip and per buffer (AccessState): a layout transition, a write after reads or writes
 // (the earlier accesses must finish first), or a read of a write not yet made visible to the
 // reading stage and access. Reads after reads need nothing. Barriers are batched per command,
-// one vkCmdPipelineBarrier per pair of source and destination stage masks.
+// one vkCmdPipelineBarrier per pair of source and destination stage masks. The lists live in
+// the device's CommandScratch and keep their capacity from command to command.
 #include <algorithm>
 
 #include "vulkan_device_impl.hpp"
@@ -57,19 +58,19 @@ Hazard track(AccessState& s, bool image, VkImageLayout layout, VkPipelineStageFl
     return h;
 }
 
-// The barriers of one command, grouped by their stage masks.
-struct BarrierBatch {
-    VkPipelineStageFlags src = 0, dst = 0;
-    std::vector<VkImageMemoryBarrier> images;
-    std::vector<VkBufferMemoryBarrier> buffers;
-};
-
-BarrierBatch& batchFor(std::vector<BarrierBatch>& batches, VkPipelineStageFlags src, VkPipelineStageFlags dst) {
+// The batch of this command (the first `count` of `batches`) with these stage masks; a batch
+// past `count` is reused, its lists cleared.
+BarrierBatch& batchFor(std::vector<BarrierBatch>& batches, size_t& count, VkPipelineStageFlags src, VkPipelineStageFlags dst) {
     if (!src) src = VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT;  // nothing to wait for: a transition only
-    for (BarrierBatch& b : batches)
-        if (b.src == src && b.dst == dst) return b;
-    batches.push_back({src, dst, {}, {}});
-    return batches.back();
+    for (size_t i = 0; i < count; ++i)
+        if (batches[i].src == src && batches[i].dst == dst) return batches[i];
+    if (count == batches.size()) batches.emplace_back();
+    BarrierBatch& b = batches[count++];
+    b.src = src;
+    b.dst = dst;
+    b.images.clear();
+    b.buffers.clear();
+    return b;
 }
 
 }  // namespace
@@ -85,18 +86,19 @@ VkPipelineStageFlags shaderStages(uint32_t stageMask, bool compute) {
     return s;
 }
 
-void VulkanDevice::barriers(VkCommandBuffer cb, const Uses& uses) {
+void VulkanDevice::barriers(VkCommandBuffer cb, std::span<const ImageUse> images, std::span<const BufferUse> bufferUses) {
     // One entry per image mip and per buffer: a command's several uses of one resource (say,
     // the same texture sampled by two draws) make a single use with their stages and accesses.
-    struct MipUse {
-        VulkanTexture* texture;
-        uint32_t mip;
-        ImageUse use;
-    };
-    std::vector<MipUse> mips;
-    for (const ImageUse& u : uses.images)
+    std::vector<MipBarrierUse>& mips = scratch_.mips;
+    std::vector<BufferUse>& buffers = scratch_.buffers;
+    std::vector<BarrierBatch>& batches = scratch_.batches;
+    size_t& batchCount = scratch_.batchCount;
+    mips.clear();
+    buffers.clear();
+    batchCount = 0;
+    for (const ImageUse& u : images)
         for (uint32_t m = u.baseMip; m < u.baseMip + u.mipCount; ++m) {
-            auto it = std::find_if(mips.begin(), mips.end(), [&](const MipUse& e) { return e.texture == u.texture && e.mip == m; });
+            auto it = std::find_if(mips.begin(), mips.end(), [&](const MipBarrierUse& e) { return e.texture == u.texture && e.mip == m; });
             if (it == mips.end()) {
                 mips.push_back({u.texture, m, u});
             } else {
@@ -105,8 +107,7 @@ void VulkanDevice::barriers(VkCommandBuffer cb, const Uses& uses) {
                 it->use.write = it->use.write || u.write;
             }
         }
-    std::vector<BufferUse> buffers;
-    for (const BufferUse& u : uses.buffers) {
+    for (const BufferUse& u : bufferUses) {
         auto it = std::find_if(buffers.begin(), buffers.end(), [&](const BufferUse& e) { return e.buffer == u.buffer; });
         if (it == buffers.end()) {
             buffers.push_back(u);
@@ -117,8 +118,7 @@ void VulkanDevice::barriers(VkCommandBuffer cb, const Uses& uses) {
         }
     }
 
-    std::vector<BarrierBatch> batches;
-    for (const MipUse& e : mips) {
+    for (const MipBarrierUse& e : mips) {
         const Hazard h = track(e.texture->mips[e.mip], true, e.use.layout, e.use.stages, e.use.access, e.use.write);
         if (!h.needed) continue;
         VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
@@ -129,7 +129,7 @@ void VulkanDevice::barriers(VkCommandBuffer cb, const Uses& uses) {
         b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
         b.image = e.texture->image;
         b.subresourceRange = e.texture->range(fullAspect(e.texture->desc.format), e.mip, 1);
-        batchFor(batches, h.src, e.use.stages).images.push_back(b);
+        batchFor(batches, batchCount, h.src, e.use.stages).images.push_back(b);
     }
     for (const BufferUse& u : buffers) {
         const Hazard h = track(u.buffer->state, false, VK_IMAGE_LAYOUT_UNDEFINED, u.stages, u.access, u.write);
@@ -141,11 +141,13 @@ void VulkanDevice::barriers(VkCommandBuffer cb, const Uses& uses) {
         b.buffer = u.buffer->buffer;
         b.offset = 0;
         b.size = VK_WHOLE_SIZE;
-        batchFor(batches, h.src, u.stages).buffers.push_back(b);
+        batchFor(batches, batchCount, h.src, u.stages).buffers.push_back(b);
     }
-    for (const BarrierBatch& b : batches)
+    for (size_t i = 0; i < batchCount; ++i) {
+        const BarrierBatch& b = batches[i];
         vk_.vkCmdPipelineBarrier(cb, b.src, b.dst, 0, 0, nullptr, uint32_t(b.buffers.size()), b.buffers.data(),
                                  uint32_t(b.images.size()), b.images.data());
+    }
 }
 
 }  // namespace sfx::vulkan

@@ -71,8 +71,8 @@ Status VulkanDevice::setHostCommandBuffer(VkCommandBuffer cb, bool previousFinis
     return Status::ok();
 }
 
-PassTargets VulkanDevice::passTargets(const RenderPassDesc& pass) {
-    PassTargets out;
+void VulkanDevice::passTargets(const RenderPassDesc& pass, PassTargets& out) {
+    out.clear();
     for (const ColorAttachment& c : pass.colors) {
         VulkanTexture& t = textures_.get(c.texture);
         if (out.width == 0) {
@@ -97,13 +97,13 @@ PassTargets VulkanDevice::passTargets(const RenderPassDesc& pass) {
                                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                                    true});
     }
-    return out;
 }
 
 Status VulkanDevice::recordRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws,
-                                      const PassTargets& targets, std::vector<ResolvedBindings>& resolved) {
+                                      const PassTargets& targets, std::span<ResolvedBindings> resolved) {
     // Views before recording, so that a failure leaves the command buffer untouched.
-    std::vector<VkImageView> colorViews;
+    std::vector<VkImageView>& colorViews = scratch_.colorViews;
+    colorViews.clear();
     for (const ColorAttachment& c : pass.colors) {
         Result<VkImageView> v = attachmentView(textures_.get(c.texture), c.mip);
         if (!v) return v.status();
@@ -115,7 +115,8 @@ Status VulkanDevice::recordRenderPass(const RenderPassDesc& pass, std::span<cons
         if (!v) return v.status();
         depthView = v.value();
     }
-    std::vector<VkDescriptorSet> sets(draws.size(), VK_NULL_HANDLE);
+    std::vector<VkDescriptorSet>& sets = scratch_.sets;
+    sets.assign(draws.size(), VK_NULL_HANDLE);
     for (size_t i = 0; i < draws.size(); ++i) {
         Result<VkDescriptorSet> set = writeSet(pipelines_.get(draws[i].pipeline), resolved[i]);
         if (!set) return set.status();
@@ -132,7 +133,8 @@ Status VulkanDevice::recordRenderPass(const RenderPassDesc& pass, std::span<cons
                : op == LoadOp::Load ? VK_ATTACHMENT_LOAD_OP_LOAD
                                     : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
     };
-    std::vector<VkRenderingAttachmentInfo> colorInfos;
+    std::vector<VkRenderingAttachmentInfo>& colorInfos = scratch_.colorInfos;
+    colorInfos.clear();
     for (size_t i = 0; i < pass.colors.size(); ++i) {
         const ColorAttachment& c = pass.colors[i];
         VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};

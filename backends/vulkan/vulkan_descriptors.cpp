@@ -26,7 +26,11 @@ VkPipelineStageFlags bindingStages(const VulkanPipeline& pl, uint32_t binding, R
 }  // namespace
 
 Status VulkanDevice::resolveBindings(const BindingSet& set, const VulkanPipeline& pl, Uses& uses, ResolvedBindings& out) {
-    // Reserved up front: the writes point into images and buffers.
+    // Reserved up front: the writes point into images and buffers. `out` is the device's
+    // scratch: cleared, its capacity kept.
+    out.images.clear();
+    out.buffers.clear();
+    out.writes.clear();
     out.images.reserve(set.textures.size() + set.storageImages.size());
     out.buffers.reserve(set.uniformBuffers.size() + set.storageBuffers.size());
     auto write = [&](uint32_t binding, VkDescriptorType type) {

@@ -133,8 +133,11 @@ Status VulkanDevice::destroyPipeline(PipelineHandle h) {
 
 Status VulkanDevice::renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) {
     SFX_TRY(validation::renderPass(pass, draws, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
-    PassTargets targets = passTargets(pass);
-    std::vector<ResolvedBindings> resolved(draws.size());
+    PassTargets& targets = scratch_.targets;
+    passTargets(pass, targets);
+    std::vector<ResolvedBindings>& resolvedLists = scratch_.resolved;
+    if (resolvedLists.size() < draws.size()) resolvedLists.resize(draws.size());
+    const std::span<ResolvedBindings> resolved(resolvedLists.data(), draws.size());
     for (size_t i = 0; i < draws.size(); ++i) {
         const DrawDesc& d = draws[i];
         const VulkanPipeline& pl = pipelines_.get(d.pipeline);
@@ -153,8 +156,11 @@ Status VulkanDevice::renderPass(const RenderPassDesc& pass, std::span<const Draw
 Status VulkanDevice::dispatch(const DispatchDesc& d) {
     SFX_TRY(validation::dispatch(d, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
     const VulkanPipeline& pl = pipelines_.get(d.pipeline);
-    Uses uses;
-    ResolvedBindings resolved;
+    Uses& uses = scratch_.dispatchUses;
+    uses.images.clear();
+    uses.buffers.clear();
+    if (scratch_.resolved.empty()) scratch_.resolved.resize(1);
+    ResolvedBindings& resolved = scratch_.resolved[0];
     SFX_TRY(resolveBindings(d.bindings, pl, uses, resolved));
     return recordDispatch(d, pl, uses, resolved);
 }

@@ -149,7 +149,8 @@ private:
     Status forgetExternal(TextureHandle h, VulkanTexture& t);
 
     // vulkan_barriers.cpp: the barriers `uses` need after what was recorded before.
-    void barriers(VkCommandBuffer cb, const Uses& uses);
+    void barriers(VkCommandBuffer cb, std::span<const ImageUse> images, std::span<const BufferUse> buffers);
+    void barriers(VkCommandBuffer cb, const Uses& uses) { barriers(cb, uses.images, uses.buffers); }
 
     // vulkan_staging.cpp: `bytes` of the staging ring, for the command buffer being recorded.
     Result<StagingSlice> stage(uint64_t bytes);
@@ -183,9 +184,10 @@ private:
     Status submitAndWait();
     Status noHostCommandBuffer(const char* call) const;
     // The attachments of a render pass the shared validation accepted: size, formats, layouts.
-    PassTargets passTargets(const RenderPassDesc& pass);
+    // Filled into `out` (cleared first).
+    void passTargets(const RenderPassDesc& pass, PassTargets& out);
     Status recordRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, const PassTargets& targets,
-                            std::vector<ResolvedBindings>& resolved);
+                            std::span<ResolvedBindings> resolved);
     Status recordDispatch(const DispatchDesc& d, const VulkanPipeline& pl, const Uses& uses, ResolvedBindings& resolved);
 
     // vulkan_garbage.cpp: deferred destruction.
@@ -244,6 +246,7 @@ private:
     size_t currentPool_ = 0;
     std::map<std::vector<uint64_t>, VkDescriptorSet> setCache_;
     std::vector<uint64_t> setKey_;  // reused to build the key of each lookup
+    CommandScratch scratch_;        // reused by every command (vulkan_objects.hpp)
     std::vector<StagingBlock> stagingIdle_, stagingOwn_, stagingHost_;
     // For stats().
     ObjectCount memoryCount_, stagingCount_, descriptorSetCount_, descriptorPoolCount_, imageViewCount_;

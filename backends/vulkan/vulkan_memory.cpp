@@ -89,7 +89,8 @@ Status VulkanDevice::stageBufferWrite(VulkanBuffer& b, uint64_t offset, const vo
     Result<StagingSlice> staging = stage(bytes);
     if (!staging) return staging.status();
     std::memcpy(staging->mapped, data, bytes);
-    barriers(cb.value(), {{}, {BufferUse{&b, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, true}}});
+    const BufferUse copyWrite{&b, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, true};
+    barriers(cb.value(), {}, std::span(&copyWrite, 1));
     VkBufferCopy region{staging->offset, offset, bytes};
     vk_.vkCmdCopyBuffer(cb.value(), staging->buffer, b.buffer, 1, &region);
     return Status::ok();
@@ -100,7 +101,8 @@ Status VulkanDevice::readBackBuffer(VulkanBuffer& b, uint64_t offset, void* out,
         Result<VkCommandBuffer> cb = recording();
         if (!cb) return cb.status();
         // The buffer's last GPU write made visible to the host read below.
-        barriers(cb.value(), {{}, {BufferUse{&b, VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT, false}}});
+        const BufferUse hostRead{&b, VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT, false};
+        barriers(cb.value(), {}, std::span(&hostRead, 1));
         SFX_TRY(submitAndWait());
     }
     std::memcpy(out, static_cast<const uint8_t*>(b.alloc.mapped) + offset, bytes);

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -158,6 +159,43 @@ struct PassTargets {
     std::vector<Format> colorFormats;
     Format depthFormat = Format::Undefined;
     VulkanTexture* depth = nullptr;
+    void clear() {
+        uses.images.clear();
+        uses.buffers.clear();
+        width = height = 0;
+        colorFormats.clear();
+        depthFormat = Format::Undefined;
+        depth = nullptr;
+    }
+};
+
+// One image mip's merged use within a command (vulkan_barriers.cpp).
+struct MipBarrierUse {
+    VulkanTexture* texture;
+    uint32_t mip;
+    ImageUse use;
+};
+// The barriers of one command with one pair of source and destination stage masks.
+struct BarrierBatch {
+    VkPipelineStageFlags src = 0, dst = 0;
+    std::vector<VkImageMemoryBarrier> images;
+    std::vector<VkBufferMemoryBarrier> buffers;
+};
+
+// What recording a command needs for a moment, kept by the device and reused (cleared, with
+// its capacity) by every command, so that a steady frame records without heap allocations.
+struct CommandScratch {
+    PassTargets targets;                         // renderPass
+    std::vector<ResolvedBindings> resolved;      // per draw (renderPass) or [0] (dispatch)
+    Uses dispatchUses;                           // dispatch
+    std::vector<VkImageView> colorViews;         // recordRenderPass
+    std::vector<VkDescriptorSet> sets;
+    std::vector<VkRenderingAttachmentInfo> colorInfos;
+    // barriers(): merged uses, and the batches (the first batchCount in use this command).
+    std::vector<MipBarrierUse> mips;
+    std::vector<BufferUse> buffers;
+    std::vector<BarrierBatch> batches;
+    size_t batchCount = 0;
 };
 
 }  // namespace sfx::vulkan

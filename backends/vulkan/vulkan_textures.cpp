@@ -90,9 +90,9 @@ Status VulkanDevice::uploadTexture(VulkanTexture& t, uint32_t mip, const void* d
         d24s8ToVulkan(data, staging->mapped, bytes);
     else
         std::memcpy(staging->mapped, data, bytes);
-    barriers(cb.value(), {{ImageUse{&t, mip, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                                    VK_ACCESS_TRANSFER_WRITE_BIT, true}},
-                          {}});
+    const ImageUse copyWrite{&t, mip, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                             VK_ACCESS_TRANSFER_WRITE_BIT, true};
+    barriers(cb.value(), std::span(&copyWrite, 1), {});
     VkBufferImageCopy region{};
     region.bufferOffset = staging->offset;
     region.imageSubresource = {dataAspect(t.desc.format), t.baseMip + mip, t.layer, 1};
@@ -109,9 +109,9 @@ Status VulkanDevice::downloadTexture(VulkanTexture& t, uint32_t mip, void* out, 
     Result<StagingSlice> staging = stage(bytes);
     if (!staging) return staging.status();
     const StagingSlice readback = staging.value();
-    barriers(cb.value(), {{ImageUse{&t, mip, 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                                    VK_ACCESS_TRANSFER_READ_BIT, false}},
-                          {}});
+    const ImageUse copyRead{&t, mip, 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                            VK_ACCESS_TRANSFER_READ_BIT, false};
+    barriers(cb.value(), std::span(&copyRead, 1), {});
     VkBufferImageCopy region{};
     region.bufferOffset = readback.offset;
     region.imageSubresource = {dataAspect(t.desc.format), t.baseMip + mip, t.layer, 1};

@@ -256,8 +256,9 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
     // Profiling: plan() order is the depth passes (linearize + one per MIP level past 0), at half
     // resolution the half-size depth unless MIP level 1 is it, the obscurance pass, blur h and v,
     // at half resolution the upsample. timed() records a pass bare when profiling is off.
-    const size_t depthPasses = depth_->plan().passes.size();  // none when passing linear depth through
     const std::span<const TimerHandle> timers(passTimers_);
+    // plan() builds strings: asked only when profiling (timed() ignores the index otherwise).
+    const size_t depthPasses = timers.empty() ? 0 : depth_->plan().passes.size();  // none when passing linear depth through
     SFX_TRY(depth_->dispatch(in.depth, timers.empty() ? timers : timers.first(depthPasses)));
     size_t passIndex = depthPasses;
     const bool half = config_.halfResolution;

@@ -111,7 +111,8 @@ Status LinearDepth::dispatch(const DepthSource& source, std::span<const TimerHan
     if (texture_.isNull() && !passThrough())
         return {StatusCode::InvalidHandle, "LinearDepth: resources were not created (failed resize?)"};
     // One timer per planned pass: linearize, then one per MIP level past 0 (none passing through).
-    const size_t passes = plan().passes.size();
+    // plan() builds strings: asked only when profiling.
+    const size_t passes = passTimers.empty() ? 0 : plan().passes.size();
     if (!passTimers.empty() && passTimers.size() != passes)
         return invalidArgument("LinearDepth::dispatch passTimers", std::to_string(passTimers.size()) + " timers",
                                "none or " + std::to_string(passes) + " (one per planned pass)");

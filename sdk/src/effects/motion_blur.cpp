@@ -227,12 +227,13 @@ Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings
     Result<MotionBlurParams> resolved = resolveMotionBlur(desc_.profile, settings, desc_.height);
     if (!resolved) return resolved.status();
     const MotionBlurParams& p = resolved.value();
-    const std::string expectedSize = std::to_string(desc_.width) + "x" + std::to_string(desc_.height) + " (the MotionBlur size)";
+    // Spelled out only for a message (a steady frame builds no string).
+    auto expectedSize = [&] { return std::to_string(desc_.width) + "x" + std::to_string(desc_.height) + " (the MotionBlur size)"; };
 
     Result<TextureDesc> color = device_.textureDesc(in.color);
     if (!color) return Status{color.status().code(), "MotionBlurInputs.color: " + color.status().message()};
     if (color->width != desc_.width || color->height != desc_.height)
-        return invalidArgument("MotionBlurInputs.color size", std::to_string(color->width) + "x" + std::to_string(color->height), expectedSize);
+        return invalidArgument("MotionBlurInputs.color size", std::to_string(color->width) + "x" + std::to_string(color->height), expectedSize());
     if (color->format != desc_.colorFormat)
         return {StatusCode::UnsupportedFormat, std::string("MotionBlurInputs.color format ") + toString(color->format) +
                                                    " differs from MotionBlurDesc.colorFormat " + toString(desc_.colorFormat)};
@@ -243,7 +244,7 @@ Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings
         Result<TextureDesc> vel = device_.textureDesc(in.velocity);
         if (!vel) return Status{vel.status().code(), "MotionBlurInputs.velocity: " + vel.status().message()};
         if (vel->width != desc_.width || vel->height != desc_.height)
-            return invalidArgument("MotionBlurInputs.velocity size", std::to_string(vel->width) + "x" + std::to_string(vel->height), expectedSize);
+            return invalidArgument("MotionBlurInputs.velocity size", std::to_string(vel->width) + "x" + std::to_string(vel->height), expectedSize());
         if (!isVelocityFormat(vel->format))
             return {StatusCode::UnsupportedFormat, std::string("MotionBlurInputs.velocity format ") + toString(vel->format) +
                                                        "; allowed RG16F, RG32F, RGBA16F, RGBA32F"};
