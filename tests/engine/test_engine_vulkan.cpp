@@ -9,12 +9,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <string>
 #include <vector>
 
 #include "engine_renderer.hpp"
-#include "sfx/half.hpp"
+#include "half_bytes.hpp"
 #include "skips.hpp"
 
 using namespace sfx;
@@ -29,16 +28,6 @@ constexpr uint32_t kWarmupFrames = 4, kFrames = 60;
 // far better; these are the ceilings.
 constexpr double kAoWorstPixel = 0.005;
 constexpr double kMotionBlurWorstValue = 2e-3;
-
-std::vector<double> halves(const std::vector<uint8_t>& bytes) {
-    std::vector<double> out(bytes.size() / 2);
-    for (size_t i = 0; i < out.size(); ++i) {
-        uint16_t h;
-        std::memcpy(&h, bytes.data() + 2 * i, 2);
-        out[i] = halfToFloat(h);
-    }
-    return out;
-}
 
 double worstDifference(const std::vector<double>& a, const std::vector<double>& b) {
     REQUIRE(a.size() == b.size());
@@ -144,13 +133,13 @@ TEST_CASE("engine vulkan: the sample's frames make nothing and match the SDK's o
     const std::vector<uint8_t> hostBlur = readBack(d, r.motionBlur().output(), n * 8);
 
     // Not a blank picture: the bunny occludes the floor, and it moves.
-    const std::vector<double> aoValues = halves(hostAo), velocityValues = halves(velocity);
+    const std::vector<double> aoValues = test::halfBytesToDoubles(hostAo), velocityValues = test::halfBytesToDoubles(velocity);
     CHECK(*std::min_element(aoValues.begin(), aoValues.end()) < 0.8);
     double fastest = 0;
     for (size_t i = 0; i < n; ++i) fastest = std::max(fastest, std::hypot(velocityValues[2 * i], velocityValues[2 * i + 1]));
     WARN("engine vulkan: fastest pixel moves " << fastest << " px a frame");
     CHECK(fastest > 1.0);
-    CHECK(worstDifference(halves(lit), halves(hostBlur)) > 0.01);  // the blur changed the picture
+    CHECK(worstDifference(test::halfBytesToDoubles(lit), test::halfBytesToDoubles(hostBlur)) > 0.01);  // the blur changed the picture
 
     // The SDK's own path: the same inputs in SDK textures, new effects with the sample's
     // descriptions and settings, dispatched on the SDK's own command buffers.
@@ -174,8 +163,8 @@ TEST_CASE("engine vulkan: the sample's frames make nothing and match the SDK's o
         mbIn.velocity = velocityTex;
         REQUIRE(mb.value()->dispatch(mbIn, r.motionBlurSettings()).isOk());
         REQUIRE(d.flush().isOk());
-        const double aoDiff = worstDifference(aoValues, halves(readBack(d, aoOut, n * 2)));
-        const double mbDiff = worstDifference(halves(hostBlur), halves(readBack(d, mb.value()->output(), n * 8)));
+        const double aoDiff = worstDifference(aoValues, test::halfBytesToDoubles(readBack(d, aoOut, n * 2)));
+        const double mbDiff = worstDifference(test::halfBytesToDoubles(hostBlur), test::halfBytesToDoubles(readBack(d, mb.value()->output(), n * 8)));
         WARN("engine vulkan: worst pixel against the SDK's own path: AO " << aoDiff << ", motion blur " << mbDiff);
         CHECK(aoDiff <= kAoWorstPixel);
         CHECK(mbDiff <= kMotionBlurWorstValue);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "analytic_scenes.hpp"
+#include "half_bytes.hpp"
 #include "host_vulkan.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/half.hpp"
@@ -29,16 +30,6 @@ namespace {
 
 // Two GPU runs of the same AO on the same device and inputs differ by at most one R16F step at 1.
 constexpr double kSamePathTolerance = 1.0 / 1024.0;
-
-std::vector<double> halves(const std::vector<uint8_t>& bytes) {
-    std::vector<double> out(bytes.size() / 2);
-    for (size_t i = 0; i < out.size(); ++i) {
-        uint16_t h;
-        std::memcpy(&h, bytes.data() + 2 * i, 2);
-        out[i] = halfToFloat(h);
-    }
-    return out;
-}
 
 double maxDifference(const std::vector<double>& a, const std::vector<double>& b) {
     REQUIRE(a.size() == b.size());
@@ -70,7 +61,7 @@ std::vector<double> sdkOwnAo(Device& d, AmbientObscurance& ao, uint32_t w, uint3
     std::memcpy(bytes.data(), texels.data(), bytes.size());
     for (TextureHandle t : {depthTex, normalTex, out})
         if (!t.isNull()) REQUIRE(d.destroyTexture(t).isOk());
-    return halves(bytes);
+    return test::halfBytesToDoubles(bytes);
 }
 
 void checkNoMessages(Device& d, Host& host) {
@@ -159,7 +150,7 @@ TEST_CASE("vulkan import: AO reads host depth and normals and writes a host imag
         CHECK(native->format == VK_FORMAT_R16_SFLOAT);
         CHECK(native->layout == VK_IMAGE_LAYOUT_GENERAL);
         CHECK(vulkan::nativeImage(d, normalTex.value()).value().view == normalImg.view);
-        const std::vector<double> imported = halves(hostDownload(host, outImg, native->layout, size_t(w) * h * 2));
+        const std::vector<double> imported = test::halfBytesToDoubles(hostDownload(host, outImg, native->layout, size_t(w) * h * 2));
         const std::vector<double> own = sdkOwnAo(d, *ao.value(), w, h, Format::R32F, depth, DepthKind::Linear, scene.camera, &normals);
         const double diff = maxDifference(imported, own);
         WARN("vulkan import: AO of imported images vs the SDK's own textures, worst pixel " << diff);
@@ -180,7 +171,7 @@ TEST_CASE("vulkan import: AO reads host depth and normals and writes a host imag
         REQUIRE(d.flush().isOk());
         std::vector<uint8_t> depthBytes = hostDownload(host, depthImg, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, depth.size() * 4);
         CHECK(std::memcmp(depthBytes.data(), depth.data(), depthBytes.size()) == 0);
-        CHECK(maxDifference(halves(hostDownload(host, outImg, VK_IMAGE_LAYOUT_GENERAL, size_t(w) * h * 2)), own) <= kSamePathTolerance);
+        CHECK(maxDifference(test::halfBytesToDoubles(hostDownload(host, outImg, VK_IMAGE_LAYOUT_GENERAL, size_t(w) * h * 2)), own) <= kSamePathTolerance);
         CHECK(d.destroyTexture(outTex.value()).code() == StatusCode::StaleHandle);
         checkNoMessages(d, host);
     }
