@@ -111,6 +111,12 @@ TEST_CASE("ao settings: out-of-range values are named errors", "[ao][bad-input]"
     s = {};
     s.contrast = 0;
     CHECK(validateAoSettings(s, high).message().find("AoSettings.contrast") != std::string::npos);
+    s = {};
+    s.resolution = static_cast<AoResolution>(3);
+    const Status badResolution = validateAoSettings(s, high);
+    CHECK(badResolution.code() == StatusCode::InvalidArgument);
+    CHECK(badResolution.message().find("AoSettings.resolution") != std::string::npos);
+    CHECK(badResolution.message().find("Tier, Full or Half") != std::string::npos);
 }
 
 TEST_CASE("ao settings resolve to the tier table", "[ao]") {
