@@ -6,11 +6,10 @@
 #define SFX_AO_BLUR_PASS 1
 #include "sfx_shared_ao.h"
 
-// SFX_AO_PACKED_DEPTH_TARGET comes from the tier table (TierProfile::aoPackedDepthTarget).
-#ifndef SFX_AO_PACKED_DEPTH_TARGET
-layout(set = 0, binding = 0) uniform sampler2D uDepth;  // linear depth (the AO target is RG16F)
-#endif
-layout(set = 0, binding = 1) uniform sampler2D uSource;  // packed target: depth key in b, a
+// SFX_AO_PACKED_DEPTH_TARGET comes from the tier table (TierProfile::aoPackedDepthTarget): the
+// depth key packed in b and a of the RGBA8 target. Otherwise the float target carries the linear
+// depth itself, in g (RG32F), or in b for crease (RGBA32F: g holds the moderate blur).
+layout(set = 0, binding = 1) uniform sampler2D uSource;
 // BlurParams (binding 2): sfx_shared_ao.h.
 layout(location = 0) out vec4 outAo;
 // Fixed per pipeline (sfx_shared_ao.h); AmbientObscurance gives every one.
@@ -18,14 +17,27 @@ layout(constant_id = SFX_AO_SC_BLUR_RADIUS) const int kRadius = 1;
 layout(constant_id = SFX_AO_SC_BLUR_MODERATE_RADIUS) const int kModerateRadius = 1;
 layout(constant_id = SFX_AO_SC_BLUR_CREASE) const int kCrease = 0;
 layout(constant_id = SFX_AO_SC_BLUR_FINAL_PASS) const int kFinalPass = 0;
+layout(constant_id = SFX_AO_SC_BLUR_KEEP_DEPTH) const int kKeepDepth = 0;
 
-float blurDepth(ivec2 q, vec4 s) {
+float blurDepth(vec4 s) {
 #ifndef SFX_AO_PACKED_DEPTH_TARGET
-    // uDepth may be the host's linear depth itself (LinearDepth passing through): clamp on fetch.
-    return sfxLinearDepthOrFar(texelFetch(uDepth, q, 0).r, params.maxDepth);
+    // Already clamped by the obscurance pass (sfxLinearDepthOrFar), as a fetch would be.
+    return kCrease != 0 ? s.b : s.g;
 #else
     float key = aoUnpackDepthKey(s.ba);
     return key >= 1.0 ? params.maxDepth : params.keyNear * exp2(key * params.keyLog2Range);
+#endif
+}
+
+// The first pass keeps the centre's depth for the second; the second writes visibility, and at
+// half resolution (kKeepDepth) the depth again, float or key, for the upsample.
+vec4 blurOut(float wide, float moderate, vec4 c) {
+#ifndef SFX_AO_PACKED_DEPTH_TARGET
+    if (kFinalPass == 0 || kKeepDepth != 0) return kCrease != 0 ? vec4(wide, moderate, c.b, 1.0) : vec4(wide, c.g, 0.0, 1.0);
+    return vec4(wide, wide, wide, 1.0);
+#else
+    if (kFinalPass == 0) return vec4(wide, moderate, c.b, c.a);
+    return kKeepDepth != 0 ? vec4(wide, wide, c.b, c.a) : vec4(wide, wide, wide, 1.0);
 #endif
 }
 
@@ -33,9 +45,9 @@ void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     ivec2 size = textureSize(uSource, 0);
     vec4 c = texelFetch(uSource, p, 0);
-    float z0 = blurDepth(p, c);
+    float z0 = blurDepth(c);
     if (!(z0 < params.maxDepth)) {
-        outAo = kFinalPass != 0 ? vec4(1.0) : c;
+        outAo = kFinalPass != 0 ? blurOut(1.0, 1.0, c) : c;
         return;
     }
     float accWide = 0.0, wWide = 0.0, accModerate = 0.0, wModerate = 0.0;
@@ -43,7 +55,7 @@ void main() {
         ivec2 q = p + k * params.direction;
         if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) continue;
         vec4 s = texelFetch(uSource, q, 0);
-        float edge = aoBlurEdgeWeight(blurDepth(q, s), z0);
+        float edge = aoBlurEdgeWeight(blurDepth(s), z0);
         float w = aoBlurGaussian(k, kRadius) * edge;
         accWide += w * s.r;
         wWide += w;
@@ -57,7 +69,7 @@ void main() {
     float wide = accWide / wWide;
     float moderate = kCrease != 0 ? accModerate / wModerate : wide;
     if (kFinalPass == 0) {
-        outAo = vec4(wide, moderate, c.b, c.a);
+        outAo = blurOut(wide, moderate, c);
         return;
     }
     float v = wide;
@@ -65,5 +77,5 @@ void main() {
         float occ = 0.5 * (SFX_AO_CREASE_WIDE_GAIN * (1.0 - wide) + SFX_AO_CREASE_MODERATE_GAIN * (1.0 - moderate));
         v = clamp(1.0 - occ, 0.0, 1.0);
     }
-    outAo = vec4(v, v, v, 1.0);
+    outAo = blurOut(v, v, c);
 }

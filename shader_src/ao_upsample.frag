@@ -8,16 +8,32 @@
 layout(set = 0, binding = 0) uniform sampler2D uDepth;      // full-size linear depth (maybe the host's), + MIP
 layout(set = 0, binding = 1) uniform sampler2D uHalfDepth;  // the depth the half-size AO was computed on,
                                                             // or uDepth again when it is its level 1
-layout(set = 0, binding = 2) uniform sampler2D uSource;     // half-size visibility in r
+layout(set = 0, binding = 2) uniform sampler2D uSource;     // half-size visibility in r (+ depth: SFX_AO_DEPTH_IN_*)
 // UpsampleParams (binding 3): sfx_shared_ao.h.
 layout(location = 0) out vec4 outAo;
-layout(constant_id = SFX_AO_SC_UPSAMPLE_DEPTH_MIP) const int kHalfDepthIsMip = 0;
+layout(constant_id = SFX_AO_SC_UPSAMPLE_DEPTH) const int kHalfDepthSource = SFX_AO_HALF_DEPTH_TEXTURE;
+layout(constant_id = SFX_AO_SC_UPSAMPLE_LINEARIZE) const int kLinearize = 0;
 
-float halfDepth(ivec2 q) { return kHalfDepthIsMip != 0 ? texelFetch(uDepth, q, 1).r : texelFetch(uHalfDepth, q, 0).r; }
+// A half-size texel's visibility (x) and depth (y): with the depth in the AO target one fetch
+// gives both (stored clamped, as sfxLinearDepthOrFar returns it).
+vec2 halfTexel(ivec2 q) {
+    vec4 s = texelFetch(uSource, q, 0);
+    if (kHalfDepthSource == SFX_AO_HALF_DEPTH_SOURCE_G) return s.rg;
+    if (kHalfDepthSource == SFX_AO_HALF_DEPTH_SOURCE_B) return s.rb;
+    if (kHalfDepthSource == SFX_AO_HALF_DEPTH_SOURCE_KEY) {
+        float key = aoUnpackDepthKey(s.ba);
+        return vec2(s.r, key >= 1.0 ? params.maxDepth : params.keyNear * exp2(key * params.keyLog2Range));
+    }
+    float d = kHalfDepthSource == SFX_AO_HALF_DEPTH_MIP ? texelFetch(uDepth, q, 1).r : texelFetch(uHalfDepth, q, 0).r;
+    return vec2(s.r, sfxLinearDepthOrFar(d, params.maxDepth));
+}
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    float z0 = sfxLinearDepthOrFar(texelFetch(uDepth, p, 0).r, params.maxDepth);
+    // The full-size depth, linearized here when no pass did (LinearDepthDesc.readersLinearize).
+    float d = texelFetch(uDepth, p, 0).r;
+    float z0 = kLinearize != 0 ? sfxLinearizeDepth(d, params.ndcScale, params.denomOffset, params.numerator, params.maxDepth)
+                               : sfxLinearDepthOrFar(d, params.maxDepth);
     if (!(z0 < params.maxDepth)) {
         outAo = vec4(1.0);
         return;
@@ -29,8 +45,8 @@ void main() {
     for (int j = 0; j < 2; ++j) {
         for (int i = 0; i < 2; ++i) {
             ivec2 q = clamp(base + ivec2(i, j), ivec2(0), halfSize - 1);
-            float zq = sfxLinearDepthOrFar(halfDepth(q), params.maxDepth);
-            float a = texelFetch(uSource, q, 0).r;
+            vec2 t = halfTexel(q);
+            float a = t.x, zq = t.y;
             float bilinear = (i == 1 ? upper.x : 1.0 - upper.x) * (j == 1 ? upper.y : 1.0 - upper.y);
             float w = aoUpsampleWeight(bilinear, zq, z0);
             acc += w * a;

@@ -231,7 +231,7 @@ float aoUnpackDepthKey(vec2 ba) {
 #define SFX_AO_SC_MIRRORED 1       // 1: Scalable taps come in mirrored pairs
 #define SFX_AO_SC_MIP_LEVELS 2     // depth MIP levels Scalable reads (1: full resolution only)
 #define SFX_AO_SC_NORMAL_SOURCE 3  // 0 derived from depth, 1 signed float, 2 unorm8
-#define SFX_AO_SC_PACK_DEPTH 4     // 1: the depth key goes to b and a (RGBA8 target, blur on)
+#define SFX_AO_SC_PACK_DEPTH 4     // where the depth for the blur and upsample goes (SFX_AO_DEPTH_IN_*)
 #define SFX_AO_SC_CLAMP_RADIUS 5   // 1: the screen radius is clamped to maxRadiusPx
 #define SFX_AO_SC_HALF_RES 6       // 1: half-size pass: positions and normals at aoFullResPixel
 // The bilateral blur (ao_blur.frag):
@@ -239,9 +239,28 @@ float aoUnpackDepthKey(vec2 ba) {
 #define SFX_AO_SC_BLUR_MODERATE_RADIUS 1  // Crease's second, moderate blur
 #define SFX_AO_SC_BLUR_CREASE 2           // 1: also the moderate blur, blended in the final pass
 #define SFX_AO_SC_BLUR_FINAL_PASS 3       // 0: horizontal into the intermediate, 1: vertical out
+#define SFX_AO_SC_BLUR_KEEP_DEPTH 4       // 1: the vertical pass keeps the float depth (the upsample reads it)
 // The upsample (ao_upsample.frag):
-#define SFX_AO_SC_UPSAMPLE_DEPTH_MIP 0  // 1: the half-size depth is level 1 of uDepth (GL keeps one
-                                        // mip range per texture, so it is not bound twice)
+#define SFX_AO_SC_UPSAMPLE_DEPTH 0  // where the half-size depth comes from (SFX_AO_HALF_DEPTH_*)
+#define SFX_AO_SC_UPSAMPLE_LINEARIZE 1  // 1: uDepth is the host's hardware depth: linearize on fetch
+// The half-size depth (ao_half_depth.frag):
+#define SFX_AO_SC_HALF_DEPTH_LINEARIZE 0  // 1: uDepth is the host's hardware depth: linearize on fetch
+// Where the obscurance pass puts the depth its readers need, when it writes the AO target (blur
+// or half resolution). A depth in the target saves the blur and the upsample one fetch per tap,
+// and fetches are what a fragment pass costs on CPU rasterisers (and bandwidth on GPUs).
+#define SFX_AO_DEPTH_IN_NONE 0      // not written: the host's output (full resolution, no blur)
+#define SFX_AO_DEPTH_IN_KEY_BA 1    // 16-bit log depth key in b and a (RGBA8 target, current tier)
+#define SFX_AO_DEPTH_IN_FLOAT_G 2   // the linear depth itself in g (RG32F target, high tier)
+#define SFX_AO_DEPTH_IN_FLOAT_B 3   // the linear depth in b (RGBA32F target, high tier crease: g
+                                    // holds crease's moderate blur)
+// The half-size depth the upsample weighs by (ao_upsample.frag). GL keeps one mip range per
+// texture, so MIP level 1 is read through uDepth, not bound twice.
+#define SFX_AO_HALF_DEPTH_TEXTURE 0  // uHalfDepth (the ao_half_depth pass)
+#define SFX_AO_HALF_DEPTH_MIP 1      // level 1 of uDepth (high-tier Scalable's pyramid)
+#define SFX_AO_HALF_DEPTH_SOURCE_G 2 // g of the half-size AO itself (SFX_AO_DEPTH_IN_FLOAT_G)
+#define SFX_AO_HALF_DEPTH_SOURCE_B 3 // b of the half-size AO itself (SFX_AO_DEPTH_IN_FLOAT_B)
+#define SFX_AO_HALF_DEPTH_SOURCE_KEY 4 // the key in b, a of the half-size AO (SFX_AO_DEPTH_IN_KEY_BA),
+                                       // decoded as the blur decodes it
 
 // ---- Uniform blocks of the AO passes (SFX_BLOCK: one declaration for GLSL and C++) ----------
 // The obscurance passes (ao_alchemy/ao_scalable/ao_crease.frag), filled by AmbientObscurance.
@@ -269,14 +288,15 @@ SFX_BLOCK_END(params)
 // The depth-aware upsample (ao_upsample.frag).
 #if defined(__cplusplus) || defined(SFX_AO_UPSAMPLE_PASS)
 SFX_BLOCK(UpsampleParams, 3)
-    SFX_M_FLOAT(maxDepth) SFX_M_FLOAT(pad0) SFX_M_FLOAT(pad1) SFX_M_FLOAT(pad2)
+    SFX_M_FLOAT(maxDepth) SFX_M_FLOAT(keyNear) SFX_M_FLOAT(keyLog2Range) SFX_M_FLOAT(pad0)  // key: as BlurParams
+    SFX_M_FLOAT(ndcScale) SFX_M_FLOAT(denomOffset) SFX_M_FLOAT(numerator) SFX_M_FLOAT(pad1)  // LinearizeParams
 SFX_BLOCK_END(params)
 #endif
 #ifdef __cplusplus
 static_assert(sizeof(AoParams) == 112 && offsetof(AoParams, radius) == 16 && offsetof(AoParams, maxDepth) == 44 &&
               offsetof(AoParams, spiralTurns) == 64 && offsetof(AoParams, fadeStart) == 96);
 static_assert(sizeof(BlurParams) == 48 && offsetof(BlurParams, direction) == 0 && offsetof(BlurParams, maxDepth) == 32);
-static_assert(sizeof(UpsampleParams) == 16);
+static_assert(sizeof(UpsampleParams) == 32);
 #endif
 
 #ifdef __cplusplus
@@ -331,13 +351,19 @@ vec3 aoNormal(ivec2 p, vec3 C, float z, ivec2 size) {
     return aoDerivedNormal(p, C, z, size);
 }
 
-// Visibility out; with packDepth (current tier, blur on) the depth key goes to b and a, and sky
-// gets the key 1 exactly (surfaces stay below it), so the blur can tell sky apart.
+// Visibility out, with the depth where kAoPackDepth says (SFX_AO_DEPTH_IN_*). The packed key
+// of sky is 1 exactly (surfaces stay below it), so the blur can tell sky apart; a float depth is
+// z as every reader clamps it (sfxLinearDepthOrFar: sky is maxDepth), so it reads the same value
+// it would fetch from the depth texture.
 void aoWrite(float visibility, float z, bool sky) {
     float v = clamp(visibility, 0.0, 1.0);
-    if (kAoPackDepth != 0) {
+    if (kAoPackDepth == SFX_AO_DEPTH_IN_KEY_BA) {
         float key = sky ? 1.0 : min(log2(z / params.keyNear) * params.keyInvLog2Range, 65534.0 / 65535.0);
         outAo = vec4(v, v, aoPackDepthKey(key));
+    } else if (kAoPackDepth == SFX_AO_DEPTH_IN_FLOAT_G) {
+        outAo = vec4(v, z, 0.0, 1.0);
+    } else if (kAoPackDepth == SFX_AO_DEPTH_IN_FLOAT_B) {
+        outAo = vec4(v, v, z, 1.0);
     } else {
         outAo = vec4(v, v, v, 1.0);
     }

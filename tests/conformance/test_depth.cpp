@@ -301,6 +301,46 @@ TEST_CASE("LinearDepth: linear input without a pyramid runs no pass and holds no
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
+TEST_CASE("LinearDepth: readers that linearize get the host's depth and the constants, no pass", "[depth][plan]") {
+    // AO at half resolution without a pyramid linearizes each full-size depth as it fetches it.
+    Device& device = test::device();
+    const uint32_t W = 16, H = 8;
+    LinearDepthDesc desc{W, H, test::tier(), 1, DepthKind::Hardware};
+    desc.readersLinearize = true;
+    auto readers = LinearDepth::create(device, desc);
+    REQUIRE(readers.isOk());
+    CHECK(readers.value()->passThrough());
+    const Plan p = readers.value()->plan();
+    CHECK(p.passes.empty());
+    REQUIRE(p.resources.size() == 1);  // the constants the readers use, nothing else
+    CHECK(p.resources[0].name.find("linearize params") != std::string::npos);
+    CHECK_FALSE(readers.value()->linearizeParams().isNull());
+
+    const CameraProjection cam = makePerspective({}).value();
+    TextureHandle hw = device.createTexture({W, H, 1, Format::D32F, kTextureSampled | kTextureRenderTarget, "test-hw-depth"}).value();
+    SFX_REQUIRE_OK(readers.value()->dispatch({hw, DepthKind::Hardware, cam}));
+    CHECK(readers.value()->texture() == hw);
+    CHECK(readers.value()->sourceKind() == DepthKind::Hardware);
+    CHECK(readers.value()->reconstruction().maxDepth > 0.0);
+    // Linear input is read where it lies, as without the flag.
+    TextureHandle lin = device.createTexture({W, H, 1, Format::R32F, kTextureSampled, "test-linear-depth"}).value();
+    SFX_REQUIRE_OK(readers.value()->dispatch({lin, DepthKind::Linear, cam}));
+    CHECK(readers.value()->texture() == lin);
+    CHECK(readers.value()->sourceKind() == DepthKind::Linear);
+    // The flag changes nothing where a pyramid is built: the pass and its texture stay.
+    if (test::tier() == Tier::High) {
+        LinearDepthDesc mipDesc{W, H, Tier::High, 2, DepthKind::Hardware};
+        mipDesc.readersLinearize = true;
+        auto mip = LinearDepth::create(device, mipDesc);
+        REQUIRE(mip.isOk());
+        CHECK_FALSE(mip.value()->passThrough());
+        CHECK(mip.value()->plan().passes.size() == 2);
+    }
+    SFX_REQUIRE_OK(device.destroyTexture(hw));
+    SFX_REQUIRE_OK(device.destroyTexture(lin));
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
 TEST_CASE("depth passes stay finite and within bounds at the extremes", "[depth][conformance][extremes]") {
     Device& device = test::device();
     // Extreme depth ranges: a 1e-4 near plane with a 1e6 far plane, and an infinite far plane

@@ -96,7 +96,7 @@ TierProfile highDefault() {
     p.aoLook[0] = {.intensity = 0.392128f, .contrast = 1.77828f, .bias = 1e-7f};                               // alchemy
     p.aoLook[1] = {.intensity = 4.07247f, .contrast = 5.42469f, .bias = 0.261719f};                                // scalable
     p.aoLook[2] = {.intensity = 14.4122f, .contrast = 1.15478f, .bias = 0, .creaseRange = 0.430292f, .creaseBias = 0.238152f};  // crease
-    p.aoPackedDepthTarget = false;  // RG16F AO target; the blur reads the linear depth texture
+    p.aoPackedDepthTarget = false;  // float AO target carrying the linear depth (RG32F; RGBA32F crease)
     p.aoHalfResolution = true;      // as the current tier; the blur's 6 px become 3 half-size taps each side
     p.mbTaps = 9;                   // 8 samples + centre
     p.mbMaxRadiusPx = 18.0f;

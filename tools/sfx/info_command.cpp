@@ -35,7 +35,7 @@ const ParameterRow kParameterRows[] = {
     {"AO bilateral blur half-width (px)", [](const TierProfile& p) { return std::to_string(p.aoBlurRadiusPx); }},
     {"AO blur depth source",
      [](const TierProfile& p) {
-         return std::string(p.aoPackedDepthTarget ? "key packed in the RGBA8 AO target" : "linear depth texture (RG16F AO target)");
+         return std::string(p.aoPackedDepthTarget ? "key packed in the RGBA8 AO target" : "linear depth carried in the float AO target (RG32F; RGBA32F for crease)");
      }},
     {"alchemy AO look (intensity, contrast, bias)", [](const TierProfile& p) { return look(p.aoLook[0], false); }},
     {"scalable AO look (intensity, contrast, bias)", [](const TierProfile& p) { return look(p.aoLook[1], false); }},

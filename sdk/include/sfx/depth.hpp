@@ -40,6 +40,12 @@ struct LinearDepthDesc {
     // texture() is the host's own R32F texture (dispatching Hardware depth to it is then
     // InvalidArgument). Hardware accepts either kind (linear input is copied).
     DepthKind input = DepthKind::Hardware;
+    // With mipLevels 1: the effect reading the depth linearizes hardware depth itself on every
+    // fetch (sfxLinearizeDepth, the pass's own formula), so there is neither pass nor texture:
+    // texture() is the host's texture of either kind, sourceKind() says which, and
+    // linearizeParams() holds the constants. Worth it where each pixel is fetched once or twice
+    // (AO at half resolution), not where a pass reads it many times.
+    bool readersLinearize = false;
 };
 
 // Owns an R32F texture of linear depth (and its MIP pyramid when mipLevels > 1).
@@ -59,8 +65,14 @@ public:
     // R32F, mipLevels levels. Without a pass (passThrough()), the host's texture of the last
     // dispatch (null before the first).
     TextureHandle texture() const { return passThrough() ? hostTexture_ : texture_; }
-    // True when the input is linear and no pyramid is built: dispatch records nothing.
-    bool passThrough() const { return desc_.input == DepthKind::Linear && desc_.mipLevels == 1; }
+    // True when no pyramid is built and the input is linear or the readers linearize: dispatch
+    // records nothing.
+    bool passThrough() const { return desc_.mipLevels == 1 && (desc_.input == DepthKind::Linear || desc_.readersLinearize); }
+    // The kind of the last dispatched source (what texture() holds when passing through).
+    DepthKind sourceKind() const { return sourceKind_; }
+    // LinearizeParams (sfx_shared.h) of the last dispatch; with readersLinearize, for the readers
+    // (null when the desc's input is Linear: nothing to linearize).
+    BufferHandle linearizeParams() const { return params_; }
     const LinearDepthDesc& desc() const { return desc_; }
     // Reconstruction constants of the last dispatched camera (valid after dispatch).
     const DepthReconstruction& reconstruction() const { return reconstruction_; }
@@ -81,6 +93,7 @@ private:
     // Linearisation (one per DepthKind seen) and MIP pipelines; kept across resize.
     std::unique_ptr<detail::PipelineCache> pipelines_;
     DepthReconstruction reconstruction_;
+    DepthKind sourceKind_ = DepthKind::Hardware;
 };
 
 }  // namespace sfx

@@ -55,8 +55,9 @@ struct TierProfile {
     AoLook aoLook[3];                  // per technique, indexed by AoTechnique (alchemy, scalable, crease)
     // With blur, where the blur finds each pixel's depth. true (current tier): the raw AO goes to
     // an RGBA8 target with a 16-bit depth key packed in b, a (one fetch per tap, 8-bit targets
-    // only). false (high): an RG16F target, and the blur reads the linear depth texture. The
-    // table turns it into SFX_AO_PACKED_DEPTH_TARGET, which decides ao_blur.frag's bindings.
+    // only). false (high): a float target carrying the linear depth itself (RG32F; RGBA32F for
+    // crease), so the blur and, at half resolution, the upsample also read one texel per tap. The
+    // table turns it into SFX_AO_PACKED_DEPTH_TARGET, which decides ao_blur.frag's depth source.
     bool aoPackedDepthTarget = false;
     // AO at half resolution with a depth-aware upsample (AoResolution::Tier resolves to it).
     bool aoHalfResolution = false;

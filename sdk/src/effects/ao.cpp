@@ -61,6 +61,10 @@ Status AmbientObscurance::allocate() {
     // At half size high-tier Scalable reads the pyramid from level 1: one level more to build.
     const uint32_t depthLevels = halfDepthFromMip() ? config_.depthMipLevels + 1 : config_.depthMipLevels;
     LinearDepthDesc dd{desc_.width, desc_.height, tier, depthLevels, desc_.depthInput};
+    // At half resolution without a pyramid each full-size depth is fetched once by the half-size
+    // depth pass and once by the upsample: both linearize it as they fetch it, and the full-size
+    // linearisation pass (about three copy passes on a CPU rasteriser) does not run.
+    dd.readersLinearize = config_.halfResolution && depthLevels == 1;
     Result<std::unique_ptr<LinearDepth>> depth = LinearDepth::create(device_, dd);
     if (!depth) return depth.status();
     depth_ = std::move(depth.value());
@@ -73,7 +77,7 @@ Status AmbientObscurance::allocate() {
     aoProgram_ = program.value();
 
     if (config_.blurRadius > 0 || config_.halfResolution) {
-        targetFormat_ = detail::aoTargetFormat(desc_.profile);
+        targetFormat_ = detail::aoTargetFormat(desc_.profile, config_.technique);
         if (!device_.caps().renderableFormat[size_t(targetFormat_)])
             return {StatusCode::UnsupportedFormat, std::string("AO target format ") + toString(targetFormat_) + " is not renderable on this device"};
         SFX_TRY(allocateTargets());
@@ -303,7 +307,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
         {SFX_AO_SC_MIRRORED, config_.mirrored ? 1 : 0},
         {SFX_AO_SC_MIP_LEVELS, int32_t(config_.depthMipLevels)},
         {SFX_AO_SC_NORMAL_SOURCE, normalSource},
-        {SFX_AO_SC_PACK_DEPTH, blur && targetFormat_ == Format::RGBA8 ? 1 : 0},
+        {SFX_AO_SC_PACK_DEPTH, detail::aoDepthInTarget(desc_.profile, config_.technique, blur, half)},
         {SFX_AO_SC_CLAMP_RADIUS, config_.maxRadiusPx > 0.0 ? 1 : 0},
         {SFX_AO_SC_HALF_RES, half ? 1 : 0},
     };
@@ -344,6 +348,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
                 {SFX_AO_SC_BLUR_MODERATE_RADIUS, std::max(1, radius / 2)},
                 {SFX_AO_SC_BLUR_CREASE, config_.technique == AoTechnique::Crease ? 1 : 0},
                 {SFX_AO_SC_BLUR_FINAL_PASS, blurPass},
+                {SFX_AO_SC_BLUR_KEEP_DEPTH, half ? 1 : 0},
             };
             Result<PipelineHandle> bp = pipelines_->get(blurProgram_, blurPass == 0 || half ? targetFormat_ : out->format, blurConstants,
                                                         blurPass == 0 ? "sfx-ao-blur-h" : "sfx-ao-blur-v");
@@ -353,9 +358,8 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
             bpass.debugName = blurPass == 0 ? "sfx-ao-blur-h" : "sfx-ao-blur-v";
             DrawDesc bdraw;
             bdraw.pipeline = bp.value();
+            // The depth comes with each texel of the source (the target's layout): one binding.
             bdraw.bindings.textures = {TextureBinding{gen::ao_blur::uSource, src, 0, 1, {}}};
-            if (!desc_.profile.aoPackedDepthTarget)
-                bdraw.bindings.textures.push_back(TextureBinding{gen::ao_blur::uDepth, passDepth, passDepthBase, 1, {}});
             bdraw.bindings.uniformBuffers = {BufferBinding{gen::ao_blur::BlurParams, buffer, 0, 0}};
             SFX_TRY(timed(passIndex++, [&] { return device_.renderPass(bpass, std::span<const DrawDesc>(&bdraw, 1)); }));
         }
@@ -386,9 +390,11 @@ Plan AmbientObscurance::plan() const {
         plan.passes.push_back({"ao", "bilateral blur v" + atHalf, w, h});
     }
     if (half) plan.passes.push_back({"ao", "depth-aware upsample to full size (AO at half resolution)", desc_.width, desc_.height});
-    const TextureDesc td{w, h, 1, detail::aoTargetFormat(desc_.profile), kTextureSampled | kTextureRenderTarget};
-    const std::string raw = desc_.profile.aoPackedDepthTarget && blur ? "raw AO + packed depth (RGBA8)" :
-                            desc_.profile.aoPackedDepthTarget ? "raw AO (RGBA8)" : "raw AO (RG16F)";
+    const Format targetFormat = detail::aoTargetFormat(desc_.profile, config_.technique);
+    const TextureDesc td{w, h, 1, targetFormat, kTextureSampled | kTextureRenderTarget};
+    const std::string raw = desc_.profile.aoPackedDepthTarget && blur ? "raw AO + packed depth key (RGBA8)" :
+                            desc_.profile.aoPackedDepthTarget ? "raw AO (RGBA8)" :
+                            std::string("raw AO + linear depth (") + toString(targetFormat) + "): the blur and upsample read one texel per tap";
     if (blur || half) plan.resources.push_back(plannedTexture("ao", raw + (half ? ", half size: the upsample's source" : ""), td));
     if (blur) {
         plan.resources.push_back(plannedTexture("ao", "blur intermediate" + atHalf, td));

@@ -2,6 +2,7 @@
 // depth-aware upsample to the host's full-size output. The obscurance and blur passes are
 // ao.cpp's, run at passWidth() x passHeight().
 #include <algorithm>
+#include <cmath>
 
 #include "ao_internal.hpp"
 #include "effect_common.hpp"
@@ -36,7 +37,8 @@ Status AmbientObscurance::allocateHalfRes() {
 }
 
 Status AmbientObscurance::recordHalfDepth(size_t passIndex) {
-    Result<PipelineHandle> pipeline = pipelines_->get(halfDepthProgram_, Format::R32F, {}, "sfx-ao-half-depth");
+    const int linearize = depth_->passThrough() && depth_->sourceKind() == DepthKind::Hardware ? 1 : 0;
+    Result<PipelineHandle> pipeline = pipelines_->get(halfDepthProgram_, Format::R32F, {{SFX_AO_SC_HALF_DEPTH_LINEARIZE, linearize}}, "sfx-ao-half-depth");
     if (!pipeline) return pipeline.status();
     RenderPassDesc pass;
     pass.colors = {ColorAttachment{halfDepth_, 0, LoadOp::DontCare, {}}};
@@ -44,15 +46,38 @@ Status AmbientObscurance::recordHalfDepth(size_t passIndex) {
     DrawDesc draw;
     draw.pipeline = pipeline.value();
     draw.bindings.textures = {TextureBinding{gen::ao_half_depth::uDepth, depth_->texture(), 0, 1, {}}};
+    // Linear input has no constants to linearize by (and the shader does not read them): the
+    // declared block still needs a buffer of its size, and the upsample's is one.
+    static_assert(sizeof(shared::UpsampleParams) >= sizeof(shared::LinearizeParams));
+    const BufferHandle linearizeParams = depth_->linearizeParams().isNull() ? upsampleParams_ : depth_->linearizeParams();
+    draw.bindings.uniformBuffers = {BufferBinding{gen::ao_half_depth::LinearizeParams, linearizeParams, 0, 0}};
     return timed(passIndex, [&] { return device_.renderPass(pass, std::span<const DrawDesc>(&draw, 1)); });
 }
 
 Status AmbientObscurance::recordUpsample(const AoInputs& in, Format outFormat, TextureHandle source, size_t passIndex) {
     shared::UpsampleParams u{};
-    u.maxDepth = float(depth_->reconstruction().maxDepth);
+    const DepthReconstruction& rec = depth_->reconstruction();
+    u.maxDepth = float(rec.maxDepth);
+    // The key's constants, as the obscurance pass and the blur use them (ao.cpp).
+    const double keyNear = std::max(rec.nearDepth, 1e-6);
+    u.keyNear = float(keyNear);
+    u.keyLog2Range = float(std::log2(double(shared::SFX_SKY_DEPTH) / keyNear));
+    u.ndcScale = float(rec.ndcScale);
+    u.denomOffset = float(rec.denomOffset);
+    u.numerator = float(rec.numerator);
+    const int linearize = depth_->passThrough() && depth_->sourceKind() == DepthKind::Hardware ? 1 : 0;
     SFX_TRY(device_.writeBuffer(upsampleParams_, 0, &u, sizeof u));
     const bool mip = halfDepthFromMip();
-    Result<PipelineHandle> pipeline = pipelines_->get(upsampleProgram_, outFormat, {{SFX_AO_SC_UPSAMPLE_DEPTH_MIP, mip ? 1 : 0}}, "sfx-ao-upsample");
+    // The half-size depth comes with the AO texel where the target carries it (the float targets
+    // of the high tier); else from the half-size depth texture or MIP level 1.
+    const int depthIn = detail::aoDepthInTarget(desc_.profile, config_.technique, config_.blurRadius > 0, true);
+    const int halfDepthSource = depthIn == SFX_AO_DEPTH_IN_FLOAT_G   ? SFX_AO_HALF_DEPTH_SOURCE_G
+                                : depthIn == SFX_AO_DEPTH_IN_FLOAT_B ? SFX_AO_HALF_DEPTH_SOURCE_B
+                                : depthIn == SFX_AO_DEPTH_IN_KEY_BA  ? SFX_AO_HALF_DEPTH_SOURCE_KEY
+                                : mip                                ? SFX_AO_HALF_DEPTH_MIP
+                                                                     : SFX_AO_HALF_DEPTH_TEXTURE;
+    Result<PipelineHandle> pipeline = pipelines_->get(upsampleProgram_, outFormat, {{SFX_AO_SC_UPSAMPLE_DEPTH, halfDepthSource}, {SFX_AO_SC_UPSAMPLE_LINEARIZE, linearize}},
+                                                      "sfx-ao-upsample");
     if (!pipeline) return pipeline.status();
     RenderPassDesc pass;
     pass.colors = {ColorAttachment{in.output, 0, LoadOp::DontCare, {}}};

@@ -4,16 +4,29 @@
 #include <algorithm>
 
 #include "sfx/ao.hpp"
+#include "sfx_shared_ao.h"
 
 namespace sfx::detail {
 
-// TierProfile::aoPackedDepthTarget: depth packed into an RGBA8 AO target, or AO alone in RG16F
-// with the blur reading full-precision linear depth.
-inline Format aoTargetFormat(const TierProfile& profile) { return profile.aoPackedDepthTarget ? Format::RGBA8 : Format::RG16F; }
+// TierProfile::aoPackedDepthTarget: the depth key packed into an RGBA8 AO target (ES 3.0 need
+// not render to float). Otherwise a float target that carries the linear depth too (RG32F; RGBA32F for crease, whose g
+// holds the moderate blur), so the blur and the upsample read one texel per tap, not two.
+inline Format aoTargetFormat(const TierProfile& profile, AoTechnique technique) {
+    if (profile.aoPackedDepthTarget) return Format::RGBA8;
+    return technique == AoTechnique::Crease ? Format::RGBA32F : Format::RG32F;
+}
 
 // At half resolution, whether depth MIP level 1 is the half-size depth: high-tier Scalable,
 // whose pyramid exists anyway, on a target large enough for a second level. Otherwise the
 // ao_half_depth pass makes the same rotated-grid sample into a texture of its own.
+// Where the obscurance pass writes the depth its readers need (SFX_AO_DEPTH_IN_*, sfx_shared_ao.h):
+// nowhere when it writes the host's output, else by the target's layout.
+inline int aoDepthInTarget(const TierProfile& profile, AoTechnique technique, bool blur, bool half) {
+    if (!blur && !half) return SFX_AO_DEPTH_IN_NONE;
+    if (profile.aoPackedDepthTarget) return SFX_AO_DEPTH_IN_KEY_BA;
+    return technique == AoTechnique::Crease ? SFX_AO_DEPTH_IN_FLOAT_B : SFX_AO_DEPTH_IN_FLOAT_G;
+}
+
 inline bool mipGivesHalfDepth(const AoConfig& config, const TierProfile& profile, uint32_t width, uint32_t height) {
     return config.halfResolution && config.technique == AoTechnique::Scalable && profile.aoUsesDepthMip &&
            std::min(profile.aoDepthMipLevels, maxMipLevels(width, height)) >= 2;

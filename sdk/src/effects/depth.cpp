@@ -41,11 +41,13 @@ LinearDepth::LinearDepth(Device& device, const LinearDepthDesc& desc)
 LinearDepth::~LinearDepth() { release(); }
 
 Status LinearDepth::allocate() {
-    // Linear input without a pyramid is used where it lies: nothing to allocate.
-    if (passThrough()) return allocateTexture();
+    // Linear input without a pyramid is used where it lies: nothing to allocate. Readers that
+    // linearize hardware depth need the constants only.
+    if (passThrough() && !(desc_.readersLinearize && desc_.input == DepthKind::Hardware)) return allocateTexture();
     Result<BufferHandle> params = device_.createBuffer({sizeof(LinearizeParams), kBufferUniform, "sfx-linearize-params"});
     if (!params) return params.status();
     params_ = params.value();
+    if (passThrough()) return allocateTexture();
     Result<ProgramHandle> lin = loadProgram(device_, gen::linearize_depth::kName, desc_.tier);
     if (!lin) return lin.status();
     linearizeProgram_ = lin.value();
@@ -129,25 +131,27 @@ Status LinearDepth::dispatch(const DepthSource& source, std::span<const TimerHan
                 std::string("DepthSource.texture format ") + toString(src->format) + " is not linear depth; allowed R32F"};
     if (uint32_t(source.kind) > 1) return invalidArgument("DepthSource.kind", std::to_string(uint32_t(source.kind)), "Hardware or Linear");
     if (!(src->usage & kTextureSampled)) return invalidArgument("DepthSource.texture usage", "without kTextureSampled", "a sampled texture");
-    if (passThrough() && source.kind != DepthKind::Linear)
+    if (passThrough() && !desc_.readersLinearize && source.kind != DepthKind::Linear)
         return invalidArgument("DepthSource.kind", "Hardware",
                                "Linear, as LinearDepthDesc.input said at creation (no linearisation pass was planned)");
 
     Result<DepthReconstruction> rec = makeDepthReconstruction(source.camera, desc_.width, desc_.height);
     if (!rec) return rec.status();
     reconstruction_ = rec.value();
-    if (passThrough()) {
-        // Readers clamp what they fetch with sfxLinearDepthOrFar (sfx_shared.h), exactly as the
-        // linearisation pass would have, so the host's texture serves as it is.
-        hostTexture_ = source.texture;
-        return Status::ok();
-    }
-
+    sourceKind_ = source.kind;
     LinearizeParams p{};
     p.ndcScale = float(reconstruction_.ndcScale);
     p.denomOffset = float(reconstruction_.denomOffset);
     p.numerator = float(reconstruction_.numerator);
     p.maxDepth = float(reconstruction_.maxDepth);
+    if (passThrough()) {
+        // Readers clamp what they fetch with sfxLinearDepthOrFar (sfx_shared.h), exactly as the
+        // linearisation pass would have, or linearize it as that pass would (readersLinearize),
+        // so the host's texture serves as it is.
+        hostTexture_ = source.texture;
+        if (!params_.isNull()) SFX_TRY(device_.writeBuffer(params_, 0, &p, sizeof p));
+        return Status::ok();
+    }
     SFX_TRY(device_.writeBuffer(params_, 0, &p, sizeof p));
     // The source's kind is a branch of the shader: a specialisation constant (one pipeline each).
     const int32_t linearInput = source.kind == DepthKind::Linear ? 1 : 0;
@@ -187,7 +191,13 @@ Status LinearDepth::dispatch(const DepthSource& source, std::span<const TimerHan
 
 Plan LinearDepth::plan() const {
     Plan plan;
-    if (passThrough()) return plan;  // the host's linear depth is read where it lies
+    if (passThrough()) {
+        // The host's depth is read where it lies, linearized by its readers where it is hardware depth.
+        if (desc_.readersLinearize && desc_.input == DepthKind::Hardware)
+            plan.resources.push_back({"depth", "linearize params (the readers linearize the host's depth as they fetch it: no pass)",
+                                      Format::Undefined, 0, 0, 1, sizeof(LinearizeParams)});
+        return plan;
+    }
     plan.passes.push_back({"depth", "linearize", desc_.width, desc_.height});
     for (uint32_t level = 1; level < desc_.mipLevels; ++level)
         plan.passes.push_back({"depth", "depth_mip " + std::to_string(level), mipExtent(desc_.width, level),
