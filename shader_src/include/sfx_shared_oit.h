@@ -263,6 +263,18 @@ SFX_FN SFX_REAL oitScalableOcclusion(SFX_REAL vv, SFX_REAL vn, SFX_REAL r, SFX_R
                                exteriorWeight, occluderAlpha);
 }
 
+// ---- Bilateral filter of the layer AO ----------------------------------------------------------
+// The AO through the layers is blended after the sort separately from colour so that it can be
+// filtered: a separable depth-aware blur (horizontal, then vertical) with the opaque AO blur's
+// weights (sfx_shared_ao.h: a Gaussian over the tap index times an edge weight that falls to 0
+// as the tap's key depth departs from the centre's by SFX_AO_BLUR_DEPTH_TOLERANCE of it). The
+// blended visibility is keyed by the pixel's front depth (its nearest stored fragment, or its
+// opaque surface), the opaque visibility by the opaque depth; a centre whose key is sky (at or
+// past maxDepth) keeps its value.
+SFX_FN SFX_REAL oitFilterTapWeight(int k, int radius, SFX_REAL tapKey, SFX_REAL centreKey) {
+    return aoBlurGaussian(k, radius) * aoBlurEdgeWeight(tapKey, centreKey);
+}
+
 // ---- Weighted blended OIT (McGuire and Bavoil 2013), the current tier's fallback -------------
 // Weight of a fragment at linear depth z with coverage alpha (their eq. 7):
 //     w = alpha * clamp(10 / (1e-5 + (z / 5)^2 + (z / 200)^6), 1e-2, 3e3)

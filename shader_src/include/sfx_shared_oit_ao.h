@@ -12,6 +12,8 @@
 // to back with the fragments' opacities, like colour but separately from it:
 //   out.r = sum_i T_i alpha_i v_i + T v_opaque (T_i the transmittance in front of fragment i)
 //   out.g = v_opaque
+//   out.b = the front depth (the nearest fragment's, else the opaque surface's), out.a = the opaque
+//           depth: the bilateral filter's keys (oit_ao_filter.frag), kept only by its RGBA32F target
 // The CPU reference is sfx::reference::opacityAmbientOcclusion.
 #ifndef SFX_SHARED_OIT_AO_H
 #define SFX_SHARED_OIT_AO_H
@@ -139,7 +141,7 @@ void main() {
     // next key (no registers per layer, and bounded by the pool's capacity like the resolve).
     uint head = imageLoad(uHeads, p).x;
     uint steps = uint(ao.capacity);
-    float acc = 0.0, transmittance = 1.0;
+    float acc = 0.0, transmittance = 1.0, frontDepth = zo;
     bool any = false;
     float lastDepth = 0.0;
     uint lastDraw = 0u, lastPrimitive = 0u;
@@ -165,6 +167,7 @@ void main() {
         }
         more = found;
         if (!found) continue;
+        if (!any) frontDepth = bestDepth;
         any = true;
         lastDepth = bestDepth;
         lastDraw = bestDraw;
@@ -174,7 +177,7 @@ void main() {
         acc += transmittance * alpha * v;
         transmittance *= 1.0 - alpha;
     }
-    outAo = vec4(acc + transmittance * opaqueVisibility, opaqueVisibility, 0.0, 1.0);
+    outAo = vec4(acc + transmittance * opaqueVisibility, opaqueVisibility, frontDepth, zo);
 }
 
 #endif  // SFX_SHARED_OIT_AO_H

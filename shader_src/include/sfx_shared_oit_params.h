@@ -59,6 +59,10 @@ SFX_BLOCK_END(ao)
 #define SFX_OIT_SC_AO_TECHNIQUE 0
 #define SFX_OIT_SC_AO_SAMPLES 1
 #define SFX_OIT_SC_AO_MIRRORED 2
+// The layer AO's bilateral filter (oit_ao_filter.frag, OitAoParams at binding 4 for maxDepth):
+// taps each side, [1, SFX_AO_MAX_BLUR_RADIUS], and the direction (0 horizontal, 1 vertical).
+#define SFX_OIT_SC_FILTER_RADIUS 0
+#define SFX_OIT_SC_FILTER_VERTICAL 1
 
 // The node pool's fixed header (storage buffer OitPool, before the nodes):
 //   count     nodes handed out by the fill's atomicAdd this frame, stored or not (> capacity:

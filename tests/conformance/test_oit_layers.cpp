@@ -13,6 +13,7 @@
 #include "sfx/half.hpp"
 #include "sfx/oit.hpp"
 #include "sfx/reference/ao_reference.hpp"
+#include "sfx/reference/oit_ao_filter.hpp"
 #include "sfx/reference/oit_reference.hpp"
 #include "sfx_shared_oit.h"
 #include "sfx_shared_oit_params.h"
@@ -334,6 +335,39 @@ TEST_CASE("oit layers: opacity-based AO matches the reference, brute force and c
     }
 }
 
+TEST_CASE("oit layers: the bilateral filter of the layer AO matches the reference's (high tier)", "[oit][oit-layers]") {
+    if (test::tier() != Tier::High) return;
+    for (const auto& quads : {paneScene(), wallScene(0.6, false)}) {
+        const Frame frame = rasterize(quads);
+        for (TransparencyAoOccluders occ : {TransparencyAoOccluders::BruteForce, TransparencyAoOccluders::Compressed}) {
+            for (uint32_t radius : {1u, 3u}) {
+                TransparencyDesc d = aoDesc(AoTechnique::Scalable, occ, 4);
+                d.ao.filterRadius = radius;
+                const Gpu g = render(quads, frame, d);
+                OitAoConfig rc;
+                rc.ao = aoConfig(AoTechnique::Scalable);
+                rc.occluders = occ == TransparencyAoOccluders::Compressed ? OitAoOccluders::Compressed : OitAoOccluders::BruteForce;
+                rc.compression.nodes = 4;
+                rc.compression.zNear = frame.image.reconstruction.nearDepth;
+                rc.compression.zFar = frame.image.reconstruction.maxDepth;
+                Result<OitAoResult> raw = opacityAmbientOcclusion(frame.image, rc);
+                REQUIRE(raw.isOk());
+                const OitAoResult want = filterLayerAo(frame.image, raw.value(), radius);
+                const Errors blended = compare(g.blended, want.blended), opaque = compare(g.opaque, want.opaque);
+                // How much the filter moved the reference: a device returning the raw AO fails.
+                const Errors moved = compare(raw->blended.values, want.blended);
+                WARN("filtered layer AO, radius " << radius << (occ == TransparencyAoOccluders::Compressed ? ", compressed" : ", brute force")
+                                                  << ": blended worst " << blended.worst << ", opaque worst " << opaque.worst
+                                                  << "; the filter moves the reference by up to " << moved.worst);
+                CHECK(moved.worst > 0.01);
+                // fp16 intermediate and output (2^-11 relative) and float arithmetic, as unfiltered.
+                CHECK(blended.worst <= 2e-3);
+                CHECK(opaque.worst <= 2e-3);
+            }
+        }
+    }
+}
+
 TEST_CASE("oit layers: AO on a floor beside a translucent wall is monotone in its opacity (high tier)", "[oit][oit-layers]") {
     if (test::tier() != Tier::High) return;
     for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable}) {
@@ -384,8 +418,13 @@ TEST_CASE("oit layers: settings out of range are refused by name; the plan names
     d.width = kW;
     d.height = kH;
     d.profile = test::tierProfile();
-    d.compressedNodes = 5;
+    d.maxLayers = 33;
     auto r = Transparency::create(dev, d);
+    REQUIRE(!r.isOk());
+    CHECK(r.status().message().find("TransparencyDesc.maxLayers") != std::string::npos);
+    d.maxLayers = 0;
+    d.compressedNodes = 5;
+    r = Transparency::create(dev, d);
     REQUIRE(!r.isOk());
     CHECK(r.status().message().find("TransparencyDesc.compressedNodes") != std::string::npos);
     d.compressedNodes = 0;
@@ -405,6 +444,11 @@ TEST_CASE("oit layers: settings out of range are refused by name; the plan names
     REQUIRE(!r.isOk());
     CHECK(r.status().message().find("TransparencyDesc.ao.config.samples") != std::string::npos);
     d.ao.config.samples = 8;
+    d.ao.filterRadius = 9;
+    r = Transparency::create(dev, d);
+    REQUIRE(!r.isOk());
+    CHECK(r.status().message().find("TransparencyDesc.ao.filterRadius") != std::string::npos);
+    d.ao.filterRadius = 0;
     d.compressedNodes = 4;
     d.ao.occluders = TransparencyAoOccluders::Compressed;
     r = Transparency::create(dev, d);
@@ -417,6 +461,15 @@ TEST_CASE("oit layers: settings out of range are refused by name; the plan names
         CHECK(p.passes.size() == 4u);
         CHECK(names.find("compress lists to 4 nodes") != std::string::npos);
         CHECK(names.find("AO through layers") != std::string::npos);
+        CHECK(names.find("bilateral filter") == std::string::npos);  // listed only when used
+        d.ao.filterRadius = 2;
+        auto filtered = Transparency::create(dev, d);
+        REQUIRE(filtered.isOk());
+        std::string withFilter;
+        for (const PlannedPass& pass : filtered.value()->plan(true).passes) withFilter += pass.name + "\n";
+        INFO(withFilter);
+        CHECK(filtered.value()->plan(true).passes.size() == 6u);
+        CHECK(withFilter.find("bilateral filter, horizontal") != std::string::npos);
     } else {
         CHECK(names.find("opaque layer only") != std::string::npos);
     }

@@ -50,6 +50,8 @@ Result<std::unique_ptr<SceneTransparency>> SceneTransparency::create(Device& dev
         desc.ao.enabled = true;
         desc.ao.config = c.value();
         desc.ao.occluders = TransparencyAoOccluders::Compressed;
+        // The raw AO is noisy at the tier's few rotated taps: filtered by depth, as the opaque AO's blur.
+        desc.ao.filterRadius = layerAo.filterRadius;
     }
     Result<std::unique_ptr<Transparency>> effect = Transparency::create(device, desc);
     if (!effect) return effect.status();

@@ -22,6 +22,7 @@ struct LayerAoOptions {
     std::optional<AoTechnique> technique;  // nullopt or Crease: none
     float radius = 0.5f;
     uint32_t nodes = 4;  // M, [1, 4]
+    uint32_t filterRadius = 2;  // the layer AO's bilateral filter, taps each side (TransparencyAoDesc::filterRadius)
 };
 
 class SceneTransparency {

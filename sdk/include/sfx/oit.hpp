@@ -41,6 +41,7 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
 #include <memory>
 #include <span>
 
@@ -107,6 +108,10 @@ struct TransparencyAoDesc {
     // raw, for the host to filter; the opaque normal comes from depth).
     AoConfig config;
     TransparencyAoOccluders occluders = TransparencyAoOccluders::BruteForce;
+    // Bilateral (depth-aware) filter of the AO, taps each side of a separable blur with the opaque
+    // AO blur's weights, [0, 8]; 0 = the raw AO. The blended visibility is keyed by each pixel's
+    // front depth, the opaque one by the opaque depth. Needs RGBA32F render targets (the keys).
+    uint32_t filterRadius = 0;
 };
 
 struct TransparencyDesc {
@@ -115,6 +120,9 @@ struct TransparencyDesc {
     Format colorFormat = Format::RGBA16F;  // RGBA8, RGBA16F or RGBA32F: opaque colour and output
     Format depthFormat = Format::D32F;     // D16, D24S8 or D32F: the opaque depth
     TransparencyQuality quality = TransparencyQuality::Standard;
+    // K itself, overriding quality's: [1, 32], 0 = quality's K. Fewer kept layers cost less in
+    // the resolve and fold more of a deep pixel into its tail (samples/bench_oit measures it).
+    uint32_t maxLayers = 0;
     // Nodes of the first frame's pool, before any count is known; 0 = kOitInitialNodesPerPixel
     // per pixel. Later frames size it from the scene.
     uint64_t initialPoolNodes = 0;
@@ -134,6 +142,7 @@ struct TransparencyStats {
 };
 
 uint32_t keptLayers(TransparencyQuality quality);  // K: 16 or 32
+uint32_t keptLayers(const TransparencyDesc& desc);  // desc.maxLayers, or its quality's K
 
 class Transparency {
 public:
@@ -150,8 +159,9 @@ public:
     Status render(const TransparencyInputs& inputs);
     // The composited colour (colorFormat); the opaque colour itself after a frame with no draw.
     TextureHandle output() const { return output_; }
-    // AO through the layers (RG16F: r the blended visibility, g the opaque surface's), when
-    // desc.ao is enabled on the high tier and the frame had a draw; null otherwise.
+    // AO through the layers (RG16F: r the blended visibility, g the opaque surface's; filtered
+    // when desc.ao.filterRadius > 0), when desc.ao is enabled on the high tier and the frame had
+    // a draw; null otherwise.
     TextureHandle aoOutput() const { return aoOutput_; }
     // The compressed lists (SFX_OIT_COMPRESSED_WORDS uint32 per pixel, row 0 first; layout in
     // sfx_shared_oit.h / sfx_shared_oit_params.h), when compressedNodes > 0 on the high tier.
@@ -163,6 +173,11 @@ public:
     const TransparencyDesc& desc() const { return desc_; }
     // Passes and resources of a frame with `hasTransparentDraws`, each saying why it exists.
     Plan plan(bool hasTransparentDraws = true) const;
+    // Per-pass device timers (off by default, as AmbientObscurance::setProfiling): with profiling
+    // on, each render() with a draw times its passes; passTimings() reads them after a flush, in
+    // plan(true) order. InvalidArgument when profiling is off or no frame with a draw was timed.
+    Status setProfiling(bool enabled);
+    Result<std::vector<PassTiming>> passTimings();
 
 private:
     Transparency(Device& device, const TransparencyDesc& desc);
@@ -178,8 +193,12 @@ private:
     Status renderWeighted(const TransparencyInputs& inputs);
     Status ensureLayerTargets();
     Status renderLayerAo(const TransparencyInputs& inputs, const DepthReconstruction& rec);
+    Status filterLayerAo();
     void planLayerAo(Plan& plan) const;
     Result<uint32_t> readCounter();
+    // Records `record` inside pass `index`'s timer when profiling (plan(true) order).
+    Status timed(size_t index, const std::function<Status()>& record);
+    void destroyPassTimers();
     void release();
 
     Device& device_;
@@ -187,13 +206,18 @@ private:
     bool abuffer_ = false;
     TextureHandle output_;  // ownedOutput_, or the host's opaque colour after a frame with no draw
     TextureHandle ownedOutput_, heads_, accum_, weight_, aoOutput_, ownedAo_;
+    TextureHandle aoRaw_, aoFiltered_;  // with ao.filterRadius: raw AO + keys (RGBA32F), after the h pass (RG16F)
     BufferHandle pool_, resolveParams_, compressed_, aoParams_;
     uint64_t poolNodes_ = 0;
     bool poolUsed_ = false;  // a fill has run since the pool was made: its counter is the scene's
     std::vector<BufferHandle> drawParams_;
-    ProgramHandle clearProgram_, fillProgram_, resolveProgram_, accumProgram_, weightedResolveProgram_, aoProgram_;
+    ProgramHandle clearProgram_, fillProgram_, resolveProgram_, accumProgram_, weightedResolveProgram_, aoProgram_, filterProgram_;
     PipelineHandle clearPipeline_, fillPipeline_, resolvePipeline_, accumPipeline_, weightedResolvePipeline_, aoPipeline_;
+    PipelineHandle filterPipelines_[2];  // horizontal, vertical
     TransparencyStats last_;
+    bool profiling_ = false;
+    size_t timedPasses_ = 0;  // passes the last profiled frame timed
+    std::vector<TimerHandle> passTimers_;
 };
 
 }  // namespace sfx

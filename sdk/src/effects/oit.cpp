@@ -33,6 +33,7 @@ Status checkProfile(const TierProfile& p) {
 }  // namespace
 
 uint32_t keptLayers(TransparencyQuality quality) { return quality == TransparencyQuality::High ? 32u : 16u; }
+uint32_t keptLayers(const TransparencyDesc& desc) { return desc.maxLayers != 0 ? desc.maxLayers : keptLayers(desc.quality); }
 
 Transparency::Transparency(Device& device, const TransparencyDesc& desc) : device_(device), desc_(desc) {}
 
@@ -47,11 +48,18 @@ Result<std::unique_ptr<Transparency>> Transparency::create(Device& device, const
         return invalidArgument("TransparencyDesc.depthFormat", toString(desc.depthFormat), "D16, D24S8 or D32F");
     if (uint32_t(desc.quality) > uint32_t(TransparencyQuality::High))
         return invalidArgument("TransparencyDesc.quality", std::to_string(uint32_t(desc.quality)), "Standard or High");
+    if (desc.maxLayers > uint32_t(shared::SFX_OIT_MAX_KEPT_LAYERS))
+        return invalidArgument("TransparencyDesc.maxLayers", std::to_string(desc.maxLayers),
+                               "[1, " + std::to_string(shared::SFX_OIT_MAX_KEPT_LAYERS) + "], or 0 for the quality's K");
     const DeviceCaps& caps = device.caps();
     if (!caps.renderableFormat[size_t(desc.colorFormat)])
         return Status{StatusCode::UnsupportedFormat, std::string("TransparencyDesc.colorFormat ") + toString(desc.colorFormat) +
                                                          " is not renderable on this device"};
     SFX_TRY(checkLayerSettings(desc));
+    if (desc.profile.abufferOit && desc.ao.enabled && desc.ao.filterRadius > 0 && !caps.renderableFormat[size_t(Format::RGBA32F)])
+        return Status{StatusCode::UnsupportedFormat, "TransparencyDesc.ao.filterRadius " + std::to_string(desc.ao.filterRadius) +
+                                                         " needs RGBA32F render targets (the filter's depth keys); the device has none "
+                                                         "(use 0: the raw AO)"};
     std::unique_ptr<Transparency> t(new Transparency(device, desc));
     if (desc.profile.abufferOit) {
         if (!caps.fragmentStoresAndAtomics || !caps.computeShaders)
@@ -65,7 +73,48 @@ Result<std::unique_ptr<Transparency>> Transparency::create(Device& device, const
     return t;
 }
 
+void Transparency::destroyPassTimers() {
+    for (TimerHandle t : passTimers_) (void)device_.destroyTimer(t);
+    passTimers_.clear();
+    timedPasses_ = 0;
+}
+
+Status Transparency::setProfiling(bool enabled) {
+    profiling_ = enabled;
+    if (!enabled) destroyPassTimers();
+    return Status::ok();
+}
+
+Status Transparency::timed(size_t index, const std::function<Status()>& record) {
+    if (!profiling_) return record();
+    while (passTimers_.size() <= index) {
+        Result<TimerHandle> t = device_.createTimer();
+        if (!t) return t.status();
+        passTimers_.push_back(t.value());
+    }
+    SFX_TRY(device_.beginTimer(passTimers_[index]));
+    SFX_TRY(record());
+    SFX_TRY(device_.endTimer(passTimers_[index]));
+    timedPasses_ = std::max(timedPasses_, index + 1);
+    return Status::ok();
+}
+
+Result<std::vector<PassTiming>> Transparency::passTimings() {
+    if (!profiling_ || timedPasses_ == 0)
+        return Status{StatusCode::InvalidArgument,
+                      "Transparency::passTimings: nothing timed (call setProfiling(true), then render() a frame with a draw and flush)"};
+    const Plan p = plan(true);
+    std::vector<PassTiming> out;
+    for (size_t i = 0; i < timedPasses_ && i < p.passes.size(); ++i) {
+        Result<TimerReading> reading = device_.readTimer(passTimers_[i]);
+        if (!reading) return reading.status();
+        out.push_back({p.passes[i].effect, p.passes[i].name, reading.value()});
+    }
+    return out;
+}
+
 void Transparency::release() {
+    destroyPassTimers();
     // Destroys through `destroy` when set, then clears the handle.
     auto drop = [&](auto& h, Status (Device::*destroy)(std::remove_reference_t<decltype(h)>)) {
         if (!h.isNull()) (void)(device_.*destroy)(h);
@@ -76,11 +125,13 @@ void Transparency::release() {
     auto pipeline = [&](PipelineHandle& h) { drop(h, &Device::destroyPipeline); };
     auto program = [&](ProgramHandle& h) { drop(h, &Device::destroyProgram); };
     for (PipelineHandle* p :
-         {&clearPipeline_, &fillPipeline_, &resolvePipeline_, &accumPipeline_, &weightedResolvePipeline_, &aoPipeline_})
+         {&clearPipeline_, &fillPipeline_, &resolvePipeline_, &accumPipeline_, &weightedResolvePipeline_, &aoPipeline_,
+          &filterPipelines_[0], &filterPipelines_[1]})
         pipeline(*p);
-    for (ProgramHandle* p : {&clearProgram_, &fillProgram_, &resolveProgram_, &accumProgram_, &weightedResolveProgram_, &aoProgram_})
+    for (ProgramHandle* p :
+         {&clearProgram_, &fillProgram_, &resolveProgram_, &accumProgram_, &weightedResolveProgram_, &aoProgram_, &filterProgram_})
         program(*p);
-    for (TextureHandle* t : {&ownedOutput_, &heads_, &accum_, &weight_, &ownedAo_}) texture(*t);
+    for (TextureHandle* t : {&ownedOutput_, &heads_, &accum_, &weight_, &ownedAo_, &aoRaw_, &aoFiltered_}) texture(*t);
     buffer(compressed_);
     buffer(aoParams_);
     aoOutput_ = {};
@@ -142,7 +193,22 @@ Status Transparency::ensurePrograms() {
                             {SFX_OIT_SC_AO_SAMPLES, int32_t(c.samples)},
                             {SFX_OIT_SC_AO_MIRRORED, c.mirrored ? 1 : 0}};
             const bool compressed = desc_.ao.occluders == TransparencyAoOccluders::Compressed;
+            if (desc_.ao.filterRadius > 0) ao.colorFormats = {Format::RGBA32F};  // the keys in b, a at full precision
             SFX_TRY(graphics(compressed ? gen::oit_ao_compressed::kName : gen::oit_ao::kName, &aoProgram_, &aoPipeline_, ao));
+            for (int vertical = 0; vertical < 2 && desc_.ao.filterRadius > 0; ++vertical) {
+                GraphicsPipelineDesc f;
+                f.colorFormats = {Format::RG16F};
+                f.constants = {{SFX_OIT_SC_FILTER_RADIUS, int32_t(desc_.ao.filterRadius)}, {SFX_OIT_SC_FILTER_VERTICAL, vertical}};
+                if (vertical == 1) {  // the same program, a second pipeline
+                    f.program = filterProgram_;
+                    f.debugName = "oit_ao_filter v";
+                    Result<PipelineHandle> pl = device_.createGraphicsPipeline(f);
+                    if (!pl) return pl.status();
+                    filterPipelines_[1] = pl.value();
+                } else {
+                    SFX_TRY(graphics(gen::oit_ao_filter::kName, &filterProgram_, &filterPipelines_[0], f));
+                }
+            }
         }
     } else {
         geometry.colorFormats = {Format::RGBA16F, Format::RGBA16F};
@@ -245,7 +311,7 @@ Plan Transparency::plan(bool hasTransparentDraws) const {
     if (!hasTransparentDraws) return plan;  // no pass, no memory: output() is the opaque colour
     const uint32_t w = desc_.width, h = desc_.height;
     const uint32_t rt = kTextureSampled | kTextureRenderTarget;
-    const std::string k = std::to_string(keptLayers(desc_.quality));
+    const std::string k = std::to_string(keptLayers(desc_));
     if (abuffer_) {
         plan.passes.push_back({"oit", "clear heads + counter (compute; lists start empty)", w, h});
         plan.passes.push_back({"oit", "fill lists (one geometry pass, depth-tested, atomics)", w, h});

@@ -51,6 +51,9 @@ Status checkLayerSettings(const TransparencyDesc& desc) {
     SFX_TRY(inRange("epsilon", c.epsilon, 0.0, 1.0, true));
     SFX_TRY(inRange("spiralTurns", c.spiralTurns, 0.0, 1.0e3));
     SFX_TRY(inRange("maxRadiusPx", c.maxRadiusPx, 0.0, 1.0e5));
+    if (ao.filterRadius > uint32_t(shared::SFX_AO_MAX_BLUR_RADIUS))
+        return invalidArgument("TransparencyDesc.ao.filterRadius", std::to_string(ao.filterRadius),
+                               "[0, " + std::to_string(shared::SFX_AO_MAX_BLUR_RADIUS) + "] (0 = the raw AO)");
     return Status::ok();
 }
 
@@ -69,6 +72,15 @@ Status Transparency::ensureLayerTargets() {
             if (!t) return t.status();
             ownedAo_ = t.value();
         }
+        auto filterTarget = [&](TextureHandle* h, Format f, const char* name) -> Status {
+            if (desc_.ao.filterRadius == 0 || !h->isNull()) return Status::ok();
+            Result<TextureHandle> t = device_.createTexture({desc_.width, desc_.height, 1, f, kTextureSampled | kTextureRenderTarget, name});
+            if (!t) return t.status();
+            *h = t.value();
+            return Status::ok();
+        };
+        SFX_TRY(filterTarget(&aoRaw_, Format::RGBA32F, "sfx-oit-ao-raw"));
+        SFX_TRY(filterTarget(&aoFiltered_, Format::RG16F, "sfx-oit-ao-filtered-h"));
         if (aoParams_.isNull()) {
             Result<BufferHandle> b = device_.createBuffer({sizeof(shared::OitAoParams), kBufferUniform, "sfx-oit-ao-params"});
             if (!b) return b.status();
@@ -101,7 +113,8 @@ Status Transparency::renderLayerAo(const TransparencyInputs& in, const DepthReco
 
     const bool compressed = desc_.ao.occluders == TransparencyAoOccluders::Compressed;
     RenderPassDesc pass;
-    pass.colors = {{ownedAo_, 0, LoadOp::DontCare}};
+    const bool filtered = desc_.ao.filterRadius > 0;
+    pass.colors = {{filtered ? aoRaw_ : ownedAo_, 0, LoadOp::DontCare}};
     pass.debugName = compressed ? "oit ao (compressed nodes)" : "oit ao (brute force)";
     DrawDesc d;
     d.pipeline = aoPipeline_;
@@ -116,8 +129,26 @@ Status Transparency::renderLayerAo(const TransparencyInputs& in, const DepthReco
         d.bindings.storageBuffers = {{gen::oit_ao::OitPool, pool_}};
         d.bindings.storageImages = {{gen::oit_ao::uHeads, heads_}};
     }
-    SFX_TRY(device_.renderPass(pass, {&d, 1}));
+    SFX_TRY(timed(3, [&] { return device_.renderPass(pass, {&d, 1}); }));
+    if (filtered) SFX_TRY(filterLayerAo());
     aoOutput_ = ownedAo_;
+    return Status::ok();
+}
+
+// The bilateral filter: raw (RGBA32F, keys in b and a) -> horizontal -> vertical into the output.
+Status Transparency::filterLayerAo() {
+    namespace g = gen::oit_ao_filter;
+    const TextureHandle sources[2] = {aoRaw_, aoFiltered_}, targets[2] = {aoFiltered_, ownedAo_};
+    for (int vertical = 0; vertical < 2; ++vertical) {
+        RenderPassDesc pass;
+        pass.colors = {{targets[vertical], 0, LoadOp::DontCare}};
+        pass.debugName = vertical ? "oit ao filter (vertical)" : "oit ao filter (horizontal)";
+        DrawDesc d;
+        d.pipeline = filterPipelines_[vertical];
+        d.bindings.textures = {{g::uSource, sources[vertical]}, {g::uKeys, aoRaw_}};
+        d.bindings.uniformBuffers = {{g::OitAoParams, aoParams_}};
+        SFX_TRY(timed(size_t(4 + vertical), [&] { return device_.renderPass(pass, {&d, 1}); }));
+    }
     return Status::ok();
 }
 
@@ -144,6 +175,17 @@ void Transparency::planLayerAo(Plan& plan) const {
         plan.resources.push_back(plannedTexture("oit", "AO through layers (r blended, g opaque surface)",
                                                 {w, h, 1, Format::RG16F, kTextureSampled | kTextureRenderTarget}));
         plan.resources.push_back({"oit", "AO uniforms", Format::Undefined, 0, 0, 1, sizeof(shared::OitAoParams)});
+        if (desc_.ao.filterRadius > 0) {
+            const std::string r = std::to_string(desc_.ao.filterRadius);
+            for (const char* dir : {"horizontal", "vertical"})
+                plan.passes.push_back({"oit", std::string("AO bilateral filter, ") + dir + " (" + r +
+                                                  " taps each side; keys: front depth for blended, opaque depth for opaque)",
+                                       w, h});
+            plan.resources.push_back(plannedTexture("oit", "raw AO through layers + filter keys (front depth, opaque depth)",
+                                                    {w, h, 1, Format::RGBA32F, kTextureSampled | kTextureRenderTarget}));
+            plan.resources.push_back(plannedTexture("oit", "AO after the horizontal filter pass",
+                                                    {w, h, 1, Format::RG16F, kTextureSampled | kTextureRenderTarget}));
+        }
     }
 }
 

@@ -109,7 +109,7 @@ Status Transparency::renderAbuffer(const TransparencyInputs& in) {
     }
     SFX_TRY(sizePoolFromLastFrame());
     shared::OitResolveParams rp{};
-    rp.maxLayers = int32_t(keptLayers(desc_.quality));
+    rp.maxLayers = int32_t(keptLayers(desc_));
     rp.capacity = int32_t(std::min<uint64_t>(poolNodes_, 0x7FFFFFFFull));
     rp.ndcScale = float(rec.ndcScale);
     rp.denomOffset = float(rec.denomOffset);
@@ -125,7 +125,7 @@ Status Transparency::renderAbuffer(const TransparencyInputs& in) {
     clear.groupsY = (desc_.height + 7) / 8;
     clear.bindings.storageBuffers = {{gen::oit_clear::OitPool, pool_}};
     clear.bindings.storageImages = {{gen::oit_clear::uHeads, heads_}};
-    SFX_TRY(device_.dispatch(clear));
+    SFX_TRY(timed(0, [&] { return device_.dispatch(clear); }));
 
     RenderPassDesc fill;
     fill.depth = {in.opaqueDepth, LoadOp::Load};
@@ -134,7 +134,7 @@ Status Transparency::renderAbuffer(const TransparencyInputs& in) {
     shared.storageBuffers = {{gen::oit_fill::OitPool, pool_}};
     shared.storageImages = {{gen::oit_fill::uHeads, heads_}};
     const std::vector<DrawDesc> draws = geometryDraws(in, fillPipeline_, gen::oit_fill::OitDrawParams, shared);
-    SFX_TRY(device_.renderPass(fill, draws));
+    SFX_TRY(timed(1, [&] { return device_.renderPass(fill, draws); }));
     poolUsed_ = true;
 
     RenderPassDesc resolve;
@@ -154,7 +154,7 @@ Status Transparency::renderAbuffer(const TransparencyInputs& in) {
         r.bindings.storageBuffers = {{gen::oit_resolve::OitPool, pool_}};
         r.bindings.storageImages = {{gen::oit_resolve::uHeads, heads_}};
     }
-    SFX_TRY(device_.renderPass(resolve, {&r, 1}));
+    SFX_TRY(timed(2, [&] { return device_.renderPass(resolve, {&r, 1}); }));
     return desc_.ao.enabled ? renderLayerAo(in, rec) : Status::ok();
 }
 
@@ -164,7 +164,7 @@ Status Transparency::renderWeighted(const TransparencyInputs& in) {
     accumulate.depth = {in.opaqueDepth, LoadOp::Load};
     accumulate.debugName = "oit weighted blended accumulate";
     const std::vector<DrawDesc> draws = geometryDraws(in, accumPipeline_, gen::oit_wboit_accumulate::OitDrawParams, {});
-    SFX_TRY(device_.renderPass(accumulate, draws));
+    SFX_TRY(timed(0, [&] { return device_.renderPass(accumulate, draws); }));
 
     RenderPassDesc resolve;
     resolve.colors = {{ownedOutput_, 0, LoadOp::DontCare}};
@@ -174,7 +174,7 @@ Status Transparency::renderWeighted(const TransparencyInputs& in) {
     r.bindings.textures = {{gen::oit_wboit_resolve::uOpaque, in.opaqueColor},
                            {gen::oit_wboit_resolve::uAccum, accum_},
                            {gen::oit_wboit_resolve::uWeight, weight_}};
-    return device_.renderPass(resolve, {&r, 1});
+    return timed(1, [&] { return device_.renderPass(resolve, {&r, 1}); });
 }
 
 }  // namespace sfx
