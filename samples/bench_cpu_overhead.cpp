@@ -12,7 +12,12 @@
 // threads, so on GL the wall time of dispatch() holds most of the GPU work of the effect. Heap traffic of dispatch() on the
 // calling thread: operator new calls and bytes, and malloc/calloc/realloc calls and bytes (which
 // include the driver's own and those behind operator new), counted by replacing both in this
-// executable only. Prints median and p90 per cell as a markdown table.
+// executable only. Context switches of the render thread inside dispatch() (getrusage
+// RUSAGE_THREAD): voluntary ones are the driver blocking (llvmpipe waits for its rasteriser
+// threads), involuntary ones are preemption by the machine's other load; after either the
+// thread resumes with cold caches, which the CPU time then includes. Prints median and p90 per
+// cell as a markdown table.
+#include <sys/resource.h>
 #include <time.h>
 
 #include <algorithm>
@@ -26,6 +31,7 @@
 #include <new>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #if __has_include(<CLI/CLI.hpp>)
@@ -132,6 +138,13 @@ struct Options {
     std::string out;
 };
 
+// The render thread's voluntary and involuntary context switches so far.
+std::pair<long, long> threadSwitches() {
+    rusage u{};
+    getrusage(RUSAGE_THREAD, &u);
+    return {u.ru_nvcsw, u.ru_nivcsw};
+}
+
 double threadCpuSeconds() {
     timespec ts{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
@@ -152,6 +165,7 @@ struct Row {
     std::string backend, tier, effect;
     Stat dispatchUs, dispatchCpuUs, frameUs, frameCpuUs;
     double news = 0, newKiB = 0, mallocs = 0, mallocKiB = 0;  // per dispatch, mean over the timed frames
+    double waits = 0, preemptions = 0;  // context switches per dispatch (voluntary, involuntary), mean
 };
 
 // Times `frames` frames of `dispatch` + flush after `warmup` untimed ones.
@@ -163,7 +177,9 @@ Result<Row> measure(Device& dev, const Options& o, Dispatch&& dispatch) {
     }
     std::vector<double> dispatchUs, dispatchCpuUs, frameUs, cpuUs;
     HeapCounts sum;
+    long waits = 0, preemptions = 0;
     for (int i = 0; i < o.frames; ++i) {
+        const std::pair<long, long> switches0 = threadSwitches();  // outside the timed span
         const double cpu0 = threadCpuSeconds();
         const auto t0 = std::chrono::steady_clock::now();
         tHeap = {};
@@ -172,6 +188,9 @@ Result<Row> measure(Device& dev, const Options& o, Dispatch&& dispatch) {
         tCounting = false;
         const auto t1 = std::chrono::steady_clock::now();
         const double cpuDispatch = threadCpuSeconds();
+        const std::pair<long, long> switches1 = threadSwitches();
+        waits += switches1.first - switches0.first;
+        preemptions += switches1.second - switches0.second;
         const HeapCounts h = tHeap;
         SFX_TRY(st);
         SFX_TRY(dev.flush());
@@ -191,6 +210,7 @@ Result<Row> measure(Device& dev, const Options& o, Dispatch&& dispatch) {
     const double n = double(o.frames);
     r.news = double(sum.news) / n, r.newKiB = double(sum.newBytes) / n / 1024.0;
     r.mallocs = double(sum.mallocs) / n, r.mallocKiB = double(sum.mallocBytes) / n / 1024.0;
+    r.waits = double(waits) / n, r.preemptions = double(preemptions) / n;
     return r;
 }
 
@@ -228,9 +248,9 @@ Status runBackend(const std::string& backend, const Options& o, std::vector<Row>
         if (!r) return Status{r.status().code(), effect + ": " + r.status().message()};
         r->backend = backend, r->tier = toString(choice->tier), r->effect = effect;
         std::printf("  %-12s dispatch CPU median %7.1f us (p90 %7.1f), wall %9.1f us; frame CPU %7.1f us, wall %9.1f us; "
-                    "%.1f new / %.1f KiB, %.1f malloc / %.1f KiB per dispatch\n",
+                    "%.1f new / %.1f KiB, %.1f malloc / %.1f KiB, %.1f waits + %.1f preemptions per dispatch\n",
                     effect.c_str(), r->dispatchCpuUs.median, r->dispatchCpuUs.p90, r->dispatchUs.median, r->frameCpuUs.median,
-                    r->frameUs.median, r->news, r->newKiB, r->mallocs, r->mallocKiB);
+                    r->frameUs.median, r->news, r->newKiB, r->mallocs, r->mallocKiB, r->waits, r->preemptions);
         std::fflush(stdout);
         rows.push_back(r.value());
         return Status::ok();
@@ -264,18 +284,20 @@ std::string table(const std::vector<Row>& rows, const Options& o) {
     std::ostringstream s;
     char line[512];
     s << "| backend | tier | effect | dispatch() CPU median µs | p90 µs | dispatch() wall median µs | p90 µs | "
-         "frame CPU median µs | frame wall median µs | new / dispatch | KiB | malloc / dispatch | KiB |\n"
-         "|---|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+         "frame CPU median µs | frame wall median µs | new / dispatch | KiB | malloc / dispatch | KiB | "
+         "waits / dispatch | preemptions / dispatch |\n"
+         "|---|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
     for (const Row& r : rows) {
-        std::snprintf(line, sizeof line, "| %s | %s | %s | %.1f | %.1f | %.1f | %.1f | %.0f | %.0f | %.1f | %.1f | %.1f | %.1f |\n",
+        std::snprintf(line, sizeof line, "| %s | %s | %s | %.1f | %.1f | %.1f | %.1f | %.0f | %.0f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f |\n",
                       r.backend.c_str(), r.tier.c_str(), r.effect.c_str(), r.dispatchCpuUs.median, r.dispatchCpuUs.p90,
                       r.dispatchUs.median, r.dispatchUs.p90, r.frameCpuUs.median, r.frameUs.median, r.news, r.newKiB, r.mallocs,
-                      r.mallocKiB);
+                      r.mallocKiB, r.waits, r.preemptions);
         s << line;
     }
     s << "\n" << o.width << "x" << o.height << ", " << o.frames << " frames after " << o.warmup << " warm-up frames per cell; "
       << "CPU: the render thread's CPU time; frame: dispatch() + flush() (Vulkan: submit and wait; GL: glFinish); "
-      << "new / malloc: calls and KiB on the render thread inside dispatch() (malloc includes the driver's and operator new's)"
+      << "new / malloc: calls and KiB on the render thread inside dispatch() (malloc includes the driver's and operator new's); "
+      << "waits / preemptions: the render thread's voluntary / involuntary context switches inside dispatch()"
       << (SFX_COUNT_HEAP ? "" : "; heap counting off (sanitizer build)") << ".\n";
     return s.str();
 }

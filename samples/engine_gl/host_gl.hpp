@@ -72,24 +72,38 @@ public:
     // Loads every entry point; empty on success, else the names that are missing.
     std::string load(GetProcAddress loader);
 
-    // The counted calls.
-    GLuint genTexture();
-    GLuint genSampler();
-    GLuint genFramebuffer();
-    GLuint genBuffer();
-    GLuint genVertexArray();
-    GLuint createShader(GLenum type);
-    GLuint createProgram();
-    void texStorage2D(GLenum target, GLsizei levels, GLenum internalFormat, GLsizei w, GLsizei h);
-    void texSubImage2D(GLenum target, GLint level, GLsizei w, GLsizei h, GLenum format, GLenum type, const void* data);
-    void bufferData(GLenum target, GLsizeiptr size, const void* data, GLenum usage);
-    void readPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* data);
-    void deleteTexture(GLuint& name);
-    void deleteSampler(GLuint& name);
-    void deleteFramebuffer(GLuint& name);
-    void deleteBuffer(GLuint& name);
-    void deleteVertexArray(GLuint& name);
-    void deleteProgram(GLuint& name);
+    // The counted calls, each one line over the one counting wrapper below.
+    GLuint genTexture() { return generate(GenTextures); }
+    GLuint genSampler() { return generate(GenSamplers); }
+    GLuint genFramebuffer() { return generate(GenFramebuffers); }
+    GLuint genBuffer() { return generate(GenBuffers); }
+    GLuint genVertexArray() { return generate(GenVertexArrays); }
+    GLuint createShader(GLenum type) { return counted(&HostGlCounts::objectsCreated, CreateShader, type); }
+    GLuint createProgram() { return counted(&HostGlCounts::objectsCreated, CreateProgram); }
+    void texStorage2D(GLenum target, GLsizei levels, GLenum internalFormat, GLsizei w, GLsizei h) {
+        counted(&HostGlCounts::allocations, TexStorage2D, target, levels, internalFormat, w, h);
+    }
+    void texSubImage2D(GLenum target, GLint level, GLsizei w, GLsizei h, GLenum format, GLenum type, const void* data) {
+        counted(&HostGlCounts::uploads, TexSubImage2D, target, level, 0, 0, w, h, format, type, data);
+    }
+    // New storage, and an upload too when it comes with data.
+    void bufferData(GLenum target, GLsizeiptr size, const void* data, GLenum usage) {
+        if (data) ++counts_.uploads;
+        counted(&HostGlCounts::allocations, BufferData, target, size, data, usage);
+    }
+    void readPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* data) {
+        counted(&HostGlCounts::readbacks, ReadPixels, x, y, w, h, format, type, data);
+    }
+    // Deleting name 0 is no call and no count; the name is 0 afterwards.
+    void deleteTexture(GLuint& name) { release(DeleteTextures, name); }
+    void deleteSampler(GLuint& name) { release(DeleteSamplers, name); }
+    void deleteFramebuffer(GLuint& name) { release(DeleteFramebuffers, name); }
+    void deleteBuffer(GLuint& name) { release(DeleteBuffers, name); }
+    void deleteVertexArray(GLuint& name) { release(DeleteVertexArrays, name); }
+    void deleteProgram(GLuint& name) {
+        if (name != 0) counted(&HostGlCounts::objectsDeleted, DeleteProgram, name);
+        name = 0;
+    }
 
     const HostGlCounts& counts() const { return counts_; }
 
@@ -101,6 +115,26 @@ public:
 private:
     ENGINE_GL_COUNTED_FUNCTIONS(ENGINE_GL_MEMBER)
 #undef ENGINE_GL_MEMBER
+
+    // The one counting wrapper: counts the call in `counter`, then makes it.
+    template <class Fn, class... Args>
+    auto counted(uint64_t HostGlCounts::*counter, Fn fn, Args... args) -> decltype(fn(args...)) {
+        ++(counts_.*counter);
+        return fn(args...);
+    }
+    // glGen* and glDelete* of one name.
+    template <class Gen>
+    GLuint generate(Gen gen) {
+        GLuint name = 0;
+        counted(&HostGlCounts::objectsCreated, gen, 1, &name);
+        return name;
+    }
+    template <class Delete>
+    void release(Delete del, GLuint& name) {
+        if (name != 0) counted(&HostGlCounts::objectsDeleted, del, 1, &name);
+        name = 0;
+    }
+
     HostGlCounts counts_;
     std::string errors_;
 };
