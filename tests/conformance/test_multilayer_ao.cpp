@@ -31,6 +31,17 @@ constexpr double kMultilayerWorstPixel = 0.005;
 
 bool multilayerTier() { return test::tierProfile().aoMaxDepthLayers > 1; }
 
+// On a tier without multilayer AO (the current one) asking for two layers is the named error;
+// the GPU cases check that instead of skipping (a skip would mark the whole tier's run skipped).
+void checkRefusedHere() {
+    AoSettings s;
+    s.depthLayers = 2;
+    auto ao = AmbientObscurance::create(test::device(), {64, 32, test::tierProfile(), s});
+    REQUIRE_FALSE(ao.isOk());
+    CHECK(ao.status().code() == StatusCode::InvalidArgument);
+    CHECK(ao.status().message().find("AoSettings.depthLayers") != std::string::npos);
+}
+
 // Layers of an analytic scene with foreground blocks: on a checker of 8-pixel blocks layer 0 is
 // a surface at 0.6 of the scene's depth (a foreground object) and layer 1 the scene itself, the
 // occluder single-layer AO cannot see; every further layer lies 0.06 to 0.18 (a smooth ripple)
@@ -125,7 +136,7 @@ double worstDifference(const Grid& a, const Grid& b) {
 }  // namespace
 
 TEST_CASE("multilayer ao: the GPU matches reference::multilayerVisibility", "[ao][multilayer]") {
-    if (!multilayerTier()) SFX_SKIP("the " << toString(test::tier()) << " tier has no multilayer AO (its named error is tested below)");
+    if (!multilayerTier()) return checkRefusedHere();
     const samples::AnalyticScene scene = samples::cornerScene(96, 64);
     for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease})
         for (uint32_t layers : {2u, 4u}) {
@@ -214,7 +225,7 @@ samples::Scene samplesScene(const scene::Scene& in) {
 }  // namespace
 
 TEST_CASE("multilayer ao: depth peeling recovers the contact shadow a foreground object hides", "[ao][multilayer][render]") {
-    if (!multilayerTier()) SFX_SKIP("the " << toString(test::tier()) << " tier has no multilayer AO");
+    if (!multilayerTier()) return checkRefusedHere();
     // A wall standing on a floor and a floating bar near the camera hiding their contact line:
     // the floor just in front of the contact stays visible, and the taps that land on the bar
     // see only the bar with one layer. The bar is a quad seen from both sides, so layer 1 is

@@ -132,7 +132,8 @@ std::vector<PlanLine> DepthPeel::plan() const {
                            std::to_string(l - 1) + ", for --ao-layers " + n});
     for (const PlannedResource& r : linear_->plan().resources)
         out.push_back({K::Resource, "ao-layers", "layer 0 (" + r.name + ")", r.width, r.height, r.bytes,
-                       std::string(toString(r.format)) + ": layer 0's linear depth, which AO reads in place (no linearisation of its own)"});
+                       r.format == Format::Undefined ? std::string("uniform buffer: the linearisation's constants")
+                                                     : std::string(toString(r.format)) + ": layer 0's linear depth, which AO reads in place (no linearisation of its own)"});
     for (size_t l = 1; l <= layers_.size(); ++l) {
         const PlannedResource r = plannedTexture("ao-layers", "layer", {w, h, 1, Format::R32F, kTextureSampled | kTextureRenderTarget, "layer"});
         out.push_back({K::Resource, "ao-layers", "layer " + std::to_string(l) + " linear depth", w, h, r.bytes,
