@@ -20,7 +20,14 @@ void main() {
         float theta = float(i) * SFX_AO_GOLDEN_ANGLE + phi;
         ivec2 q = aoTap(p, rho * vec2(cos(theta), sin(theta)), size);
         vec3 v = aoPosition(q, aoDepth(q)) - C;
-        sum += aoAlchemyTerm(dot(v, v), dot(v, n), z, r, params.bias, params.epsilon);
+        float term = aoAlchemyTerm(dot(v, v), dot(v, n), z, r, params.bias, params.epsilon);
+#ifdef SFX_AO_MULTILAYER
+        for (int l = 1; l < kAoDepthLayers; ++l) {  // multilayer AO: the largest term over the layers at q
+            vec3 w = aoPosition(q, aoLayerDepth(q, l)) - C;
+            term = max(term, aoAlchemyTerm(dot(w, w), dot(w, n), z, r, params.bias, params.epsilon));
+        }
+#endif
+        sum += term;
     }
     aoWrite(aoFinish(2.0 * params.intensity * r / float(kAoSamples) * sum), z, false);
 }

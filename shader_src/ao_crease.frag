@@ -15,7 +15,14 @@ void main() {
     for (int i = 0; i < SFX_AO_CREASE_TAPS; ++i) {
         ivec2 q = clamp(p + SFX_AO_CREASE_OFFSETS[i], ivec2(0), size - 1);
         vec3 v = aoPosition(q, aoDepth(q)) - C;
-        total += aoCreaseTerm(dot(v, v), dot(v, n), params.creaseRange, params.creaseMinimum, params.creaseBias, params.epsilon);
+        float term = aoCreaseTerm(dot(v, v), dot(v, n), params.creaseRange, params.creaseMinimum, params.creaseBias, params.epsilon);
+#ifdef SFX_AO_MULTILAYER
+        for (int l = 1; l < kAoDepthLayers; ++l) {  // multilayer AO: the largest term over the layers at q
+            vec3 w = aoPosition(q, aoLayerDepth(q, l)) - C;
+            term = max(term, aoCreaseTerm(dot(w, w), dot(w, n), params.creaseRange, params.creaseMinimum, params.creaseBias, params.epsilon));
+        }
+#endif
+        total += term;
     }
     float fade = 1.0 - clamp((z - params.fadeStart) * params.invFadeRange, 0.0, 1.0);
     aoWrite(aoFinish(params.intensity * total / params.creaseAverager * fade), z, false);

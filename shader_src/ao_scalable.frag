@@ -9,7 +9,15 @@ float scalableTap(ivec2 p, vec2 offset, int level, ivec2 size, vec3 C, vec3 n) {
     ivec2 q = aoTap(p, offset, size);
     ivec2 m = min(q >> level, textureSize(uDepth, level) - 1);
     vec3 v = aoPosition(q, aoDepthAt(m, level)) - C;
-    return aoScalableTerm(dot(v, v), dot(v, n), params.radius, params.bias, params.epsilon);
+    float term = aoScalableTerm(dot(v, v), dot(v, n), params.radius, params.bias, params.epsilon);
+#ifdef SFX_AO_MULTILAYER
+    // Multilayer AO (level is 0 then: no depth MIP): the largest term over the layers at q.
+    for (int l = 1; l < kAoDepthLayers; ++l) {
+        vec3 w = aoPosition(q, aoLayerDepth(q, l)) - C;
+        term = max(term, aoScalableTerm(dot(w, w), dot(w, n), params.radius, params.bias, params.epsilon));
+    }
+#endif
+    return term;
 }
 
 void main() {

@@ -67,6 +67,9 @@ SFX_CONST(float, SFX_AO_BLUR_DEPTH_TOLERANCE, 0.05)
 SFX_CONST(int, SFX_AO_MAX_BLUR_RADIUS, 8)
 // Most taps a GPU pass takes (what settings validation allows); the CPU reference has no limit.
 SFX_CONST(int, SFX_AO_MAX_SAMPLES, 64)
+// Multilayer AO (AoSettings.depthLayers): opaque depth layers a tap tests, layer 0 included.
+// Each tap keeps the largest per-tap term over the layers at its pixel (reference::multilayerVisibility).
+SFX_CONST(int, SFX_AO_MAX_DEPTH_LAYERS, 4)
 
 // ---- Per-tap terms (SFX_FN / SFX_REAL: double in the reference, float in the shaders) -------
 // v is the tap's view position minus the centre's, n the centre's normal; vv = dot(v, v) and
@@ -234,6 +237,7 @@ float aoUnpackDepthKey(vec2 ba) {
 #define SFX_AO_SC_PACK_DEPTH 4     // where the depth for the blur and upsample goes (SFX_AO_DEPTH_IN_*)
 #define SFX_AO_SC_CLAMP_RADIUS 5   // 1: the screen radius is clamped to maxRadiusPx
 #define SFX_AO_SC_HALF_RES 6       // 1: half-size pass: positions and normals at aoFullResPixel
+#define SFX_AO_SC_DEPTH_LAYERS 7   // opaque depth layers each tap tests (1: the first visible one only)
 // The bilateral blur (ao_blur.frag):
 #define SFX_AO_SC_BLUR_RADIUS 0           // taps each side
 #define SFX_AO_SC_BLUR_MODERATE_RADIUS 1  // Crease's second, moderate blur
@@ -317,10 +321,22 @@ layout(constant_id = SFX_AO_SC_NORMAL_SOURCE) const int kAoNormalSource = 0;
 layout(constant_id = SFX_AO_SC_PACK_DEPTH) const int kAoPackDepth = 0;
 layout(constant_id = SFX_AO_SC_CLAMP_RADIUS) const int kAoClampRadius = 0;
 layout(constant_id = SFX_AO_SC_HALF_RES) const int kAoHalfRes = 0;
+layout(constant_id = SFX_AO_SC_DEPTH_LAYERS) const int kAoDepthLayers = 1;
 
 // uDepth may be the host's linear depth itself (LinearDepth passing through): clamp on fetch.
 float aoDepthAt(ivec2 q, int level) { return sfxLinearDepthOrFar(texelFetch(uDepth, q, level).r, params.maxDepth); }
 float aoDepth(ivec2 q) { return aoDepthAt(q, 0); }
+#ifdef SFX_AO_MULTILAYER  // generated from the tier table (TierProfile::aoMaxDepthLayers > 1)
+// Opaque depth layers 1..3 (AoInputs.depthLayers): R32F linear depth at the AO size, full
+// resolution only; a pixel without that layer holds 0 or the far plane (sky: its term is 0).
+layout(set = 0, binding = 3) uniform sampler2D uDepthLayer1;
+layout(set = 0, binding = 4) uniform sampler2D uDepthLayer2;
+layout(set = 0, binding = 5) uniform sampler2D uDepthLayer3;
+float aoLayerDepth(ivec2 q, int layer) {
+    float d = layer == 1 ? texelFetch(uDepthLayer1, q, 0).r : layer == 2 ? texelFetch(uDepthLayer2, q, 0).r : texelFetch(uDepthLayer3, q, 0).r;
+    return sfxLinearDepthOrFar(d, params.maxDepth);
+}
+#endif
 // At half size a texel's position is its full-size source pixel's (aoFullResPixel).
 ivec2 aoSourcePixel(ivec2 q) { return kAoHalfRes != 0 ? aoFullResPixel(q, ivec2(params.fullWidth, params.fullHeight)) : q; }
 vec3 aoPosition(ivec2 q, float z) { return reconstructViewPosition(vec2(aoSourcePixel(q)) + 0.5, z, params.projInfo); }

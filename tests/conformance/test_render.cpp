@@ -145,6 +145,8 @@ TEST_CASE("scene renderer: bad options are named errors", "[render][bad-input]")
         const char* field;
     } cases[] = {{[](render::RenderOptions& o) { o.aoRadius = 0.0f; }, "--ao-radius"},
                  {[](render::RenderOptions& o) { o.aoLayers = 0; }, "--ao-layers"},
+                 {[](render::RenderOptions& o) { o.aoLayers = 5; }, "--ao-layers"},
+                 {[](render::RenderOptions& o) { o.aoLayers = 2, o.ao.reset(); }, "--ao-layers"},
                  {[](render::RenderOptions& o) { o.maxLayers = 0; }, "--max-layers"},
                  {[](render::RenderOptions& o) { o.maxLayers = 24; }, "--max-layers"},
                  {[](render::RenderOptions& o) { o.nodes = 9; }, "--nodes"},
@@ -158,4 +160,32 @@ TEST_CASE("scene renderer: bad options are named errors", "[render][bad-input]")
         CHECK(r.status().code() == StatusCode::InvalidArgument);
         CHECK(r.status().message().find(c.field) == 0);
     }
+}
+
+TEST_CASE("scene renderer: --ao-layers 2 peels a layer on the high tier, a named error on the current one", "[render][multilayer]") {
+    const scene::Scene scene = loadScene(kScene);
+    render::RenderOptions o;
+    o.aoLayers = 2;
+    const tiers::TierChoice tier = testTier();
+    if (tier.profile.aoMaxDepthLayers < 2) {
+        auto r = render::SceneRender::create(test::device(), tier, scene, o);
+        REQUIRE_FALSE(r.isOk());
+        CHECK(r.status().code() == StatusCode::InvalidArgument);
+        CHECK(r.status().message().find("--ao-layers") == 0);
+        CHECK(r.status().message().find("current tier") != std::string::npos);
+        return;
+    }
+    render::RenderPlan plan;
+    const render::RenderResult multi = renderWith(scene, o, &plan);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+    size_t peels = 0, layerBytes = 0;
+    for (const render::PlanLine& l : plan.lines) {
+        if (l.kind == render::PlanLine::Kind::Pass && l.name.rfind("peel layer", 0) == 0) ++peels;
+        if (l.kind == render::PlanLine::Kind::Resource && l.name == "layer 1 linear depth") layerBytes = l.bytes;
+        CHECK_FALSE((l.kind == render::PlanLine::Kind::Omitted && l.name == "multilayer depth"));
+    }
+    CHECK(peels == 1);
+    CHECK(layerBytes == size_t(scene.width) * scene.height * 4);  // R32F
+    REQUIRE(multi.ao.has_value());
+    for (float v : multi.ao->pixels) REQUIRE((v >= 0.0f && v <= 1.0f));
 }

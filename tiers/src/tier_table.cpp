@@ -76,6 +76,7 @@ TierProfile currentDefault() {
     // Obscurance and blur at half size, a depth-aware upsample last: the cost goal of issue 10
     // (docs/trade.md); the blur's 2 px become 1 half-size tap each side.
     p.aoHalfResolution = true;
+    p.aoMaxDepthLayers = 1;  // multilayer AO is a high-tier feature
     p.mbTaps = 7;                  // 6 samples + centre
     p.mbMaxRadiusPx = 10.0f;
     p.mbJitterSize = 2;  // checkerboard
@@ -98,6 +99,7 @@ TierProfile highDefault() {
     p.aoLook[2] = {.intensity = 14.4122f, .contrast = 1.15478f, .bias = 0, .creaseRange = 0.430292f, .creaseBias = 0.238152f};  // crease
     p.aoPackedDepthTarget = false;  // float AO target carrying the linear depth (RG32F; RGBA32F crease)
     p.aoHalfResolution = true;      // as the current tier; the blur's 6 px become 3 half-size taps each side
+    p.aoMaxDepthLayers = 4;         // multilayer AO: the first visible layer and 3 peeled ones (SFX_AO_MAX_DEPTH_LAYERS)
     p.mbTaps = 9;                   // 8 samples + centre
     p.mbMaxRadiusPx = 18.0f;
     p.mbJitterSize = 4;  // 4x4 randomised

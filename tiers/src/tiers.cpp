@@ -46,6 +46,7 @@ std::vector<ShaderDefine> shaderDefines(Tier tier) {
     std::vector<ShaderDefine> defines = {{"SFX_TIER_" + upper, "1"}, {"SFX_TIER", std::to_string(uint32_t(tier))}};
     if (p.aoUsesDepthMip) defines.push_back({"SFX_AO_DEPTH_MIP", "1"});
     if (p.aoPackedDepthTarget) defines.push_back({"SFX_AO_PACKED_DEPTH_TARGET", "1"});
+    if (p.aoMaxDepthLayers > 1) defines.push_back({"SFX_AO_MULTILAYER", "1"});
     return defines;
 }
 

@@ -7,14 +7,16 @@
 #include <sstream>
 
 #include "scene.hpp"
+#include "scene_depth_peel.hpp"
 #include "scene_transparency.hpp"
 #include "sfx/half.hpp"
+#include "sfx_shared_ao.h"
 #include "sfx_shared_raster.h"
 
 namespace sfx::render {
 namespace {
 
-constexpr uint32_t kMaxAoLayers = 1;  // multilayer AO (more than one opaque layer) is not built yet
+constexpr uint32_t kMaxAoLayers = uint32_t(shared::SFX_AO_MAX_DEPTH_LAYERS);  // the first visible layer and 3 peeled ones
 constexpr uint32_t kMaxCompressedNodes = 4;
 
 std::string mib(uint64_t bytes) {
@@ -64,7 +66,8 @@ Status validateOptions(const RenderOptions& o) {
         return invalidArgument("--ao-radius", std::to_string(o.aoRadius), "[1e-4, 1000]");
     if (o.aoLayers < 1 || o.aoLayers > kMaxAoLayers)
         return invalidArgument("--ao-layers", std::to_string(o.aoLayers),
-                               "1 (multilayer AO over more opaque layers is not available in this build)");
+                               "[1, " + std::to_string(kMaxAoLayers) + "] (1: the first visible layer; more: depth peeling, high tier)");
+    if (o.aoLayers > 1 && !o.ao) return invalidArgument("--ao-layers", std::to_string(o.aoLayers), "1 with --ao off (the layers are for AO)");
     if (o.maxLayers != keptLayers(TransparencyQuality::Standard) && o.maxLayers != keptLayers(TransparencyQuality::High))
         return invalidArgument("--max-layers", std::to_string(o.maxLayers),
                                "16 or 32 (the fragments the A-buffer resolve keeps exact per pixel)");
@@ -131,6 +134,7 @@ struct SceneRender::Impl {
     std::vector<size_t> transparent;
     std::unique_ptr<samples::SceneRenderer> raster;
     std::unique_ptr<AmbientObscurance> ao;
+    std::unique_ptr<DepthPeel> peel;  // only with --ao-layers > 1
     std::unique_ptr<SceneTransparency> transparency;  // only with a translucent object and --oit auto
     TextureHandle aoOutput;
     Format aoFormat = Format::Undefined;
@@ -141,6 +145,7 @@ struct SceneRender::Impl {
         : device(d), tier(t), file(f), options(o) {}
     ~Impl() {
         ao.reset();
+        peel.reset();
         transparency.reset();
         if (!aoOutput.isNull()) (void)device.destroyTexture(aoOutput);
     }
@@ -173,8 +178,20 @@ Result<std::unique_ptr<SceneRender>> SceneRender::create(Device& device, const t
         s.technique = *options.ao;
         s.radius = options.aoRadius;
         s.normals = AoNormals::FromTexture;
+        DepthKind aoDepth = DepthKind::Hardware;
+        if (options.aoLayers > 1) {
+            if (options.aoLayers > tier.profile.aoMaxDepthLayers)
+                return invalidArgument("--ao-layers", std::to_string(options.aoLayers),
+                                       "[1, " + std::to_string(tier.profile.aoMaxDepthLayers) + "] on the " + toString(tier.tier) +
+                                           " tier (multilayer AO needs the high tier)");
+            Result<std::unique_ptr<DepthPeel>> peel = DepthPeel::create(device, tier.tier, impl->scene, options.aoLayers, impl->width, impl->height);
+            if (!peel) return peel.status();
+            impl->peel = std::move(peel.value());
+            s.depthLayers = options.aoLayers;
+            aoDepth = DepthKind::Linear;  // layer 0 from the peel's linearisation, read in place
+        }
         Result<std::unique_ptr<AmbientObscurance>> ao =
-            AmbientObscurance::create(device, {impl->width, impl->height, tier.profile, s, DepthKind::Hardware});
+            AmbientObscurance::create(device, {impl->width, impl->height, tier.profile, s, aoDepth});
         if (!ao) return ao.status();
         impl->ao = std::move(ao.value());
         impl->aoFormat = device.caps().renderableFormat[size_t(Format::R32F)] ? Format::R32F : Format::RGBA8;
@@ -213,6 +230,10 @@ RenderPlan SceneRender::plan() const {
         const PlannedResource r = plannedTexture("scene", t.name, {w, h, 1, t.format, kTextureSampled | kTextureRenderTarget, t.name});
         p.lines.push_back({K::Resource, "scene", t.name, w, h, r.bytes, std::string(toString(t.format)) + ": " + t.why});
     }
+    if (m.peel) {
+        const std::vector<PlanLine> peel = m.peel->plan();
+        p.lines.insert(p.lines.end(), peel.begin(), peel.end());
+    }
     if (m.ao) {
         const Plan aoPlan = m.ao->plan();
         const std::string tech = toString(*m.options.ao);
@@ -224,7 +245,7 @@ RenderPlan SceneRender::plan() const {
         const PlannedResource out = plannedTexture("ao", "visibility", {w, h, 1, m.aoFormat, kTextureSampled | kTextureRenderTarget, "ao"});
         p.lines.push_back({K::Resource, "ao", "visibility", w, h, out.bytes,
                            std::string(toString(m.aoFormat)) + ": the AO result the composite multiplies into the ambient term"});
-        p.lines.push_back({K::Omitted, "ao", "multilayer depth", 0, 0, 0, "not asked (--ao-layers 1): AO tests the first visible layer only"});
+        if (!m.peel) p.lines.push_back({K::Omitted, "ao", "multilayer depth", 0, 0, 0, "not asked (--ao-layers 1): AO tests the first visible layer only"});
     } else {
         p.lines.push_back({K::Omitted, "ao", "all", 0, 0, 0, "--ao off: no linear depth, AO or blur passes and no AO textures"});
     }
@@ -304,6 +325,11 @@ Result<RenderResult> SceneRender::render() {
         if (m.ao) {
             AoInputs in;
             in.depth = {g->depth, DepthKind::Hardware, g->camera};
+            if (m.peel) {
+                SFX_TRY(m.peel->render(m.scene, in.depth));
+                in.depth = {m.peel->layer0(), DepthKind::Linear, g->camera};
+                for (size_t l = 0; l < m.peel->peeled().size(); ++l) in.depthLayers[l] = m.peel->peeled()[l];
+            }
             in.normals = g->normals;
             in.output = m.aoOutput;
             SFX_TRY(m.ao->dispatch(in));

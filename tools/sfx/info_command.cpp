@@ -32,6 +32,7 @@ const ParameterRow kParameterRows[] = {
     {"depth MIP levels read by AO", [](const TierProfile& p) { return std::to_string(p.aoDepthMipLevels); }},
     {"Alchemy samples per pixel", [](const TierProfile& p) { return std::to_string(p.aoAlchemySamples); }},
     {"AO resolution (obscurance and blur)", [](const TierProfile& p) { return std::string(p.aoHalfResolution ? "half, depth-aware upsample" : "full"); }},
+    {"AO depth layers at most (multilayer AO)", [](const TierProfile& p) { return p.aoMaxDepthLayers > 1 ? std::to_string(p.aoMaxDepthLayers) : std::string("1 (single layer only)"); }},
     {"AO bilateral blur half-width (px)", [](const TierProfile& p) { return std::to_string(p.aoBlurRadiusPx); }},
     {"AO blur depth source",
      [](const TierProfile& p) {

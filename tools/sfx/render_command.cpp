@@ -93,7 +93,7 @@ Command addRenderCommand(CLI::App& app) {
     c.app->add_option("--ao", flags->ao, "off | alchemy | scalable | crease")->capture_default_str();
     c.app->add_option("--ao-radius", flags->aoRadius, "AO world-space radius, [1e-4, 1000]")->capture_default_str();
     c.app->add_option("--ao-out", flags->aoOutPath, "also write the AO visibility buffer (.pfm, .exr or .png; values as they are, no sRGB)");
-    c.app->add_option("--ao-layers", flags->aoLayers, "opaque depth layers AO tests (multilayer AO); 1 = the visible layer")
+    c.app->add_option("--ao-layers", flags->aoLayers, "opaque depth layers AO tests, [1, 4]; 1 = the visible layer, more = depth peeling (high tier)")
         ->capture_default_str();
     c.app->add_option("--oit", flags->oit, "auto (transparent objects through OIT) | off (not drawn)")->capture_default_str();
     c.app->add_option("--max-layers", flags->maxLayers, "K: transparent fragments the A-buffer resolve keeps exact per pixel, 16 or 32")->capture_default_str();

@@ -79,6 +79,12 @@ struct AoSettings {
     AoResolution resolution = AoResolution::Tier;
     AoNormals normals = AoNormals::FromDepth;
     AoCreaseSettings crease;
+    // Multilayer AO: opaque depth layers each tap tests, layer 0 (AoInputs.depth) included;
+    // [1, TierProfile::aoMaxDepthLayers] (1 on the current tier, up to 4 on high). Above 1 each
+    // tap keeps the largest term over AoInputs.depthLayers at its pixel, so surfaces hidden behind
+    // the first visible one still occlude; it runs at full resolution without a depth MIP
+    // (resolution Tier resolves to Full; Half is an error). Off (1) by default.
+    uint32_t depthLayers = 1;
 };
 
 // The papers' nominal values (the look before the calibration of issue 10).
@@ -98,6 +104,7 @@ struct AoConfig {
     double spiralTurns = 7;       // Scalable spiral turns
     double maxRadiusPx = 0;       // Scalable: screen radius clamp, 0 = none
     uint32_t depthMipLevels = 1;  // Scalable: depth MIP levels read, from the pass's size (1 = that size only)
+    uint32_t depthLayers = 1;     // multilayer AO: layers each tap tests (AoSettings.depthLayers)
     uint32_t blurRadius = 0;      // 0 = no blur
     AoNormals normals = AoNormals::FromDepth;
     AoCreaseSettings crease;
@@ -125,6 +132,10 @@ struct AoInputs {
     // Where visibility goes: the context's size, kTextureRenderTarget, one of R8, RGBA8, R16F,
     // RG16F, RGBA16F, R32F, RGBA32F renderable on the device.
     TextureHandle output;
+    // With AoSettings.depthLayers = L > 1: layers 1 .. L-1 in [0, L-2], each R32F positive linear
+    // depth at the context's size, sampled: per pixel the nearest opaque surface strictly behind
+    // the previous layer (0 or the far plane where there is none). Unused entries stay null.
+    TextureHandle depthLayers[3] = {};
 };
 
 class AmbientObscurance {

@@ -61,6 +61,9 @@ struct TierProfile {
     bool aoPackedDepthTarget = false;
     // AO at half resolution with a depth-aware upsample (AoResolution::Tier resolves to it).
     bool aoHalfResolution = false;
+    // Opaque depth layers AO may test (AoSettings.depthLayers): 1 = single-layer AO only. Above 1
+    // the table generates SFX_AO_MULTILAYER, which declares the obscurance passes' layer bindings.
+    uint32_t aoMaxDepthLayers = 1;
     // Motion blur
     uint32_t mbTaps = 0;               // reconstruction taps including the centre
     float mbMaxRadiusPx = 0;           // maximum blur radius at the reference resolution

@@ -256,6 +256,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
         else return {StatusCode::UnsupportedFormat, std::string("AoInputs.normals format ") + toString(nd->format) +
                                                         "; allowed RGBA16F/RGBA32F (signed xyz) or RGBA8 (xyz * 0.5 + 0.5)"};
     }
+    SFX_TRY(detail::checkDepthLayers(device_, in, config_, desc_.width, desc_.height));
 
     // Profiling: plan() order is the depth passes (linearize + one per MIP level past 0), at half
     // resolution the half-size depth unless MIP level 1 is it, the obscurance pass, blur h and v,
@@ -310,6 +311,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
         {SFX_AO_SC_PACK_DEPTH, detail::aoDepthInTarget(desc_.profile, config_.technique, blur, half)},
         {SFX_AO_SC_CLAMP_RADIUS, config_.maxRadiusPx > 0.0 ? 1 : 0},
         {SFX_AO_SC_HALF_RES, half ? 1 : 0},
+        {SFX_AO_SC_DEPTH_LAYERS, int32_t(config_.depthLayers)},
     };
     Result<PipelineHandle> aoPipeline = pipelines_->get(aoProgram_, direct ? out->format : targetFormat_, aoConstants, "sfx-ao");
     if (!aoPipeline) return aoPipeline.status();
@@ -326,6 +328,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
     normalBinding.binding = gen::ao_scalable::uNormals;
     if (normalSource) normalBinding = TextureBinding{gen::ao_scalable::uNormals, in.normals, 0, 1, {}};
     draw.bindings.textures = {depthBinding, normalBinding};
+    detail::appendDepthLayerBindings(draw.bindings.textures, in, config_, desc_.profile, depthBinding);
     draw.bindings.uniformBuffers = {BufferBinding{gen::ao_scalable::AoParams, aoParams_, 0, 0}};
     SFX_TRY(timed(passIndex++, [&] { return device_.renderPass(pass, std::span<const DrawDesc>(&draw, 1)); }));
 
@@ -383,7 +386,8 @@ Plan AmbientObscurance::plan() const {
     const std::string atHalf = half ? " at half size" : "";
     if (half && !halfDepthFromMip())
         plan.passes.push_back({"ao", "half-size depth (AO at half resolution; no depth MIP level 1 to reuse)", w, h});
-    plan.passes.push_back({"ao", std::string("obscurance (") + toString(config_.technique) + ")" + atHalf, w, h});
+    const std::string layers = config_.depthLayers > 1 ? ", taps test " + std::to_string(config_.depthLayers) + " depth layers" : "";
+    plan.passes.push_back({"ao", std::string("obscurance (") + toString(config_.technique) + layers + ")" + atHalf, w, h});
     plan.resources.push_back({"ao", "ao params", Format::Undefined, 0, 0, 1, sizeof(AoParams)});
     if (blur) {
         plan.passes.push_back({"ao", "bilateral blur h" + atHalf, w, h});

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <vector>
 
 #include "sfx/ao.hpp"
 #include "sfx_shared_ao.h"
@@ -31,5 +32,11 @@ inline bool mipGivesHalfDepth(const AoConfig& config, const TierProfile& profile
     return config.halfResolution && config.technique == AoTechnique::Scalable && profile.aoUsesDepthMip &&
            std::min(profile.aoDepthMipLevels, maxMipLevels(width, height)) >= 2;
 }
+
+// Multilayer AO (ao_multilayer.cpp): named errors for AoInputs.depthLayers the config needs,
+// and the obscurance pass's layer bindings where the tier's programs declare them.
+Status checkDepthLayers(Device& device, const AoInputs& in, const AoConfig& config, uint32_t width, uint32_t height);
+void appendDepthLayerBindings(std::vector<TextureBinding>& bindings, const AoInputs& in, const AoConfig& config,
+                              const TierProfile& profile, const TextureBinding& passDepth);
 
 }  // namespace sfx::detail

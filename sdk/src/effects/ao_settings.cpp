@@ -105,6 +105,14 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
     if (uint32_t(s.resolution) > 2)
         return invalidArgument("AoSettings.resolution", std::to_string(uint32_t(s.resolution)), "Tier, Full or Half");
     if (uint32_t(s.normals) > 1) return invalidArgument("AoSettings.normals", std::to_string(uint32_t(s.normals)), "FromDepth or FromTexture");
+    const uint32_t maxLayers = std::clamp(profile.aoMaxDepthLayers, 1u, uint32_t(shared::SFX_AO_MAX_DEPTH_LAYERS));
+    if (s.depthLayers < 1 || s.depthLayers > maxLayers)
+        return invalidArgument("AoSettings.depthLayers", std::to_string(s.depthLayers),
+                               maxLayers == 1 ? std::string("1 on the ") + toString(profile.tier) + " tier (multilayer AO needs a tier with aoMaxDepthLayers > 1: high)"
+                                              : "[1, " + std::to_string(maxLayers) + "] on the " + toString(profile.tier) + " tier");
+    if (s.depthLayers > 1 && s.resolution == AoResolution::Half)
+        return invalidArgument("AoSettings.resolution", "Half with depthLayers " + std::to_string(s.depthLayers),
+                               "Full or Tier (multilayer AO runs at full resolution: the layers are full size)");
     const AoCreaseSettings& c = s.crease;
     if (c.range != kTierValue) SFX_TRY(checkRange("AoSettings.crease.range", c.range, kAoMinRadius, false, 1000, false, "[1e-4, 1000], or -1 for the tier's"));
     if (c.bias != kTierValue) SFX_TRY(checkRange("AoSettings.crease.bias", c.bias, 0, true, 100, false, "(0, 100], or -1 for the tier's"));
@@ -128,7 +136,9 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
     c.crease = s.crease;
     c.crease.range = orTier(s.crease.range, look.creaseRange);
     c.crease.bias = orTier(s.crease.bias, look.creaseBias);
-    c.halfResolution = s.resolution == AoResolution::Half || (s.resolution == AoResolution::Tier && profile.aoHalfResolution);
+    c.depthLayers = s.depthLayers;
+    // Multilayer AO is full size (its layers are): the tier's half resolution does not apply.
+    c.halfResolution = s.resolution == AoResolution::Half || (s.resolution == AoResolution::Tier && profile.aoHalfResolution && s.depthLayers == 1);
     // Pixel counts are the pass's: at half size the blur keeps its footprint in output pixels
     // with (r + 1) / 2 taps each side, and the screen radius clamp halves.
     const uint32_t blurPx = s.blurRadius ? s.blurRadius : profile.aoBlurRadiusPx;
@@ -147,6 +157,9 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
             c.depthMipLevels = profile.aoUsesDepthMip ? std::max(1u, std::min(profile.aoDepthMipLevels, mipLevelsAllowed)) : 1;
             // At half size the pass reads the pyramid from level 1: one level fewer of its own.
             if (c.halfResolution) c.depthMipLevels = std::max(1u, c.depthMipLevels - 1);
+            // Multilayer taps read every layer at full size, as reference::multilayerVisibility:
+            // a MIP of layer 0 alone would mix coarse and fine depths in one tap's maximum.
+            if (c.depthLayers > 1) c.depthMipLevels = 1;
             break;
         case AoTechnique::Crease:
             c.bias = 0;
