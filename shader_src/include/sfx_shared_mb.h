@@ -27,6 +27,7 @@ namespace sfx::shared {
 using glm::length;
 using std::abs;
 using std::clamp;
+using std::floor;
 using std::isinf;
 using std::isnan;
 using std::max;
@@ -114,6 +115,22 @@ SFX_MB_FN SFX_MB_VEC2 mbClampVelocity(SFX_MB_VEC2 v, SFX_MB_REAL k) {
 // Velocity component in [-k, k] pixels <-> [0, 1] (the course's rescale to fit two channels).
 SFX_MB_FN SFX_MB_REAL mbEncodeVelocity(SFX_MB_REAL v, SFX_MB_REAL k) { return v / (2.0 * k) + 0.5; }
 SFX_MB_FN SFX_MB_REAL mbDecodeVelocity(SFX_MB_REAL e, SFX_MB_REAL k) { return (e - 0.5) * (2.0 * k); }
+
+// The code is stored on a uniform grid of 1/SFX_MB_VELOCITY_CODE_STEPS (a velocity step of
+// k/1024 px, the fp16 step of codes in [0.5, 1)): every grid value has at most 11 significant
+// bits, so the RGBA16F and RG16F targets hold it exactly whatever their float-to-half rounding.
+// The APIs allow that rounding to go to nearest or toward zero, and llvmpipe / lavapipe round
+// toward zero: left to the target, a clamped (3, 200) px velocity at k = 64 was stored as
+// 63.9375 px on the GPU where the reference's round to nearest gave 64, on every pixel, and at
+// 60 and 64 px that moved whole rows of taps (4% of channels 3-6e-3 off the reference).
+// Rounded to nearest here (floor(x + 0.5), the same in both languages; the scaling by a power
+// of two and the floor are exact in float), so a code a few float ulps off a grid value (the
+// shader's division) still lands on it; both sides then decode the same value.
+SFX_CONST(float, SFX_MB_VELOCITY_CODE_STEPS, 2048.0)
+SFX_MB_FN SFX_MB_REAL mbQuantizeVelocityCode(SFX_MB_REAL e) {
+    SFX_MB_REAL steps = SFX_MB_REAL(SFX_MB_VELOCITY_CODE_STEPS);
+    return clamp(floor(e * steps + 0.5), 0.0, steps) * (1.0 / steps);
+}
 
 // Samples come in pairs along one velocity: pair i of `pairs` sits at +t and -t' with
 //   t = (i + 0.5 + jitter) / pairs,   t' = (i + 0.5 - jitter) / pairs,   both in (0, 1].

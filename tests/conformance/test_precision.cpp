@@ -18,8 +18,6 @@
 #include <random>
 #include <sstream>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include "analytic_scenes.hpp"
 #include "effect_runs.hpp"
 #include "sfx/half.hpp"
@@ -285,31 +283,7 @@ TEST_CASE("precision: transparency colour formats hold the composite to their st
     std::uniform_real_distribution<double> u(0.0, 1.0);
     std::vector<glm::dvec4> opaque(n);
     for (auto& c : opaque) c = {u(rng), u(rng), u(rng), 1.0};
-    TextureHandle opaqueDepth = dev.createTexture({w, h, 1, Format::D32F, kTextureSampled | kTextureRenderTarget, "precision-oit-depth"}).value();
-    {
-        std::vector<float> far(n, 1.0f);
-        SFX_REQUIRE_OK(dev.writeTexture(opaqueDepth, 0, far.data(), far.size() * 4));
-    }
-    const float corners[6][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
-    std::vector<TransparentVertex> quad;
-    for (const auto& p : corners) quad.push_back({{p[0] * 0.8f, p[1] * 0.8f, 0.0f}, {0.0f, 0.0f, 1.0f}});
-    BufferHandle vb = dev.createBuffer({quad.size() * sizeof(TransparentVertex), kBufferVertex, "precision-oit-quad"}).value();
-    SFX_REQUIRE_OK(dev.writeBuffer(vb, 0, quad.data(), quad.size() * sizeof(TransparentVertex)));
-    std::vector<TransparentDraw> draws;
-    for (uint32_t i = 0; i < 3; ++i) {
-        TransparentDraw d;
-        d.vertices = vb;
-        d.vertexCount = 6;
-        d.model = glm::translate(glm::mat4(1.0f), glm::vec3(0.3f * float(i) - 0.3f, 0.1f * float(i), -2.0f - float(i)));
-        d.color = glm::vec3(0.9f - 0.3f * float(i), 0.35f + 0.2f * float(i), 0.2f + 0.3f * float(i));
-        d.opacity = 0.3f + 0.2f * float(i);
-        d.id = i;
-        draws.push_back(d);
-    }
-    const bool zeroToOne = dev.caps().clipDepth == ClipDepthRange::ZeroToOne;
-    glm::mat4 proj(1.0f);  // orthographic along -z, near 0.5, far 20
-    proj[2][2] = zeroToOne ? -1.0f / 19.5f : -2.0f / 19.5f;
-    proj[3][2] = zeroToOne ? -0.5f / 19.5f : -1.0f / 19.5f - 1.0f;
+    const test::TranslucentQuads quads(dev, w, h, 0.8f, {0.3f, 0.1f});
     auto run = [&](Format f, const std::vector<glm::dvec4>& input) {
         std::vector<glm::dvec4> held;
         const std::vector<uint8_t> bytes = encodeRgba(f, input, &held);
@@ -325,9 +299,9 @@ TEST_CASE("precision: transparency colour formats hold the composite to their st
         REQUIRE(oit.isOk());
         TransparencyInputs in;
         in.opaqueColor = color;
-        in.opaqueDepth = opaqueDepth;
-        in.projection = proj;
-        in.draws = draws;
+        in.opaqueDepth = quads.opaqueDepth;
+        in.projection = quads.projection;
+        in.draws = quads.draws;
         SFX_REQUIRE_OK(oit.value()->render(in));
         SFX_REQUIRE_OK(dev.flush());
         std::vector<double> out = readAsDoubles(dev, oit.value()->output(), f, w, h);
@@ -349,7 +323,5 @@ TEST_CASE("precision: transparency colour formats hold the composite to their st
                                                    << stored[excess.at] << ", value " << value[excess.at]);
         CHECK(excess.worst <= 0.0);
     }
-    SFX_REQUIRE_OK(dev.destroyBuffer(vb));
-    SFX_REQUIRE_OK(dev.destroyTexture(opaqueDepth));
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }

@@ -4,7 +4,11 @@
 
 #include <cmath>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "sfx/half.hpp"
+#include "sfx_shared.h"
+#include "sfx_shared_mb.h"
 #include "test_device.hpp"
 
 namespace sfx::test {
@@ -134,9 +138,9 @@ CameraProjection motionBlurTestCamera(uint32_t w, uint32_t h) {
 
 // descInput: what the effect is told it will get. The depth is linear, so Linear reads it where
 // it lies (no linearisation pass); Hardware copies it into LinearDepth's texture first.
-ColorGrid runMotionBlur(Device& d, const TierProfile& tier, const ColorGrid& color, const Grid& depth,
-                        const VelocityGrid* velocity, const MotionBlurSettings& s, const CameraMotion& camera,
-                        DepthKind descInput) {
+GpuMotionBlur runMotionBlurPasses(Device& d, const TierProfile& tier, const ColorGrid& color, const Grid& depth,
+                                  const VelocityGrid* velocity, const MotionBlurSettings& s, const CameraMotion& camera,
+                                  DepthKind descInput) {
     const uint32_t w = color.width, h = color.height;
     MotionBlurGpuInputs in(d, color, depth, velocity);
     Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {w, h, tier, Format::RGBA16F, descInput});
@@ -149,12 +153,69 @@ ColorGrid runMotionBlur(Device& d, const TierProfile& tier, const ColorGrid& col
     inputs.camera = camera;
     SFX_REQUIRE_OK(mb.value()->dispatch(inputs, s));
     SFX_REQUIRE_OK(d.flush());
-    std::vector<uint16_t> out(size_t(w) * h * 4);
+    std::vector<uint16_t> out(size_t(w) * h * 4), packed(size_t(w) * h * 4);
     SFX_REQUIRE_OK(d.readTexture(mb.value()->output(), 0, out.data(), out.size() * 2));
-    ColorGrid result(w, h);
-    for (size_t i = 0; i < result.values.size(); ++i)
-        for (int c = 0; c < 4; ++c) result.values[i][c] = double(halfToFloat(out[i * 4 + size_t(c)]));
+    SFX_REQUIRE_OK(d.readTexture(mb.value()->packedVelocity(), 0, packed.data(), packed.size() * 2));
+    const Result<MotionBlurParams> p = resolveMotionBlur(tier, s, h);
+    REQUIRE(p.isOk());
+    const double k = double(p->radiusPx);
+    GpuMotionBlur result{ColorGrid(w, h), VelocityGrid(w, h)};
+    for (size_t i = 0; i < result.color.values.size(); ++i) {
+        for (size_t c = 0; c < 4; ++c) result.color.values[i][c] = double(halfToFloat(out[i * 4 + c]));
+        for (size_t c = 0; c < 2; ++c) result.radiusPx.values[i][c] = shared::mbDecodeVelocity(double(halfToFloat(packed[i * 4 + c])), k);
+    }
     return result;
+}
+
+ColorGrid runMotionBlur(Device& d, const TierProfile& tier, const ColorGrid& color, const Grid& depth,
+                        const VelocityGrid* velocity, const MotionBlurSettings& s, const CameraMotion& camera,
+                        DepthKind descInput) {
+    return runMotionBlurPasses(d, tier, color, depth, velocity, s, camera, descInput).color;
+}
+
+size_t checkMotionBlurConformance(const ColorGrid& gpu, const ColorGrid& ref) {
+    REQUIRE(gpu.values.size() == ref.values.size());
+    size_t far = 0;
+    for (size_t i = 0; i < ref.values.size(); ++i)
+        for (size_t ch = 0; ch < 4; ++ch) {
+            REQUIRE(std::isfinite(gpu.values[i][ch]));
+            if (std::abs(gpu.values[i][ch] - ref.values[i][ch]) > 2e-3) ++far;
+        }
+    INFO("channels beyond 2e-3: " << far << " of " << ref.values.size() * 4);
+    CHECK(double(far) <= 0.03 * double(ref.values.size() * 4));
+    return far;
+}
+
+TranslucentQuads::TranslucentQuads(Device& d, uint32_t w, uint32_t h, float halfExtent, glm::vec2 step) : device(d) {
+    opaqueDepth = d.createTexture({w, h, 1, Format::D32F, kTextureSampled | kTextureRenderTarget, "test-quads-opaque-depth"}).value();
+    {
+        const std::vector<float> far(size_t(w) * h, 1.0f);
+        SFX_REQUIRE_OK(d.writeTexture(opaqueDepth, 0, far.data(), far.size() * 4));
+    }
+    const float corners[6][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
+    std::vector<TransparentVertex> quad;
+    for (const auto& c : corners) quad.push_back({{c[0] * halfExtent, c[1] * halfExtent, 0.0f}, {0.0f, 0.0f, 1.0f}});
+    vertices = d.createBuffer({quad.size() * sizeof(TransparentVertex), kBufferVertex, "test-quads"}).value();
+    SFX_REQUIRE_OK(d.writeBuffer(vertices, 0, quad.data(), quad.size() * sizeof(TransparentVertex)));
+    for (uint32_t i = 0; i < 3; ++i) {
+        TransparentDraw draw;
+        draw.vertices = vertices;
+        draw.vertexCount = 6;
+        const float fi = float(i);
+        draw.model = glm::translate(glm::mat4(1.0f), glm::vec3(step.x * (fi - 1.0f), step.y * fi, -2.0f - fi));
+        draw.color = glm::vec3(0.9f - 0.3f * fi, 0.35f + 0.2f * fi, 0.2f + 0.3f * fi);
+        draw.opacity = 0.3f + 0.2f * fi;
+        draw.id = i;
+        draws.push_back(draw);
+    }
+    const bool zeroToOne = d.caps().clipDepth == ClipDepthRange::ZeroToOne;
+    projection[2][2] = zeroToOne ? -1.0f / 19.5f : -2.0f / 19.5f;
+    projection[3][2] = zeroToOne ? -0.5f / 19.5f : -1.0f / 19.5f - 1.0f;
+}
+
+TranslucentQuads::~TranslucentQuads() {
+    if (!vertices.isNull()) (void)device.destroyBuffer(vertices);
+    if (!opaqueDepth.isNull()) (void)device.destroyTexture(opaqueDepth);
 }
 
 }  // namespace sfx::test

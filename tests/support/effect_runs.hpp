@@ -7,6 +7,7 @@
 #include "sfx/ao.hpp"
 #include "sfx/hal.hpp"
 #include "sfx/motion_blur.hpp"
+#include "sfx/oit.hpp"
 #include "sfx/reference/ao_reference.hpp"
 #include "sfx/reference/motion_blur_reference.hpp"
 
@@ -49,10 +50,43 @@ struct MotionBlurGpuInputs {
     ~MotionBlurGpuInputs();
 };
 
-// Runs motion blur and reads the RGBA16F output back as doubles (sign kept: sfx/half.hpp).
+// One motion blur run read back: the RGBA16F output as doubles (sign kept: sfx/half.hpp), and
+// pass 1's velocities (the packed texture's xy decoded to pixels at the dispatch's radius), to
+// compare with the reference's MotionBlurReferenceResult::radiusPx.
+struct GpuMotionBlur {
+    reference::ColorGrid color;
+    reference::VelocityGrid radiusPx;
+};
+GpuMotionBlur runMotionBlurPasses(Device& device, const TierProfile& tier, const reference::ColorGrid& color,
+                                  const reference::Grid& depth, const reference::VelocityGrid* velocity,
+                                  const MotionBlurSettings& s, const CameraMotion& camera = {},
+                                  DepthKind descInput = DepthKind::Linear);
+
+// Runs motion blur and reads the RGBA16F output back as doubles (runMotionBlurPasses' colour).
 reference::ColorGrid runMotionBlur(Device& device, const TierProfile& tier, const reference::ColorGrid& color,
                                    const reference::Grid& depth, const reference::VelocityGrid* velocity,
                                    const MotionBlurSettings& s, const CameraMotion& camera = {},
                                    DepthKind descInput = DepthKind::Linear);
+
+// The motion blur conformance rule (docs/motion_blur.md): every channel of `gpu` finite (a
+// REQUIRE) and at most 3% of channels more than 2e-3 from `ref`. Returns how many are.
+size_t checkMotionBlurConformance(const reference::ColorGrid& gpu, const reference::ColorGrid& ref);
+
+// Three overlapping translucent square quads over an opaque depth at the far plane, the
+// transparency setup of the precision and 8K size tests. Quad i (0..2) spans +-halfExtent
+// around (step.x * (i - 1), step.y * i) at z = -2 - i, colour (0.9 - 0.3i, 0.35 + 0.2i,
+// 0.2 + 0.3i), opacity 0.3 + 0.2i, id i. projection: orthographic along -z, near 0.5, far 20,
+// in the device's clip depth convention.
+struct TranslucentQuads {
+    Device& device;
+    BufferHandle vertices;
+    TextureHandle opaqueDepth;  // D32F, w x h, every texel 1 (the far plane)
+    std::vector<TransparentDraw> draws;
+    glm::mat4 projection{1.0f};
+    TranslucentQuads(Device& d, uint32_t w, uint32_t h, float halfExtent, glm::vec2 step);
+    TranslucentQuads(const TranslucentQuads&) = delete;
+    TranslucentQuads& operator=(const TranslucentQuads&) = delete;
+    ~TranslucentQuads();
+};
 
 }  // namespace sfx::test

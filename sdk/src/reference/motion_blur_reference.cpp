@@ -55,8 +55,9 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
     const double k = double(p.radiusPx);
     MotionBlurReferenceResult r;
 
-    // Pass 1: scale to a radius, clamp the magnitude to k, encode to fp16 as the RGBA16F target
-    // stores it, then decode (the later passes only ever see the decoded fp16 value).
+    // Pass 1: scale to a radius, clamp the magnitude to k, encode and quantise to the grid the
+    // RGBA16F target holds exactly (sfx_shared_mb.h), then decode (the later passes only ever
+    // see the decoded value).
     r.radiusPx = VelocityGrid(w, h);
     Grid depth(w, h);
     for (uint32_t y = 0; y < h; ++y) {
@@ -66,7 +67,7 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
             const float scale = float(0.5 * p.exposure);
             const glm::dvec2 v = shared::mbClampVelocity(glm::dvec2(double(float(in[0]) * scale), double(float(in[1]) * scale)), k);
             for (int c = 0; c < 2; ++c) {
-                const double e = std::clamp(roundToHalf(mbEncodeVelocity(v[c], k)), 0.0, 1.0);
+                const double e = shared::mbQuantizeVelocityCode(mbEncodeVelocity(v[c], k));
                 r.radiusPx.at(x, y)[c] = mbDecodeVelocity(e, k);
             }
             depth.at(x, y) = std::min(shared::sfxLinearDepthOrFar(linearDepth.at(x, y), maxDepth), double(shared::SFX_MB_MAX_PACKED_DEPTH));
