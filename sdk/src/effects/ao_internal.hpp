@@ -20,3 +20,15 @@ inline bool mipGivesHalfDepth(const AoConfig& config, const TierProfile& profile
 }
 
 }  // namespace sfx::detail
+
+namespace sfx {
+
+template <class Record>
+Status AmbientObscurance::timed(size_t passIndex, Record&& record) {
+    if (passTimers_.empty()) return record();
+    SFX_TRY(device_.beginTimer(passTimers_[passIndex]));
+    SFX_TRY(record());
+    return device_.endTimer(passTimers_[passIndex]);
+}
+
+}  // namespace sfx
