@@ -103,6 +103,10 @@ constexpr ErrorEntry kTable[] = {
     {E::FeedbackLoop, C::InvalidArgument, "FeedbackLoop", "{}: mips {}+{} include mip {}, which the pass renders to ({}); allowed a range without it"},
     {E::MipUsedTwoWays, C::InvalidArgument, "MipUsedTwoWays", "{} uses mip {} of a texture that {} also uses as {}; allowed one use per mip in one command"},
 
+    {E::MotionBlurOutputSize, C::InvalidArgument, "MotionBlurOutputSize", "MotionBlurInputs.output is {}x{}; allowed {}x{}, the MotionBlur size"},
+    {E::MotionBlurOutputFormat, C::InvalidArgument, "MotionBlurOutputFormat", "MotionBlurInputs.output format is {}; allowed {}, the MotionBlurDesc.colorFormat"},
+    {E::MotionBlurOutputUsage, C::InvalidArgument, "MotionBlurOutputUsage", "MotionBlurInputs.output has usage {}; allowed a texture with usage render-target"},
+
     {E::ShaderInvalidSpirv, C::ShaderError, "ShaderInvalidSpirv", "program '{}' has invalid SPIR-V in its {} stage:\n{}"},
     {E::ShaderCompile, C::ShaderError, "ShaderCompile", "program '{}' failed to compile its {} stage ({}): {}"},
     {E::ShaderLink, C::ShaderError, "ShaderLink", "program '{}' failed to link ({}): {}"},

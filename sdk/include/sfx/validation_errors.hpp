@@ -103,6 +103,10 @@ enum class Error : uint32_t {
     BufferBindingBlockSize,
     FeedbackLoop,
     MipUsedTwoWays,
+    // Effect inputs the host hands over.
+    MotionBlurOutputSize,
+    MotionBlurOutputFormat,
+    MotionBlurOutputUsage,
     // Checks only some APIs make (see the comment at each use).
     ShaderInvalidSpirv,
     ShaderCompile,
