@@ -13,6 +13,8 @@
 #include "hal_fixture.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/motion_blur.hpp"
+#include "sfx/null_device.hpp"
+#include "sfx/validation_errors.hpp"
 
 #if __has_include("sfx/gl_device.hpp") && __has_include(<EGL/egl.h>) && __has_include(<GL/osmesa.h>)
 #define SFX_TEST_GL_IMPORT 1
@@ -263,6 +265,56 @@ TEST_CASE("gl import: motion blur writes a host texture, bit for bit as output()
     CHECK(d.takeValidationMessages().empty());
     wrapped.value().reset();
     hostGl.deleteTextures(1, &outName);
+    SFX_REQUIRE_OK(host.flush());
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+// Misuse of the GL host-integration entry points: each refusal is a row of the validation table
+// with its whole message (validation_cases.cpp lists these rows as covered here).
+TEST_CASE("gl entry points: no loader, no current context, a device of another API", "[gl][validation]") {
+    Device& host = test::device();
+    SFX_REQUIRE_OK(host.flush());  // the test device's context is current
+    const bool osmesa = test::backendConfig().platform == "osmesa";
+    gl::GetProcAddressFn loader = osmesa ? reinterpret_cast<gl::GetProcAddressFn>(&OSMesaGetProcAddress)
+                                         : reinterpret_cast<gl::GetProcAddressFn>(&eglGetProcAddress);
+    const gl::Api api = host.caps().backend == BackendKind::GLES ? gl::Api::GLES : gl::Api::DesktopGL;
+    auto refused = [](const Status& s, validation::Error rule, const std::string& expected) {
+        INFO(validation::entry(rule).name << " -> " << s.toString());
+        CHECK(s.code() == validation::entry(rule).code);
+        CHECK(s.message() == expected);
+    };
+    refused(gl::wrapCurrentContext(nullptr, api).status(), validation::Error::ExternalObjectNull,
+            "getProcAddress is null; allowed the host's GL loader");
+
+    // No context current on this thread: unbind the test device's, wrap, bind it again.
+    Status unbound;
+    if (osmesa) {
+        OSMesaContext ctx = OSMesaGetCurrentContext();
+        REQUIRE(ctx);
+        GLint w = 0, h = 0, format = 0;
+        void* buffer = nullptr;
+        REQUIRE(OSMesaGetColorBuffer(ctx, &w, &h, &format, &buffer));
+        REQUIRE(OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0));
+        unbound = gl::wrapCurrentContext(loader, api).status();
+        REQUIRE(OSMesaMakeCurrent(ctx, buffer, 0x1401 /* GL_UNSIGNED_BYTE */, w, h));
+    } else {
+        const EGLDisplay display = eglGetCurrentDisplay();
+        const EGLContext ctx = eglGetCurrentContext();
+        const EGLSurface draw = eglGetCurrentSurface(EGL_DRAW), read = eglGetCurrentSurface(EGL_READ);
+        REQUIRE(ctx != EGL_NO_CONTEXT);
+        REQUIRE(eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT));
+        unbound = gl::wrapCurrentContext(loader, api).status();
+        REQUIRE(eglMakeCurrent(display, draw, read, ctx));
+    }
+    refused(unbound, validation::Error::GlNoCurrentContext,
+            "wrapCurrentContext: no GL context is current on this thread (glGetString(GL_VERSION) is null); allowed a call "
+            "with the host's context current");
+
+    std::unique_ptr<Device> nullDevice = null::createDevice();
+    refused(gl::importTexture(*nullDevice, gl::ExternalTexture{}).status(), validation::Error::DeviceWrongApi,
+            "importTexture: device is a null device; allowed a GL or GL ES device");
+    refused(gl::nativeTexture(*nullDevice, TextureHandle{}).status(), validation::Error::DeviceWrongApi,
+            "nativeTexture: device is a null device; allowed a GL or GL ES device");
     SFX_REQUIRE_OK(host.flush());
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }

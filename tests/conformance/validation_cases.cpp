@@ -389,9 +389,14 @@ std::vector<DeviceCaps> craftedNullCaps() {
     return {lacking, vulkanLike, computeOnlyStorage, null::defaultCaps(CapabilityCeiling::GLES30)};
 }
 
-// Rows that need a host's own Vulkan command buffer; tests/vulkan/test_vulkan_external.cpp
-// records into one.
-static const std::set<Error> kHostCommandBufferRows = {Error::HostCommandBufferRead, Error::TimerHostPending};
+// Rows that need a host's own Vulkan objects or GL context, each with its case there: a host
+// command buffer (tests/vulkan/test_vulkan_external.cpp records into one), the host-integration
+// entry points (tests/vulkan/test_vulkan_entry_points.cpp; GlNoCurrentContext and DeviceWrongApi
+// of the GL calls in tests/conformance/test_gl_import.cpp).
+static const std::set<Error> kHostCommandBufferRows = {
+    Error::HostCommandBufferRead,    Error::TimerHostPending,   Error::ExternalObjectNull,
+    Error::ExternalQueueFamily,      Error::ExternalQueueFamilyFlags, Error::ExternalApiVersion,
+    Error::DeviceWrongApi,           Error::HostCommandBufferOwnDevice, Error::GlNoCurrentContext};
 
 void checkEveryRuleExercised(const std::set<validation::Error>& exercised) {
     std::set<Error> withCase;

@@ -115,6 +115,14 @@ enum class Error : uint32_t {
     ProgramTextureUnit,
     TimerPoolFull,
     TimerHostPending,
+    // The host-integration entry points (sfx/vulkan_device.hpp, sfx/gl_device.hpp).
+    ExternalObjectNull,
+    ExternalQueueFamily,
+    ExternalQueueFamilyFlags,
+    ExternalApiVersion,
+    DeviceWrongApi,
+    HostCommandBufferOwnDevice,
+    GlNoCurrentContext,
     Count
 };
 
