@@ -5,6 +5,8 @@
 
 #include "gl_driver.hpp"
 
+#include "sfx/validation_errors.hpp"
+
 namespace sfx::gl {
 namespace {
 
@@ -187,7 +189,13 @@ Result<std::unique_ptr<Device>> createDevice(Platform platform, Api api, const D
 }
 
 Result<std::unique_ptr<Device>> wrapCurrentContext(GetProcAddressFn getProcAddress, Api api, const DeviceOptions& options) {
-    if (!getProcAddress) return invalidArgument("getProcAddress", "null", "the host's GL loader");
+    using validation::Error;
+    if (!getProcAddress) return validation::fail(Error::ExternalObjectNull, {"getProcAddress", "the host's GL loader"});
+    // Without a current context every GL call would go nowhere (or crash): ask GL first.
+    using GetString = const unsigned char* (*)(uint32_t);
+    auto getString = reinterpret_cast<GetString>(getProcAddress("glGetString"));
+    if (!getString) return validation::fail(Error::ExternalObjectNull, {"getProcAddress(\"glGetString\")", "the host's GL loader"});
+    if (!getString(0x1F02 /* GL_VERSION */)) return validation::fail(Error::GlNoCurrentContext, {});
     // The host's context is current now; releasing an SDK context would unbind it.
     return finishDevice(hostPlatform(getProcAddress), api, options);
 }

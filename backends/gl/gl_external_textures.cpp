@@ -7,6 +7,8 @@
 #include "gl_driver.hpp"
 #include "gl_formats.hpp"
 
+#include "sfx/validation_errors.hpp"
+
 namespace sfx::gl {
 namespace {
 
@@ -36,8 +38,8 @@ Result<Format> resolveFormat(const ExternalTexture& e) {
 
 GlDevice* glDevice(Device& device) { return dynamic_cast<GlDevice*>(&device); }
 
-Status notGl(const Device& device) {
-    return invalidArgument("device", std::string("a ") + toString(device.caps().backend) + " device", "a GL or GL ES device");
+Status notGl(const char* call, const Device& device) {
+    return validation::fail(validation::Error::DeviceWrongApi, {call, toString(device.caps().backend), "GL or GL ES"});
 }
 
 }  // namespace
@@ -67,13 +69,13 @@ Result<NativeTexture> GlDevice::native(TextureHandle h) const {
 
 Result<TextureHandle> importTexture(Device& device, const ExternalTexture& texture) {
     GlDevice* gl = glDevice(device);
-    if (!gl) return notGl(device);
+    if (!gl) return notGl("importTexture", device);
     return gl->importExternal(texture);
 }
 
 Result<NativeTexture> nativeTexture(Device& device, TextureHandle texture) {
     GlDevice* gl = glDevice(device);
-    if (!gl) return notGl(device);
+    if (!gl) return notGl("nativeTexture", device);
     return gl->native(texture);
 }
 

@@ -8,6 +8,8 @@
 #include "vulkan_device_impl.hpp"
 #include "vulkan_formats.hpp"
 
+#include "sfx/validation_errors.hpp"
+
 namespace sfx::vulkan {
 namespace {
 
@@ -74,8 +76,8 @@ bool usedSinceHandBack(const AccessState& s, VkImageLayout hostLayout) {
 
 VulkanDevice* vulkanDevice(Device& device) { return dynamic_cast<VulkanDevice*>(&device); }
 
-Status notVulkan(const Device& device) {
-    return invalidArgument("device", std::string("a ") + toString(device.caps().backend) + " device", "a Vulkan device");
+Status notVulkan(const char* call, const Device& device) {
+    return validation::fail(validation::Error::DeviceWrongApi, {call, toString(device.caps().backend), "Vulkan"});
 }
 
 }  // namespace
@@ -178,13 +180,13 @@ Status VulkanDevice::forgetExternal(TextureHandle h, VulkanTexture& t) {
 
 Result<TextureHandle> importImage(Device& device, const ExternalImage& image) {
     VulkanDevice* vk = vulkanDevice(device);
-    if (!vk) return notVulkan(device);
+    if (!vk) return notVulkan("importImage", device);
     return vk->importExternal(image);
 }
 
 Result<NativeImage> nativeImage(Device& device, TextureHandle texture) {
     VulkanDevice* vk = vulkanDevice(device);
-    if (!vk) return notVulkan(device);
+    if (!vk) return notVulkan("nativeImage", device);
     return vk->native(texture);
 }
 

@@ -2,8 +2,13 @@
 // the physical device pick and the logical device, or the host's objects when wrapping; then the
 // per-device objects every command needs. Also the backend's public entry points.
 #include <cstring>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "vulkan_device_impl.hpp"
+
+#include "sfx/validation_errors.hpp"
 
 namespace sfx::vulkan {
 namespace {
@@ -188,24 +193,41 @@ Status VulkanDevice::createLogicalDevice(bool needsKhrDynamicRendering) {
 }
 
 Status VulkanDevice::initWrapped(const ExternalVulkan& ext, const DeviceOptions& options) {
-    if (!ext.getInstanceProcAddr) return invalidArgument("ExternalVulkan.getInstanceProcAddr", "null", "the host's vkGetInstanceProcAddr");
-    if (!ext.instance) return invalidArgument("ExternalVulkan.instance", "VK_NULL_HANDLE", "the host's VkInstance");
-    if (!ext.physicalDevice) return invalidArgument("ExternalVulkan.physicalDevice", "VK_NULL_HANDLE", "the host's VkPhysicalDevice");
-    if (!ext.device) return invalidArgument("ExternalVulkan.device", "VK_NULL_HANDLE", "the host's VkDevice");
-    if (!ext.queue) return invalidArgument("ExternalVulkan.queue", "VK_NULL_HANDLE", "a queue of the host's device");
+    using validation::Error;
+    if (!ext.getInstanceProcAddr) return validation::fail(Error::ExternalObjectNull, {"ExternalVulkan.getInstanceProcAddr", "the host's vkGetInstanceProcAddr"});
+    if (!ext.instance) return validation::fail(Error::ExternalObjectNull, {"ExternalVulkan.instance", "the host's VkInstance"});
+    if (!ext.physicalDevice) return validation::fail(Error::ExternalObjectNull, {"ExternalVulkan.physicalDevice", "the host's VkPhysicalDevice"});
+    if (!ext.device) return validation::fail(Error::ExternalObjectNull, {"ExternalVulkan.device", "the host's VkDevice"});
+    if (!ext.queue) return validation::fail(Error::ExternalObjectNull, {"ExternalVulkan.queue", "a queue of the host's device"});
     vk_.vkGetInstanceProcAddr = ext.getInstanceProcAddr;
     setup_.instance = ext.instance;
     setup_.ownsInstance = false;
     SFX_TRY(loadInstanceFunctions(vk_, setup_.instance));
     physical_ = ext.physicalDevice;
-    device_ = ext.device;
-    queue_ = ext.queue;
     queueFamily_ = ext.queueFamily;
     ownsDevice_ = false;
+    VkPhysicalDeviceProperties props{};
+    vk_.vkGetPhysicalDeviceProperties(physical_, &props);
+    if (props.apiVersion < VK_API_VERSION_1_1)
+        return validation::fail(Error::ExternalApiVersion, {std::to_string(VK_API_VERSION_MAJOR(props.apiVersion)),
+                                                            std::to_string(VK_API_VERSION_MINOR(props.apiVersion))});
     uint32_t qCount = 0;
     vk_.vkGetPhysicalDeviceQueueFamilyProperties(physical_, &qCount, nullptr);
     if (queueFamily_ >= qCount)
-        return invalidArgument("ExternalVulkan.queueFamily", std::to_string(queueFamily_), "[0, " + std::to_string(qCount) + ")");
+        return validation::fail(Error::ExternalQueueFamily, {std::to_string(queueFamily_), std::to_string(qCount - 1)});
+    std::vector<VkQueueFamilyProperties> families(qCount);
+    vk_.vkGetPhysicalDeviceQueueFamilyProperties(physical_, &qCount, families.data());
+    const VkQueueFlags needed = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+    if ((families[queueFamily_].queueFlags & needed) != needed) {
+        std::string flags;
+        for (const auto& [bit, name] : {std::pair{VK_QUEUE_GRAPHICS_BIT, "graphics"}, {VK_QUEUE_COMPUTE_BIT, "compute"},
+                                        {VK_QUEUE_TRANSFER_BIT, "transfer"}, {VK_QUEUE_SPARSE_BINDING_BIT, "sparse-binding"}})
+            if (families[queueFamily_].queueFlags & bit) flags += (flags.empty() ? "" : " | ") + std::string(name);
+        return validation::fail(Error::ExternalQueueFamilyFlags, {std::to_string(queueFamily_), flags.empty() ? "none" : flags});
+    }
+    // The device only now: a refusal above leaves nothing for the destructor to wait on.
+    device_ = ext.device;
+    queue_ = ext.queue;
     SFX_TRY(loadDeviceFunctions(vk_, device_));
     setup_.debugUtils = ext.debugUtilsEnabled;
     return finishInit(options, false);
@@ -290,7 +312,9 @@ Result<std::unique_ptr<Device>> wrapDevice(const ExternalVulkan& external, const
 
 Status setCommandBuffer(Device& device, VkCommandBuffer commandBuffer, bool previousFinished) {
     auto* vk = dynamic_cast<VulkanDevice*>(&device);
-    if (!vk) return invalidArgument("device", std::string("a ") + toString(device.caps().backend) + " device", "a Vulkan device");
+    if (!vk) return validation::fail(validation::Error::DeviceWrongApi, {"setCommandBuffer", toString(device.caps().backend), "Vulkan"});
+    // Only a wrapped device shares the host's VkDevice; VK_NULL_HANDLE (stop) is fine on either.
+    if (vk->ownsDevice_ && commandBuffer) return validation::fail(validation::Error::HostCommandBufferOwnDevice, {});
     return vk->setHostCommandBuffer(commandBuffer, previousFinished);
 }
 

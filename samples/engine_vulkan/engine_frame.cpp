@@ -130,22 +130,15 @@ Status EngineRenderer::recordFrame(VkCommandBuffer cb) {
     mb.color = litTex_;
     mb.depth = DepthSource{depthTex_, DepthKind::Hardware, camera_};
     mb.velocity = velocityTex_;
+    mb.output = blurredTex_;
     SFX_TRY(mb_->dispatch(mb, mbSettings_));
     SFX_TRY(sfx_->flush());
 
-    // 5. Present. output() is the SDK's own texture: the host samples it with its own barrier
-    //    from the state dispatch() leaves it in, and gives it back in that state afterwards so
-    //    the SDK's tracking stays true.
-    Result<vulkan::NativeImage> blurred = vulkan::nativeImage(*sfx_, mb_->output());
-    if (!blurred) return blurred.status();
-    const VkImageLayout sdkLayout = blurred->layout;  // COLOR_ATTACHMENT_OPTIMAL after dispatch
-    imageBarrier(cb, blurredImage_, VK_IMAGE_ASPECT_COLOR_BIT, sdkLayout, kRead, kColorOut,
-                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, kFragment, VK_ACCESS_SHADER_READ_BIT);
+    // 5. Present from the host's blurred image: flush() left it in its contract layout
+    //    (SHADER_READ_ONLY_OPTIMAL), visible to every later stage, so no barrier against the SDK.
     imageBarrier(cb, final_, kColor, kColor, kColorOut, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, kColorOut,
                  VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
     fullscreenPass(cb, final_, presentPipeline_, presentLayout_, presentSet_);
-    imageBarrier(cb, blurredImage_, VK_IMAGE_ASPECT_COLOR_BIT, kRead, sdkLayout, kFragment, 0, kColorOut,
-                 VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
     return Status::ok();
 }
 

@@ -113,6 +113,7 @@ Status EngineRenderer::createTargets() {
     SFX_TRY(host_.makeImage(VK_FORMAT_R8G8B8A8_UNORM, kGBufferUsage, w, h, &albedo_));
     SFX_TRY(host_.makeImage(VK_FORMAT_R16_SFLOAT, kGBufferUsage, w, h, &aoImage_));
     SFX_TRY(host_.makeImage(VK_FORMAT_R16G16B16A16_SFLOAT, kGBufferUsage, w, h, &lit_));
+    SFX_TRY(host_.makeImage(VK_FORMAT_R16G16B16A16_SFLOAT, kGBufferUsage, w, h, &blurred_));
     SFX_TRY(host_.makeImage(VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, w, h,
                             &final_));
     // Readback of the largest image (RGBA16F), for readImage() only.
@@ -125,7 +126,7 @@ Status EngineRenderer::createTargets() {
     bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     if (vkBeginCommandBuffer(cb_, &bi) != VK_SUCCESS) return {StatusCode::DeviceError, "vkBeginCommandBuffer failed"};
     for (HostImageKind k : {HostImageKind::Depth, HostImageKind::Normals, HostImageKind::Velocity, HostImageKind::Albedo,
-                            HostImageKind::Ao, HostImageKind::Lit, HostImageKind::Final})
+                            HostImageKind::Ao, HostImageKind::Lit, HostImageKind::Blurred, HostImageKind::Final})
         imageBarrier(cb_, image(k), VK_IMAGE_LAYOUT_UNDEFINED, contractLayout(k), VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
                      VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
     if (vkEndCommandBuffer(cb_) != VK_SUCCESS) return {StatusCode::DeviceError, "vkEndCommandBuffer failed"};
@@ -209,6 +210,7 @@ Status EngineRenderer::connectSdk() {
     SFX_TRY(import(HostImageKind::Velocity, kTextureSampled, &velocityTex_));
     SFX_TRY(import(HostImageKind::Ao, kTextureSampled | kTextureRenderTarget, &aoTex_));
     SFX_TRY(import(HostImageKind::Lit, kTextureSampled, &litTex_));
+    SFX_TRY(import(HostImageKind::Blurred, kTextureSampled | kTextureRenderTarget, &blurredTex_));
 
     const TierProfile& profile = tiers::profile(options_.tier);
     AoSettings ao;
@@ -229,10 +231,6 @@ Status EngineRenderer::connectSdk() {
     mb_ = std::move(mbEffect.value());
     // The velocity spans one frame: a shutter open for the whole frame interval.
     mbSettings_.exposure = 1.0f;
-    Result<vulkan::NativeImage> blurred = vulkan::nativeImage(*sfx_, mb_->output());
-    if (!blurred) return blurred.status();
-    blurredImage_ = blurred->image;
-    blurredView_ = blurred->view;
     return Status::ok();
 }
 
@@ -242,7 +240,7 @@ Status EngineRenderer::writeDescriptorSets() {
     const VkDescriptorImageInfo lighting[3] = {{sampler_, albedo_.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
                                                {sampler_, normals_.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
                                                {sampler_, aoImage_.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}};
-    const VkDescriptorImageInfo blurred{sampler_, blurredView_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    const VkDescriptorImageInfo blurred{sampler_, blurred_.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     std::vector<VkWriteDescriptorSet> writes(3, VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET});
     writes[0].dstSet = gbufferSet_;
     writes[0].descriptorCount = 1;
@@ -268,6 +266,7 @@ const HostImage& EngineRenderer::image(HostImageKind kind) const {
         case HostImageKind::Albedo: return albedo_;
         case HostImageKind::Ao: return aoImage_;
         case HostImageKind::Lit: return lit_;
+        case HostImageKind::Blurred: return blurred_;
         case HostImageKind::Final: break;
     }
     return final_;
@@ -307,7 +306,7 @@ EngineRenderer::~EngineRenderer() {
     if (sampler_) vkDestroySampler(d, sampler_, nullptr);
     if (fence_) vkDestroyFence(d, fence_, nullptr);
     if (pool_) vkDestroyCommandPool(d, pool_, nullptr);
-    for (HostImage* i : {&depth_, &normals_, &velocity_, &albedo_, &aoImage_, &lit_, &final_}) host_.destroy(*i);
+    for (HostImage* i : {&depth_, &normals_, &velocity_, &albedo_, &aoImage_, &lit_, &blurred_, &final_}) host_.destroy(*i);
     for (HostBuffer* b : {&vertices_, &indices_, &sceneUniforms_, &readback_}) host_.destroy(*b);
 }
 

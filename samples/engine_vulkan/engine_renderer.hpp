@@ -9,7 +9,7 @@
 //      from the previous frame's camera and bunny transform to this frame's), albedo (RGBA8);
 //   2. SDK: AO of depth + normals into the host's AO image (R16F);
 //   3. host lighting pass: albedo x (ambient x AO + sun) into the host's lit image (RGBA16F);
-//   4. SDK: motion blur of the lit image along the velocity (into the SDK's output texture);
+//   4. SDK: motion blur of the lit image along the velocity, into the host's blurred image;
 //   5. host present pass: the blurred colour, gamma-encoded, into the host's RGBA8 image.
 // AO comes before motion blur because it is part of the shading that moves with the surface.
 #pragma once
@@ -34,7 +34,7 @@ struct EngineOptions {
 };
 
 // The host images the renderer can read back (outside the frame loop).
-enum class HostImageKind { Depth, Normals, Velocity, Albedo, Ao, Lit, Final };
+enum class HostImageKind { Depth, Normals, Velocity, Albedo, Ao, Lit, Blurred, Final };
 
 class EngineRenderer {
 public:
@@ -100,7 +100,7 @@ private:
     glm::dmat4 view_{1.0}, previousView_{1.0};
     CameraProjection camera_;
     HostBuffer vertices_, indices_, sceneUniforms_, readback_;
-    HostImage depth_, normals_, velocity_, albedo_, aoImage_, lit_, final_;
+    HostImage depth_, normals_, velocity_, albedo_, aoImage_, lit_, blurred_, final_;
     VkSampler sampler_ = VK_NULL_HANDLE;
     VkDescriptorSetLayout gbufferSetLayout_ = VK_NULL_HANDLE, lightingSetLayout_ = VK_NULL_HANDLE,
                           presentSetLayout_ = VK_NULL_HANDLE;
@@ -116,12 +116,10 @@ private:
 
     // The SDK on the host's device, and the host's images as SDK textures.
     std::unique_ptr<Device> sfx_;
-    TextureHandle depthTex_, normalTex_, velocityTex_, aoTex_, litTex_;
+    TextureHandle depthTex_, normalTex_, velocityTex_, aoTex_, litTex_, blurredTex_;
     std::unique_ptr<AmbientObscurance> ao_;
     std::unique_ptr<MotionBlur> mb_;
     MotionBlurSettings mbSettings_;
-    VkImage blurredImage_ = VK_NULL_HANDLE;  // motion blur's output(): the SDK's own texture
-    VkImageView blurredView_ = VK_NULL_HANDLE;
 };
 
 }  // namespace sfx::engine

@@ -103,6 +103,10 @@ constexpr ErrorEntry kTable[] = {
     {E::FeedbackLoop, C::InvalidArgument, "FeedbackLoop", "{}: mips {}+{} include mip {}, which the pass renders to ({}); allowed a range without it"},
     {E::MipUsedTwoWays, C::InvalidArgument, "MipUsedTwoWays", "{} uses mip {} of a texture that {} also uses as {}; allowed one use per mip in one command"},
 
+    {E::MotionBlurOutputSize, C::InvalidArgument, "MotionBlurOutputSize", "MotionBlurInputs.output is {}x{}; allowed {}x{}, the MotionBlur size"},
+    {E::MotionBlurOutputFormat, C::InvalidArgument, "MotionBlurOutputFormat", "MotionBlurInputs.output format is {}; allowed {}, the MotionBlurDesc.colorFormat"},
+    {E::MotionBlurOutputUsage, C::InvalidArgument, "MotionBlurOutputUsage", "MotionBlurInputs.output has usage {}; allowed a texture with usage render-target"},
+
     {E::ShaderInvalidSpirv, C::ShaderError, "ShaderInvalidSpirv", "program '{}' has invalid SPIR-V in its {} stage:\n{}"},
     {E::ShaderCompile, C::ShaderError, "ShaderCompile", "program '{}' failed to compile its {} stage ({}): {}"},
     {E::ShaderLink, C::ShaderError, "ShaderLink", "program '{}' failed to link ({}): {}"},
@@ -110,6 +114,14 @@ constexpr ErrorEntry kTable[] = {
     {E::ProgramTextureUnit, C::InvalidArgument, "ProgramTextureUnit", "program '{}' samples '{}' at binding {}; allowed bindings [0, {}], the texture units of this device"},
     {E::TimerPoolFull, C::InvalidArgument, "TimerPoolFull", "createTimer: all {} timers of the device are in use; allowed after destroying one"},
     {E::TimerHostPending, C::InvalidArgument, "TimerHostPending", "readTimer: the host command buffer holding the timer has not finished; allowed once the host's submit has completed"},
+
+    {E::ExternalObjectNull, C::InvalidArgument, "ExternalObjectNull", "{} is null; allowed {}"},
+    {E::ExternalQueueFamily, C::InvalidArgument, "ExternalQueueFamily", "ExternalVulkan.queueFamily is {}; allowed [0, {}], the queue families of ExternalVulkan.physicalDevice"},
+    {E::ExternalQueueFamilyFlags, C::InvalidArgument, "ExternalQueueFamilyFlags", "ExternalVulkan.queueFamily is {}, a family with flags {}; allowed a family with graphics and compute"},
+    {E::ExternalApiVersion, C::InvalidArgument, "ExternalApiVersion", "ExternalVulkan.physicalDevice supports Vulkan {}.{}; allowed 1.1 or later (1.3, or 1.1 with VK_KHR_dynamic_rendering)"},
+    {E::DeviceWrongApi, C::InvalidArgument, "DeviceWrongApi", "{}: device is a {} device; allowed a {} device"},
+    {E::HostCommandBufferOwnDevice, C::InvalidArgument, "HostCommandBufferOwnDevice", "setCommandBuffer: device is the SDK's own Vulkan device (vulkan::createDevice), whose VkDevice no host command buffer belongs to; allowed a device from vulkan::wrapDevice"},
+    {E::GlNoCurrentContext, C::InvalidArgument, "GlNoCurrentContext", "wrapCurrentContext: no GL context is current on this thread (glGetString(GL_VERSION) is null); allowed a call with the host's context current"},
 };
 static_assert(std::size(kTable) == size_t(Error::Count), "one row per validation::Error");
 

@@ -12,6 +12,9 @@
 #include "analytic_scenes.hpp"
 #include "hal_fixture.hpp"
 #include "sfx/ao.hpp"
+#include "sfx/motion_blur.hpp"
+#include "sfx/null_device.hpp"
+#include "sfx/validation_errors.hpp"
 
 #if __has_include("sfx/gl_device.hpp") && __has_include(<EGL/egl.h>) && __has_include(<GL/osmesa.h>)
 #define SFX_TEST_GL_IMPORT 1
@@ -21,6 +24,7 @@
 
 #include "sfx/gl_device.hpp"
 #include "sfx/half.hpp"
+#include "effect_runs.hpp"
 #endif
 
 #ifdef SFX_TEST_GL_IMPORT
@@ -196,6 +200,121 @@ TEST_CASE("gl import: AO reads a host depth texture and writes a host texture", 
     CHECK(hostGl.isTexture(outName));  // nor does the device's teardown delete it
     hostGl.deleteTextures(1, &depthName);
     hostGl.deleteTextures(1, &outName);
+    SFX_REQUIRE_OK(host.flush());
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+// Motion blur into a host texture (MotionBlurInputs::output): the host's RGBA16F texture holds
+// exactly the bits of the effect's own output() from the same inputs, and the SDK never deletes it.
+TEST_CASE("gl import: motion blur writes a host texture, bit for bit as output()", "[gl][import][motion_blur]") {
+    Device& host = test::device();
+    SFX_REQUIRE_OK(host.flush());  // the test device's context is now current: play the host
+    const bool osmesa = test::backendConfig().platform == "osmesa";
+    gl::GetProcAddressFn loader = osmesa ? reinterpret_cast<gl::GetProcAddressFn>(&OSMesaGetProcAddress)
+                                         : reinterpret_cast<gl::GetProcAddressFn>(&eglGetProcAddress);
+    HostGl hostGl(loader);
+    REQUIRE(hostGl.isTexture);
+    DeviceOptions options;
+    options.ceiling = host.caps().ceiling;
+    options.validation = true;
+    const gl::Api api = host.caps().backend == BackendKind::GLES ? gl::Api::GLES : gl::Api::DesktopGL;
+    Result<std::unique_ptr<Device>> wrapped = gl::wrapCurrentContext(loader, api, options);
+    INFO(wrapped.status().toString());
+    REQUIRE(wrapped.isOk());
+    Device& d = *wrapped.value();
+
+    const reference::Scene scene = test::movingAndStillLayersScene();
+    const reference::SceneFrame f = scene.render(0);
+    const uint32_t w = scene.width, h = scene.height;
+    const uint32_t outName = hostGl.texture(0x881A /* GL_RGBA16F */, w, h);
+    gl::ExternalTexture oe;
+    oe.name = outName;
+    oe.internalFormat = 0x881A;
+    oe.width = w;
+    oe.height = h;
+    oe.usage = kTextureSampled | kTextureRenderTarget;
+    Result<TextureHandle> outTex = gl::importTexture(d, oe);
+    INFO(outTex.status().toString());
+    REQUIRE(outTex.isOk());
+
+    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {w, h, test::tierProfile(), Format::RGBA16F, DepthKind::Linear});
+    INFO(mb.status().toString());
+    REQUIRE(mb.isOk());
+    test::MotionBlurGpuInputs in(d, f.color, f.depth, &f.velocity);
+    MotionBlurSettings s;
+    s.maxRadiusPx = 7;
+    s.referenceRows = 0;
+    MotionBlurInputs inputs{in.color, {in.depth, DepthKind::Linear, test::motionBlurTestCamera(w, h)}, in.velocity, {}, {}};
+    const size_t bytes = size_t(w) * h * 8;
+    auto read = [&](TextureHandle t) {
+        std::vector<uint16_t> texels(bytes / 2);
+        SFX_REQUIRE_OK(d.readTexture(t, 0, texels.data(), bytes));
+        return texels;
+    };
+    SFX_REQUIRE_OK(mb.value()->dispatch(inputs, s));
+    const std::vector<uint16_t> own = read(mb.value()->output());
+    inputs.output = outTex.value();
+    SFX_REQUIRE_OK(mb.value()->dispatch(inputs, s));
+    const std::vector<uint16_t> imported = read(outTex.value());
+    CHECK(imported == own);
+    CHECK(imported != read(in.color));  // the scene blurs: not a copy of the input
+
+    mb.value().reset();
+    SFX_REQUIRE_OK(d.destroyTexture(outTex.value()));
+    CHECK(hostGl.isTexture(outName));
+    CHECK(d.takeValidationMessages().empty());
+    wrapped.value().reset();
+    hostGl.deleteTextures(1, &outName);
+    SFX_REQUIRE_OK(host.flush());
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+// Misuse of the GL host-integration entry points: each refusal is a row of the validation table
+// with its whole message (validation_cases.cpp lists these rows as covered here).
+TEST_CASE("gl entry points: no loader, no current context, a device of another API", "[gl][validation]") {
+    Device& host = test::device();
+    SFX_REQUIRE_OK(host.flush());  // the test device's context is current
+    const bool osmesa = test::backendConfig().platform == "osmesa";
+    gl::GetProcAddressFn loader = osmesa ? reinterpret_cast<gl::GetProcAddressFn>(&OSMesaGetProcAddress)
+                                         : reinterpret_cast<gl::GetProcAddressFn>(&eglGetProcAddress);
+    const gl::Api api = host.caps().backend == BackendKind::GLES ? gl::Api::GLES : gl::Api::DesktopGL;
+    auto refused = [](const Status& s, validation::Error rule, const std::string& expected) {
+        INFO(validation::entry(rule).name << " -> " << s.toString());
+        CHECK(s.code() == validation::entry(rule).code);
+        CHECK(s.message() == expected);
+    };
+    refused(gl::wrapCurrentContext(nullptr, api).status(), validation::Error::ExternalObjectNull,
+            "getProcAddress is null; allowed the host's GL loader");
+
+    // No context current on this thread: unbind the test device's, wrap, bind it again.
+    Status unbound;
+    if (osmesa) {
+        OSMesaContext ctx = OSMesaGetCurrentContext();
+        REQUIRE(ctx);
+        GLint w = 0, h = 0, format = 0;
+        void* buffer = nullptr;
+        REQUIRE(OSMesaGetColorBuffer(ctx, &w, &h, &format, &buffer));
+        REQUIRE(OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0));
+        unbound = gl::wrapCurrentContext(loader, api).status();
+        REQUIRE(OSMesaMakeCurrent(ctx, buffer, 0x1401 /* GL_UNSIGNED_BYTE */, w, h));
+    } else {
+        const EGLDisplay display = eglGetCurrentDisplay();
+        const EGLContext ctx = eglGetCurrentContext();
+        const EGLSurface draw = eglGetCurrentSurface(EGL_DRAW), read = eglGetCurrentSurface(EGL_READ);
+        REQUIRE(ctx != EGL_NO_CONTEXT);
+        REQUIRE(eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT));
+        unbound = gl::wrapCurrentContext(loader, api).status();
+        REQUIRE(eglMakeCurrent(display, draw, read, ctx));
+    }
+    refused(unbound, validation::Error::GlNoCurrentContext,
+            "wrapCurrentContext: no GL context is current on this thread (glGetString(GL_VERSION) is null); allowed a call "
+            "with the host's context current");
+
+    std::unique_ptr<Device> nullDevice = null::createDevice();
+    refused(gl::importTexture(*nullDevice, gl::ExternalTexture{}).status(), validation::Error::DeviceWrongApi,
+            "importTexture: device is a null device; allowed a GL or GL ES device");
+    refused(gl::nativeTexture(*nullDevice, TextureHandle{}).status(), validation::Error::DeviceWrongApi,
+            "nativeTexture: device is a null device; allowed a GL or GL ES device");
     SFX_REQUIRE_OK(host.flush());
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }

@@ -10,6 +10,7 @@
 #include "sfx/half.hpp"
 #include "sfx/motion_blur.hpp"
 #include "sfx/reference/motion_blur_reference.hpp"
+#include "sfx/validation_errors.hpp"
 #include "effect_runs.hpp"
 #include "skips.hpp"
 #include "test_device.hpp"
@@ -256,6 +257,60 @@ TEST_CASE("motion blur: bad inputs are named errors", "[motion_blur][conformance
     const Plan plan = mb.value()->plan();
     CHECK(plan.passes.size() == 5);  // linearize + 4 motion blur passes
     CHECK(plan.bytesOf("motion_blur") > 0);
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+// The host's output texture gets exactly the bits of the effect's own: the same passes, only the
+// last one's target differs. A texture of the wrong size, format or usage is refused with the
+// validation table's row (validation_cases.cpp has its parity case), and a refused dispatch
+// leaves the host's texture alone.
+TEST_CASE("motion blur: a host output texture gets the bits of output()", "[motion_blur][conformance]") {
+    Device& d = test::device();
+    const Scene scene = test::movingAndStillLayersScene();
+    const SceneFrame f = scene.render(0);
+    const uint32_t w = scene.width, h = scene.height;
+    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {w, h, test::tierProfile(), Format::RGBA16F, DepthKind::Linear});
+    REQUIRE(mb.isOk());
+    test::MotionBlurGpuInputs in(d, toHalfGrid(f.color), f.depth, &f.velocity);
+    MotionBlurInputs inputs{in.color, {in.depth, DepthKind::Linear, testCamera(w, h)}, in.velocity, {}, {}};
+    const MotionBlurSettings s = pixelSettings(7);
+    const size_t bytes = size_t(w) * h * 8;
+    auto read = [&](TextureHandle t) {
+        std::vector<uint16_t> texels(bytes / 2);
+        SFX_REQUIRE_OK(d.readTexture(t, 0, texels.data(), bytes));
+        return texels;
+    };
+    SFX_REQUIRE_OK(mb.value()->dispatch(inputs, s));
+    const std::vector<uint16_t> own = read(mb.value()->output());
+
+    TextureHandle host = d.createTexture({w, h, 1, Format::RGBA16F, kTextureSampled | kTextureRenderTarget, "host output"}).value();
+    const std::vector<uint16_t> marker(bytes / 2, floatToHalf(-3.0f));
+    SFX_REQUIRE_OK(d.writeTexture(host, 0, marker.data(), bytes));
+    SFX_REQUIRE_OK(d.writeTexture(mb.value()->output(), 0, marker.data(), bytes));
+    inputs.output = host;
+    SFX_REQUIRE_OK(mb.value()->dispatch(inputs, s));
+    CHECK(read(host) == own);
+    CHECK(read(mb.value()->output()) == marker);  // the effect's own texture is not written
+    size_t moved = 0;
+    for (size_t i = 0; i < own.size(); i += 4) moved += halfToFloat(own[i]) != float(roundToHalf(f.color.values[i / 4][0]));
+    CHECK(moved > 0);  // the scene blurs: not a copy of the input
+
+    TextureHandle small = d.createTexture({w / 2, h, 1, Format::RGBA16F, kTextureSampled | kTextureRenderTarget}).value();
+    TextureHandle rgba8 = d.createTexture({w, h, 1, Format::RGBA8, kTextureSampled | kTextureRenderTarget}).value();
+    TextureHandle sampledOnly = d.createTexture({w, h, 1, Format::RGBA16F, kTextureSampled}).value();
+    SFX_REQUIRE_OK(d.writeTexture(host, 0, marker.data(), bytes));
+    const std::pair<TextureHandle, validation::Error> refusals[] = {{small, validation::Error::MotionBlurOutputSize},
+                                                                    {rgba8, validation::Error::MotionBlurOutputFormat},
+                                                                    {sampledOnly, validation::Error::MotionBlurOutputUsage}};
+    for (const auto& [texture, rule] : refusals) {
+        inputs.output = texture;
+        const Status st = mb.value()->dispatch(inputs, s);
+        INFO(validation::entry(rule).name << ": " << st.toString());
+        CHECK(st.code() == StatusCode::InvalidArgument);
+        CHECK(st.message().rfind("MotionBlurInputs.output", 0) == 0);
+    }
+    CHECK(read(host) == marker);
+    for (TextureHandle t : {host, small, rgba8, sampledOnly}) SFX_REQUIRE_OK(d.destroyTexture(t));
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
 

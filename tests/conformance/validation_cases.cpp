@@ -6,7 +6,9 @@
 #include <set>
 #include <string_view>
 
+#include "sfx/motion_blur.hpp"
 #include "sfx/null_device.hpp"
+#include "sfx/tiers.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_test_shaders.hpp"
 
@@ -95,6 +97,27 @@ Format firstLacking(const std::array<bool, size_t(Format::Count)>& has) {
     return Format::Undefined;
 }
 CompiledProgram copyProgram() { return shaderProgram("copy", Tier::Current); }
+
+// A 16x8 RGBA16F motion blur of the current tier dispatched into a host output of this size,
+// format and usage; the colour and depth inputs are valid.
+bool motionBlurRuns(const Caps& c) {
+    return c.renderableFormat[size_t(Format::RGBA16F)] && c.renderableFormat[size_t(Format::RG16F)] &&
+           c.sampledFormat[size_t(Format::D32F)];
+}
+Status motionBlurInto(Objects& o, uint32_t w, uint32_t h, Format format, uint32_t usage) {
+    MotionBlurDesc desc;
+    desc.width = 16;
+    desc.height = 8;
+    desc.profile = tiers::profile(Tier::Current);
+    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(o.dev, desc);
+    INFO("MotionBlur::create: " << mb.status().toString());
+    REQUIRE(mb.isOk());
+    MotionBlurInputs in;
+    in.color = o.texture(16, 8, Format::RGBA16F, kTextureSampled);
+    in.depth.texture = o.texture(16, 8, Format::D32F, kTextureSampled);
+    in.output = o.texture(w, h, format, usage);
+    return mb.value()->dispatch(in);
+}
 
 std::vector<ValidationCase> makeCases() {
     std::vector<ValidationCase> v;
@@ -269,6 +292,17 @@ std::vector<ValidationCase> makeCases() {
             p.stages[1].glsl[size_t(o.dev.caps().dialect)].clear();
             return tryProgram(o, p);
         });
+
+    // ---- Effect inputs ---------------------------------------------------------------------
+    add("motion blur output of another size", Error::MotionBlurOutputSize, motionBlurRuns,
+        fixed("MotionBlurInputs.output is 8x8; allowed 16x8, the MotionBlur size"),
+        [](Objects& o) { return motionBlurInto(o, 8, 8, Format::RGBA16F, kRenderable); });
+    add("motion blur output of another format", Error::MotionBlurOutputFormat, motionBlurRuns,
+        fixed("MotionBlurInputs.output format is RGBA8; allowed RGBA16F, the MotionBlurDesc.colorFormat"),
+        [](Objects& o) { return motionBlurInto(o, 16, 8, Format::RGBA8, kRenderable); });
+    add("motion blur output that is not a render target", Error::MotionBlurOutputUsage, motionBlurRuns,
+        fixed("MotionBlurInputs.output has usage sampled; allowed a texture with usage render-target"),
+        [](Objects& o) { return motionBlurInto(o, 16, 8, Format::RGBA16F, kTextureSampled); });
     return v;
 }
 
@@ -355,9 +389,14 @@ std::vector<DeviceCaps> craftedNullCaps() {
     return {lacking, vulkanLike, computeOnlyStorage, null::defaultCaps(CapabilityCeiling::GLES30)};
 }
 
-// Rows that need a host's own Vulkan command buffer; tests/vulkan/test_vulkan_external.cpp
-// records into one.
-static const std::set<Error> kHostCommandBufferRows = {Error::HostCommandBufferRead, Error::TimerHostPending};
+// Rows that need a host's own Vulkan objects or GL context, each with its case there: a host
+// command buffer (tests/vulkan/test_vulkan_external.cpp records into one), the host-integration
+// entry points (tests/vulkan/test_vulkan_entry_points.cpp; GlNoCurrentContext and DeviceWrongApi
+// of the GL calls in tests/conformance/test_gl_import.cpp).
+static const std::set<Error> kHostCommandBufferRows = {
+    Error::HostCommandBufferRead,    Error::TimerHostPending,   Error::ExternalObjectNull,
+    Error::ExternalQueueFamily,      Error::ExternalQueueFamilyFlags, Error::ExternalApiVersion,
+    Error::DeviceWrongApi,           Error::HostCommandBufferOwnDevice, Error::GlNoCurrentContext};
 
 void checkEveryRuleExercised(const std::set<validation::Error>& exercised) {
     std::set<Error> withCase;

@@ -7,7 +7,6 @@
 // SFX_SKY_DEPTH, or the far plane) is 1.
 #pragma once
 
-#include <functional>
 #include <memory>
 #include <optional>
 
@@ -182,8 +181,10 @@ private:
     AoConfig config_;
     std::unique_ptr<LinearDepth> depth_;
     // Records one pass, bracketed by its plan() timer while profiling (ao_half_res.cpp has the
-    // half-resolution passes).
-    Status timed(size_t passIndex, const std::function<Status()>& record);
+    // half-resolution passes). A template defined in ao_internal.hpp, next to its only callers:
+    // each pass's lambda is called directly, with no std::function to allocate per pass.
+    template <class Record>
+    Status timed(size_t passIndex, Record&& record);
     Status allocateHalfRes();
     Status recordHalfDepth(size_t passIndex);
     Status recordUpsample(const AoInputs& in, Format outFormat, TextureHandle source, size_t passIndex);

@@ -100,6 +100,12 @@ struct MotionBlurInputs {
     // Null: camera-only velocity from depth and `camera`.
     TextureHandle velocity;
     CameraMotion camera;     // read only when velocity is null
+    // Where the blurred colour goes. Null: the effect's own output() texture. Else a texture of
+    // the host's (created, or imported with sfx::vulkan::importImage / sfx::gl::importTexture):
+    // the MotionBlur size, the desc's colorFormat, usage including kTextureRenderTarget, and not
+    // `color` itself (the last pass samples color while it writes here). Wrong size, format or
+    // usage: InvalidArgument naming MotionBlurInputs.output and what is allowed.
+    TextureHandle output;
 };
 
 struct MotionBlurDesc {
@@ -122,11 +128,13 @@ public:
     MotionBlur(const MotionBlur&) = delete;
     MotionBlur& operator=(const MotionBlur&) = delete;
 
-    // Records the passes; the result is in output() once the device flushes.
+    // Records the passes; the result is in inputs.output, or output() when that is null, once
+    // the device flushes.
     Status dispatch(const MotionBlurInputs& inputs, const MotionBlurSettings& settings = {});
     Status resize(uint32_t width, uint32_t height);
 
-    TextureHandle output() const { return output_; }         // colorFormat, width x height
+    // The effect's own output: colorFormat, width x height; written by dispatches without inputs.output.
+    TextureHandle output() const { return output_; }
     TextureHandle packedVelocity() const { return packed_; }  // RGBA16F, for debugging views
     TextureHandle neighborMax() const { return neighborMax_; }
     const MotionBlurDesc& desc() const { return desc_; }

@@ -103,6 +103,10 @@ enum class Error : uint32_t {
     BufferBindingBlockSize,
     FeedbackLoop,
     MipUsedTwoWays,
+    // Effect inputs the host hands over.
+    MotionBlurOutputSize,
+    MotionBlurOutputFormat,
+    MotionBlurOutputUsage,
     // Checks only some APIs make (see the comment at each use).
     ShaderInvalidSpirv,
     ShaderCompile,
@@ -111,6 +115,14 @@ enum class Error : uint32_t {
     ProgramTextureUnit,
     TimerPoolFull,
     TimerHostPending,
+    // The host-integration entry points (sfx/vulkan_device.hpp, sfx/gl_device.hpp).
+    ExternalObjectNull,
+    ExternalQueueFamily,
+    ExternalQueueFamilyFlags,
+    ExternalApiVersion,
+    DeviceWrongApi,
+    HostCommandBufferOwnDevice,
+    GlNoCurrentContext,
     Count
 };
 

@@ -371,13 +371,6 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
     return Status::ok();
 }
 
-Status AmbientObscurance::timed(size_t passIndex, const std::function<Status()>& record) {
-    if (passTimers_.empty()) return record();
-    SFX_TRY(device_.beginTimer(passTimers_[passIndex]));
-    SFX_TRY(record());
-    return device_.endTimer(passTimers_[passIndex]);
-}
-
 Plan AmbientObscurance::plan() const {
     Plan plan;
     if (depth_) plan = depth_->plan();

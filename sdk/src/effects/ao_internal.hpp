@@ -40,3 +40,15 @@ void appendDepthLayerBindings(std::vector<TextureBinding>& bindings, const AoInp
                               const TierProfile& profile, const TextureBinding& passDepth);
 
 }  // namespace sfx::detail
+
+namespace sfx {
+
+template <class Record>
+Status AmbientObscurance::timed(size_t passIndex, Record&& record) {
+    if (passTimers_.empty()) return record();
+    SFX_TRY(device_.beginTimer(passTimers_[passIndex]));
+    SFX_TRY(record());
+    return device_.endTimer(passTimers_[passIndex]);
+}
+
+}  // namespace sfx

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "effect_common.hpp"
+#include "sfx/validation_errors.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared.h"
 #include "sfx_shared_mb.h"
@@ -239,6 +240,20 @@ Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings
                                                    " differs from MotionBlurDesc.colorFormat " + toString(desc_.colorFormat)};
     if (!(color->usage & kTextureSampled)) return invalidArgument("MotionBlurInputs.color usage", "without kTextureSampled", "a sampled texture");
 
+    // The host's output, or the effect's own (checked at creation).
+    const TextureHandle target = in.output.isNull() ? output_ : in.output;
+    if (!in.output.isNull()) {
+        Result<TextureDesc> out = device_.textureDesc(in.output);
+        if (!out) return Status{out.status().code(), "MotionBlurInputs.output: " + out.status().message()};
+        if (out->width != desc_.width || out->height != desc_.height)
+            return validation::fail(validation::Error::MotionBlurOutputSize, {std::to_string(out->width), std::to_string(out->height),
+                                                                              std::to_string(desc_.width), std::to_string(desc_.height)});
+        if (out->format != desc_.colorFormat)
+            return validation::fail(validation::Error::MotionBlurOutputFormat, {toString(out->format), toString(desc_.colorFormat)});
+        if (!(out->usage & kTextureRenderTarget))
+            return validation::fail(validation::Error::MotionBlurOutputUsage, {validation::textureUsageNames(out->usage)});
+    }
+
     const bool cameraOnly = in.velocity.isNull();
     if (!cameraOnly) {
         Result<TextureDesc> vel = device_.textureDesc(in.velocity);
@@ -329,7 +344,7 @@ Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings
                         TextureBinding{gen::mb_reconstruct::uPacked, packed_, 0, 1, {}},
                         TextureBinding{gen::mb_reconstruct::uNeighborMax, neighborMax_, 0, 1, {}}};
     recBind.uniformBuffers = {BufferBinding{gen::mb_reconstruct::MbReconstructParams, reconstructParams_, 0, 0}};
-    return run(output_, "sfx-mb-reconstruct", reconstructPipeline.value(), recBind);
+    return run(target, "sfx-mb-reconstruct", reconstructPipeline.value(), recBind);
 }
 
 Plan MotionBlur::plan(const MotionBlurSettings& settings) const {
