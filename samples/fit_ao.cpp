@@ -8,6 +8,7 @@
 // comes from the same cache as bench_trade. A program, not a test.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -40,6 +41,8 @@ struct Options {
     std::vector<std::string> techniques{"alchemy", "scalable", "crease"};
     std::string cacheDir = "build/truth-cache", outDir = "docs";
     uint32_t refinements = 5;  // levels of the fine search (its step halves at each)
+    std::vector<std::string> tiers{"high", "current"};
+    bool diagnose = false;     // score the tier defaults' variants instead of fitting
 };
 
 // A searched parameter: a field of AoSettings, its range and whether the search steps in log space.
@@ -149,6 +152,42 @@ Result<AoSettings> fit(samples::AoEvaluator& ev, const AoSettings& start, const 
     return settingsAt(best);
 }
 
+
+// Where a technique's error at the tier's defaults comes from: the held-out score of the default
+// and of variants that each change one thing (no blur: how much noise the blur hides; 4x the
+// taps: the noise left; full resolution: what half resolution costs; no screen-radius clamp).
+Status diagnose(samples::AoEvaluator& ev, Tier tier, AoTechnique technique, const std::vector<samples::AoCase>& heldOut) {
+    const TierProfile base = tiers::choose(ev.device().caps(), tier)->profile;
+    struct Variant {
+        const char* name;
+        std::function<void(AoSettings&, TierProfile&)> apply;
+    };
+    const std::vector<Variant> variants{
+        {"default", [](AoSettings&, TierProfile&) {}},
+        {"blur off", [](AoSettings& s, TierProfile&) { s.blur = false; }},
+        {"4x taps", [&](AoSettings& s, TierProfile& p) {
+             if (technique != AoTechnique::Crease) s.samples = std::min(64u, 4 * (technique == AoTechnique::Alchemy ? p.aoAlchemySamples : p.aoScalableTaps));
+         }},
+        {"full resolution", [](AoSettings& s, TierProfile&) { s.resolution = AoResolution::Full; }},
+        {"no radius clamp", [](AoSettings&, TierProfile& p) { p.aoScalableMaxRadiusPx = 0; }},
+        {"radius clamp doubled", [](AoSettings&, TierProfile& p) { p.aoScalableMaxRadiusPx *= 2; }},
+    };
+    for (const Variant& v : variants) {
+        AoSettings s;
+        s.technique = technique;
+        s.normals = AoNormals::FromTexture;
+        TierProfile p = base;
+        v.apply(s, p);
+        ev.setProfile(p);
+        Result<samples::AoScore> r = ev.score(s, heldOut);
+        if (!r) return r.status();
+        std::cout << "  diagnose " << toString(tier) << "/" << toString(technique) << " " << v.name << ": held out " << fixed(r->psnr, 2) << " / "
+                  << fixed(r->psnrOccluded, 2) << " dB, signed error occluded " << fixed(r->signedOccluded, 3) << std::endl;
+    }
+    ev.setProfile(base);
+    return Status::ok();
+}
+
 struct FitRow {
     std::string tier, technique, fitted;
     AoSettings settings;
@@ -197,6 +236,8 @@ int main(int argc, char** argv) {
     app.add_option("--backend", o.backend, "vulkan, gles, gl, gl-egl, gl-osmesa (the backends agree)")->capture_default_str();
     app.add_option("--techniques", o.techniques, "comma-separated: alchemy, scalable, crease")->delimiter(',')->capture_default_str();
     app.add_option("--refinements", o.refinements, "halvings of the fine search's step")->capture_default_str();
+    app.add_option("--tiers", o.tiers, "comma-separated: high, current")->delimiter(',')->capture_default_str();
+    app.add_flag("--diagnose", o.diagnose, "score variants of the tier defaults on the held-out views instead of fitting");
     app.add_option("--cache-dir", o.cacheDir, "where truth images are cached")->capture_default_str();
     app.add_option("--out-dir", o.outDir, "ao_fit.csv and trade.md (tables between its fit_ao markers)")->capture_default_str();
     CLI11_PARSE(app, argc, argv);
@@ -225,6 +266,7 @@ int main(int argc, char** argv) {
     std::vector<FitRow> rows;
     std::string machine;
     for (Tier tier : {Tier::High, Tier::Current}) {
+        if (std::find(o.tiers.begin(), o.tiers.end(), toString(tier)) == o.tiers.end()) continue;
         Result<std::unique_ptr<Device>> dev = samples::openForTier(config, tier);
         if (!dev) {
             std::cout << "fit_ao: skipping " << toString(tier) << ": " << dev.status().toString() << std::endl;
@@ -244,6 +286,13 @@ int main(int argc, char** argv) {
                 return 1;
             }
             const std::string label = std::string(toString(tier)) + "/" + name;
+            if (o.diagnose) {
+                if (Status st = diagnose(ev, tier, technique, heldOut.value()); !st) {
+                    std::cerr << "fit_ao: " << label << ": " << st.toString() << "\n";
+                    return 1;
+                }
+                continue;
+            }
             const AoSettings start = startingSettings(technique);
             Result<AoSettings> fitted = fit(ev, start, training.value(), o, label);
             Result<samples::AoScore> before = fitted ? ev.score(start, heldOut.value()) : Result<samples::AoScore>(fitted.status());
@@ -259,6 +308,7 @@ int main(int argc, char** argv) {
                       << "; no AO " << fixed(none["held-out"].psnr, 2) << " / " << fixed(none["held-out"].psnrOccluded, 2) << ")" << std::endl;
         }
     }
+    if (o.diagnose) return 0;
     std::filesystem::create_directories(o.outDir);
     std::ofstream csv(o.outDir + "/ao_fit.csv");
     csv << "tier,technique,intensity,contrast,bias,crease_range,crease_bias,training_psnr_db,training_psnr_occluded_db,heldout_psnr_db,"

@@ -58,6 +58,7 @@ public:
     Result<std::vector<truth::Comparison>> run(AoSettings settings, const std::vector<AoCase>& cases);
     Result<AoScore> score(const AoSettings& settings, const std::vector<AoCase>& cases);
     size_t evaluations() const { return evaluations_; }
+    Device& device() const { return dev_; }
 
 private:
     Device& dev_;

@@ -53,11 +53,20 @@ std::vector<size_t> paretoFront(const std::vector<PlotPoint>& points) {
     return front;
 }
 
+std::vector<size_t> dominating(const std::vector<PlotPoint>& points, const PlotPoint& anchor) {
+    std::vector<size_t> out;
+    for (size_t i = 0; i < points.size(); ++i)
+        if (points[i].x <= anchor.x && points[i].y >= anchor.y) out.push_back(i);
+    return out;
+}
+
 std::string renderSvg(const Plot& plot) {
     double x0 = 0, x1 = 1, y0 = 0, y1 = 1;
-    if (!plot.points.empty()) {
+    std::vector<PlotPoint> all = plot.points;
+    all.insert(all.end(), plot.anchors.begin(), plot.anchors.end());
+    if (!all.empty()) {
         x0 = y0 = INFINITY, x1 = y1 = -INFINITY;
-        for (const PlotPoint& p : plot.points) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+        for (const PlotPoint& p : all) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
         x0 = 0;  // costs from zero, so ratios read true
         const double padY = std::max(0.5, 0.05 * (y1 - y0));
         y0 -= padY, y1 += padY, x1 *= 1.05;
@@ -92,10 +101,33 @@ std::string renderSvg(const Plot& plot) {
     for (const PlotPoint& p : plot.points)
         svg << "<circle cx=\"" << num(sx(p.x)) << "\" cy=\"" << num(sy(p.y)) << "\" r=\"4\" fill=\"" << colours[p.series] << "\"/><text x=\""
             << num(sx(p.x) + 6) << "\" y=\"" << num(sy(p.y) - 5) << "\" font-size=\"9\" fill=\"#333\">" << escape(p.label) << "</text>\n";
+    // A hollow diamond of half-diagonal 6 at (cx, cy).
+    auto diamond = [&](double cx, double cy) {
+        svg << "<polygon points=\"" << num(cx) << "," << num(cy - 6) << " " << num(cx + 6) << "," << num(cy) << " " << num(cx) << "," << num(cy + 6) << " "
+            << num(cx - 6) << "," << num(cy) << "\" fill=\"none\" stroke=\"#000\" stroke-width=\"1.5\"/>";
+    };
+    for (const PlotPoint& p : plot.anchors) {
+        diamond(sx(p.x), sy(p.y));
+        svg << "<text x=\"" << num(sx(p.x) + 8) << "\" y=\"" << num(sy(p.y) + 12) << "\" font-size=\"9\" fill=\"#000\">" << escape(p.label) << "</text>\n";
+    }
     double ly = kTop + 10;
     for (const auto& [series, colour] : colours) {
         svg << "<circle cx=\"" << kLeft + pw + 20 << "\" cy=\"" << ly << "\" r=\"4\" fill=\"" << colour << "\"/><text x=\"" << kLeft + pw + 30
             << "\" y=\"" << ly + 4 << "\">" << escape(series) << "</text>\n";
+        ly += 18;
+    }
+    std::vector<std::string> anchorSeries;
+    for (const PlotPoint& p : plot.anchors)
+        if (std::find(anchorSeries.begin(), anchorSeries.end(), p.series) == anchorSeries.end()) anchorSeries.push_back(p.series);
+    for (const std::string& series : anchorSeries) {
+        // Long entries (a quoted source) wrap at a parenthesis onto a second line.
+        const size_t paren = series.find(" (");
+        diamond(kLeft + pw + 20, ly);
+        svg << "<text x=\"" << kLeft + pw + 30 << "\" y=\"" << ly + 4 << "\">" << escape(series.substr(0, paren)) << "</text>\n";
+        if (paren != std::string::npos) {
+            ly += 13;
+            svg << "<text x=\"" << kLeft + pw + 30 << "\" y=\"" << ly + 4 << "\" font-size=\"9\">" << escape(series.substr(paren + 1)) << "</text>\n";
+        }
         ly += 18;
     }
     svg << "<line x1=\"" << kLeft + pw + 12 << "\" y1=\"" << ly << "\" x2=\"" << kLeft + pw + 28 << "\" y2=\"" << ly

@@ -19,10 +19,17 @@ struct PlotPoint {
 struct Plot {
     std::string title, xLabel, yLabel;
     std::vector<PlotPoint> points;
+    // Reference points from elsewhere (figures quoted, not measured in this run): drawn as
+    // hollow black diamonds under their own legend entry (their series), inside the axes' range,
+    // never part of the non-dominated line.
+    std::vector<PlotPoint> anchors;
 };
 
 // Indices of the non-dominated points, ordered by increasing cost.
 std::vector<size_t> paretoFront(const std::vector<PlotPoint>& points);
+
+// Indices of the points that dominate `anchor`: at least as accurate (y >=) for no more cost (x <=).
+std::vector<size_t> dominating(const std::vector<PlotPoint>& points, const PlotPoint& anchor);
 
 // The plot as an SVG document (800 x 500 user units).
 std::string renderSvg(const Plot& plot);

@@ -162,7 +162,7 @@ TEST_CASE("ao settings resolve to the tier table", "[ao]") {
     CHECK(sCur.samples == 4);
     CHECK(sCur.mirrored);
     CHECK(sCur.halfResolution);
-    CHECK(sCur.maxRadiusPx == Approx(10));
+    CHECK(sCur.maxRadiusPx == Approx(20));  // in texels of the pass's depth: the same at half size
     CHECK(sCur.depthMipLevels == 1);
     CHECK(sCur.blurRadius == 1);
     const AoConfig sCurFull = configFor(AoTechnique::Scalable, Tier::Current, 1.0, true, 0.5, AoResolution::Full);

@@ -29,3 +29,29 @@ TEST_CASE("svg plot: the document has every point, the front and escaped text", 
     CHECK(svg.find("A &amp; B &lt;test&gt;") != std::string::npos);
     CHECK(svg.find("<test>") == std::string::npos);
 }
+
+TEST_CASE("svg plot: a point dominates an anchor when at least as accurate for no more cost", "[trade]") {
+    const std::vector<PlotPoint> points = {{10, 25, "a", "s"}, {5, 20, "b", "s"}, {13, 26, "c", "s"}, {14, 30, "d", "s"}};
+    CHECK(dominating(points, {13, 26, "anchor", "x"}) == std::vector<size_t>{2});  // equal on both counts dominates
+    CHECK(dominating(points, {9, 24, "anchor", "x"}).empty());  // b is cheaper but less accurate, a more accurate but dearer
+    CHECK(dominating(points, {20, 20, "anchor", "x"}) == std::vector<size_t>{0, 1, 2, 3});
+    CHECK(dominating({}, {1, 1, "anchor", "x"}).empty());
+}
+
+TEST_CASE("svg plot: anchors are drawn as diamonds with their legend, outside the front", "[trade]") {
+    Plot plot{"t", "cost", "PSNR", {{1, 20, "low", "alchemy"}, {2, 25, "high", "alchemy"}}};
+    plot.anchors = {{1.5, 30, "ref M", "Ref (quoted, not run)"}, {3, 31, "ref H", "Ref (quoted, not run)"}};
+    const std::string svg = renderSvg(plot);
+    size_t diamonds = 0;
+    for (size_t at = svg.find("<polygon"); at != std::string::npos; at = svg.find("<polygon", at + 1)) ++diamonds;
+    CHECK(diamonds == 2 + 1);  // the anchors and one legend mark for their series
+    CHECK(svg.find("ref M") != std::string::npos);
+    CHECK(svg.find("quoted, not run)") != std::string::npos);
+    // The anchors are above every point: were they on the front, the line would end at x = 3.
+    const size_t line = svg.find("<polyline");
+    REQUIRE(line != std::string::npos);
+    const std::string points = svg.substr(line, svg.find("/>", line) - line);
+    size_t commas = 0;
+    for (char c : points) commas += c == ',';
+    CHECK(commas == 2);  // two points on the front: the measured ones
+}

@@ -62,7 +62,7 @@ TierProfile currentDefault() {
     p.tier = Tier::Current;
     p.aoScalableTaps = 4;  // mirrored: 2 offsets, each also negated
     p.aoScalableMirrored = true;
-    p.aoScalableMaxRadiusPx = 20.0f;
+    p.aoScalableMaxRadiusPx = 20.0f;  // texels of the pass's depth (half size: 40 output pixels)
     p.aoUsesDepthMip = false;
     p.aoDepthMipLevels = 1;
     p.aoAlchemySamples = 6;
@@ -70,7 +70,8 @@ TierProfile currentDefault() {
     // The look fitted against ray-traced truth (samples/fit_ao, docs/trade.md); before the
     // calibration every tier had the papers' 1, 1, 1e-4 / 0.02, range 1, bias 0.25.
     p.aoLook[0] = {.intensity = 0.472871f, .contrast = 1.38237f, .bias = 3.70406e-6f};                             // alchemy
-    p.aoLook[1] = {.intensity = 3.70852f, .contrast = 10.0f, .bias = 0.398438f};                                // scalable
+    // Scalable refitted at half resolution with the 20 px clamp in half-size texels (samples/fit_ao).
+    p.aoLook[1] = {.intensity = 4.47214f, .contrast = 4.21697f, .bias = 0.3125f};                               // scalable
     p.aoLook[2] = {.intensity = 3.22266f, .contrast = 4.21697f, .bias = 0, .creaseRange = 0.5516f, .creaseBias = 0.238152f};  // crease
     p.aoPackedDepthTarget = true;  // ao_blur.frag reads the key packed in the RGBA8 AO target
     // Obscurance and blur at half size, a depth-aware upsample last: the cost goal of issue 10
@@ -123,11 +124,11 @@ Preset variant(const char* name, TierProfile p, AoRes res, uint32_t alchemy, uin
 // samples/trade_presets (tools/run_trade.sh) on llvmpipe; the figures of docs/trade.md.
 std::vector<Preset> currentPresets() {
     const TierProfile d = currentDefault();
-    return {{kDefaultPreset, d, {{26.97, 23.79, 24.07}, 31.05}},
-            variant("low", d, AoRes::Half, 3, 2, 1, 5, 8.0f, {{26.03, 23.50, 24.07}, 28.69}),
-            variant("medium", d, AoRes::Half, 6, 4, 2, 7, 10.0f, {{26.97, 23.79, 24.07}, 31.05}),
-            variant("high", d, AoRes::Half, 10, 6, 3, 9, 14.0f, {{27.26, 24.15, 24.10}, 33.79}),
-            variant("ultra", d, AoRes::Full, 16, 10, 4, 13, 18.0f, {{27.64, 24.00, 22.84}, 34.77})};
+    return {{kDefaultPreset, d, {{26.97, 24.45, 24.07}, 31.05}},
+            variant("low", d, AoRes::Half, 3, 2, 1, 5, 8.0f, {{26.03, 24.23, 24.07}, 28.69}),
+            variant("medium", d, AoRes::Half, 6, 4, 2, 7, 10.0f, {{26.97, 24.45, 24.07}, 31.05}),
+            variant("high", d, AoRes::Half, 10, 6, 3, 9, 14.0f, {{27.26, 25.07, 24.10}, 33.79}),
+            variant("ultra", d, AoRes::Full, 16, 10, 4, 13, 18.0f, {{27.64, 24.03, 22.84}, 34.77})};
 }
 
 std::vector<Preset> highPresets() {

@@ -14,6 +14,7 @@ struct AoFlags {
     DeviceFlags device;
     CameraFlags camera;
     std::string technique = "scalable";
+    std::string resolution = "tier";
     std::string normalsPath;
     std::string outPath;
     float radius = 0.5f, intensity = -1.0f, contrast = -1.0f, bias = -1.0f;
@@ -29,6 +30,8 @@ int runAo(const AoFlags& f) {
     AoSettings s;
     if (!parseAoTechnique(f.technique, &s.technique))
         return fail(cmd, invalidArgument("--technique", "'" + f.technique + "'", "alchemy, scalable or crease"));
+    if (!parseAoResolution(f.resolution, &s.resolution))
+        return fail(cmd, invalidArgument("--resolution", "'" + f.resolution + "'", "tier, full or half"));
     s.radius = f.radius;
     s.intensity = f.intensity;
     s.contrast = f.contrast;
@@ -96,7 +99,8 @@ int runAo(const AoFlags& f) {
     Result<std::string> png = writePngBeside(f.outPath, image);
     if (!png) return fail(cmd, png.status());
     std::cout << "sfx ao: " << toString(s.technique) << " on " << dev.caps().summary() << ", tier " << toString(opened->tier.tier)
-              << ", " << w << "x" << h << " -> " << f.outPath << " and " << png.value() << "\n";
+              << ", " << w << "x" << h << ", AO at " << (ao.value()->config().halfResolution ? "half" : "full")
+              << " resolution -> " << f.outPath << " and " << png.value() << "\n";
     if (f.showPlan) std::cout << ao.value()->plan().describe();
     return 0;
 }
@@ -111,6 +115,10 @@ Command addAoCommand(CLI::App& app) {
     flags->device.add(*c.app);
     flags->camera.add(*c.app);
     c.app->add_option("--technique", flags->technique, "alchemy | scalable | crease")->capture_default_str();
+    c.app->add_option("--resolution", flags->resolution,
+                      "tier | full | half: where obscurance and blur run; half = half size, then a depth-aware upsample; "
+                      "tier = the tier preset's")
+        ->capture_default_str();
     c.app->add_option("--normals", flags->normalsPath,
                       "view-space normals file (x right, y up, camera looking down -z; signed float xyz in PFM/EXR)");
     c.app->add_option("--radius", flags->radius, "world-space radius, [1e-4, 1000]")->capture_default_str();

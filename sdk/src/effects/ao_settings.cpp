@@ -153,7 +153,9 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
             c.samples = s.samples ? s.samples : profile.aoScalableTaps;
             c.mirrored = profile.aoScalableMirrored;
             c.spiralTurns = c.mirrored ? shared::SFX_AO_SPIRAL_TURNS_MIRRORED : shared::SFX_AO_SPIRAL_TURNS_SPIRAL;
-            c.maxRadiusPx = profile.aoScalableMaxRadiusPx * (c.halfResolution ? 0.5 : 1.0);
+            // The clamp bounds a tap's reach in texels of the pass's depth (the texture cache, the
+            // paper's reason): at half size the same 20 texels, not half of them.
+            c.maxRadiusPx = profile.aoScalableMaxRadiusPx;
             c.depthMipLevels = profile.aoUsesDepthMip ? std::max(1u, std::min(profile.aoDepthMipLevels, mipLevelsAllowed)) : 1;
             // At half size the pass reads the pyramid from level 1: one level fewer of its own.
             if (c.halfResolution) c.depthMipLevels = std::max(1u, c.depthMipLevels - 1);
