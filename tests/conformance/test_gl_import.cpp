@@ -240,6 +240,7 @@ TEST_CASE("gl import: motion blur writes a host texture, bit for bit as output()
     Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {w, h, test::tierProfile(), Format::RGBA16F, DepthKind::Linear});
     INFO(mb.status().toString());
     REQUIRE(mb.isOk());
+    {  // the inputs live on the wrapped device: released before it is
     test::MotionBlurGpuInputs in(d, f.color, f.depth, &f.velocity);
     MotionBlurSettings s;
     s.maxRadiusPx = 7;
@@ -258,6 +259,7 @@ TEST_CASE("gl import: motion blur writes a host texture, bit for bit as output()
     const std::vector<uint16_t> imported = read(outTex.value());
     CHECK(imported == own);
     CHECK(imported != read(in.color));  // the scene blurs: not a copy of the input
+    }
 
     mb.value().reset();
     SFX_REQUIRE_OK(d.destroyTexture(outTex.value()));
@@ -283,7 +285,7 @@ TEST_CASE("gl entry points: no loader, no current context, a device of another A
         CHECK(s.code() == validation::entry(rule).code);
         CHECK(s.message() == expected);
     };
-    refused(gl::wrapCurrentContext(nullptr, api).status(), validation::Error::ExternalObjectNull,
+    refused(gl::wrapCurrentContext(nullptr, api, DeviceOptions{}).status(), validation::Error::ExternalObjectNull,
             "getProcAddress is null; allowed the host's GL loader");
 
     // No context current on this thread: unbind the test device's, wrap, bind it again.
@@ -295,7 +297,7 @@ TEST_CASE("gl entry points: no loader, no current context, a device of another A
         void* buffer = nullptr;
         REQUIRE(OSMesaGetColorBuffer(ctx, &w, &h, &format, &buffer));
         REQUIRE(OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0));
-        unbound = gl::wrapCurrentContext(loader, api).status();
+        unbound = gl::wrapCurrentContext(loader, api, DeviceOptions{}).status();
         REQUIRE(OSMesaMakeCurrent(ctx, buffer, 0x1401 /* GL_UNSIGNED_BYTE */, w, h));
     } else {
         const EGLDisplay display = eglGetCurrentDisplay();
@@ -303,7 +305,7 @@ TEST_CASE("gl entry points: no loader, no current context, a device of another A
         const EGLSurface draw = eglGetCurrentSurface(EGL_DRAW), read = eglGetCurrentSurface(EGL_READ);
         REQUIRE(ctx != EGL_NO_CONTEXT);
         REQUIRE(eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT));
-        unbound = gl::wrapCurrentContext(loader, api).status();
+        unbound = gl::wrapCurrentContext(loader, api, DeviceOptions{}).status();
         REQUIRE(eglMakeCurrent(display, draw, read, ctx));
     }
     refused(unbound, validation::Error::GlNoCurrentContext,
