@@ -120,26 +120,6 @@ Result<scene::Scene> loadScene(const std::string& name, uint32_t heavyLayers) {
     return scene::loadSceneFile(std::string(SFX_SAMPLE_SCENES_DIR) + "/" + name + ".json");
 }
 
-// The opaque objects as the samples' raster pass draws them (as the scene renderer does).
-samples::Scene opaqueScene(const scene::Scene& in) {
-    samples::Scene out;
-    out.name = in.path;
-    out.eye = in.camera.position;
-    out.target = in.camera.target;
-    out.up = in.camera.up;
-    out.fovYDegrees = in.camera.fovYDegrees;
-    out.nearPlane = in.camera.nearPlane;
-    out.farPlane = in.camera.farPlane;
-    for (const scene::SceneObject& o : in.objects) {
-        if (o.translucent()) continue;
-        samples::Mesh m(in.meshes[o.meshIndex]);
-        m.model = o.world;
-        const double code = o.shading == scene::Shading::Unlit ? shared::SFX_RASTER_SHADING_UNLIT : shared::SFX_RASTER_SHADING_LAMBERT;
-        m.surface = glm::dvec4(o.color, code);
-        out.meshes.push_back(std::move(m));
-    }
-    return out;
-}
 
 // The translucent objects as TransparentDraws, one vertex buffer per object (owned by `buffers`).
 Result<std::vector<TransparentDraw>> transparentDraws(Device& dev, const scene::Scene& file, std::vector<BufferHandle>& buffers) {
@@ -289,7 +269,7 @@ Status benchBackend(Device& dev, const std::string& backend, const Options& o, s
     for (const std::string& name : o.scenes) {
         Result<scene::Scene> file = loadScene(name, o.heavyLayers);
         if (!file) return file.status();
-        const samples::Scene opaque = opaqueScene(file.value());
+        const samples::Scene opaque = samples::opaqueScene(file.value());
         SFX_TRY(raster.value()->load(opaque));
         Result<samples::GBuffer> g = raster.value()->render(opaque, o.width, o.height);
         if (!g) return g.status();

@@ -67,6 +67,26 @@ Result<CameraProjection> Scene::projection(uint32_t width, uint32_t height, Clip
 
 std::vector<std::string> sceneNames() { return {"corner", "steps", "columns", "contact", "bunny"}; }
 
+Scene opaqueScene(const scene::Scene& in) {
+    Scene out;
+    out.name = in.path;
+    out.eye = in.camera.position;
+    out.target = in.camera.target;
+    out.up = in.camera.up;
+    out.fovYDegrees = in.camera.fovYDegrees;
+    out.nearPlane = in.camera.nearPlane;
+    out.farPlane = in.camera.farPlane;
+    for (const scene::SceneObject& o : in.objects) {
+        if (o.translucent()) continue;
+        Mesh m(in.meshes[o.meshIndex]);
+        m.model = o.world;
+        const double code = o.shading == scene::Shading::Unlit ? shared::SFX_RASTER_SHADING_UNLIT : shared::SFX_RASTER_SHADING_LAMBERT;
+        m.surface = glm::dvec4(o.color, code);
+        out.meshes.push_back(std::move(m));
+    }
+    return out;
+}
+
 Result<Scene> makeScene(const std::string& name) {
     Scene s;
     s.name = name;

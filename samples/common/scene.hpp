@@ -11,6 +11,7 @@
 #include "sfx/camera.hpp"
 #include "sfx/hal.hpp"
 #include "sfx/mesh_primitives.hpp"
+#include "sfx/scene_file.hpp"
 
 namespace sfx::samples {
 
@@ -46,6 +47,10 @@ struct Scene {
 // (package glmark2-data), InvalidArgument naming the known scenes for anything else.
 Result<Scene> makeScene(const std::string& name);
 std::vector<std::string> sceneNames();
+// The opaque objects of a scene file as the raster pass draws them (what `sfx render`, its
+// depth peel and the truth see): one mesh per object, placed by its world matrix, with its
+// colour and shading code; the file's camera.
+Scene opaqueScene(const scene::Scene& file);
 
 // A G-buffer rendered by the device at mid-shutter, row 0 = top of the picture.
 struct GBuffer {

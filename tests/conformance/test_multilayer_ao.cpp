@@ -204,23 +204,6 @@ namespace {
 
 std::string scenePath(const char* name) { return std::string(SFX_SOURCE_DIR) + "/tests/data/scenes/" + name; }
 
-// What `sfx render` draws for the scene, as the truth needs it (the renderer's opaque meshes).
-samples::Scene samplesScene(const scene::Scene& in) {
-    samples::Scene out;
-    out.name = in.path;
-    out.eye = in.camera.position;
-    out.target = in.camera.target;
-    out.up = in.camera.up;
-    out.fovYDegrees = in.camera.fovYDegrees;
-    out.nearPlane = in.camera.nearPlane;
-    out.farPlane = in.camera.farPlane;
-    for (const scene::SceneObject& o : in.objects) {
-        samples::Mesh m(in.meshes[o.meshIndex]);
-        m.model = o.world;
-        out.meshes.push_back(std::move(m));
-    }
-    return out;
-}
 
 }  // namespace
 
@@ -253,7 +236,7 @@ TEST_CASE("multilayer ao: depth peeling recovers the contact shadow a foreground
     const std::vector<float> single = renderAo(1), multi = renderAo(2);
     const uint32_t w = file->width, h = file->height;
 
-    Result<samples::TruthScene> ts = samples::makeTruthScene(samplesScene(file.value()), w, h);
+    Result<samples::TruthScene> ts = samples::makeTruthScene(samples::opaqueScene(file.value()), w, h);
     REQUIRE(ts.isOk());
     Result<std::unique_ptr<truth::Tracer>> tracer = truth::Tracer::create(ts->geometry);
     if (!tracer && tracer.status().code() == StatusCode::BackendUnavailable) SFX_SKIP("Embree: " << tracer.status().message());

@@ -26,27 +26,6 @@ std::string mib(uint64_t bytes) {
     return s.str();
 }
 
-// The opaque objects as the samples' raster pass draws them: one mesh per object, placed by
-// its world matrix, with its colour and shading code.
-samples::Scene opaqueScene(const scene::Scene& in) {
-    samples::Scene out;
-    out.name = in.path;
-    out.eye = in.camera.position;
-    out.target = in.camera.target;
-    out.up = in.camera.up;
-    out.fovYDegrees = in.camera.fovYDegrees;
-    out.nearPlane = in.camera.nearPlane;
-    out.farPlane = in.camera.farPlane;
-    for (const scene::SceneObject& o : in.objects) {
-        if (o.translucent()) continue;
-        samples::Mesh m(in.meshes[o.meshIndex]);
-        m.model = o.world;
-        const double code = o.shading == scene::Shading::Unlit ? shared::SFX_RASTER_SHADING_UNLIT : shared::SFX_RASTER_SHADING_LAMBERT;
-        m.surface = glm::dvec4(o.color, code);
-        out.meshes.push_back(std::move(m));
-    }
-    return out;
-}
 
 std::string aoPassWhy(const PlannedPass& p) {
     if (p.name == "linearize") return "linear depth from the hardware depth, which the AO taps read";
@@ -163,7 +142,7 @@ Result<std::unique_ptr<SceneRender>> SceneRender::create(Device& device, const t
     auto impl = std::make_unique<Impl>(device, tier, file, options);
     impl->width = options.width ? options.width : file.width;
     impl->height = options.height ? options.height : file.height;
-    impl->scene = opaqueScene(file);
+    impl->scene = samples::opaqueScene(file);
     for (size_t i = 0; i < file.objects.size(); ++i)
         if (file.objects[i].translucent()) impl->transparent.push_back(i);
     for (const samples::Mesh& m : impl->scene.meshes) impl->triangles += uint32_t(m.indices.size() / 3);
