@@ -1,6 +1,6 @@
 // fit_ao: calibrates the AO techniques' default settings against ray-traced ground truth (issue 10,
 // item 3). For each tier x technique it searches intensity and contrast (and Alchemy's and
-// Scalable's bias, crease's range and bias) coarse to fine, maximising the mean PSNR over the
+// Scalable's bias and sum exponent, crease's range and bias) coarse to fine, maximising the mean PSNR over the
 // frame plus the mean PSNR where the truth is below 0.95, on the TRAINING views
 // (samples/common/trade_views.*) at radii 0.25-2 with the blur on (the default); then it scores
 // the fitted settings and today's defaults on HELD-OUT views the search never saw. Writes
@@ -43,6 +43,7 @@ struct Options {
     uint32_t refinements = 5;  // levels of the fine search (its step halves at each)
     std::vector<std::string> tiers{"high", "current"};
     bool diagnose = false;     // score the tier defaults' variants instead of fitting
+    std::string start = "paper";  // where the search starts: the papers' look, or the tier table's
 };
 
 // A searched parameter: a field of AoSettings, its range and whether the search steps in log space.
@@ -65,7 +66,10 @@ std::vector<Parameter> parametersOf(AoTechnique t) {
     std::vector<Parameter> p{{"intensity", &AoSettings::intensity, nullptr, 0.05, 20.0, true},
                              {"contrast", &AoSettings::contrast, nullptr, 0.1, 10.0, true}};
     if (t == AoTechnique::Alchemy) p.push_back({"bias", &AoSettings::bias, nullptr, 1e-7, 0.3, true});
-    if (t == AoTechnique::Scalable) p.push_back({"bias", &AoSettings::bias, nullptr, 0.0, 0.5, false});
+    if (t == AoTechnique::Scalable) {
+        p.push_back({"bias", &AoSettings::bias, nullptr, 0.0, 0.5, false});
+        p.push_back({"sumExponent", &AoSettings::sumExponent, nullptr, 0.5, 4.0, true});
+    }
     if (t == AoTechnique::Crease) {
         // crease.averager divides what intensity multiplies: searching both would be searching one.
         p.push_back({"crease.range", nullptr, &AoCreaseSettings::range, 0.05, 10.0, true});
@@ -83,6 +87,18 @@ AoSettings startingSettings(AoTechnique t) {
     s.intensity = 1.0f, s.contrast = 1.0f;
     s.bias = t == AoTechnique::Alchemy ? kAoAlchemyDefaultBias : t == AoTechnique::Scalable ? kAoScalableDefaultBias : 0.0f;
     s.crease.range = 1.0f, s.crease.bias = 0.25f;
+    if (t == AoTechnique::Scalable) s.sumExponent = kAoScalableCourseSumExponent;
+    return s;
+}
+
+// The tier table's look for t, as explicit settings (a refit that starts where the last one ended).
+AoSettings tierSettings(AoTechnique t, const TierProfile& profile) {
+    AoSettings s = startingSettings(t);
+    const AoLook& look = profile.aoLook[uint32_t(t)];
+    s.intensity = look.intensity, s.contrast = look.contrast;
+    if (t != AoTechnique::Crease) s.bias = look.bias;
+    if (t == AoTechnique::Scalable) s.sumExponent = look.sumExponent;
+    s.crease.range = look.creaseRange, s.crease.bias = look.creaseBias;
     return s;
 }
 
@@ -237,6 +253,9 @@ int main(int argc, char** argv) {
     app.add_option("--techniques", o.techniques, "comma-separated: alchemy, scalable, crease")->delimiter(',')->capture_default_str();
     app.add_option("--refinements", o.refinements, "halvings of the fine search's step")->capture_default_str();
     app.add_option("--tiers", o.tiers, "comma-separated: high, current")->delimiter(',')->capture_default_str();
+    app.add_option("--start", o.start, "where the search starts: paper (the papers' look) or tier (the tier table's)")
+        ->check(CLI::IsMember({"paper", "tier"}))
+        ->capture_default_str();
     app.add_flag("--diagnose", o.diagnose, "score variants of the tier defaults on the held-out views instead of fitting");
     app.add_option("--cache-dir", o.cacheDir, "where truth images are cached")->capture_default_str();
     app.add_option("--out-dir", o.outDir, "ao_fit.csv and trade.md (tables between its fit_ao markers)")->capture_default_str();
@@ -293,7 +312,8 @@ int main(int argc, char** argv) {
                 }
                 continue;
             }
-            const AoSettings start = startingSettings(technique);
+            const AoSettings start = o.start == "tier" ? tierSettings(technique, tiers::choose(dev.value()->caps(), tier)->profile)
+                                                       : startingSettings(technique);
             Result<AoSettings> fitted = fit(ev, start, training.value(), o, label);
             Result<samples::AoScore> before = fitted ? ev.score(start, heldOut.value()) : Result<samples::AoScore>(fitted.status());
             Result<samples::AoScore> trained = before ? ev.score(fitted.value(), training.value()) : Result<samples::AoScore>(before.status());
@@ -311,12 +331,12 @@ int main(int argc, char** argv) {
     if (o.diagnose) return 0;
     std::filesystem::create_directories(o.outDir);
     std::ofstream csv(o.outDir + "/ao_fit.csv");
-    csv << "tier,technique,intensity,contrast,bias,crease_range,crease_bias,training_psnr_db,training_psnr_occluded_db,heldout_psnr_db,"
+    csv << "tier,technique,intensity,contrast,bias,sum_exponent,crease_range,crease_bias,training_psnr_db,training_psnr_occluded_db,heldout_psnr_db,"
            "heldout_psnr_occluded_db,heldout_signed_error_occluded,before_heldout_psnr_db,before_heldout_psnr_occluded_db,none_heldout_psnr_db,"
            "none_heldout_psnr_occluded_db\n";
     for (const FitRow& r : rows)
         csv << r.tier << "," << r.technique << "," << r.settings.intensity << "," << r.settings.contrast << "," << r.settings.bias << ","
-            << r.settings.crease.range << "," << r.settings.crease.bias << "," << fixed(r.trainingScore.psnr, 3) << ","
+            << (r.settings.technique == AoTechnique::Scalable ? r.settings.sumExponent : -1.0f) << "," << r.settings.crease.range << "," << r.settings.crease.bias << "," << fixed(r.trainingScore.psnr, 3) << ","
             << fixed(r.trainingScore.psnrOccluded, 3) << "," << fixed(r.heldOut.psnr, 3) << "," << fixed(r.heldOut.psnrOccluded, 3) << ","
             << fixed(r.heldOut.signedOccluded, 4) << "," << fixed(r.before.psnr, 3) << "," << fixed(r.before.psnrOccluded, 3) << ","
             << fixed(none["held-out"].psnr, 3) << "," << fixed(none["held-out"].psnrOccluded, 3) << "\n";

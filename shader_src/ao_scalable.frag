@@ -1,6 +1,6 @@
 #version 450
 // Scalable AO (Bukowski et al. 2012): spiral taps with a linear distance falloff and a biased
-// cosine, squared normalised sum. Current tier: mirrored pairs, radius clamp, full-resolution
+// cosine; the normalised sum raised to the look's exponent (the course squares it). Current tier: mirrored pairs, radius clamp, full-resolution
 // depth. High tier: 9 spiral taps, each reading the depth MIP level its distance calls for.
 #define SFX_AO_PASS 1
 #include "sfx_shared_ao.h"
@@ -48,6 +48,6 @@ void main() {
         sum += scalableTap(p, offset, level, size, C, n);
         if (kAoMirrored != 0) sum += scalableTap(p, -offset, level, size, C, n);
     }
-    float a = 2.0 * params.intensity / float(kAoSamples) * sum;
-    aoWrite(sky ? 1.0 : aoFinish(a * a), z, sky);
+    float occlusion = aoScalableOcclusion(sum, params.intensity, kAoSamples, params.sumExponent);
+    aoWrite(sky ? 1.0 : aoFinish(occlusion), z, sky);
 }

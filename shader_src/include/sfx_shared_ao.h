@@ -19,6 +19,7 @@ using std::abs;
 using std::clamp;
 using std::exp;
 using std::max;
+using std::pow;
 using std::sqrt;
 #define SFX_AO_VEC3 glm::dvec3
 #else
@@ -89,6 +90,15 @@ SFX_FN SFX_REAL aoScalableTerm(SFX_REAL vv, SFX_REAL vn, SFX_REAL r, SFX_REAL bi
     if (!(vv > epsilon * r * r)) return 0.0;
     SFX_REAL len = sqrt(vv);
     return max(1.0 - len / r, 0.0) * max(vn / len - bias, 0.0);
+}
+
+// Scalable AO's occlusion from the sum of its per-tap terms over `samples` taps: the normalised
+// sum raised to `exponent`. The course squares it (exponent 2), which makes weak occlusion
+// quadratically fainter: against ray-traced truth that left creases and contacts too bright
+// (docs/trade.md), so the exponent is part of the calibrated look (AoLook::sumExponent).
+SFX_FN SFX_REAL aoScalableOcclusion(SFX_REAL sum, SFX_REAL intensity, int samples, SFX_REAL exponent) {
+    SFX_REAL a = max(2.0 * intensity / SFX_REAL(samples) * sum, 0.0);
+    return a > 0.0 ? pow(a, exponent) : 0.0;
 }
 
 // Crease shading (Fox & Compton 2007) for one tap: how far the normal faces the tap beyond the
@@ -275,7 +285,7 @@ SFX_BLOCK(AoParams, 2)
     SFX_M_FLOAT(epsilon) SFX_M_FLOAT(pixelsPerUnit) SFX_M_FLOAT(maxRadiusPx) SFX_M_FLOAT(maxDepth)
     SFX_M_INT(fullWidth) SFX_M_INT(fullHeight)  // the full-size image (aoFullResPixel's clamp)
     SFX_M_INT(pad4) SFX_M_INT(pad5)  // counts: constants above
-    SFX_M_FLOAT(spiralTurns) SFX_M_FLOAT(keyNear) SFX_M_FLOAT(keyInvLog2Range) SFX_M_FLOAT(pad6)
+    SFX_M_FLOAT(spiralTurns) SFX_M_FLOAT(keyNear) SFX_M_FLOAT(keyInvLog2Range) SFX_M_FLOAT(sumExponent)
     SFX_M_FLOAT(creaseRange) SFX_M_FLOAT(creaseBias) SFX_M_FLOAT(creaseAverager) SFX_M_FLOAT(creaseMinimum)
     SFX_M_FLOAT(fadeStart) SFX_M_FLOAT(invFadeRange) SFX_M_FLOAT(pad0) SFX_M_FLOAT(pad1)
 SFX_BLOCK_END(params)

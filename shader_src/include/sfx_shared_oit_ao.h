@@ -127,8 +127,7 @@ float receiverVisibility(ivec2 p, float z, vec3 n, float exteriorWeight) {
         sum += tapOcclusion(tapPixel(p, offset), C, n, z, exteriorWeight);
         if (kMirrored != 0) sum += tapOcclusion(tapPixel(p, -offset), C, n, z, exteriorWeight);
     }
-    float a = 2.0 * ao.intensity / float(kSamples) * sum;
-    return clamp(finishOcclusion(a * a), 0.0, 1.0);
+    return clamp(finishOcclusion(aoScalableOcclusion(sum, ao.intensity, kSamples, ao.sumExponent)), 0.0, 1.0);
 }
 
 void main() {

@@ -29,6 +29,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     s.crease.fadeStart = fuzz::hostileFloat(in);
     s.crease.fadeEnd = fuzz::hostileFloat(in);
     const uint32_t mipLevelsAllowed = in.ConsumeIntegralInRange<uint32_t>(1, 16);
+    s.sumExponent = in.ConsumeBool() ? -1.0f : fuzz::hostileFloat(in);
 
     const Status valid = validateAoSettings(s, profile);
     Result<AoConfig> config = resolveAoConfig(s, profile, mipLevelsAllowed);
@@ -38,7 +39,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         return 0;
     }
     const AoConfig& c = config.value();
-    for (double v : {c.radius, c.intensity, c.contrast, c.bias, c.epsilon, c.spiralTurns, c.maxRadiusPx})
+    for (double v : {c.radius, c.intensity, c.contrast, c.bias, c.sumExponent, c.epsilon, c.spiralTurns, c.maxRadiusPx})
         if (!std::isfinite(v)) std::abort();
     if (c.samples < 1 || c.samples > uint32_t(shared::SFX_AO_MAX_SAMPLES)) std::abort();
     if (c.mirrored && c.samples % 2 != 0) std::abort();

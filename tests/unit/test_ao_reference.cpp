@@ -34,6 +34,7 @@ AoConfig configFor(AoTechnique t, Tier tier, double scale = 1.0, bool blur = tru
     s.intensity = t == AoTechnique::Scalable ? 2.0f : 1.0f;
     s.contrast = 1.0f;
     s.bias = t == AoTechnique::Alchemy ? kAoAlchemyDefaultBias : t == AoTechnique::Scalable ? kAoScalableDefaultBias : -1.0f;
+    s.sumExponent = kAoScalableCourseSumExponent;
     s.crease.bias = 0.25f;
     s.crease.range = float(1.0 * scale);
     s.crease.fadeStart = float(50 * scale);
@@ -105,6 +106,17 @@ TEST_CASE("ao settings: out-of-range values are named errors", "[ao][bad-input]"
     s = {};
     s.bias = 2;
     CHECK(validateAoSettings(s, high).message().find("AoSettings.bias") != std::string::npos);
+    for (float e : {0.4f, 4.5f, std::numeric_limits<float>::quiet_NaN()}) {
+        s = {};
+        s.sumExponent = e;
+        CHECK(validateAoSettings(s, high).message().find("AoSettings.sumExponent") != std::string::npos);
+    }
+    s = {};
+    TierProfile handFilled = high;
+    handFilled.aoLook[uint32_t(AoTechnique::Scalable)].sumExponent = 0;
+    CHECK(validateAoSettings(s, handFilled).message().find("AoDesc.profile.aoLook.sumExponent") != std::string::npos);
+    s.sumExponent = 1.5f;  // a value set does not read the look
+    CHECK(validateAoSettings(s, handFilled));
     s = {};
     s.blurRadius = 9;
     CHECK(validateAoSettings(s, high).message().find("AoSettings.blurRadius") != std::string::npos);
@@ -133,6 +145,7 @@ TEST_CASE("ao settings resolve to the tier table", "[ao]") {
             CHECK(c.intensity == Approx(look.intensity));
             CHECK(c.contrast == Approx(look.contrast));
             if (t != AoTechnique::Crease) CHECK(c.bias == Approx(look.bias));
+            if (t == AoTechnique::Scalable) CHECK(c.sumExponent == Approx(look.sumExponent));
             CHECK(c.crease.range == Approx(look.creaseRange));
             CHECK(c.crease.bias == Approx(look.creaseBias));
             d.intensity = 3.0f, d.contrast = 2.0f, d.crease.range = 0.7f;
@@ -412,6 +425,27 @@ TEST_CASE("ao reference: the depth-aware upsample keeps edges and reproduces smo
     Grid withSky = full;
     withSky.at(20, 5) = 1e30;
     CHECK(reference::depthAwareUpsample(halfAo, half, withSky, 100.0).at(20, 5) == 1.0);
+}
+
+TEST_CASE("ao reference: Scalable's sum exponent raises the same normalised sum to its power", "[ao]") {
+    // With contrast 1, occlusion = 1 - visibility = a^e for the same tap sum a at every pixel:
+    // exponent 2 must be exponent 1 squared, and exponent 1 at least as dark wherever a < 1.
+    for (Tier tier : kTiers) {
+        INFO(toString(tier));
+        const samples::AnalyticScene scene = samples::cornerScene(96, 64, 1.0);
+        AoConfig linear = configFor(AoTechnique::Scalable, tier, 1.0, false, 0.5, AoResolution::Full), squared = linear;
+        linear.sumExponent = 1.0;
+        const Grid v1 = reference::ambientVisibility(scene.aoInput(false), linear);
+        const Grid v2 = reference::ambientVisibility(scene.aoInput(false), squared);
+        requireValid(v1);
+        size_t occluded = 0;
+        for (size_t i = 0; i < v1.values.size(); ++i) {
+            const double a = 1.0 - v1.values[i];
+            if (a > 0.0 && a < 1.0) ++occluded;
+            CHECK(1.0 - v2.values[i] == Approx(a * a).margin(1e-12));
+        }
+        CHECK(occluded > v1.values.size() / 20);  // the corner is occluded, not a blank image
+    }
 }
 
 TEST_CASE("ao reference: half resolution stays close to full resolution on analytic scenes", "[ao][half-res]") {

@@ -70,9 +70,11 @@ TierProfile currentDefault() {
     // The look fitted against ray-traced truth (samples/fit_ao, docs/trade.md); before the
     // calibration every tier had the papers' 1, 1, 1e-4 / 0.02, range 1, bias 0.25.
     p.aoLook[0] = {.intensity = 0.472871f, .contrast = 1.38237f, .bias = 3.70406e-6f};                             // alchemy
-    // Scalable refitted at half resolution with the 20 px clamp in half-size texels (samples/fit_ao).
-    p.aoLook[1] = {.intensity = 4.47214f, .contrast = 4.21697f, .bias = 0.3125f};                               // scalable
-    p.aoLook[2] = {.intensity = 3.22266f, .contrast = 4.21697f, .bias = 0, .creaseRange = 0.5516f, .creaseBias = 0.238152f};  // crease
+    // Scalable refitted at half resolution with the 20 px clamp in half-size texels, its sum
+    // exponent fitted too (samples/fit_ao --start tier): below 1 where the course squares.
+    p.aoLook[1] = {.intensity = 0.0654423f, .contrast = 7.23394f, .bias = 0.0f, .sumExponent = 0.569394f};  // scalable
+    // Crease refitted at half resolution, the default (samples/fit_ao --start tier).
+    p.aoLook[2] = {.intensity = 2.16482f, .contrast = 5.93524f, .bias = 0, .creaseRange = 0.707107f, .creaseBias = 0.200934f};  // crease
     p.aoPackedDepthTarget = true;  // ao_blur.frag reads the key packed in the RGBA8 AO target
     // Obscurance and blur at half size, a depth-aware upsample last: the cost goal of issue 10
     // (docs/trade.md); the blur's 2 px become 1 half-size tap each side.
@@ -96,8 +98,10 @@ TierProfile highDefault() {
     p.aoAlchemySamples = 12;  // the paper's 12 samples per pixel
     p.aoBlurRadiusPx = 6;     // 13-tap, as Alchemy's filter
     p.aoLook[0] = {.intensity = 0.392128f, .contrast = 1.77828f, .bias = 1e-7f};                               // alchemy
-    p.aoLook[1] = {.intensity = 4.07247f, .contrast = 5.42469f, .bias = 0.261719f};                                // scalable
-    p.aoLook[2] = {.intensity = 14.4122f, .contrast = 1.15478f, .bias = 0, .creaseRange = 0.430292f, .creaseBias = 0.238152f};  // crease
+    // Scalable with its sum exponent fitted (samples/fit_ao --start tier, at half resolution).
+    p.aoLook[1] = {.intensity = 0.187609f, .contrast = 7.36525f, .bias = 0.0468752f, .sumExponent = 0.707107f};  // scalable
+    // Crease refitted at half resolution, the default (samples/fit_ao --start tier).
+    p.aoLook[2] = {.intensity = 13.7531f, .contrast = 1.2864f, .bias = 0, .creaseRange = 0.73699f, .creaseBias = 0.126689f};  // crease
     p.aoPackedDepthTarget = false;  // float AO target carrying the linear depth (RG32F; RGBA32F crease)
     p.aoHalfResolution = true;      // as the current tier; the blur's 6 px become 3 half-size taps each side
     p.aoMaxDepthLayers = 4;         // multilayer AO: the first visible layer and 3 peeled ones (SFX_AO_MAX_DEPTH_LAYERS)
@@ -124,20 +128,20 @@ Preset variant(const char* name, TierProfile p, AoRes res, uint32_t alchemy, uin
 // samples/trade_presets (tools/run_trade.sh) on llvmpipe; the figures of docs/trade.md.
 std::vector<Preset> currentPresets() {
     const TierProfile d = currentDefault();
-    return {{kDefaultPreset, d, {{26.97, 24.45, 24.07}, 31.05}},
-            variant("low", d, AoRes::Half, 3, 2, 1, 5, 8.0f, {{26.03, 24.23, 24.07}, 28.69}),
-            variant("medium", d, AoRes::Half, 6, 4, 2, 7, 10.0f, {{26.97, 24.45, 24.07}, 31.05}),
-            variant("high", d, AoRes::Half, 10, 6, 3, 9, 14.0f, {{27.26, 25.07, 24.10}, 33.79}),
-            variant("ultra", d, AoRes::Full, 16, 10, 4, 13, 18.0f, {{27.64, 24.03, 22.84}, 34.77})};
+    return {{kDefaultPreset, d, {{26.97, 26.29, 24.19}, 31.05}},
+            variant("low", d, AoRes::Half, 3, 2, 1, 5, 8.0f, {{26.03, 25.26, 24.19}, 28.70}),
+            variant("medium", d, AoRes::Half, 6, 4, 2, 7, 10.0f, {{26.97, 26.29, 24.19}, 31.05}),
+            variant("high", d, AoRes::Half, 10, 6, 3, 9, 14.0f, {{27.26, 26.46, 24.20}, 33.79}),
+            variant("ultra", d, AoRes::Full, 16, 10, 4, 13, 18.0f, {{27.64, 26.22, 22.59}, 34.33})};
 }
 
 std::vector<Preset> highPresets() {
     const TierProfile d = highDefault();
-    return {{kDefaultPreset, d, {{27.23, 25.63, 23.80}, 34.38}},
-            variant("low", d, AoRes::Half, 4, 4, 2, 5, 10.0f, {{26.50, 25.03, 23.62}, 30.49}),
-            variant("medium", d, AoRes::Half, 8, 6, 4, 7, 14.0f, {{27.29, 25.60, 23.72}, 32.77}),
-            variant("high", d, AoRes::Half, 12, 9, 6, 9, 18.0f, {{27.23, 25.63, 23.80}, 34.38}),
-            variant("ultra", d, AoRes::Full, 24, 16, 8, 15, 24.0f, {{27.26, 25.47, 23.48}, 34.67})};
+    return {{kDefaultPreset, d, {{27.22, 27.70, 24.16}, 34.38}},
+            variant("low", d, AoRes::Half, 4, 4, 2, 5, 10.0f, {{26.50, 26.38, 24.11}, 30.48}),
+            variant("medium", d, AoRes::Half, 8, 6, 4, 7, 14.0f, {{27.29, 26.95, 24.14}, 32.77}),
+            variant("high", d, AoRes::Half, 12, 9, 6, 9, 18.0f, {{27.22, 27.70, 24.16}, 34.38}),
+            variant("ultra", d, AoRes::Full, 24, 16, 8, 15, 24.0f, {{27.26, 27.79, 22.53}, 34.67})};
 }
 
 std::vector<TierRow> makeTable() {

@@ -17,7 +17,7 @@ struct AoFlags {
     std::string resolution = "tier";
     std::string normalsPath;
     std::string outPath;
-    float radius = 0.5f, intensity = -1.0f, contrast = -1.0f, bias = -1.0f;
+    float radius = 0.5f, intensity = -1.0f, contrast = -1.0f, bias = -1.0f, sumExponent = -1.0f;
     uint32_t samples = 0, blurRadius = 0;
     bool noBlur = false;
     bool showPlan = false;
@@ -36,6 +36,7 @@ int runAo(const AoFlags& f) {
     s.intensity = f.intensity;
     s.contrast = f.contrast;
     s.bias = f.bias;
+    s.sumExponent = f.sumExponent;
     s.samples = f.samples;
     s.blur = !f.noBlur;
     s.blurRadius = f.blurRadius;
@@ -125,6 +126,8 @@ Command addAoCommand(CLI::App& app) {
     c.app->add_option("--intensity", flags->intensity, "occlusion scale, [0, 100]; -1 = the tier's calibrated value")->capture_default_str();
     c.app->add_option("--contrast", flags->contrast, "visibility exponent, [0.1, 10]; -1 = the tier's calibrated value")->capture_default_str();
     c.app->add_option("--bias", flags->bias, "[0, 1]; -1 = the tier's calibrated value")->capture_default_str();
+    c.app->add_option("--sum-exponent", flags->sumExponent, "Scalable: exponent of the normalised tap sum, [0.5, 4] (the course's 2); -1 = the tier's")
+        ->capture_default_str();
     c.app->add_option("--samples", flags->samples, "taps per pixel; 0 = tier default")->capture_default_str();
     c.app->add_option("--blur-radius", flags->blurRadius, "bilateral half-width in px; 0 = tier default")->capture_default_str();
     c.app->add_flag("--no-blur", flags->noBlur, "skip the bilateral blur");

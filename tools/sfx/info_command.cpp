@@ -12,9 +12,11 @@ namespace {
 
 std::string yesNo(bool b) { return b ? "yes" : "no"; }
 
-std::string look(const AoLook& l, bool crease) {
+enum class LookOf { Alchemy, Scalable, Crease };
+std::string look(const AoLook& l, LookOf t) {
     char buf[96];
-    if (crease) std::snprintf(buf, sizeof buf, "%g, %g, %g, %g", l.intensity, l.contrast, l.creaseRange, l.creaseBias);
+    if (t == LookOf::Crease) std::snprintf(buf, sizeof buf, "%g, %g, %g, %g", l.intensity, l.contrast, l.creaseRange, l.creaseBias);
+    else if (t == LookOf::Scalable) std::snprintf(buf, sizeof buf, "%g, %g, %g, %g", l.intensity, l.contrast, l.bias, l.sumExponent);
     else std::snprintf(buf, sizeof buf, "%g, %g, %g", l.intensity, l.contrast, l.bias);
     return buf;
 }
@@ -38,9 +40,9 @@ const ParameterRow kParameterRows[] = {
      [](const TierProfile& p) {
          return std::string(p.aoPackedDepthTarget ? "key packed in the RGBA8 AO target" : "linear depth carried in the float AO target (RG32F; RGBA32F for crease)");
      }},
-    {"alchemy AO look (intensity, contrast, bias)", [](const TierProfile& p) { return look(p.aoLook[0], false); }},
-    {"scalable AO look (intensity, contrast, bias)", [](const TierProfile& p) { return look(p.aoLook[1], false); }},
-    {"crease AO look (intensity, contrast, range, bias)", [](const TierProfile& p) { return look(p.aoLook[2], true); }},
+    {"alchemy AO look (intensity, contrast, bias)", [](const TierProfile& p) { return look(p.aoLook[0], LookOf::Alchemy); }},
+    {"scalable AO look (intensity, contrast, bias, sum exponent)", [](const TierProfile& p) { return look(p.aoLook[1], LookOf::Scalable); }},
+    {"crease AO look (intensity, contrast, range, bias)", [](const TierProfile& p) { return look(p.aoLook[2], LookOf::Crease); }},
     {"motion blur taps (centre included)", [](const TierProfile& p) { return std::to_string(p.mbTaps); }},
     {"motion blur max radius (px at 720 rows)", [](const TierProfile& p) { return std::to_string(int(p.mbMaxRadiusPx)); }},
     {"motion blur jitter", [](const TierProfile& p) { return std::string(p.mbJitterSize == 2 ? "checkerboard" : "4x4 randomised"); }},

@@ -69,6 +69,9 @@ struct AoSettings {
     // v.n + z_C beta; the paper's 1e-4 is kAoAlchemyDefaultBias). Scalable: subtracted from the
     // cosine of each tap (the paper's 0.02 is kAoScalableDefaultBias).
     float bias = -1.0f;
+    // [0.5, 4], or -1 for the tier's: Scalable only, the exponent of its normalised tap sum
+    // (occlusion = (2 sigma / N * sum)^e; the course's 2 is kAoScalableCourseSumExponent).
+    float sumExponent = -1.0f;
     float epsilon = 1e-4f;   // [1e-8, 1] guards divisions; in units of radius^2 (scale-invariant)
     uint32_t samples = 0;    // 0 = tier default; Alchemy [1, 64]; Scalable [1, 64] (even on the
                              // current tier: mirrored pairs); Crease 0 or 24 (its pattern is fixed)
@@ -89,6 +92,7 @@ struct AoSettings {
 // The papers' nominal values (the look before the calibration of issue 10).
 inline constexpr float kAoAlchemyDefaultBias = 1e-4f;
 inline constexpr float kAoScalableDefaultBias = 0.02f;
+inline constexpr float kAoScalableCourseSumExponent = 2.0f;
 
 // What a dispatch computes once settings and tier are resolved: the numbers the shaders get
 // and the CPU reference (sfx/reference/ao_reference.hpp) consumes. Benchmarks may edit a
@@ -96,6 +100,7 @@ inline constexpr float kAoScalableDefaultBias = 0.02f;
 struct AoConfig {
     AoTechnique technique = AoTechnique::Scalable;
     double radius = 0.5, intensity = 1, contrast = 1, bias = 0.02, epsilon = 1e-4;
+    double sumExponent = 2;       // Scalable: occlusion = (2 sigma / N * sum)^sumExponent
     // Every pixel count below is in the obscurance pass's pixels: at half resolution half-size ones.
     bool halfResolution = false;  // obscurance + blur at half size, then the depth-aware upsample
     uint32_t samples = 4;         // taps per pixel (Scalable mirrored: total, both signs)

@@ -35,6 +35,7 @@ struct AoLook {
     float intensity = 1.0f;    // sigma
     float contrast = 1.0f;     // k
     float bias = 0.0f;         // Alchemy: beta; Scalable: the cosine bias; unused by crease
+    float sumExponent = 2.0f;  // Scalable only: the exponent of the normalised tap sum (the course's 2)
     float creaseRange = 1.0f;  // crease only (world units)
     float creaseBias = 0.25f;  // crease only
 };

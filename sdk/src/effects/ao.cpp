@@ -290,6 +290,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
     p.fullWidth = int32_t(desc_.width);
     p.fullHeight = int32_t(desc_.height);
     p.spiralTurns = float(config_.spiralTurns);
+    p.sumExponent = float(config_.sumExponent);
     p.keyNear = float(keyNear);
     p.keyInvLog2Range = float(1.0 / keyLog2Range);
     p.creaseRange = config_.crease.range;

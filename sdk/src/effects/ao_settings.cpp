@@ -87,6 +87,14 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
     if (s.intensity != kTierValue) SFX_TRY(checkRange("AoSettings.intensity", s.intensity, 0, false, 100, false, "[0, 100], or -1 for the tier's"));
     if (s.contrast != kTierValue) SFX_TRY(checkRange("AoSettings.contrast", s.contrast, 0.1, false, 10, false, "[0.1, 10], or -1 for the tier's"));
     if (s.bias != kTierValue) SFX_TRY(checkRange("AoSettings.bias", s.bias, 0, false, 1, false, "[0, 1], or -1 for the tier's"));
+    if (s.sumExponent != kTierValue)
+        SFX_TRY(checkRange("AoSettings.sumExponent", s.sumExponent, 0.5, false, 4, false, "[0.5, 4], or -1 for the tier's"));
+    // A hand-filled profile's look is what -1 resolves to: the same ranges hold for it.
+    const AoLook& look = profile.aoLook[uint32_t(s.technique)];
+    if (s.intensity == kTierValue) SFX_TRY(checkRange("AoDesc.profile.aoLook.intensity", look.intensity, 0, false, 100, false, "[0, 100]"));
+    if (s.contrast == kTierValue) SFX_TRY(checkRange("AoDesc.profile.aoLook.contrast", look.contrast, 0.1, false, 10, false, "[0.1, 10]"));
+    if (s.bias == kTierValue) SFX_TRY(checkRange("AoDesc.profile.aoLook.bias", look.bias, 0, false, 1, false, "[0, 1]"));
+    if (s.sumExponent == kTierValue) SFX_TRY(checkRange("AoDesc.profile.aoLook.sumExponent", look.sumExponent, 0.5, false, 4, false, "[0.5, 4]"));
     // The bound is the float nearest 1e-8 (just below it): the documented minimum must be settable.
     SFX_TRY(checkRange("AoSettings.epsilon", s.epsilon, double(1e-8f), false, 1, false, "[1e-8, 1]"));
     const uint32_t maxSamples = uint32_t(shared::SFX_AO_MAX_SAMPLES);
@@ -150,6 +158,7 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
             break;
         case AoTechnique::Scalable:
             c.bias = orTier(s.bias, look.bias);
+            c.sumExponent = orTier(s.sumExponent, look.sumExponent);
             c.samples = s.samples ? s.samples : profile.aoScalableTaps;
             c.mirrored = profile.aoScalableMirrored;
             c.spiralTurns = c.mirrored ? shared::SFX_AO_SPIRAL_TURNS_MIRRORED : shared::SFX_AO_SPIRAL_TURNS_SPIRAL;

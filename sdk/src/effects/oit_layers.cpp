@@ -48,6 +48,7 @@ Status checkLayerSettings(const TransparencyDesc& desc) {
     SFX_TRY(inRange("intensity", c.intensity, 0.0, 1.0e3));
     SFX_TRY(inRange("contrast", c.contrast, 0.0, 100.0));
     SFX_TRY(inRange("bias", c.bias, 0.0, 1.0));
+    SFX_TRY(inRange("sumExponent", c.sumExponent, 0.5, 4.0));
     SFX_TRY(inRange("epsilon", c.epsilon, 0.0, 1.0, true));
     SFX_TRY(inRange("spiralTurns", c.spiralTurns, 0.0, 1.0e3));
     SFX_TRY(inRange("maxRadiusPx", c.maxRadiusPx, 0.0, 1.0e5));
@@ -103,6 +104,7 @@ Status Transparency::renderLayerAo(const TransparencyInputs& in, const DepthReco
     p.maxRadiusPx = float(c.maxRadiusPx);
     p.maxDepth = float(rec.maxDepth);
     p.spiralTurns = float(c.spiralTurns);
+    p.sumExponent = float(c.sumExponent);
     p.ndcScale = float(rec.ndcScale);
     p.denomOffset = float(rec.denomOffset);
     p.numerator = float(rec.numerator);

@@ -106,10 +106,7 @@ double aoOcclusionFromSum(const AoConfig& c, double sum, double z) {
         // The falloff length u of the paper's g(t) is taken as r, so that the result is
         // scale-invariant (epsilon is relative to r^2 for the same reason).
         case AoTechnique::Alchemy: return 2.0 * c.intensity * c.radius / double(c.samples) * sum;
-        case AoTechnique::Scalable: {
-            const double a = 2.0 * c.intensity / double(c.samples) * sum;
-            return a * a;
-        }
+        case AoTechnique::Scalable: return sh::aoScalableOcclusion(sum, c.intensity, int(c.samples), c.sumExponent);
         case AoTechnique::Crease: {
             const AoCreaseSettings& k = c.crease;
             const double invFade = std::isinf(k.fadeEnd) ? 0.0 : 1.0 / (double(k.fadeEnd) - double(k.fadeStart));
