@@ -346,8 +346,8 @@ int main(int argc, char** argv) {
                 continue;
             }
             // The copy is every ratio's denominator and costs little: give it more runs.
-            Result<TimerReading> copyTime = budget::timeMedian(dev, 4 * o.runs, [&] { return copy.value()->record(); });
-            const double copyMs = copyTime ? copyTime->milliseconds : 0.0;
+            Result<double> copyTime = copy.value()->medianMs(4 * o.runs);
+            const double copyMs = copyTime ? copyTime.value() : 0.0;
             std::cout << "  copy pass " << copyMs << " ms (" << toString(dev.caps().timing) << ")" << std::endl;
             Result<TextureHandle> outTex = dev.createTexture({o.width, o.height, 1, outFormat, kTextureSampled | kTextureRenderTarget, "bench-ao-out"});
             if (!outTex) {

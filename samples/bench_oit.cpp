@@ -228,9 +228,9 @@ Result<Measured> measure(Device& dev, samples::CopyPass& copy, const Frame& f, c
         m.ao2.resize(halves.size());
         for (size_t i = 0; i < halves.size(); ++i) m.ao2[i] = halfToFloat(halves[i]);
     }
-    Result<TimerReading> c = budget::timeMedian(dev, o.runs, [&] { return copy.record(); });
+    Result<double> c = copy.medianMs(o.runs);
     if (!c) return c.status();
-    m.copy = c->milliseconds;
+    m.copy = c.value();
     return m;
 }
 

@@ -3,7 +3,8 @@
 # then
 #   1. fit_ao        - refits each technique's look per tier on the training views, starting from
 #                      the tier table's look, and scores the held-out ones (docs/ao_fit.csv, the
-#                      fit table of docs/trade.md);
+#                      fit table of docs/trade.md); three refinement levels, as it starts
+#                      where the last adopted fit ended;
 #   2. bench_trade   - every technique x tier x blur x backend at its defaults against the truth
 #                      (docs/trade.csv, the error tables);
 #   3. trade_presets - cost and accuracy of every tier preset, AO and motion blur, and the Pareto
@@ -27,7 +28,7 @@ step "configure and build bench_trade, fit_ao, trade_presets"
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$BUILD_DIR" -j"$(nproc)" --target bench_trade fit_ao trade_presets sfx_cli >/dev/null
 step "fit_ao: the looks, fitted on the training views, scored on the held-out ones"
-"$BUILD_DIR"/samples/fit_ao --start tier --cache-dir "$CACHE" --out-dir docs --backend "${BACKENDS%%,*}"
+"$BUILD_DIR"/samples/fit_ao --start tier --refinements 3 --cache-dir "$CACHE" --out-dir docs --backend "${BACKENDS%%,*}"
 step "bench_trade: the defaults against the truth, every backend"
 "$BUILD_DIR"/samples/bench_trade --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS"
 step "trade_presets: cost and accuracy of every preset, Pareto plots"

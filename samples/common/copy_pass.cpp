@@ -1,5 +1,6 @@
 #include "copy_pass.hpp"
 
+#include "sfx/budget.hpp"
 #include "sfx_shaders.hpp"
 
 namespace sfx::samples {
@@ -12,6 +13,15 @@ Status CopyPass::record() {
     dr.pipeline = pipeline;
     dr.bindings.textures = {TextureBinding{gen::copy::uSource, src, 0, 1, {}}};
     return dev.renderPass(rp, std::span<const DrawDesc>(&dr, 1));
+}
+
+Result<double> CopyPass::medianMs(uint32_t runs) {
+    Result<TimerReading> r = budget::timeMedian(dev, runs, [&] {
+        for (uint32_t i = 0; i < kCopiesPerRun; ++i) SFX_TRY(record());
+        return Status::ok();
+    });
+    if (!r) return r.status();
+    return r->milliseconds / double(kCopiesPerRun);
 }
 
 CopyPass::~CopyPass() {

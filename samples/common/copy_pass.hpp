@@ -18,6 +18,12 @@ struct CopyPass {
     ProgramHandle program;
     PipelineHandle pipeline;
     Status record();  // one copy, recorded (flush to run it)
+    // The cost unit: the median over `runs` timed runs of kCopiesPerRun copies recorded back to
+    // back, divided by kCopiesPerRun. One copy alone is a few milliseconds on a CPU rasteriser and
+    // its median swung by 2x between runs of the same benchmark; a run of eight averages the
+    // per-pass jitter, and the timer's fixed cost is spread over eight passes.
+    static constexpr uint32_t kCopiesPerRun = 8;
+    Result<double> medianMs(uint32_t runs);
     ~CopyPass();
 };
 
