@@ -69,7 +69,7 @@ TierProfile currentDefault() {
     p.aoBlurRadiusPx = 2;  // 5-tap separable bilateral
     // The look fitted against ray-traced truth (samples/fit_ao, docs/trade.md); before the
     // calibration every tier had the papers' 1, 1, 1e-4 / 0.02, range 1, bias 0.25.
-    p.aoLook[0] = {.intensity = 0.472871f, .contrast = 1.38237f, .bias = 3.70406e-6f};                             // alchemy
+    p.aoLook[0] = {.intensity = 0.472871f, .contrast = 1.38237f, .bias = 1.59371e-7f};                             // alchemy
     // Scalable refitted at half resolution with the 20 px clamp in half-size texels, its sum
     // exponent fitted too (samples/fit_ao --start tier): below 1 where the course squares.
     p.aoLook[1] = {.intensity = 0.0654423f, .contrast = 7.23394f, .bias = 0.0f, .sumExponent = 0.569394f};  // scalable
