@@ -4,13 +4,7 @@
 #include "sfx_shared_oit.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 1, std430) buffer OitPool {
-    uint count;
-    uint capacity;
-    uint reserved0;
-    uint reserved1;
-    uvec4 nodes[];
-} pool;
+layout(set = 0, binding = 1, std430) buffer OitPool SFX_OIT_POOL_BODY
 layout(set = 0, binding = 2, r32ui) uniform writeonly uimage2D uHeads;
 
 void main() {

@@ -13,13 +13,7 @@ layout(location = 0) in vec3 vViewPosition;
 layout(location = 1) in vec3 vNormal;
 layout(location = 2) flat in uint vPrimitive;
 
-layout(set = 0, binding = 1, std430) buffer OitPool {
-    uint count;
-    uint capacity;
-    uint reserved0;
-    uint reserved1;
-    uvec4 nodes[];  // node i: nodes[2i] (colour, depth, normal), nodes[2i + 1] (ids, next)
-} pool;
+layout(set = 0, binding = 1, std430) buffer OitPool SFX_OIT_POOL_BODY
 layout(set = 0, binding = 2, r32ui) uniform coherent uimage2D uHeads;
 
 void main() {

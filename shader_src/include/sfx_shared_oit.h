@@ -70,6 +70,11 @@ inline double sfxOitRound(double v) { return std::floor(v + 0.5); }
 #define SFX_OIT_INOUT(type) inout type
 #define SFX_OIT_INOUT_ARRAY(type, name, count) inout type name[count]
 float sfxOitRound(float v) { return floor(v + 0.5); }
+// The node pool every A-buffer pass binds (std430 storage buffer): the fixed header of
+// SFX_OIT_POOL_HEADER_BYTES (sfx_shared_oit_params.h), then node i as nodes[2i] (colour, depth,
+// normal) and nodes[2i + 1] (ids, next). Each pass declares it with its own access qualifier:
+//   layout(set = 0, binding = 1, std430) readonly buffer OitPool SFX_OIT_POOL_BODY
+#define SFX_OIT_POOL_BODY { uint count; uint capacity; uint reserved0; uint reserved1; uvec4 nodes[]; } pool;
 #endif
 
 // ---- The A-buffer node (a storage-buffer array of uint, SFX_OIT_NODE_WORDS per node) ------------

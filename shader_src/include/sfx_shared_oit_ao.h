@@ -22,13 +22,7 @@
 #include "sfx_shared_oit.h"
 
 layout(set = 0, binding = 0) uniform sampler2D uOpaqueDepth;  // the opaque pass's depth attachment
-layout(set = 0, binding = 1, std430) readonly buffer OitPool {
-    uint count;
-    uint capacity;
-    uint reserved0;
-    uint reserved1;
-    uvec4 nodes[];
-} pool;
+layout(set = 0, binding = 1, std430) readonly buffer OitPool SFX_OIT_POOL_BODY
 layout(set = 0, binding = 2, r32ui) uniform readonly uimage2D uHeads;
 #ifdef SFX_OIT_AO_COMPRESSED
 layout(set = 0, binding = 3, std430) readonly buffer OitCompressed { uint words[]; } compressed;

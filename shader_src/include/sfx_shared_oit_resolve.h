@@ -16,13 +16,7 @@
 #include "sfx_shared_oit.h"
 
 layout(set = 0, binding = 0) uniform sampler2D uOpaque;
-layout(set = 0, binding = 1, std430) readonly buffer OitPool {
-    uint count;
-    uint capacity;
-    uint reserved0;
-    uint reserved1;
-    uvec4 nodes[];
-} pool;
+layout(set = 0, binding = 1, std430) readonly buffer OitPool SFX_OIT_POOL_BODY
 layout(set = 0, binding = 2, r32ui) uniform readonly uimage2D uHeads;
 layout(location = 0) out vec4 outColor;
 #ifdef SFX_OIT_COMPRESS

@@ -304,7 +304,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
     // Obscurance: straight into the output at full resolution without blur.
     const bool direct = !blur && !half;
     const TextureHandle aoDest = direct ? in.output : aoTarget_;
-    const std::vector<SpecializationConstant> aoConstants = {
+    const SpecializationConstant aoConstants[] = {
         {SFX_AO_SC_SAMPLES, int32_t(config_.samples)},
         {SFX_AO_SC_MIRRORED, config_.mirrored ? 1 : 0},
         {SFX_AO_SC_MIP_LEVELS, int32_t(config_.depthMipLevels)},
@@ -347,7 +347,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
             // At half resolution the second pass goes back into the raw target, for the upsample.
             const TextureHandle src = blurPass == 0 ? aoTarget_ : blurTarget_;
             const TextureHandle dst = blurPass == 0 ? blurTarget_ : half ? aoTarget_ : in.output;
-            const std::vector<SpecializationConstant> blurConstants = {
+            const SpecializationConstant blurConstants[] = {
                 {SFX_AO_SC_BLUR_RADIUS, radius},
                 {SFX_AO_SC_BLUR_MODERATE_RADIUS, std::max(1, radius / 2)},
                 {SFX_AO_SC_BLUR_CREASE, config_.technique == AoTechnique::Crease ? 1 : 0},

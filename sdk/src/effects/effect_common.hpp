@@ -2,6 +2,8 @@
 #pragma once
 
 #include <cstddef>
+#include <initializer_list>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -44,8 +46,11 @@ public:
     PipelineCache(const PipelineCache&) = delete;
     PipelineCache& operator=(const PipelineCache&) = delete;
 
-    Result<PipelineHandle> get(ProgramHandle program, Format format, const std::vector<SpecializationConstant>& constants,
-                               const char* debugName) {
+    // The constants as a span (a stack array at the call site): a steady-frame lookup allocates nothing.
+    Result<PipelineHandle> get(ProgramHandle program, Format format, std::initializer_list<SpecializationConstant> constants, const char* debugName) {
+        return get(program, format, std::span<const SpecializationConstant>(constants.begin(), constants.size()), debugName);
+    }
+    Result<PipelineHandle> get(ProgramHandle program, Format format, std::span<const SpecializationConstant> constants, const char* debugName) {
         for (const Entry& e : entries_)
             if (e.program == program && e.format == format && sameConstants(e.constants, constants)) return e.pipeline;
         // Combinations left behind by earlier settings go first, oldest first, once there are many.
@@ -57,10 +62,10 @@ public:
         pd.program = program;
         pd.colorFormats = {format};
         pd.debugName = debugName;
-        pd.constants = constants;
+        pd.constants.assign(constants.begin(), constants.end());
         Result<PipelineHandle> pipeline = device_.createGraphicsPipeline(pd);
         if (!pipeline) return pipeline.status();
-        entries_.push_back({program, format, constants, pipeline.value()});
+        entries_.push_back({program, format, pd.constants, pipeline.value()});
         return pipeline.value();
     }
     // Destroys the pipelines of `program` (before the program itself is destroyed).
@@ -84,7 +89,7 @@ private:
         std::vector<SpecializationConstant> constants;
         PipelineHandle pipeline;
     };
-    static bool sameConstants(const std::vector<SpecializationConstant>& a, const std::vector<SpecializationConstant>& b) {
+    static bool sameConstants(const std::vector<SpecializationConstant>& a, std::span<const SpecializationConstant> b) {
         if (a.size() != b.size()) return false;
         for (size_t i = 0; i < a.size(); ++i)
             if (a[i].id != b[i].id || a[i].value != b[i].value) return false;

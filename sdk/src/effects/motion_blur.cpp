@@ -298,7 +298,7 @@ Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings
     SFX_TRY(device_.writeBuffer(reconstructParams_, 0, &rec, sizeof rec));
 
     // Branches and loop counts: specialisation constants, one pipeline per combination seen.
-    auto pipeline = [&](ProgramHandle program, Format format, std::vector<SpecializationConstant> constants, const char* name) {
+    auto pipeline = [&](ProgramHandle program, Format format, std::initializer_list<SpecializationConstant> constants, const char* name) {
         return pipelines_->get(program, format, constants, name);
     };
     Result<PipelineHandle> packPipeline =
