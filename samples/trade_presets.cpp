@@ -107,30 +107,37 @@ uint32_t aoTaps(const TierProfile& p, AoTechnique t) {
     return t == AoTechnique::Alchemy ? p.aoAlchemySamples : t == AoTechnique::Scalable ? p.aoScalableTaps : 24u;
 }
 
+// A preset x technique's AO accuracy: over all held-out cases, and over their analytic scenes only.
+struct AoAccuracy {
+    samples::AoScore heldOut, analytic;
+};
+
 // AO accuracy of every preset x technique of a tier on the held-out views: key "preset/technique".
-Result<std::map<std::string, samples::AoScore>> aoAccuracy(Device& dev, Tier tier, const Options& o, const std::vector<samples::TradeView>& views,
+
+Result<std::map<std::string, AoAccuracy>> aoAccuracy(Device& dev, Tier tier, const Options& o, const std::vector<samples::TradeView>& views,
                                                            const std::vector<samples::AoCase>& cases) {
     samples::AoEvaluator ev(dev, tier, o.truth.width, o.truth.height);
     SFX_TRY(ev.prepare(views));
-    std::vector<samples::AoCase> analyticCases;
-    for (const samples::AoCase& c : cases)
-        if (views[c.view].analytic) analyticCases.push_back(c);
-    if (analyticCases.empty()) return invalidArgument("views", "no analytic scene among the held-out views", "at least one analytic view");
-    std::map<std::string, samples::AoScore> out;
+    bool anyAnalytic = false;
+    for (const samples::AoCase& c : cases) anyAnalytic = anyAnalytic || views[c.view].analytic;
+    if (!anyAnalytic) return invalidArgument("views", "no analytic scene among the held-out views", "at least one analytic view");
+    std::map<std::string, AoAccuracy> out;
     for (const tiers::Preset& preset : tiers::row(tier).presets)
         for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}) {
             ev.setProfile(preset.params);
             AoSettings s;
             s.technique = t;
             s.normals = AoNormals::FromTexture;
-            Result<samples::AoScore> score = ev.score(s, cases);
-            if (!score) return score.status();
-            Result<samples::AoScore> analytic = ev.score(s, analyticCases);
-            if (!analytic) return analytic.status();
-            out[preset.name + "/" + toString(t)] = score.value();
-            out[preset.name + "/" + toString(t) + "/analytic"] = analytic.value();
-            std::cout << "  " << toString(tier) << "/" << preset.name << "/" << toString(t) << ": held-out PSNR " << fixed(score->psnr, 2)
-                      << " dB, occluded " << fixed(score->psnrOccluded, 2) << " dB; analytic scenes " << fixed(analytic->psnr, 2) << " dB" << std::endl;
+            // One render per case; the analytic scenes' score is a subset of the same comparisons.
+            Result<std::vector<truth::Comparison>> errors = ev.run(s, cases);
+            if (!errors) return errors.status();
+            std::vector<truth::Comparison> analytic;
+            for (size_t i = 0; i < cases.size(); ++i)
+                if (views[cases[i].view].analytic) analytic.push_back(errors.value()[i]);
+            const AoAccuracy a{samples::summarise(errors.value()), samples::summarise(analytic)};
+            out[preset.name + "/" + toString(t)] = a;
+            std::cout << "  " << toString(tier) << "/" << preset.name << "/" << toString(t) << ": held-out PSNR " << fixed(a.heldOut.psnr, 2)
+                      << " dB, occluded " << fixed(a.heldOut.psnrOccluded, 2) << " dB; analytic scenes " << fixed(a.analytic.psnr, 2) << " dB" << std::endl;
         }
     return out;
 }
@@ -155,7 +162,7 @@ Result<std::map<std::string, double>> motionAccuracy(Device& dev, Tier tier, con
 }
 
 Status runDevice(Device& dev, const std::string& backend, Tier tier, const Options& o, const std::vector<samples::TradeView>& views,
-                 const std::vector<samples::AoCase>& cases, std::map<std::string, samples::AoScore>& aoScores, std::map<std::string, double>& mbScores,
+                 const std::vector<samples::AoCase>& cases, std::map<std::string, AoAccuracy>& aoScores, std::map<std::string, double>& mbScores,
                  std::vector<Row>& rows) {
     const Format outFormat = samples::aoOutputFormat(dev);
     Result<std::unique_ptr<samples::CopyPass>> copy = samples::makeCopyPass(dev, tier, o.costWidth, o.costHeight, outFormat);
@@ -165,7 +172,7 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
     const double copyMs = copyTime.value();
     std::cout << "  copy pass at " << o.costWidth << "x" << o.costHeight << ": " << fixed(copyMs, 3) << " ms" << std::endl;
     if (aoScores.empty()) {  // accuracy from the first backend: the backends compute the same shaders
-        Result<std::map<std::string, samples::AoScore>> a = aoAccuracy(dev, tier, o, views, cases);
+        Result<std::map<std::string, AoAccuracy>> a = aoAccuracy(dev, tier, o, views, cases);
         if (!a) return a.status();
         aoScores = a.value();
         Result<std::map<std::string, double>> m = motionAccuracy(dev, tier, o);
@@ -201,10 +208,11 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
                 break;
             }
             const double copyMsNow = copyNow.value();
-            const samples::AoScore& score = aoScores.at(preset.name + "/" + toString(t));
+            const AoAccuracy& accuracy = aoScores.at(preset.name + "/" + toString(t));
+            const samples::AoScore& score = accuracy.heldOut;
             rows.push_back({backend, toString(tier), preset.name, "ao", toString(t), preset.params.aoHalfResolution ? "half" : "full",
                             aoTaps(preset.params, t), preset.params.aoBlurRadiusPx, r->milliseconds, r->milliseconds / copyMsNow, score.psnr,
-                            score.psnrOccluded, aoScores.at(preset.name + "/" + toString(t) + "/analytic").psnr});
+                            score.psnrOccluded, accuracy.analytic.psnr});
             std::cout << "  " << backend << "/" << toString(tier) << "/" << preset.name << "/" << toString(t) << ": " << fixed(r->milliseconds, 2)
                       << " ms = " << fixed(rows.back().copyPasses, 1) << " copy passes (copy " << fixed(copyMsNow, 3) << " ms), PSNR " << fixed(score.psnr, 2)
                       << " dB" << std::endl;
@@ -297,7 +305,7 @@ int main(int argc, char** argv) {
         std::cerr << "trade_presets: " << cases.status().toString() << "\n";
         return 1;
     }
-    std::map<Tier, std::map<std::string, samples::AoScore>> aoScores;
+    std::map<Tier, std::map<std::string, AoAccuracy>> aoScores;
     std::map<Tier, std::map<std::string, double>> mbScores;
     std::vector<Row> rows;
     std::string machine;

@@ -1,7 +1,8 @@
 #version 450
 // Scalable AO (Bukowski et al. 2012): spiral taps with a linear distance falloff and a biased
-// cosine; the normalised sum raised to the look's exponent (the course squares it). Current tier: mirrored pairs, radius clamp, full-resolution
-// depth. High tier: 9 spiral taps, each reading the depth MIP level its distance calls for.
+// cosine; the normalised sum raised to the look's exponent (the course squares it). Current
+// tier: mirrored pairs, radius clamp, full-resolution depth. High tier: 9 spiral taps, each
+// reading the depth MIP level its distance calls for.
 #define SFX_AO_PASS 1
 #include "sfx_shared_ao.h"
 

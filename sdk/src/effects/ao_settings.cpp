@@ -27,6 +27,13 @@ Status checkRange(const char* field, double v, double lo, bool loOpen, double hi
     return Status::ok();
 }
 
+// A look field's one closed range, for the value set or, at -1, for the tier's look that -1
+// resolves to (a hand-filled profile may hold any value there).
+Status checkLookField(const char* field, float value, const char* lookField, float lookValue, double lo, double hi, const std::string& range) {
+    if (value != kTierValue) return checkRange(field, value, lo, false, hi, false, (range + ", or -1 for the tier's").c_str());
+    return checkRange(lookField, lookValue, lo, false, hi, false, range.c_str());
+}
+
 }  // namespace
 
 const char* toString(AoTechnique technique) {
@@ -84,17 +91,11 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
     // The lower bound keeps epsilon * r^2 a normal float (>= 1e-16 with epsilon >= 1e-8): smaller
     // radii underflow it to 0 on the GPU and a tap on the centre pixel would divide 0 by 0.
     SFX_TRY(checkRange("AoSettings.radius", s.radius, kAoMinRadius, false, 1000, false, "[1e-4, 1000]"));
-    if (s.intensity != kTierValue) SFX_TRY(checkRange("AoSettings.intensity", s.intensity, 0, false, 100, false, "[0, 100], or -1 for the tier's"));
-    if (s.contrast != kTierValue) SFX_TRY(checkRange("AoSettings.contrast", s.contrast, 0.1, false, 10, false, "[0.1, 10], or -1 for the tier's"));
-    if (s.bias != kTierValue) SFX_TRY(checkRange("AoSettings.bias", s.bias, 0, false, 1, false, "[0, 1], or -1 for the tier's"));
-    if (s.sumExponent != kTierValue)
-        SFX_TRY(checkRange("AoSettings.sumExponent", s.sumExponent, 0.5, false, 4, false, "[0.5, 4], or -1 for the tier's"));
-    // A hand-filled profile's look is what -1 resolves to: the same ranges hold for it.
     const AoLook& look = profile.aoLook[uint32_t(s.technique)];
-    if (s.intensity == kTierValue) SFX_TRY(checkRange("AoDesc.profile.aoLook.intensity", look.intensity, 0, false, 100, false, "[0, 100]"));
-    if (s.contrast == kTierValue) SFX_TRY(checkRange("AoDesc.profile.aoLook.contrast", look.contrast, 0.1, false, 10, false, "[0.1, 10]"));
-    if (s.bias == kTierValue) SFX_TRY(checkRange("AoDesc.profile.aoLook.bias", look.bias, 0, false, 1, false, "[0, 1]"));
-    if (s.sumExponent == kTierValue) SFX_TRY(checkRange("AoDesc.profile.aoLook.sumExponent", look.sumExponent, 0.5, false, 4, false, "[0.5, 4]"));
+    SFX_TRY(checkLookField("AoSettings.intensity", s.intensity, "AoDesc.profile.aoLook.intensity", look.intensity, 0, 100, "[0, 100]"));
+    SFX_TRY(checkLookField("AoSettings.contrast", s.contrast, "AoDesc.profile.aoLook.contrast", look.contrast, 0.1, 10, "[0.1, 10]"));
+    SFX_TRY(checkLookField("AoSettings.bias", s.bias, "AoDesc.profile.aoLook.bias", look.bias, 0, 1, "[0, 1]"));
+    SFX_TRY(checkLookField("AoSettings.sumExponent", s.sumExponent, "AoDesc.profile.aoLook.sumExponent", look.sumExponent, 0.5, 4, "[0.5, 4]"));
     // The bound is the float nearest 1e-8 (just below it): the documented minimum must be settable.
     SFX_TRY(checkRange("AoSettings.epsilon", s.epsilon, double(1e-8f), false, 1, false, "[1e-8, 1]"));
     const uint32_t maxSamples = uint32_t(shared::SFX_AO_MAX_SAMPLES);
