@@ -49,7 +49,7 @@ Renderer::~Renderer() {
         gl_.deleteBuffer(m.indices);
     }
     for (GLuint* fbo : {&gbufferFbo_, &litFbo_, &presentFbo_}) gl_.deleteFramebuffer(*fbo);
-    for (Target* t : {&depth_, &normals_, &velocity_, &albedo_, &lit_, &aoOutput_, &presented_}) gl_.deleteTexture(t->texture);
+    for (Target* t : {&depth_, &normals_, &velocity_, &albedo_, &lit_, &aoOutput_, &blurred_, &presented_}) gl_.deleteTexture(t->texture);
     gl_.deleteSampler(sampler_);
     gl_.deleteVertexArray(emptyVao_);
     destroyPrograms(gl_, programs_);
@@ -95,6 +95,7 @@ sfx::Status Renderer::createGlObjects() {
     albedo_ = {makeTarget(GL_RGBA8), GL_RGBA8};
     lit_ = {makeTarget(GL_RGBA16F), GL_RGBA16F};
     aoOutput_ = {makeTarget(GL_R16F), GL_R16F};
+    blurred_ = {makeTarget(GL_RGBA16F), GL_RGBA16F};
     presented_ = {makeTarget(GL_RGBA8), GL_RGBA8};
     SFX_TRY(framebuffer(gbufferFbo_, {normals_.texture, velocity_.texture, albedo_.texture}, depth_.texture, "G-buffer"));
     SFX_TRY(framebuffer(litFbo_, {lit_.texture}, 0, "composite"));
@@ -173,9 +174,10 @@ sfx::Status Renderer::createSdk() {
     sfx::Result<sfx::TextureHandle> velocity = import(velocity_, sampled, "host velocity");
     sfx::Result<sfx::TextureHandle> lit = import(lit_, sampled, "host lit colour");
     sfx::Result<sfx::TextureHandle> ao = import(aoOutput_, target, "host ao");
-    for (const auto* r : {&depth, &normals, &velocity, &lit, &ao})
+    sfx::Result<sfx::TextureHandle> blurred = import(blurred_, target, "host blurred colour");
+    for (const auto* r : {&depth, &normals, &velocity, &lit, &ao, &blurred})
         if (!*r) return r->status();
-    imported_ = {depth.value(), normals.value(), velocity.value(), lit.value(), ao.value(), {}};
+    imported_ = {depth.value(), normals.value(), velocity.value(), lit.value(), ao.value(), blurred.value()};
 
     sfx::AoSettings aoSettings;
     aoSettings.radius = 0.4f;
@@ -195,10 +197,6 @@ sfx::Status Renderer::createSdk() {
     if (!blur) return blur.status();
     blur_ = std::move(blur.value());
     blurSettings_.exposure = 1.0f;  // velocity is a whole frame's motion: a 360-degree shutter
-    imported_.blurred = blur_->output();
-    sfx::Result<sfx::gl::NativeTexture> native = sfx::gl::nativeTexture(*device_, blur_->output());
-    if (!native) return native.status();
-    blurredName_ = native->name;
     return sfx::Status::ok();
 }
 
@@ -301,12 +299,13 @@ sfx::Status Renderer::renderFrame(uint32_t index) {
     blurIn.color = imported_.lit;
     blurIn.depth = aoIn.depth;
     blurIn.velocity = imported_.velocity;
+    blurIn.output = imported_.blurred;  // into the host's texture: the present pass samples it
     const Clock::time_point blurStart = Clock::now();
     SFX_TRY(blur_->dispatch(blurIn, blurSettings_));
     lastDispatchMs_ = std::chrono::duration<double, std::milli>(aoTime + (Clock::now() - blurStart)).count();
     if (hooks.after) hooks.after(SdkCall::MotionBlur);
 
-    bindFullScreen(presentFbo_, programs_.present, {{kUnitBlurred, blurredName_}});
+    bindFullScreen(presentFbo_, programs_.present, {{kUnitBlurred, blurred_.texture}});
     gl_.DrawArrays(GL_TRIANGLES, 0, 3);
     gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
     SFX_TRY(hostErrors("present pass"));

@@ -4,7 +4,7 @@
 //      velocity RG16F (from the previous frame's transforms) and albedo RGBA8;
 //   2. sfx::AmbientObscurance on the host's depth and normals, into the host's R16F texture;
 //   3. composite pass (host): lit colour RGBA16F = albedo x (ambient x AO + sun x n.l);
-//   4. sfx::MotionBlur on the lit colour, depth and velocity, into the SDK's output texture;
+//   4. sfx::MotionBlur on the lit colour, depth and velocity, into the host's RGBA16F texture;
 //   5. present pass (host): the blurred colour to an RGBA8 texture (what a swap chain would get).
 // AO goes before the blur because the blur must move the final shaded colour: a moving
 // object's occlusion smears with it. Nothing is created, uploaded or read back per frame.
@@ -39,10 +39,10 @@ struct FrameHooks {
     std::function<void(SdkCall)> before, after;
 };
 
-// The host textures the SDK sees, imported once (sfx::gl::importTexture), and the SDK's output.
+// The host textures the SDK sees, imported once (sfx::gl::importTexture): its inputs and the two
+// the effects write (ao, blurred).
 struct ImportedTextures {
-    sfx::TextureHandle depth, normals, velocity, lit, ao;
-    sfx::TextureHandle blurred;  // MotionBlur::output(), the SDK's own texture
+    sfx::TextureHandle depth, normals, velocity, lit, ao, blurred;
 };
 
 class Renderer {
@@ -107,7 +107,7 @@ private:
         GLint modelView = -1, projection = -1, previousClip = -1, normalMatrix = -1, colour = -1, viewport = -1, sun = -1;
     } uniforms_;
     GLuint sampler_ = 0, emptyVao_ = 0;
-    Target depth_, normals_, velocity_, albedo_, lit_, aoOutput_, presented_;
+    Target depth_, normals_, velocity_, albedo_, lit_, aoOutput_, blurred_, presented_;
     GLuint gbufferFbo_ = 0, litFbo_ = 0, presentFbo_ = 0;
     std::vector<Mesh> meshes_;
     glm::dvec3 eye_{0.0}, target_{0.0};
@@ -116,7 +116,6 @@ private:
     std::unique_ptr<sfx::Device> device_;
     sfx::tiers::TierChoice tier_;
     ImportedTextures imported_;
-    GLuint blurredName_ = 0;  // sfx::gl::nativeTexture of the blur's output
     std::unique_ptr<sfx::AmbientObscurance> ao_;
     std::unique_ptr<sfx::MotionBlur> blur_;
     sfx::MotionBlurSettings blurSettings_;

@@ -1,6 +1,7 @@
 // The host renderer's own GLSL (ES 3.00, or 3.30 core on desktop GL): host code, not SDK shader
 // code. Three programs: the G-buffer raster pass, the composite (albedo lit with the SDK's AO)
-// and the present pass (the SDK's motion-blurred colour to display-referred RGBA8).
+// and the present pass (the motion-blurred colour the SDK wrote into the host's texture, to
+// display-referred RGBA8).
 #pragma once
 
 #include "egl_context.hpp"
