@@ -42,10 +42,31 @@ void main() {
     ivec2 base = ivec2(aoUpsampleBase(p.x), aoUpsampleBase(p.y));
     vec2 upper = vec2(aoUpsampleUpperWeight(p.x), aoUpsampleUpperWeight(p.y));
     float acc = 0.0, wsum = 0.0, nearestAo = 1.0, nearestGap = -1.0;
+    vec4 gatheredAo = vec4(0.0), gatheredDepth = vec4(0.0);
+    bool gathered = false;
+#ifdef SFX_TIER_HIGH
+    // With the depth in the AO target's G or B, the 2x2 footprint comes in two gathers (visibility,
+    // depth) instead of four fetches: a pass on a CPU rasteriser costs about one copy pass per
+    // fetch per pixel, and this full-size pass was the effect's dearest after the obscurance.
+    // GL ES 3.0 has no textureGather, so the current tier fetches. Gathering at the footprint's
+    // shared corner returns texels base + (0|1, 0|1), clamped to the edge by the null sampler,
+    // exactly what the fetches read; the order is (i0 j1, i1 j1, i1 j0, i0 j0).
+    if (kHalfDepthSource == SFX_AO_HALF_DEPTH_SOURCE_G || kHalfDepthSource == SFX_AO_HALF_DEPTH_SOURCE_B) {
+        vec2 corner = (vec2(base) + 1.0) / vec2(halfSize);
+        gatheredAo = textureGather(uSource, corner, 0);
+        gatheredDepth = kHalfDepthSource == SFX_AO_HALF_DEPTH_SOURCE_G ? textureGather(uSource, corner, 1) : textureGather(uSource, corner, 2);
+        gathered = true;
+    }
+#endif
     for (int j = 0; j < 2; ++j) {
         for (int i = 0; i < 2; ++i) {
-            ivec2 q = clamp(base + ivec2(i, j), ivec2(0), halfSize - 1);
-            vec2 t = halfTexel(q);
+            vec2 t;
+            if (gathered) {
+                int k = j == 1 ? (i == 1 ? 1 : 0) : (i == 1 ? 2 : 3);
+                t = vec2(gatheredAo[k], gatheredDepth[k]);
+            } else {
+                t = halfTexel(clamp(base + ivec2(i, j), ivec2(0), halfSize - 1));
+            }
             float a = t.x, zq = t.y;
             float bilinear = (i == 1 ? upper.x : 1.0 - upper.x) * (j == 1 ? upper.y : 1.0 - upper.y);
             float w = aoUpsampleWeight(bilinear, zq, z0);
