@@ -104,7 +104,7 @@ std::vector<std::string> xeGtaoDominance(const Options& o, const std::vector<Row
 }
 
 uint32_t aoTaps(const TierProfile& p, AoTechnique t) {
-    return t == AoTechnique::Alchemy ? p.aoAlchemySamples : t == AoTechnique::Scalable ? p.aoScalableTaps : 24u;
+    return t == AoTechnique::Alchemy ? p.aoAlchemySamples : t == AoTechnique::Scalable ? p.aoScalableTaps : p.aoCreaseTaps;
 }
 
 // A preset x technique's AO accuracy: over all held-out cases, and over their analytic scenes only.

@@ -47,15 +47,33 @@ SFX_CONST(float, SFX_AO_GOLDEN_ANGLE, 2.39996322972865332)
 // ---- Crease shading: the 24 taps of the 11x11 stippled diamond ------------------------------
 // The pixels (dx, dy) with |dx| + |dy| in {2, 4}: every other pixel of the diamond of
 // half-width 5 (a checkerboard stipple), the centre excluded. 8 taps on ring 2, 16 on ring 4.
+// Held as two halves of 12, each point-symmetric (neither leans to one side): half 0 the axis
+// taps of ring 2 and every other tap of ring 4 from (4, 0), half 1 the diagonals of ring 2 and the
+// rest of ring 4. The whole diamond takes both (tap 2j from half 0, 2j + 1 from half 1: each ring
+// in angular order). The current tier (TierProfile::aoCreaseTaps = 12) takes one half per pixel,
+// chosen by the pixel's checkerboard parity, so neighbours take complementary halves and the
+// blur that follows sees all 24 at half the fetches.
 SFX_CONST(int, SFX_AO_CREASE_TAPS, 24)
-SFX_ARRAY_BEGIN(ivec2, SFX_AO_CREASE_OFFSETS, 24)
-    SFX_IVEC2(2, 0), SFX_IVEC2(1, 1), SFX_IVEC2(0, 2), SFX_IVEC2(-1, 1),
-    SFX_IVEC2(-2, 0), SFX_IVEC2(-1, -1), SFX_IVEC2(0, -2), SFX_IVEC2(1, -1),
-    SFX_IVEC2(4, 0), SFX_IVEC2(3, 1), SFX_IVEC2(2, 2), SFX_IVEC2(1, 3),
-    SFX_IVEC2(0, 4), SFX_IVEC2(-1, 3), SFX_IVEC2(-2, 2), SFX_IVEC2(-3, 1),
-    SFX_IVEC2(-4, 0), SFX_IVEC2(-3, -1), SFX_IVEC2(-2, -2), SFX_IVEC2(-1, -3),
-    SFX_IVEC2(0, -4), SFX_IVEC2(1, -3), SFX_IVEC2(2, -2), SFX_IVEC2(3, -1)
+SFX_CONST(int, SFX_AO_CREASE_HALF_TAPS, 12)
+SFX_ARRAY_BEGIN(ivec2, SFX_AO_CREASE_HALF_0, 12)
+    SFX_IVEC2(2, 0), SFX_IVEC2(0, 2), SFX_IVEC2(-2, 0), SFX_IVEC2(0, -2),
+    SFX_IVEC2(4, 0), SFX_IVEC2(2, 2), SFX_IVEC2(0, 4), SFX_IVEC2(-2, 2),
+    SFX_IVEC2(-4, 0), SFX_IVEC2(-2, -2), SFX_IVEC2(0, -4), SFX_IVEC2(2, -2)
 SFX_ARRAY_END
+SFX_ARRAY_BEGIN(ivec2, SFX_AO_CREASE_HALF_1, 12)
+    SFX_IVEC2(1, 1), SFX_IVEC2(-1, 1), SFX_IVEC2(-1, -1), SFX_IVEC2(1, -1),
+    SFX_IVEC2(3, 1), SFX_IVEC2(1, 3), SFX_IVEC2(-1, 3), SFX_IVEC2(-3, 1),
+    SFX_IVEC2(-3, -1), SFX_IVEC2(-1, -3), SFX_IVEC2(1, -3), SFX_IVEC2(3, -1)
+SFX_ARRAY_END
+// The half (0 or 1) a pixel takes when it takes 12 taps.
+SFX_FN int aoCreaseParity(int x, int y) { return (x + y) & 1; }
+// Whether a pixel of that parity takes half `which` (0 or 1) of the diamond with `taps` taps per pixel.
+SFX_FN bool aoCreaseTakesHalf(int taps, int which, int parity) { return taps >= SFX_AO_CREASE_TAPS || which == parity; }
+// Occlusion from the sum of a pixel's tap terms: the sum scaled to the full 24 taps (so the look
+// means the same at 12), divided by the averager, faded with distance.
+SFX_FN SFX_REAL aoCreaseOcclusion(SFX_REAL sum, int taps, SFX_REAL intensity, SFX_REAL averager, SFX_REAL fade) {
+    return intensity * sum * (SFX_REAL(SFX_AO_CREASE_TAPS) / SFX_REAL(taps)) / averager * fade;
+}
 // The article's look: two blurs of the raw result, a wide one that lowers intensity and a
 // moderate one (half the width) that raises it, averaged. Gains on occlusion.
 SFX_CONST(float, SFX_AO_CREASE_WIDE_GAIN, 0.6)

@@ -52,6 +52,7 @@ inline TierProfile hostileProfile(FuzzedDataProvider& in) {
     p.aoDepthMipLevels = hostileCount(in);
     p.aoAlchemySamples = hostileCount(in);
     p.aoBlurRadiusPx = hostileCount(in);
+    p.aoCreaseTaps = hostileCount(in);
     p.aoPackedDepthTarget = in.ConsumeBool();
     p.mbTaps = hostileCount(in);
     p.mbMaxRadiusPx = hostileFloat(in);

@@ -3,9 +3,11 @@
 // under doubled resolution, never NaN or outside [0, 1]), plus settings validation.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <vector>
 
 #include "analytic_scenes.hpp"
 #include "sfx/ao.hpp"
@@ -97,8 +99,21 @@ TEST_CASE("ao settings: out-of-range values are named errors", "[ao][bad-input]"
     CHECK(validateAoSettings(s, high).message().find("AoSettings.samples") != std::string::npos);
     s = {};
     s.technique = AoTechnique::Crease;
-    s.samples = 12;
-    CHECK(validateAoSettings(s, high).message().find("AoSettings.samples") != std::string::npos);
+    for (uint32_t taps : {12u, 24u}) {  // the diamond's checkerboard half or all of it, on either tier
+        s.samples = taps;
+        CHECK(validateAoSettings(s, high).isOk());
+        CHECK(validateAoSettings(s, current).isOk());
+    }
+    for (uint32_t taps : {1u, 13u, 25u}) {
+        s.samples = taps;
+        st = validateAoSettings(s, high);
+        CHECK(st.message().find("AoSettings.samples") != std::string::npos);
+        CHECK(st.message().find("12 (half the diamond per pixel) or 24") != std::string::npos);
+    }
+    s = {};
+    TierProfile oddCrease = tiers::profile(Tier::Current);
+    oddCrease.aoCreaseTaps = 16;  // a hand-filled profile outside the two patterns
+    CHECK(validateAoSettings(s, oddCrease).message().find("AoDesc.profile") != std::string::npos);
     s = {};
     s.crease.fadeEnd = 10;
     s.crease.fadeStart = 20;
@@ -182,16 +197,52 @@ TEST_CASE("ao settings resolve to the tier table", "[ao]") {
     CHECK(sCurFull.maxRadiusPx == Approx(20));
     CHECK(sCurFull.blurRadius == 2);
     CHECK(configFor(AoTechnique::Crease, Tier::High, 1.0, false).blurRadius == 0);
+    CHECK(configFor(AoTechnique::Crease, Tier::High, 1.0, true).samples == 24);
+    CHECK(configFor(AoTechnique::Crease, Tier::Current, 1.0, true).samples == 12);
 }
 
 TEST_CASE("ao shared patterns: the crease diamond is 24 distinct stippled taps", "[ao]") {
-    for (int i = 0; i < shared::SFX_AO_CREASE_TAPS; ++i) {
-        const auto o = shared::SFX_AO_CREASE_OFFSETS[i];
+    std::vector<shared::ivec2> diamond;
+    for (int j = 0; j < shared::SFX_AO_CREASE_HALF_TAPS; ++j) diamond.push_back(shared::SFX_AO_CREASE_HALF_0[j]), diamond.push_back(shared::SFX_AO_CREASE_HALF_1[j]);
+    REQUIRE(diamond.size() == size_t(shared::SFX_AO_CREASE_TAPS));
+    for (size_t i = 0; i < diamond.size(); ++i) {
+        const auto o = diamond[i];
         const int m = std::abs(o.x) + std::abs(o.y);
         CHECK((m == 2 || m == 4));
-        for (int j = 0; j < i; ++j)
-            CHECK_FALSE((shared::SFX_AO_CREASE_OFFSETS[j].x == o.x && shared::SFX_AO_CREASE_OFFSETS[j].y == o.y));
+        for (size_t j = 0; j < i; ++j) CHECK_FALSE((diamond[j].x == o.x && diamond[j].y == o.y));
     }
+    // Each half point-symmetric (its offsets sum to 0) and holding 4 taps of ring 2, 8 of ring 4.
+    for (const auto* half : {shared::SFX_AO_CREASE_HALF_0, shared::SFX_AO_CREASE_HALF_1}) {
+        int sx = 0, sy = 0, ring2 = 0;
+        for (int j = 0; j < shared::SFX_AO_CREASE_HALF_TAPS; ++j)
+            sx += half[j].x, sy += half[j].y, ring2 += std::abs(half[j].x) + std::abs(half[j].y) == 2;
+        CHECK(sx == 0);
+        CHECK(sy == 0);
+        CHECK(ring2 == 4);
+    }
+    // The reference's taps: 24 on the high tier; 12 on the current tier, a pixel and its right
+    // neighbour taking complementary halves (each tap of the diamond once between them).
+    const auto rec = samples::facingPlaneScene(64, 48).reconstruction;
+    const AoConfig high = configFor(AoTechnique::Crease, Tier::High, 1.0, true);
+    const AoConfig current = configFor(AoTechnique::Crease, Tier::Current, 1.0, true);
+    for (uint32_t y = 10; y < 13; ++y)
+        for (uint32_t x = 10; x < 13; ++x) {
+            const std::vector<reference::AoTap> all = reference::aoTaps(high, rec, 64, 48, x, y, 5.0);
+            REQUIRE(all.size() == 24);
+            for (size_t i = 0; i < all.size(); ++i) {
+                CHECK(all[i].x == int(x) + diamond[i].x);
+                CHECK(all[i].y == int(y) + diamond[i].y);
+            }
+            std::vector<int> taken(diamond.size(), 0);
+            for (uint32_t px : {x, x + 1}) {
+                const std::vector<reference::AoTap> mine = reference::aoTaps(current, rec, 64, 48, px, y, 5.0);
+                REQUIRE(mine.size() == 12);
+                for (const reference::AoTap& t : mine)
+                    for (size_t i = 0; i < diamond.size(); ++i)
+                        if (t.x - int(px) == diamond[i].x && t.y - int(y) == diamond[i].y) ++taken[i];
+            }
+            CHECK(std::all_of(taken.begin(), taken.end(), [](int n) { return n == 1; }));
+        }
     // The rotation hash spreads neighbours over the circle.
     double sumCos = 0, sumSin = 0;
     for (int y = 0; y < 32; ++y)

@@ -22,7 +22,7 @@ namespace {
 // Every parameter of a profile, for comparing whole profiles.
 auto fields(const TierProfile& p) {
     return std::make_tuple(p.tier, p.aoScalableTaps, p.aoScalableMirrored, p.aoScalableMaxRadiusPx, p.aoUsesDepthMip,
-                           p.aoDepthMipLevels, p.aoAlchemySamples, p.aoBlurRadiusPx, p.aoPackedDepthTarget, p.mbTaps,
+                           p.aoDepthMipLevels, p.aoAlchemySamples, p.aoBlurRadiusPx, p.aoCreaseTaps, p.aoPackedDepthTarget, p.mbTaps,
                            p.mbMaxRadiusPx, p.mbJitterSize, p.abufferOit);
 }
 
@@ -71,11 +71,11 @@ TEST_CASE("tier table: the default presets hold the parameters the tiers always 
     // Written out here, apart from the table, so that moving the values into it changed none.
     TierProfile expected[kTierCount];
     expected[0] = {.tier = Tier::Current, .aoScalableTaps = 4, .aoScalableMirrored = true, .aoScalableMaxRadiusPx = 20.0f,
-                   .aoUsesDepthMip = false, .aoDepthMipLevels = 1, .aoAlchemySamples = 6, .aoBlurRadiusPx = 2,
+                   .aoUsesDepthMip = false, .aoDepthMipLevels = 1, .aoAlchemySamples = 6, .aoBlurRadiusPx = 2, .aoCreaseTaps = 12,
                    .aoPackedDepthTarget = true, .mbTaps = 7, .mbMaxRadiusPx = 10.0f, .mbJitterSize = 2, .abufferOit = false};
     expected[1] = {.tier = Tier::High, .aoScalableTaps = 9, .aoScalableMirrored = false, .aoScalableMaxRadiusPx = 0.0f,
                    .aoUsesDepthMip = true, .aoDepthMipLevels = uint32_t(shared::SFX_DEPTH_MIP_MAX_LEVELS),
-                   .aoAlchemySamples = 12, .aoBlurRadiusPx = 6, .aoPackedDepthTarget = false, .mbTaps = 9,
+                   .aoAlchemySamples = 12, .aoBlurRadiusPx = 6, .aoCreaseTaps = 24, .aoPackedDepthTarget = false, .mbTaps = 9,
                    .mbMaxRadiusPx = 18.0f, .mbJitterSize = 4, .abufferOit = true};
     for (uint32_t i = 0; i < kTierCount; ++i) {
         INFO(toString(Tier(i)));

@@ -67,6 +67,9 @@ TierProfile currentDefault() {
     p.aoDepthMipLevels = 1;
     p.aoAlchemySamples = 6;
     p.aoBlurRadiusPx = 2;  // 5-tap separable bilateral
+    // Crease's diamond halved by checkerboard (the blur completes it): its 24 fetches made the
+    // current tier's crease the one default over issue 10's 12 copy passes (docs/trade.md).
+    p.aoCreaseTaps = 12;
     // The look fitted against ray-traced truth (samples/fit_ao, docs/trade.md); before the
     // calibration every tier had the papers' 1, 1, 1e-4 / 0.02, range 1, bias 0.25.
     p.aoLook[0] = {.intensity = 0.472871f, .contrast = 1.38237f, .bias = 1.59371e-7f};                             // alchemy
@@ -97,6 +100,7 @@ TierProfile highDefault() {
     p.aoDepthMipLevels = uint32_t(shared::SFX_DEPTH_MIP_MAX_LEVELS);
     p.aoAlchemySamples = 12;  // the paper's 12 samples per pixel
     p.aoBlurRadiusPx = 6;     // 13-tap, as Alchemy's filter
+    p.aoCreaseTaps = 24;      // the article's whole diamond
     p.aoLook[0] = {.intensity = 0.392128f, .contrast = 1.77828f, .bias = 1e-7f};                               // alchemy
     // Scalable with its sum exponent fitted (samples/fit_ao --start tier, at half resolution).
     p.aoLook[1] = {.intensity = 0.187609f, .contrast = 7.36525f, .bias = 0.0468752f, .sumExponent = 0.707107f};  // scalable

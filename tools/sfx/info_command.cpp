@@ -33,6 +33,8 @@ const ParameterRow kParameterRows[] = {
      [](const TierProfile& p) { return p.aoScalableMaxRadiusPx > 0 ? std::to_string(int(p.aoScalableMaxRadiusPx)) : std::string("none"); }},
     {"depth MIP levels read by AO", [](const TierProfile& p) { return std::to_string(p.aoDepthMipLevels); }},
     {"Alchemy samples per pixel", [](const TierProfile& p) { return std::to_string(p.aoAlchemySamples); }},
+    {"crease AO taps per pixel",
+     [](const TierProfile& p) { return std::string(p.aoCreaseTaps == 24 ? "24 (the 11x11 stippled diamond)" : "12 (half the diamond, by checkerboard)"); }},
     {"AO resolution (obscurance and blur)", [](const TierProfile& p) { return std::string(p.aoHalfResolution ? "half, depth-aware upsample" : "full"); }},
     {"AO depth layers at most (multilayer AO)", [](const TierProfile& p) { return p.aoMaxDepthLayers > 1 ? std::to_string(p.aoMaxDepthLayers) : std::string("1 (single layer only)"); }},
     {"AO bilateral blur half-width (px)", [](const TierProfile& p) { return std::to_string(p.aoBlurRadiusPx); }},

@@ -50,7 +50,7 @@ inline constexpr float kAoMinRadius = 1e-4f;
 struct AoCreaseSettings {
     float range = -1.0f;          // [1e-4, 1000] world distance at which a tap's influence reaches 0; -1 = the tier's (AoLook)
     float bias = -1.0f;           // (0, 100]  scales (cos - minimumCrease) before saturating; -1 = the tier's (AoLook)
-    float averager = 10.0f;       // (0, 1000] divisor of the summed 24 taps
+    float averager = 10.0f;       // (0, 1000] divisor of the tap sum (scaled to 24 taps when 12 are taken)
     float minimumCrease = 0.3f;   // [-1, 1)   cosine below which a tap adds nothing (stops radial banding)
     float fadeStart = 50.0f;      // [0, inf)  linear depth where the distance fade begins
     float fadeEnd = 100.0f;       // (fadeStart, inf] linear depth where crease shading is gone
@@ -74,7 +74,8 @@ struct AoSettings {
     float sumExponent = -1.0f;
     float epsilon = 1e-4f;   // [1e-8, 1] guards divisions; in units of radius^2 (scale-invariant)
     uint32_t samples = 0;    // 0 = tier default; Alchemy [1, 64]; Scalable [1, 64] (even on the
-                             // current tier: mirrored pairs); Crease 0 or 24 (its pattern is fixed)
+                             // current tier: mirrored pairs); Crease 0, 12 (the diamond's checkerboard
+                             // half per pixel) or 24 (the whole diamond)
     bool blur = true;        // the separable depth-aware bilateral blur (and crease's two-blur look)
     uint32_t blurRadius = 0; // 0 = tier default (TierProfile::aoBlurRadiusPx); else [1, SFX_AO_MAX_BLUR_RADIUS] px
                              // of the output; at half resolution the blur takes (r + 1) / 2 half-size taps each side

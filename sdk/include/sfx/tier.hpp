@@ -53,6 +53,9 @@ struct TierProfile {
     uint32_t aoDepthMipLevels = 0;     // levels of that pyramid (level 0 included)
     uint32_t aoAlchemySamples = 0;     // default Alchemy sample count
     uint32_t aoBlurRadiusPx = 0;       // bilateral blur half-width
+    // Crease taps per pixel: 24 (the article's 11x11 stippled diamond) or 12 (its checkerboard
+    // half, alternating between neighbours: the blur sees all 24 at half the fetches).
+    uint32_t aoCreaseTaps = 24;
     AoLook aoLook[3];                  // per technique, indexed by AoTechnique (alchemy, scalable, crease)
     // With blur, where the blur finds each pixel's depth. true (current tier): the raw AO goes to
     // an RGBA8 target with a 16-bit depth key packed in b, a (one fetch per tap, 8-bit targets

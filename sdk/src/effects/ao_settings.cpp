@@ -19,6 +19,8 @@ std::string num(double v) {
 // The value of an AoSettings look field that means "the tier preset's AoLook".
 constexpr float kTierValue = -1.0f;
 float orTier(float value, float tierValue) { return value == kTierValue ? tierValue : value; }
+// Crease's other tap count: the checkerboard half of its diamond (shared::aoCreaseTapIndex).
+constexpr uint32_t kCreaseHalfTaps = uint32_t(shared::SFX_AO_CREASE_TAPS) / 2;
 
 Status checkRange(const char* field, double v, double lo, bool loOpen, double hi, bool hiOpen, const char* allowed) {
     const bool aboveLo = loOpen ? v > lo : v >= lo;
@@ -84,6 +86,7 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
     if (profile.aoScalableTaps > uint32_t(shared::SFX_AO_MAX_SAMPLES) || profile.aoAlchemySamples > uint32_t(shared::SFX_AO_MAX_SAMPLES) ||
         (profile.aoScalableMirrored && profile.aoScalableTaps % 2 != 0) ||
         profile.aoBlurRadiusPx > uint32_t(shared::SFX_AO_MAX_BLUR_RADIUS) || !(profile.aoScalableMaxRadiusPx >= 0.0f) ||
+        (profile.aoCreaseTaps != kCreaseHalfTaps && profile.aoCreaseTaps != uint32_t(shared::SFX_AO_CREASE_TAPS)) ||
         std::isinf(profile.aoScalableMaxRadiusPx))
         return invalidArgument("AoDesc.profile", "a tier profile with counts outside the shaders' limits",
                                "tiers::profile(tier) or tiers::choose(caps)->profile");
@@ -100,8 +103,9 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
     SFX_TRY(checkRange("AoSettings.epsilon", s.epsilon, double(1e-8f), false, 1, false, "[1e-8, 1]"));
     const uint32_t maxSamples = uint32_t(shared::SFX_AO_MAX_SAMPLES);
     if (s.technique == AoTechnique::Crease) {
-        if (s.samples != 0 && s.samples != uint32_t(shared::SFX_AO_CREASE_TAPS))
-            return invalidArgument("AoSettings.samples", std::to_string(s.samples), "0 or 24 for Crease (its 11x11 stippled diamond is fixed)");
+        if (s.samples != 0 && s.samples != kCreaseHalfTaps && s.samples != uint32_t(shared::SFX_AO_CREASE_TAPS))
+            return invalidArgument("AoSettings.samples", std::to_string(s.samples),
+                                   "0 (the tier's), 12 (half the diamond per pixel) or 24 (the whole 11x11 stippled diamond) for Crease");
     } else if (s.samples > maxSamples) {
         return invalidArgument("AoSettings.samples", std::to_string(s.samples), "[0, " + std::to_string(maxSamples) + "] (0 = tier default)");
     } else if (s.technique == AoTechnique::Scalable && profile.aoScalableMirrored && s.samples % 2 != 0) {
@@ -175,7 +179,7 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
             break;
         case AoTechnique::Crease:
             c.bias = 0;
-            c.samples = uint32_t(shared::SFX_AO_CREASE_TAPS);
+            c.samples = s.samples ? s.samples : profile.aoCreaseTaps;
             break;
     }
     return c;

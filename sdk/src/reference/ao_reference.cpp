@@ -81,9 +81,12 @@ std::vector<AoTap> aoTaps(const AoConfig& c, const DepthReconstruction& rec, uin
             break;
         }
         case AoTechnique::Crease:
-            for (int i = 0; i < sh::SFX_AO_CREASE_TAPS; ++i)
-                taps.push_back({std::clamp(int(x) + sh::SFX_AO_CREASE_OFFSETS[i].x, 0, int(w) - 1),
-                                std::clamp(int(y) + sh::SFX_AO_CREASE_OFFSETS[i].y, 0, int(h) - 1), 0});
+            for (int j = 0; j < sh::SFX_AO_CREASE_HALF_TAPS; ++j)
+                for (int half = 0; half < 2; ++half) {
+                    if (!sh::aoCreaseTakesHalf(int(c.samples), half, sh::aoCreaseParity(int(x), int(y)))) continue;
+                    const auto o = half == 0 ? sh::SFX_AO_CREASE_HALF_0[j] : sh::SFX_AO_CREASE_HALF_1[j];
+                    taps.push_back({std::clamp(int(x) + o.x, 0, int(w) - 1), std::clamp(int(y) + o.y, 0, int(h) - 1), 0});
+                }
             break;
     }
     return taps;
@@ -111,7 +114,7 @@ double aoOcclusionFromSum(const AoConfig& c, double sum, double z) {
             const AoCreaseSettings& k = c.crease;
             const double invFade = std::isinf(k.fadeEnd) ? 0.0 : 1.0 / (double(k.fadeEnd) - double(k.fadeStart));
             const double fade = 1.0 - saturate((z - double(k.fadeStart)) * invFade);
-            return c.intensity * sum / double(k.averager) * fade;
+            return sh::aoCreaseOcclusion(sum, int(c.samples), c.intensity, double(k.averager), fade);
         }
     }
     return 0.0;
