@@ -85,7 +85,10 @@ float sfxOitRound(float v) { return floor(v + 0.5); }
 //   word 4     bit 31: front-facing; bits 0..30: draw index
 //   word 5     primitive id (gl_PrimitiveID of the draw)
 //   word 6     index of the next node of the pixel's list, SFX_OIT_NULL_INDEX at the end
-//   word 7     unused (keeps a node 32 bytes, two uvec4 loads)
+//   word 7     the transmittance in front of the fragment (floatBitsToUint): the product of
+//              (1 - opacity) over the fragments before it in (depth, draw, primitive) order,
+//              written by the resolve when layer AO follows it (SFX_OIT_SC_RESOLVE_TRANSMITTANCE),
+//              so the AO pass walks each list once instead of sorting it again; 0 from the fill
 SFX_CONST(int, SFX_OIT_NODE_WORDS, 8)
 SFX_CONST(SFX_UINT, SFX_OIT_NULL_INDEX, 0xFFFFFFFFu)
 SFX_CONST(SFX_UINT, SFX_OIT_FRONT_FACING_BIT, 0x80000000u)

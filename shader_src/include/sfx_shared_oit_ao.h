@@ -33,6 +33,7 @@ layout(constant_id = SFX_OIT_SC_AO_SAMPLES) const int kSamples = 1;
 layout(constant_id = SFX_OIT_SC_AO_MIRRORED) const int kMirrored = 0;
 
 ivec2 gSize;
+const float SFX_OIT_AO_SUM_SCALE = 16777216.0;  // 2^24: the fixed-point step of the blended sum
 
 float opaqueDepthAt(ivec2 q) {
     return sfxLinearizeDepth(texelFetch(uOpaqueDepth, q, 0).r, ao.ndcScale, ao.denomOffset, ao.numerator, ao.maxDepth);
@@ -77,7 +78,10 @@ float tapOcclusion(ivec2 q, vec3 C, vec3 n, float z, float exteriorWeight) {
         occlusion = max(occlusion, occluderTerm(q, zq, alpha, C, n, z, exteriorWeight));
     }
 #else
-    uint steps = uint(ao.capacity);
+    // The walk's bound from the pool's own header, not the uniform block: loop bounds read from
+    // a uniform block make lavapipe inline their values and JIT-compile the pass again at every
+    // draw (100 to 500 ms a frame at 320x180; docs/oit.md).
+    uint steps = pool.capacity;
     // A fixed trip count (the most layers the resolve keeps), the same in every lane: llvmpipe and
     // lavapipe read wrong list nodes for whole 4x4 blocks when lanes left this nested walk at
     // different iterations (docs/oit.md).
@@ -111,7 +115,9 @@ float receiverVisibility(ivec2 p, float z, vec3 n, float exteriorWeight) {
         }
         return clamp(finishOcclusion(2.0 * ao.intensity * ao.radius / float(kSamples) * sum), 0.0, 1.0);
     }
-    if (ao.maxRadiusPx > 0.0) screenRadius = min(screenRadius, ao.maxRadiusPx);
+    // A select, not a branch: a branch on uniform values alone lets lavapipe inline them and
+    // JIT-compile the shader again at every draw (see the pool's capacity below).
+    screenRadius = ao.maxRadiusPx > 0.0 ? min(screenRadius, ao.maxRadiusPx) : screenRadius;
     const int offsets = kMirrored != 0 ? kSamples / 2 : kSamples;
     for (int i = 0; i < offsets; ++i) {
         float alpha = (float(i) + 0.5) / float(offsets);
@@ -130,46 +136,44 @@ void main() {
     float zo = opaqueDepthAt(p);
     float opaqueVisibility = 1.0;
     if (zo < ao.maxDepth) opaqueVisibility = receiverVisibility(p, zo, opaqueNormal(p, positionAt(p, zo), zo), 1.0);
-    // The pixel's fragments in (depth, draw id, primitive id) order, by repeated selection of the
-    // next key (no registers per layer, and bounded by the pool's capacity like the resolve).
+    // One walk over the pixel's list: the resolve stored in each node the transmittance in front of
+    // it (word 7, in sorted order), so no second sort. The sum of T_i alpha_i v_i is taken in fixed
+    // point (2^-24 steps; the terms sum to at most 1) so that it is exact whatever the list order,
+    // and the output stays bit-identical when the draw order changes. The front fragment (for the
+    // filter's key) and the back one (whose T (1 - alpha) is what reaches the opaque surface) are
+    // the least and greatest (depth, draw, primitive) keys.
     uint head = imageLoad(uHeads, p).x;
-    uint steps = uint(ao.capacity);
-    float acc = 0.0, transmittance = 1.0, frontDepth = zo;
+    uint steps = pool.capacity;
+    uint sum = 0u;
     bool any = false;
-    float lastDepth = 0.0;
-    uint lastDraw = 0u, lastPrimitive = 0u;
-    bool more = true;
-    for (uint t = 0u; more && t < steps; ++t) {
-        bool found = false;
-        float bestDepth = 0.0;
-        uint bestDraw = 0u, bestPrimitive = 0u;
-        uvec4 bestLo = uvec4(0u), bestHi = uvec4(0u);
-        for (uint node = head, s = 0u; node != SFX_OIT_NULL_INDEX && node < steps && s < steps; ++s) {
-            uvec4 lo = pool.nodes[2u * node], hi = pool.nodes[2u * node + 1u];
-            node = hi.z;
-            float depth = oitNodeDepth(lo);
-            uint drawId = oitDrawIndex(hi.x), primitive = hi.y;
-            if (any && !oitBefore(lastDepth, lastDraw, lastPrimitive, depth, drawId, primitive)) continue;
-            if (found && !oitBefore(depth, drawId, primitive, bestDepth, bestDraw, bestPrimitive)) continue;
-            found = true;
-            bestDepth = depth;
-            bestDraw = drawId;
-            bestPrimitive = primitive;
-            bestLo = lo;
-            bestHi = hi;
+    float frontDepth = zo, backDepth = 0.0, transmittance = 1.0;
+    uint frontDraw = 0u, frontPrimitive = 0u, backDraw = 0u, backPrimitive = 0u;
+    for (uint node = head, s = 0u; node != SFX_OIT_NULL_INDEX && node < steps && s < steps; ++s) {
+        uvec4 lo = pool.nodes[2u * node], hi = pool.nodes[2u * node + 1u];
+        node = hi.z;
+        float depth = oitNodeDepth(lo);
+        uint drawId = oitDrawIndex(hi.x), primitive = hi.y;
+        float alpha = oitNodeColor(lo).a;
+        float stored = uintBitsToFloat(hi.w);
+        float inFront = stored >= 0.0 ? min(stored, 1.0) : 0.0;  // a NaN stays out
+        if (!any || oitBefore(depth, drawId, primitive, frontDepth, frontDraw, frontPrimitive)) {
+            frontDepth = depth;
+            frontDraw = drawId;
+            frontPrimitive = primitive;
         }
-        more = found;
-        if (!found) continue;
-        if (!any) frontDepth = bestDepth;
+        if (!any || oitBefore(backDepth, backDraw, backPrimitive, depth, drawId, primitive)) {
+            backDepth = depth;
+            backDraw = drawId;
+            backPrimitive = primitive;
+            transmittance = inFront * (1.0 - alpha);
+        }
+        // Only the weight and the receiver's own terms stay live across the taps.
+        float weight = inFront * alpha;
+        float v = receiverVisibility(p, depth, oitNodeNormal(lo), oitExteriorWeight(alpha, oitFrontFacing(hi.x)));
+        sum += uint(clamp(weight * v, 0.0, 1.0) * SFX_OIT_AO_SUM_SCALE + 0.5);
         any = true;
-        lastDepth = bestDepth;
-        lastDraw = bestDraw;
-        lastPrimitive = bestPrimitive;
-        float alpha = oitNodeColor(bestLo).a;
-        float v = receiverVisibility(p, bestDepth, oitNodeNormal(bestLo), oitExteriorWeight(alpha, oitFrontFacing(bestHi.x)));
-        acc += transmittance * alpha * v;
-        transmittance *= 1.0 - alpha;
     }
+    float acc = float(sum) / SFX_OIT_AO_SUM_SCALE;
     outAo = vec4(acc + transmittance * opaqueVisibility, opaqueVisibility, frontDepth, zo);
 }
 

@@ -26,8 +26,9 @@ SFX_BLOCK_END(draw)
 #if defined(__cplusplus) || defined(SFX_WANT_OIT_RESOLVE_PARAMS)
 SFX_BLOCK(OitResolveParams, 4)
     SFX_M_INT(maxLayers)  // K: fragments kept exactly per pixel, [1, SFX_OIT_MAX_KEPT_LAYERS]
-    SFX_M_INT(capacity)   // nodes in the pool: no list walk takes more steps than this
-    SFX_M_INT(pad0) SFX_M_INT(pad1)
+    // No list walk takes more steps than the pool header's capacity, read from the pool itself:
+    // a loop bound from this block would make lavapipe recompile the pass at every draw.
+    SFX_M_INT(pad0) SFX_M_INT(pad1) SFX_M_INT(pad4)
     // The compressing resolve (oit_resolve_compress.frag) only: the opaque depth's linearisation
     // (sfxLinearizeDepth) and the range [zNear, zFar] depths are normalised over.
     SFX_M_FLOAT(ndcScale) SFX_M_FLOAT(denomOffset) SFX_M_FLOAT(numerator) SFX_M_FLOAT(maxDepth)
@@ -39,6 +40,9 @@ SFX_BLOCK_END(resolve)
 // searched for the node to drop (SFX_OIT_SC_* ids, plain macros for both languages).
 #define SFX_OIT_SC_COMPRESS_NODES 0
 #define SFX_OIT_SC_COMPRESS_BACK_HALF 1
+// Both resolves: 1 when layer AO follows, so the resolve writes each node's transmittance in
+// front of it (word 7 of the node, sfx_shared_oit.h) while it has the list sorted.
+#define SFX_OIT_SC_RESOLVE_TRANSMITTANCE 2
 
 // The compressed lists (storage buffer OitCompressed): SFX_OIT_COMPRESSED_WORDS words per pixel,
 // pixel (x, y) at word (y * width + x) * SFX_OIT_COMPRESSED_WORDS: the x, y and z of the packed
@@ -52,7 +56,7 @@ SFX_BLOCK(OitAoParams, 4)
     SFX_M_FLOAT(radius) SFX_M_FLOAT(intensity) SFX_M_FLOAT(contrast) SFX_M_FLOAT(bias)
     SFX_M_FLOAT(epsilon) SFX_M_FLOAT(pixelsPerUnit) SFX_M_FLOAT(maxRadiusPx) SFX_M_FLOAT(maxDepth)
     SFX_M_FLOAT(spiralTurns) SFX_M_FLOAT(ndcScale) SFX_M_FLOAT(denomOffset) SFX_M_FLOAT(numerator)
-    SFX_M_FLOAT(zNear) SFX_M_FLOAT(zFar) SFX_M_INT(capacity) SFX_M_FLOAT(sumExponent)
+    SFX_M_FLOAT(zNear) SFX_M_FLOAT(zFar) SFX_M_INT(pad0) SFX_M_FLOAT(sumExponent)  // walks: the pool header's capacity
 SFX_BLOCK_END(ao)
 #endif
 // Its specialisation constants: the technique (0 Alchemy, 1 Scalable), taps, mirrored pairs.
@@ -73,7 +77,7 @@ SFX_CONST(int, SFX_OIT_POOL_HEADER_BYTES, 16)
 #ifdef __cplusplus
 static_assert(sizeof(OitDrawParams) == 224 && offsetof(OitDrawParams, drawId) == 208);
 static_assert(sizeof(OitResolveParams) == 48 && offsetof(OitResolveParams, ndcScale) == 16);
-static_assert(sizeof(OitAoParams) == 80 && offsetof(OitAoParams, radius) == 16 && offsetof(OitAoParams, capacity) == 72);
+static_assert(sizeof(OitAoParams) == 80 && offsetof(OitAoParams, radius) == 16 && offsetof(OitAoParams, sumExponent) == 76);
 }  // namespace sfx::shared
 #endif
 

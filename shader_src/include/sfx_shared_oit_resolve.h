@@ -8,6 +8,8 @@
 // list (the paper's section III-B): every fragment in sorted order, then the opaque surface at
 // opacity 1, into M (normalised depth, opacity) nodes by sfx_shared_oit.h's oitCompressInsert,
 // written to the OitCompressed buffer (SFX_OIT_COMPRESSED_WORDS words per pixel).
+// With layer AO after it (kWriteTransmittance) it also stores in each node the transmittance in
+// front of that fragment, in the same sorted order, for the AO pass's single walk.
 // GLSL only: included by oit_resolve.frag and oit_resolve_compress.frag.
 #ifndef SFX_SHARED_OIT_RESOLVE_H
 #define SFX_SHARED_OIT_RESOLVE_H
@@ -16,9 +18,10 @@
 #include "sfx_shared_oit.h"
 
 layout(set = 0, binding = 0) uniform sampler2D uOpaque;
-layout(set = 0, binding = 1, std430) readonly buffer OitPool SFX_OIT_POOL_BODY
+layout(set = 0, binding = 1, std430) buffer OitPool SFX_OIT_POOL_BODY  // word 7 of each node written
 layout(set = 0, binding = 2, r32ui) uniform readonly uimage2D uHeads;
 layout(location = 0) out vec4 outColor;
+layout(constant_id = SFX_OIT_SC_RESOLVE_TRANSMITTANCE) const int kWriteTransmittance = 0;
 #ifdef SFX_OIT_COMPRESS
 layout(set = 0, binding = 3, std430) writeonly buffer OitCompressed { uint words[]; } compressed;
 layout(set = 0, binding = 5) uniform sampler2D uOpaqueDepth;  // the opaque pass's depth attachment
@@ -40,13 +43,24 @@ float keptDepth[SFX_OIT_MAX_KEPT_LAYERS];
 uint keptDraw[SFX_OIT_MAX_KEPT_LAYERS];
 uint keptPrimitive[SFX_OIT_MAX_KEPT_LAYERS];
 uvec2 keptColor[SFX_OIT_MAX_KEPT_LAYERS];
+uint keptNode[SFX_OIT_MAX_KEPT_LAYERS];
+
+// The transmittance in front of the next fragment in sorted order, and its store into that node.
+float gInFront = 1.0;
+void passFragment(uint node, float alpha) {
+    if (kWriteTransmittance != 0) pool.nodes[2u * node + 1u].w = floatBitsToUint(gInFront);
+    gInFront *= 1.0 - alpha;
+}
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 opaque = texelFetch(uOpaque, pixel, 0);
     uint head = imageLoad(uHeads, pixel).x;
     int k = resolve.maxLayers;
-    uint steps = uint(resolve.capacity);
+    // Walks are bounded by the pool header's capacity, not OitResolveParams.capacity: a loop bound
+    // from a uniform block makes lavapipe inline the value and JIT-compile the pass again at every
+    // draw (the resolve cost 535 ms at 320x180 on a scene of 0.3 fragments per pixel; 5.6 ms now).
+    uint steps = pool.capacity;
     int kept = 0;
     uint total = 0u;
     for (uint node = head, s = 0u; node != SFX_OIT_NULL_INDEX && node < steps && s < steps; ++s) {
@@ -54,6 +68,7 @@ void main() {
         float depth = oitNodeDepth(lo);
         uint drawId = oitDrawIndex(hi.x), primitive = hi.y;
         total += 1u;
+        uint self = node;
         node = hi.z;
         // Insert into the sorted kept set; when full, only if nearer than its last.
         int at = kept < k ? kept : k;
@@ -64,12 +79,14 @@ void main() {
             keptDraw[at] = keptDraw[at - 1];
             keptPrimitive[at] = keptPrimitive[at - 1];
             keptColor[at] = keptColor[at - 1];
+            keptNode[at] = keptNode[at - 1];
             at -= 1;
         }
         keptDepth[at] = depth;
         keptDraw[at] = drawId;
         keptPrimitive[at] = primitive;
         keptColor[at] = lo.xy;
+        keptNode[at] = self;
         kept = min(kept + 1, k);
     }
 #ifdef SFX_OIT_COMPRESS
@@ -80,7 +97,9 @@ void main() {
 #endif
     vec4 acc = vec4(0.0, 0.0, 0.0, 1.0);
     for (int i = 0; i < kept; ++i) {
-        oitCompositeFront(acc, oitNodeColor(uvec4(keptColor[i], 0u, 0u)));
+        vec4 color = oitNodeColor(uvec4(keptColor[i], 0u, 0u));
+        oitCompositeFront(acc, color);
+        passFragment(keptNode[i], color.a);
         SFX_OIT_COMPRESS_FRAGMENT(uvec4(keptColor[i], floatBitsToUint(keptDepth[i]), 0u));
     }
     if (total > uint(kept)) {
@@ -94,8 +113,10 @@ void main() {
             float bestDepth = 0.0;
             uint bestDraw = 0u, bestPrimitive = 0u;
             uvec2 bestColor = uvec2(0u);
+            uint bestNode = 0u;
             for (uint node = head, s = 0u; node != SFX_OIT_NULL_INDEX && node < steps && s < steps; ++s) {
                 uvec4 lo = pool.nodes[2u * node], hi = pool.nodes[2u * node + 1u];
+                uint self = node;
                 node = hi.z;
                 float depth = oitNodeDepth(lo);
                 uint drawId = oitDrawIndex(hi.x), primitive = hi.y;
@@ -106,9 +127,12 @@ void main() {
                 bestDraw = drawId;
                 bestPrimitive = primitive;
                 bestColor = lo.xy;
+                bestNode = self;
             }
             if (!found) break;
-            oitTailAccumulate(tail, tailTransmittance, oitNodeColor(uvec4(bestColor, 0u, 0u)));
+            vec4 color = oitNodeColor(uvec4(bestColor, 0u, 0u));
+            oitTailAccumulate(tail, tailTransmittance, color);
+            passFragment(bestNode, color.a);
             SFX_OIT_COMPRESS_FRAGMENT(uvec4(bestColor, floatBitsToUint(bestDepth), 0u));
             lastDepth = bestDepth;
             lastDraw = bestDraw;

@@ -1,14 +1,18 @@
-// Steady frames: once an effect has run at a size and settings, the frames after it make no
+// Steady frames: once an effect (AO, motion blur, transparency) has run at a size and settings, the frames after it make no
 // object (Device::stats() the same before and after, creation totals included) and the
 // process's resident memory stays flat, on every backend and tier.
 #include <catch2/catch.hpp>
 
 #include <cstdio>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "analytic_scenes.hpp"
+#include "effect_runs.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/half.hpp"
 #include "sfx/motion_blur.hpp"
+#include "sfx/oit.hpp"
 #include "steady_frames.hpp"
 #include "test_device.hpp"
 
@@ -158,6 +162,55 @@ void checkResizeKeepsPipelines(const std::string& what, Resize&& resize, Frame&&
 }
 
 }  // namespace
+
+TEST_CASE("steady frames: transparency makes no object and keeps memory flat", "[steady][oit]") {
+    // The high tier's A-buffer with compressed lists and layer AO (brute force and compressed,
+    // filtered), the current tier's weighted blended OIT. (The filter's vertical pipeline was once
+    // made again at every frame: 300 pipelines and about 1 MiB a frame.)
+    Device& dev = test::device();
+    const test::TranslucentQuads quads(dev, kWidth, kHeight, 0.8f, {0.3f, 0.1f});
+    TextureHandle color =
+        dev.createTexture({kWidth, kHeight, 1, Format::RGBA16F, kTextureSampled | kTextureRenderTarget, "steady-opaque"}).value();
+    const std::vector<uint16_t> grey(size_t(kWidth) * kHeight * 4, floatToHalf(0.5f));
+    SFX_REQUIRE_OK(dev.writeTexture(color, 0, grey.data(), grey.size() * sizeof(uint16_t)));
+    const bool layers = test::tierProfile().abufferOit;
+    std::vector<std::pair<std::string, TransparencyDesc>> configs;
+    TransparencyDesc plain;
+    plain.width = kWidth;
+    plain.height = kHeight;
+    plain.profile = test::tierProfile();
+    configs.push_back({layers ? "a-buffer" : "weighted blended", plain});
+    if (layers) {
+        for (TransparencyAoOccluders occ : {TransparencyAoOccluders::BruteForce, TransparencyAoOccluders::Compressed}) {
+            TransparencyDesc d = plain;
+            d.compressedNodes = 4;
+            d.ao.enabled = true;
+            d.ao.config.technique = AoTechnique::Scalable;
+            d.ao.config.radius = 0.5;
+            d.ao.config.samples = 9;
+            d.ao.occluders = occ;
+            d.ao.filterRadius = dev.caps().renderableFormat[size_t(Format::RGBA32F)] ? 2 : 0;
+            configs.push_back({occ == TransparencyAoOccluders::Compressed ? "a-buffer, compressed AO" : "a-buffer, brute-force AO", d});
+        }
+    }
+    for (const auto& [name, desc] : configs) {
+        Result<std::unique_ptr<Transparency>> oit = Transparency::create(dev, desc);
+        INFO(oit.status().toString());
+        REQUIRE(oit.isOk());
+        TransparencyInputs in;
+        in.opaqueColor = color;
+        in.opaqueDepth = quads.opaqueDepth;
+        // Compression and layer AO need a perspective camera (the quads' own is orthographic).
+        const bool zeroToOne = dev.caps().clipDepth == ClipDepthRange::ZeroToOne;
+        const float aspect = float(kWidth) / float(kHeight), fovY = glm::radians(60.0f);
+        in.projection = desc.compressedNodes == 0 ? quads.projection
+                        : zeroToOne              ? glm::perspectiveRH_ZO(fovY, aspect, 0.5f, 20.0f)
+                                                 : glm::perspectiveRH_NO(fovY, aspect, 0.5f, 20.0f);
+        in.draws = quads.draws;
+        checkSteady("transparency (" + name + ")", [&] { return oit.value()->render(in); });
+    }
+    SFX_REQUIRE_OK(dev.destroyTexture(color));
+}
 
 TEST_CASE("resize: AO and motion blur rebuild textures, never programs or pipelines", "[steady][resize]") {
     Device& dev = test::device();

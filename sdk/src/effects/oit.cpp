@@ -178,11 +178,16 @@ Status Transparency::ensurePrograms() {
         }
         SFX_TRY(graphics(gen::oit_fill::kName, &fillProgram_, &fillPipeline_, geometry));
         // With compression the resolve also writes the compressed lists (M and the drop search are
-        // specialisation constants: fixed per effect, compiled once).
+        // specialisation constants: fixed per effect, compiled once). With layer AO it also stores
+        // each node's transmittance in front, so the AO pass need not sort the lists again.
         GraphicsPipelineDesc resolve = fullscreen;
+        const int32_t writeTransmittance = desc_.ao.enabled ? 1 : 0;
         if (desc_.compressedNodes > 0)
             resolve.constants = {{SFX_OIT_SC_COMPRESS_NODES, int32_t(desc_.compressedNodes)},
-                                 {SFX_OIT_SC_COMPRESS_BACK_HALF, desc_.compressBackHalfOnly ? 1 : 0}};
+                                 {SFX_OIT_SC_COMPRESS_BACK_HALF, desc_.compressBackHalfOnly ? 1 : 0},
+                                 {SFX_OIT_SC_RESOLVE_TRANSMITTANCE, writeTransmittance}};
+        else
+            resolve.constants = {{SFX_OIT_SC_RESOLVE_TRANSMITTANCE, writeTransmittance}};
         SFX_TRY(graphics(desc_.compressedNodes > 0 ? gen::oit_resolve_compress::kName : gen::oit_resolve::kName, &resolveProgram_,
                          &resolvePipeline_, resolve));
         if (desc_.ao.enabled) {
@@ -199,7 +204,8 @@ Status Transparency::ensurePrograms() {
                 GraphicsPipelineDesc f;
                 f.colorFormats = {Format::RG16F};
                 f.constants = {{SFX_OIT_SC_FILTER_RADIUS, int32_t(desc_.ao.filterRadius)}, {SFX_OIT_SC_FILTER_VERTICAL, vertical}};
-                if (vertical == 1) {  // the same program, a second pipeline
+                if (vertical == 1) {  // the same program, a second pipeline, made once
+                    if (!filterPipelines_[1].isNull()) continue;
                     f.program = filterProgram_;
                     f.debugName = "oit_ao_filter v";
                     Result<PipelineHandle> pl = device_.createGraphicsPipeline(f);

@@ -110,7 +110,6 @@ Status Transparency::renderLayerAo(const TransparencyInputs& in, const DepthReco
     p.numerator = float(rec.numerator);
     p.zNear = float(rec.nearDepth);
     p.zFar = float(rec.maxDepth);
-    p.capacity = int32_t(std::min<uint64_t>(poolNodes_, 0x7FFFFFFFull));
     SFX_TRY(device_.writeBuffer(aoParams_, 0, &p, sizeof p));
 
     const bool compressed = desc_.ao.occluders == TransparencyAoOccluders::Compressed;

@@ -110,7 +110,6 @@ Status Transparency::renderAbuffer(const TransparencyInputs& in) {
     SFX_TRY(sizePoolFromLastFrame());
     shared::OitResolveParams rp{};
     rp.maxLayers = int32_t(keptLayers(desc_));
-    rp.capacity = int32_t(std::min<uint64_t>(poolNodes_, 0x7FFFFFFFull));
     rp.ndcScale = float(rec.ndcScale);
     rp.denomOffset = float(rec.denomOffset);
     rp.numerator = float(rec.numerator);
