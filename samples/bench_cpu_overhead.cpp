@@ -136,7 +136,19 @@ struct Options {
     uint32_t width = 1280, height = 720;
     std::vector<std::string> backends{"vulkan", "gles", "gl-egl"};
     std::string out;
+    // MiB written by the render thread before each timed dispatch (outside the timed span), so
+    // that the dispatch starts with caches as cold as after a large frame of software
+    // rasterisation on the same cores; 0: no eviction.
+    uint32_t evictMiB = 0;
 };
+
+// Writes `bytes` of `buffer` so that what the caches held before is gone (a new value each
+// call, so the stores cannot be skipped).
+void evictCaches(std::vector<uint8_t>& buffer) {
+    static uint8_t value = 0;
+    ++value;
+    for (size_t i = 0; i < buffer.size(); i += 64) buffer[i] = value;
+}
 
 // The render thread's voluntary and involuntary context switches so far.
 std::pair<long, long> threadSwitches() {
@@ -178,7 +190,9 @@ Result<Row> measure(Device& dev, const Options& o, Dispatch&& dispatch) {
     std::vector<double> dispatchUs, dispatchCpuUs, frameUs, cpuUs;
     HeapCounts sum;
     long waits = 0, preemptions = 0;
+    std::vector<uint8_t> evictBuffer(size_t(o.evictMiB) << 20);
     for (int i = 0; i < o.frames; ++i) {
+        if (o.evictMiB) evictCaches(evictBuffer);
         const std::pair<long, long> switches0 = threadSwitches();  // outside the timed span
         const double cpu0 = threadCpuSeconds();
         const auto t0 = std::chrono::steady_clock::now();
@@ -298,7 +312,9 @@ std::string table(const std::vector<Row>& rows, const Options& o) {
       << "CPU: the render thread's CPU time; frame: dispatch() + flush() (Vulkan: submit and wait; GL: glFinish); "
       << "new / malloc: calls and KiB on the render thread inside dispatch() (malloc includes the driver's and operator new's); "
       << "waits / preemptions: the render thread's voluntary / involuntary context switches inside dispatch()"
-      << (SFX_COUNT_HEAP ? "" : "; heap counting off (sanitizer build)") << ".\n";
+      << (SFX_COUNT_HEAP ? "" : "; heap counting off (sanitizer build)")
+      << (o.evictMiB ? "; " + std::to_string(o.evictMiB) + " MiB written before each timed dispatch (cold caches)" : std::string())
+      << ".\n";
     return s.str();
 }
 
@@ -314,6 +330,8 @@ int main(int argc, char** argv) {
     app.add_option("--height", o.height, "height")->check(CLI::Range(1u, 16384u));
     app.add_option("--backends", o.backends, "vulkan, gles, gl-egl, gl-osmesa")->delimiter(',');
     app.add_option("--out", o.out, "also write the table to this markdown file");
+    app.add_option("--evict-mib", o.evictMiB, "MiB to write before each timed dispatch, to start it with cold caches")
+        ->check(CLI::Range(0u, 4096u));
     CLI11_PARSE(app, argc, argv);
 #else
     (void)argc, (void)argv;

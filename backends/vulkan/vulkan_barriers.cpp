@@ -1,9 +1,11 @@
 // Barriers: each command records only the barriers its hazards need, from the last use tracked
 // per image mip and per buffer (AccessState): a layout transition, a write after reads or writes
 // (the earlier accesses must finish first), or a read of a write not yet made visible to the
-// reading stage and access. Reads after reads need nothing. Barriers are batched per command,
-// one vkCmdPipelineBarrier per pair of source and destination stage masks. The lists live in
-// the device's CommandScratch and keep their capacity from command to command.
+// reading stage and access. Reads after reads need nothing. Barriers are batched per command:
+// with synchronization2, one vkCmdPipelineBarrier2 holding every barrier with its own stage
+// masks; without it, one vkCmdPipelineBarrier per pair of source and destination stage masks
+// (a driver copies each barrier command into the command buffer, so fewer is cheaper for the
+// recording thread). The lists live in the device's CommandScratch and keep their capacity.
 #include <algorithm>
 
 #include "vulkan_device_impl.hpp"
@@ -93,8 +95,12 @@ void VulkanDevice::barriers(VkCommandBuffer cb, std::span<const ImageUse> images
     std::vector<BufferUse>& buffers = scratch_.buffers;
     std::vector<BarrierBatch>& batches = scratch_.batches;
     size_t& batchCount = scratch_.batchCount;
+    std::vector<VkImageMemoryBarrier2>& images2 = scratch_.images2;
+    std::vector<VkBufferMemoryBarrier2>& buffers2 = scratch_.buffers2;
     mips.clear();
     buffers.clear();
+    images2.clear();
+    buffers2.clear();
     batchCount = 0;
     for (const ImageUse& u : images)
         for (uint32_t m = u.baseMip; m < u.baseMip + u.mipCount; ++m) {
@@ -121,6 +127,20 @@ void VulkanDevice::barriers(VkCommandBuffer cb, std::span<const ImageUse> images
     for (const MipBarrierUse& e : mips) {
         const Hazard h = track(e.texture->mips[e.mip], true, e.use.layout, e.use.stages, e.use.access, e.use.write);
         if (!h.needed) continue;
+        if (synchronization2_) {
+            VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+            b.srcStageMask = h.src;  // the legacy stage and access bits keep their values in the *2 flags
+            b.srcAccessMask = h.srcAccess;
+            b.dstStageMask = e.use.stages;
+            b.dstAccessMask = e.use.access;
+            b.oldLayout = h.oldLayout;
+            b.newLayout = e.use.layout;
+            b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+            b.image = e.texture->image;
+            b.subresourceRange = e.texture->range(fullAspect(e.texture->desc.format), e.mip, 1);
+            images2.push_back(b);
+            continue;
+        }
         VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
         b.srcAccessMask = h.srcAccess;
         b.dstAccessMask = e.use.access;
@@ -134,6 +154,19 @@ void VulkanDevice::barriers(VkCommandBuffer cb, std::span<const ImageUse> images
     for (const BufferUse& u : buffers) {
         const Hazard h = track(u.buffer->state, false, VK_IMAGE_LAYOUT_UNDEFINED, u.stages, u.access, u.write);
         if (!h.needed) continue;
+        if (synchronization2_) {
+            VkBufferMemoryBarrier2 b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+            b.srcStageMask = h.src;
+            b.srcAccessMask = h.srcAccess;
+            b.dstStageMask = u.stages;
+            b.dstAccessMask = u.access;
+            b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+            b.buffer = u.buffer->buffer;
+            b.offset = 0;
+            b.size = VK_WHOLE_SIZE;
+            buffers2.push_back(b);
+            continue;
+        }
         VkBufferMemoryBarrier b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
         b.srcAccessMask = h.srcAccess;
         b.dstAccessMask = u.access;
@@ -142,6 +175,14 @@ void VulkanDevice::barriers(VkCommandBuffer cb, std::span<const ImageUse> images
         b.offset = 0;
         b.size = VK_WHOLE_SIZE;
         batchFor(batches, batchCount, h.src, u.stages).buffers.push_back(b);
+    }
+    if (!images2.empty() || !buffers2.empty()) {
+        VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+        dependency.bufferMemoryBarrierCount = uint32_t(buffers2.size());
+        dependency.pBufferMemoryBarriers = buffers2.data();
+        dependency.imageMemoryBarrierCount = uint32_t(images2.size());
+        dependency.pImageMemoryBarriers = images2.data();
+        vk_.vkCmdPipelineBarrier2(cb, &dependency);
     }
     for (size_t i = 0; i < batchCount; ++i) {
         const BarrierBatch& b = batches[i];

@@ -232,6 +232,7 @@ private:
     uint32_t timestampValidBits_ = 0;
     bool fullFeatures_ = true;  // no ceiling
     bool fragmentStoresAndAtomics_ = false;  // the device feature, enabled when present
+    bool synchronization2_ = false;  // barriers() records one vkCmdPipelineBarrier2 per command
 
     VkCommandPool commandPool_ = VK_NULL_HANDLE;
     VkCommandBuffer commandBuffer_ = VK_NULL_HANDLE;

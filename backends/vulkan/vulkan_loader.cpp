@@ -48,6 +48,8 @@ Status loadDeviceFunctions(Functions& f, VkDevice device) {
         loadDeviceFn(f, device, "vkCmdBeginRenderingKHR", &f.vkCmdBeginRendering);
     if (!loadDeviceFn(f, device, "vkCmdEndRendering", &f.vkCmdEndRendering))
         loadDeviceFn(f, device, "vkCmdEndRenderingKHR", &f.vkCmdEndRendering);
+    if (!loadDeviceFn(f, device, "vkCmdPipelineBarrier2", &f.vkCmdPipelineBarrier2))
+        loadDeviceFn(f, device, "vkCmdPipelineBarrier2KHR", &f.vkCmdPipelineBarrier2);
     if (!f.vkCmdBeginRendering || !f.vkCmdEndRendering)
         return {StatusCode::BackendUnavailable, "the Vulkan device has no dynamic rendering (Vulkan 1.3 or VK_KHR_dynamic_rendering)"};
     return Status::ok();

@@ -101,6 +101,8 @@ struct Functions {
     // Core in 1.3, or the KHR extension's entry points.
     PFN_vkCmdBeginRendering vkCmdBeginRendering = nullptr;
     PFN_vkCmdEndRendering vkCmdEndRendering = nullptr;
+    // Core in 1.3, or VK_KHR_synchronization2; used only where the device enabled the feature.
+    PFN_vkCmdPipelineBarrier2 vkCmdPipelineBarrier2 = nullptr;
     // VK_EXT_debug_utils, when enabled.
     PFN_vkCreateDebugUtilsMessengerEXT vkCreateDebugUtilsMessengerEXT = nullptr;
     PFN_vkDestroyDebugUtilsMessengerEXT vkDestroyDebugUtilsMessengerEXT = nullptr;

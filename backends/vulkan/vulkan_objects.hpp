@@ -196,6 +196,8 @@ struct CommandScratch {
     std::vector<BufferUse> buffers;
     std::vector<BarrierBatch> batches;
     size_t batchCount = 0;
+    std::vector<VkImageMemoryBarrier2> images2;  // with synchronization2: all in one command
+    std::vector<VkBufferMemoryBarrier2> buffers2;
 };
 
 }  // namespace sfx::vulkan

@@ -170,6 +170,15 @@ Status VulkanDevice::createLogicalDevice(bool needsKhrDynamicRendering) {
     enabled.robustBufferAccess = supported.robustBufferAccess;
     VkPhysicalDeviceDynamicRenderingFeatures dynamic{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES};
     dynamic.dynamicRendering = VK_TRUE;
+    // synchronization2 on a 1.3 device that has it: one barrier command per SDK command.
+    VkPhysicalDeviceSynchronization2Features sync2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SYNCHRONIZATION_2_FEATURES};
+    if (!needsKhrDynamicRendering) {
+        VkPhysicalDeviceFeatures2 query{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+        query.pNext = &sync2;
+        vk_.vkGetPhysicalDeviceFeatures2(physical_, &query);
+        sync2.pNext = nullptr;
+        if (sync2.synchronization2) dynamic.pNext = &sync2;
+    }
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
     qci.queueFamilyIndex = queueFamily_;
@@ -188,6 +197,7 @@ Status VulkanDevice::createLogicalDevice(bool needsKhrDynamicRendering) {
     if (r != VK_SUCCESS) return {StatusCode::BackendUnavailable, "vkCreateDevice failed: " + vkResultName(r)};
     ownsDevice_ = true;
     SFX_TRY(loadDeviceFunctions(vk_, device_));
+    synchronization2_ = sync2.synchronization2 == VK_TRUE && vk_.vkCmdPipelineBarrier2;
     vk_.vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
     return Status::ok();
 }
@@ -229,6 +239,8 @@ Status VulkanDevice::initWrapped(const ExternalVulkan& ext, const DeviceOptions&
     device_ = ext.device;
     queue_ = ext.queue;
     SFX_TRY(loadDeviceFunctions(vk_, device_));
+    if (ext.synchronization2Enabled && !vk_.vkCmdPipelineBarrier2) return validation::fail(Error::ExternalSynchronization2, {});
+    synchronization2_ = ext.synchronization2Enabled;
     setup_.debugUtils = ext.debugUtilsEnabled;
     return finishInit(options, false);
 }

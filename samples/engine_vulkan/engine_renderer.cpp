@@ -184,7 +184,7 @@ Status EngineRenderer::connectSdk() {
     DeviceOptions options;
     options.validation = options_.validation;
     vulkan::ExternalVulkan external{host_.instance, host_.physical, host_.device, host_.queue,
-                                    host_.family, vkGetInstanceProcAddr, host_.debugUtils};
+                                    host_.family, vkGetInstanceProcAddr, host_.debugUtils, host_.synchronization2};
     Result<std::unique_ptr<Device>> device = vulkan::wrapDevice(external, options);
     if (!device) return device.status();
     sfx_ = std::move(device.value());

@@ -92,8 +92,15 @@ Status VkHost::createDevice() {
         }
     if (!found) return unavailable("no queue family with graphics and compute");
     // Dynamic rendering: the SDK's passes need it (ExternalVulkan), and the host's use it too.
+    // synchronization2 where the device has it: the SDK then records fewer barrier commands.
+    VkPhysicalDeviceVulkan13Features supported13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    supported.pNext = &supported13;
+    vkGetPhysicalDeviceFeatures2(physical, &supported);
     VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     v13.dynamicRendering = VK_TRUE;
+    v13.synchronization2 = supported13.synchronization2;
+    synchronization2 = supported13.synchronization2 == VK_TRUE;
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
     qci.queueFamilyIndex = family;

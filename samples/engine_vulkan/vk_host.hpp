@@ -69,6 +69,7 @@ public:
     VkQueue queue = VK_NULL_HANDLE;
     uint32_t family = 0;
     bool debugUtils = false;  // a messenger collects the layer's warnings and errors
+    bool synchronization2 = false;  // the device feature, enabled when the device has it
 
     Status makeImage(VkFormat format, VkImageUsageFlags usage, uint32_t width, uint32_t height, HostImage* out);
     Status makeBuffer(VkDeviceSize size, VkBufferUsageFlags usage, HostBuffer* out);

@@ -119,6 +119,7 @@ constexpr ErrorEntry kTable[] = {
     {E::ExternalQueueFamily, C::InvalidArgument, "ExternalQueueFamily", "ExternalVulkan.queueFamily is {}; allowed [0, {}], the queue families of ExternalVulkan.physicalDevice"},
     {E::ExternalQueueFamilyFlags, C::InvalidArgument, "ExternalQueueFamilyFlags", "ExternalVulkan.queueFamily is {}, a family with flags {}; allowed a family with graphics and compute"},
     {E::ExternalApiVersion, C::InvalidArgument, "ExternalApiVersion", "ExternalVulkan.physicalDevice supports Vulkan {}.{}; allowed 1.1 or later (1.3, or 1.1 with VK_KHR_dynamic_rendering)"},
+    {E::ExternalSynchronization2, C::InvalidArgument, "ExternalSynchronization2", "ExternalVulkan.synchronization2Enabled is set, but ExternalVulkan.device has no vkCmdPipelineBarrier2; allowed when the device was created with the synchronization2 feature (Vulkan 1.3 or VK_KHR_synchronization2)"},
     {E::DeviceWrongApi, C::InvalidArgument, "DeviceWrongApi", "{}: device is a {} device; allowed a {} device"},
     {E::HostCommandBufferOwnDevice, C::InvalidArgument, "HostCommandBufferOwnDevice", "setCommandBuffer: device is the SDK's own Vulkan device (vulkan::createDevice), whose VkDevice no host command buffer belongs to; allowed a device from vulkan::wrapDevice"},
     {E::GlNoCurrentContext, C::InvalidArgument, "GlNoCurrentContext", "wrapCurrentContext: no GL context is current on this thread (glGetString(GL_VERSION) is null); allowed a call with the host's context current"},

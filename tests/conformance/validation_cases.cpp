@@ -396,6 +396,7 @@ std::vector<DeviceCaps> craftedNullCaps() {
 static const std::set<Error> kHostCommandBufferRows = {
     Error::HostCommandBufferRead,    Error::TimerHostPending,   Error::ExternalObjectNull,
     Error::ExternalQueueFamily,      Error::ExternalQueueFamilyFlags, Error::ExternalApiVersion,
+    Error::ExternalSynchronization2,
     Error::DeviceWrongApi,           Error::HostCommandBufferOwnDevice, Error::GlNoCurrentContext};
 
 void checkEveryRuleExercised(const std::set<validation::Error>& exercised) {

@@ -23,7 +23,9 @@ inline VKAPI_ATTR VkBool32 VKAPI_CALL hostCallback(VkDebugUtilsMessageSeverityFl
 }
 
 // A host engine: instance with the validation layer (synchronization validation on), a 1.3
-// device with dynamic rendering, one queue and a command buffer.
+// device with dynamic rendering, one queue and a command buffer. It leaves synchronization2 off
+// (samples/engine_vulkan turns it on), so these tests keep the SDK's barriers without it, one
+// vkCmdPipelineBarrier per pair of stage masks, under synchronization validation.
 struct Host {
     VkInstance instance = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;

@@ -35,7 +35,9 @@ void checkRefusal(const Status& s, Error rule, const std::string& expected) {
 // graphics: what the SDK is told decides its answer.
 bool gReportVulkan10 = false;
 bool gReportNoGraphics = false;
+bool gHideBarrier2 = false;  // the device lacks vkCmdPipelineBarrier2, as a 1.1 device without the extension
 PFN_vkGetPhysicalDeviceProperties gRealProperties = nullptr;
+PFN_vkGetDeviceProcAddr gRealDeviceProcAddr = nullptr;
 PFN_vkGetPhysicalDeviceQueueFamilyProperties gRealFamilies = nullptr;
 
 VKAPI_ATTR void VKAPI_CALL reportedProperties(VkPhysicalDevice physical, VkPhysicalDeviceProperties* out) {
@@ -47,7 +49,15 @@ VKAPI_ATTR void VKAPI_CALL reportedFamilies(VkPhysicalDevice physical, uint32_t*
     if (gReportNoGraphics && out)
         for (uint32_t i = 0; i < *count; ++i) out[i].queueFlags &= ~VkQueueFlags(VK_QUEUE_GRAPHICS_BIT);
 }
+VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL reportedDeviceFunction(VkDevice device, const char* name) {
+    if (gHideBarrier2 && std::strncmp(name, "vkCmdPipelineBarrier2", 21) == 0) return nullptr;
+    return gRealDeviceProcAddr(device, name);
+}
 VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL reportingLoader(VkInstance instance, const char* name) {
+    if (std::strcmp(name, "vkGetDeviceProcAddr") == 0) {
+        gRealDeviceProcAddr = reinterpret_cast<PFN_vkGetDeviceProcAddr>(vkGetInstanceProcAddr(instance, name));
+        return reinterpret_cast<PFN_vkVoidFunction>(&reportedDeviceFunction);
+    }
     if (std::strcmp(name, "vkGetPhysicalDeviceProperties") == 0) {
         gRealProperties = reinterpret_cast<PFN_vkGetPhysicalDeviceProperties>(vkGetInstanceProcAddr(instance, name));
         return reinterpret_cast<PFN_vkVoidFunction>(&reportedProperties);
@@ -61,7 +71,8 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL reportingLoader(VkInstance instance, co
 
 }  // namespace
 
-TEST_CASE("vulkan entry points: wrapDevice refuses null objects, a family out of range or without graphics, Vulkan 1.0",
+TEST_CASE("vulkan entry points: wrapDevice refuses null objects, a family out of range or without graphics, Vulkan 1.0, "
+          "synchronization2 without its entry point",
           "[vulkan][validation]") {
     Host host;
     if (!host.create(false)) SFX_SKIP(host.skipReason);
@@ -113,6 +124,20 @@ TEST_CASE("vulkan entry points: wrapDevice refuses null objects, a family out of
     gReportVulkan10 = false;
     checkRefusal(old.status(), Error::ExternalApiVersion,
                  "ExternalVulkan.physicalDevice supports Vulkan 1.0; allowed 1.1 or later (1.3, or 1.1 with VK_KHR_dynamic_rendering)");
+
+    // synchronization2 claimed on a device that has no vkCmdPipelineBarrier2; without the claim
+    // the same device wraps (the SDK records per-stage-pair vkCmdPipelineBarrier then).
+    gHideBarrier2 = true;
+    vulkan::ExternalVulkan sync2 = e;
+    sync2.synchronization2Enabled = true;
+    Result<std::unique_ptr<Device>> noBarrier2 = vulkan::wrapDevice(sync2);
+    Result<std::unique_ptr<Device>> unclaimed = vulkan::wrapDevice(e);
+    gHideBarrier2 = false;
+    checkRefusal(noBarrier2.status(), Error::ExternalSynchronization2,
+                 "ExternalVulkan.synchronization2Enabled is set, but ExternalVulkan.device has no vkCmdPipelineBarrier2; allowed when "
+                 "the device was created with the synchronization2 feature (Vulkan 1.3 or VK_KHR_synchronization2)");
+    INFO(unclaimed.status().toString());
+    CHECK(unclaimed.isOk());
 
     // The same loader reporting the truth wraps fine: the refusals came from the reports.
     Result<std::unique_ptr<Device>> wrapped = vulkan::wrapDevice(e);

@@ -120,6 +120,7 @@ enum class Error : uint32_t {
     ExternalQueueFamily,
     ExternalQueueFamilyFlags,
     ExternalApiVersion,
+    ExternalSynchronization2,
     DeviceWrongApi,
     HostCommandBufferOwnDevice,
     GlNoCurrentContext,

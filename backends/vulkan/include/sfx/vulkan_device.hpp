@@ -29,6 +29,12 @@ struct ExternalVulkan {
     // Set when the host enabled VK_EXT_debug_utils on `instance`: then options.validation adds
     // a messenger whose warnings and errors takeValidationMessages() returns.
     bool debugUtilsEnabled = false;
+    // Set when the host created `device` with the synchronization2 feature (Vulkan 1.3's
+    // VkPhysicalDeviceVulkan13Features::synchronization2, or VK_KHR_synchronization2): the SDK
+    // then records each command's barriers in one vkCmdPipelineBarrier2, every barrier with its
+    // own stage masks, instead of one vkCmdPipelineBarrier per pair of stage masks. Fewer
+    // commands cost the recording thread less (docs/integration.md, "CPU overhead").
+    bool synchronization2Enabled = false;
 };
 Result<std::unique_ptr<Device>> wrapDevice(const ExternalVulkan& external, const DeviceOptions& options = {});
 
