@@ -75,6 +75,27 @@ BarrierBatch& batchFor(std::vector<BarrierBatch>& batches, size_t& count, VkPipe
     return b;
 }
 
+// The same barrier for vkCmdPipelineBarrier (its stage masks go to the call, per batch).
+template <class Legacy, class Barrier2>
+Legacy legacyAccess(VkStructureType type, const Barrier2& b) {
+    Legacy l{type};
+    l.srcAccessMask = VkAccessFlags(b.srcAccessMask);
+    l.dstAccessMask = VkAccessFlags(b.dstAccessMask);
+    l.srcQueueFamilyIndex = b.srcQueueFamilyIndex;
+    l.dstQueueFamilyIndex = b.dstQueueFamilyIndex;
+    return l;
+}
+VkImageMemoryBarrier legacyBarrier(const VkImageMemoryBarrier2& b) {
+    auto l = legacyAccess<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER, b);
+    l.oldLayout = b.oldLayout, l.newLayout = b.newLayout, l.image = b.image, l.subresourceRange = b.subresourceRange;
+    return l;
+}
+VkBufferMemoryBarrier legacyBarrier(const VkBufferMemoryBarrier2& b) {
+    auto l = legacyAccess<VkBufferMemoryBarrier>(VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER, b);
+    l.buffer = b.buffer, l.offset = b.offset, l.size = b.size;
+    return l;
+}
+
 }  // namespace
 
 VkPipelineStageFlags shaderStages(uint32_t stageMask, bool compute) {
@@ -127,54 +148,37 @@ void VulkanDevice::barriers(VkCommandBuffer cb, std::span<const ImageUse> images
     for (const MipBarrierUse& e : mips) {
         const Hazard h = track(e.texture->mips[e.mip], true, e.use.layout, e.use.stages, e.use.access, e.use.write);
         if (!h.needed) continue;
-        if (synchronization2_) {
-            VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-            b.srcStageMask = h.src;  // the legacy stage and access bits keep their values in the *2 flags
-            b.srcAccessMask = h.srcAccess;
-            b.dstStageMask = e.use.stages;
-            b.dstAccessMask = e.use.access;
-            b.oldLayout = h.oldLayout;
-            b.newLayout = e.use.layout;
-            b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-            b.image = e.texture->image;
-            b.subresourceRange = e.texture->range(fullAspect(e.texture->desc.format), e.mip, 1);
-            images2.push_back(b);
-            continue;
-        }
-        VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+        VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+        b.srcStageMask = h.src;  // the legacy stage and access bits keep their values in the *2 flags
         b.srcAccessMask = h.srcAccess;
+        b.dstStageMask = e.use.stages;
         b.dstAccessMask = e.use.access;
         b.oldLayout = h.oldLayout;
         b.newLayout = e.use.layout;
         b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
         b.image = e.texture->image;
         b.subresourceRange = e.texture->range(fullAspect(e.texture->desc.format), e.mip, 1);
-        batchFor(batches, batchCount, h.src, e.use.stages).images.push_back(b);
+        if (synchronization2_)
+            images2.push_back(b);
+        else
+            batchFor(batches, batchCount, h.src, e.use.stages).images.push_back(legacyBarrier(b));
     }
     for (const BufferUse& u : buffers) {
         const Hazard h = track(u.buffer->state, false, VK_IMAGE_LAYOUT_UNDEFINED, u.stages, u.access, u.write);
         if (!h.needed) continue;
-        if (synchronization2_) {
-            VkBufferMemoryBarrier2 b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
-            b.srcStageMask = h.src;
-            b.srcAccessMask = h.srcAccess;
-            b.dstStageMask = u.stages;
-            b.dstAccessMask = u.access;
-            b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-            b.buffer = u.buffer->buffer;
-            b.offset = 0;
-            b.size = VK_WHOLE_SIZE;
-            buffers2.push_back(b);
-            continue;
-        }
-        VkBufferMemoryBarrier b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
+        VkBufferMemoryBarrier2 b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+        b.srcStageMask = h.src;
         b.srcAccessMask = h.srcAccess;
+        b.dstStageMask = u.stages;
         b.dstAccessMask = u.access;
         b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
         b.buffer = u.buffer->buffer;
         b.offset = 0;
         b.size = VK_WHOLE_SIZE;
-        batchFor(batches, batchCount, h.src, u.stages).buffers.push_back(b);
+        if (synchronization2_)
+            buffers2.push_back(b);
+        else
+            batchFor(batches, batchCount, h.src, u.stages).buffers.push_back(legacyBarrier(b));
     }
     if (!images2.empty() || !buffers2.empty()) {
         VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
