@@ -22,17 +22,20 @@ Status unavailable(const std::string& why) { return {StatusCode::BackendUnavaila
 
 }  // namespace
 
+bool VkHost::validationLayerInstalled() {
+    uint32_t count = 0;
+    vkEnumerateInstanceLayerProperties(&count, nullptr);
+    std::vector<VkLayerProperties> layers(count);
+    vkEnumerateInstanceLayerProperties(&count, layers.data());
+    bool found = false;
+    for (const VkLayerProperties& l : layers) found |= std::strcmp(l.layerName, "VK_LAYER_KHRONOS_validation") == 0;
+    return found;
+}
+
 Status VkHost::createInstance(bool validation) {
     const char* layer = "VK_LAYER_KHRONOS_validation";
-    if (validation) {
-        uint32_t count = 0;
-        vkEnumerateInstanceLayerProperties(&count, nullptr);
-        std::vector<VkLayerProperties> layers(count);
-        vkEnumerateInstanceLayerProperties(&count, layers.data());
-        bool found = false;
-        for (const VkLayerProperties& l : layers) found |= std::strcmp(l.layerName, layer) == 0;
-        if (!found) return unavailable("VK_LAYER_KHRONOS_validation is not installed (validation was asked for)");
-    }
+    if (validation && !validationLayerInstalled())
+        return unavailable("VK_LAYER_KHRONOS_validation is not installed (validation was asked for)");
     const char* extensions[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME};
     const VkValidationFeatureEnableEXT sync = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
     VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
@@ -66,7 +69,7 @@ Status VkHost::createInstance(bool validation) {
     return Status::ok();
 }
 
-Status VkHost::createDevice() {
+Status VkHost::createDevice(bool wantSynchronization2) {
     uint32_t count = 0;
     vkEnumeratePhysicalDevices(instance, &count, nullptr);
     std::vector<VkPhysicalDevice> gpus(count);
@@ -99,8 +102,8 @@ Status VkHost::createDevice() {
     vkGetPhysicalDeviceFeatures2(physical, &supported);
     VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     v13.dynamicRendering = VK_TRUE;
-    v13.synchronization2 = supported13.synchronization2;
-    synchronization2 = supported13.synchronization2 == VK_TRUE;
+    synchronization2 = wantSynchronization2 && supported13.synchronization2 == VK_TRUE;
+    v13.synchronization2 = synchronization2 ? VK_TRUE : VK_FALSE;
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
     qci.queueFamilyIndex = family;
@@ -116,9 +119,9 @@ Status VkHost::createDevice() {
     return Status::ok();
 }
 
-Status VkHost::create(bool validation) {
+Status VkHost::create(bool validation, bool wantSynchronization2) {
     SFX_TRY(createInstance(validation));
-    return createDevice();
+    return createDevice(wantSynchronization2);
 }
 
 VkHost::~VkHost() {

@@ -59,8 +59,11 @@ struct PipelineDesc {
 class VkHost {
 public:
     // BackendUnavailable with the reason when there is no loader, no 1.3 device, or (with
-    // `validation`) no VK_LAYER_KHRONOS_validation.
-    Status create(bool validation);
+    // `validation`) no VK_LAYER_KHRONOS_validation. `wantSynchronization2`: enable that feature
+    // where the device has it (the tests on host devices leave it off, to keep the SDK's
+    // barriers without it under synchronization validation).
+    Status create(bool validation, bool wantSynchronization2 = true);
+    static bool validationLayerInstalled();
     ~VkHost();
 
     VkInstance instance = VK_NULL_HANDLE;
@@ -91,7 +94,7 @@ public:
 
 private:
     Status createInstance(bool validation);
-    Status createDevice();
+    Status createDevice(bool wantSynchronization2);
     uint32_t memoryType(uint32_t bits, VkMemoryPropertyFlags want) const;
     Status allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags want, VkDeviceMemory* out);
 

@@ -1,7 +1,6 @@
 // A host engine's Vulkan objects for the tests on host devices (tests/vulkan/test_vulkan_import.cpp,
-// test_vulkan_external.cpp): an instance with the validation layer and synchronization
-// validation, a 1.3 device with dynamic rendering, a command buffer, and the images, buffers,
-// barriers, uploads and readbacks a host makes itself, without the SDK.
+// test_vulkan_external.cpp): the engine sample's instance and device, a command buffer, and the
+// images, buffers, barriers, uploads and readbacks a host makes itself, without the SDK.
 #pragma once
 
 #include <catch2/catch.hpp>
@@ -13,113 +12,39 @@
 #include <vector>
 
 #include "sfx/vulkan_device.hpp"
+#include "vk_host.hpp"
 
 namespace sfx::hostvk {
 
-inline VKAPI_ATTR VkBool32 VKAPI_CALL hostCallback(VkDebugUtilsMessageSeverityFlagBitsEXT, VkDebugUtilsMessageTypeFlagsEXT,
-                                            const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
-    static_cast<std::vector<std::string>*>(user)->push_back(data->pMessage ? data->pMessage : "");
-    return VK_FALSE;
-}
-
-// A host engine: instance with the validation layer (synchronization validation on), a 1.3
-// device with dynamic rendering, one queue and a command buffer. It leaves synchronization2 off
-// (samples/engine_vulkan turns it on), so these tests keep the SDK's barriers without it, one
+// A host engine: the engine sample's raw Vulkan layer (samples/engine_vulkan/vk_host.hpp: an
+// instance with the validation layer and synchronization validation, a 1.3 device with dynamic
+// rendering, one queue), plus a command buffer. It leaves synchronization2 off (the engine
+// sample turns it on), so these tests keep the SDK's barriers without it, one
 // vkCmdPipelineBarrier per pair of stage masks, under synchronization validation.
 struct Host {
+    engine::VkHost vk;
     VkInstance instance = VK_NULL_HANDLE;
-    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
     VkPhysicalDevice physical = VK_NULL_HANDLE;
     VkDevice device = VK_NULL_HANDLE;
     VkQueue queue = VK_NULL_HANDLE;
     uint32_t family = 0;
     VkCommandPool pool = VK_NULL_HANDLE;
     VkCommandBuffer cb = VK_NULL_HANDLE;
-    std::vector<std::string> errors;  // the host messenger's warnings and errors
-    bool validation = false;          // the layer is on (always, when create() required it)
+    bool validation = false;  // the layer is on (always, when create() required it)
     std::string skipReason;
 
     // requireValidation false: without the layer installed the host runs without it.
     bool create(bool requireValidation = true) {
-        uint32_t count = 0;
-        vkEnumerateInstanceLayerProperties(&count, nullptr);
-        std::vector<VkLayerProperties> layers(count);
-        vkEnumerateInstanceLayerProperties(&count, layers.data());
-        for (const auto& l : layers) validation |= std::strcmp(l.layerName, "VK_LAYER_KHRONOS_validation") == 0;
+        validation = engine::VkHost::validationLayerInstalled();
         if (!validation && requireValidation) {
             skipReason = "VK_LAYER_KHRONOS_validation is not installed (these tests need synchronization validation)";
             return false;
         }
-        const char* layer = "VK_LAYER_KHRONOS_validation";
-        const char* exts[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME};
-        const VkValidationFeatureEnableEXT sync = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
-        VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
-        features.enabledValidationFeatureCount = 1;
-        features.pEnabledValidationFeatures = &sync;
-        VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-        app.apiVersion = VK_API_VERSION_1_3;
-        VkInstanceCreateInfo ci{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-        ci.pNext = validation ? &features : nullptr;
-        ci.pApplicationInfo = &app;
-        ci.enabledLayerCount = validation ? 1 : 0;
-        ci.ppEnabledLayerNames = &layer;
-        ci.enabledExtensionCount = validation ? 2 : 0;
-        ci.ppEnabledExtensionNames = exts;
-        if (vkCreateInstance(&ci, nullptr, &instance) != VK_SUCCESS) {
-            skipReason = "no Vulkan instance";
+        if (Status s = vk.create(validation, /*wantSynchronization2=*/false); !s) {
+            skipReason = s.toString();
             return false;
         }
-        if (validation) {
-            auto createMessenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-                vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
-            VkDebugUtilsMessengerCreateInfoEXT mi{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-            mi.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT;
-            mi.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT;
-            mi.pfnUserCallback = hostCallback;
-            mi.pUserData = &errors;
-            createMessenger(instance, &mi, nullptr, &messenger);
-        }
-        count = 0;
-        vkEnumeratePhysicalDevices(instance, &count, nullptr);
-        std::vector<VkPhysicalDevice> gpus(count);
-        vkEnumeratePhysicalDevices(instance, &count, gpus.data());
-        for (VkPhysicalDevice gpu : gpus) {
-            VkPhysicalDeviceProperties p;
-            vkGetPhysicalDeviceProperties(gpu, &p);
-            if (p.apiVersion >= VK_API_VERSION_1_3) {
-                physical = gpu;
-                break;
-            }
-        }
-        if (!physical) {
-            skipReason = "no Vulkan 1.3 device";
-            return false;
-        }
-        uint32_t qCount = 0;
-        vkGetPhysicalDeviceQueueFamilyProperties(physical, &qCount, nullptr);
-        std::vector<VkQueueFamilyProperties> families(qCount);
-        vkGetPhysicalDeviceQueueFamilyProperties(physical, &qCount, families.data());
-        for (uint32_t i = 0; i < qCount; ++i)
-            if ((families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) && (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT)) {
-                family = i;
-                break;
-            }
-        VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-        v13.dynamicRendering = VK_TRUE;
-        const float priority = 1.0f;
-        VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-        qci.queueFamilyIndex = family;
-        qci.queueCount = 1;
-        qci.pQueuePriorities = &priority;
-        VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-        dci.pNext = &v13;
-        dci.queueCreateInfoCount = 1;
-        dci.pQueueCreateInfos = &qci;
-        if (vkCreateDevice(physical, &dci, nullptr, &device) != VK_SUCCESS) {
-            skipReason = "vkCreateDevice failed";
-            return false;
-        }
-        vkGetDeviceQueue(device, family, 0, &queue);
+        instance = vk.instance, physical = vk.physical, device = vk.device, queue = vk.queue, family = vk.family;
         VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
         pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
         pci.queueFamilyIndex = family;
@@ -131,6 +56,9 @@ struct Host {
         vkAllocateCommandBuffers(device, &cai, &cb);
         return true;
     }
+
+    // The host messenger's warnings and errors since the last call.
+    std::vector<std::string> takeErrors() { return vk.takeMessages(); }
 
     vulkan::ExternalVulkan external() const {
         return {instance, physical, device, queue, family, vkGetInstanceProcAddr, validation};
@@ -158,20 +86,24 @@ struct Host {
         REQUIRE(vkQueueWaitIdle(queue) == VK_SUCCESS);
     }
 
-    ~Host() {
+    ~Host() {  // vk then destroys the device, the messenger and the instance
         if (device) {
             vkDeviceWaitIdle(device);
             if (pool) vkDestroyCommandPool(device, pool, nullptr);
-            vkDestroyDevice(device, nullptr);
         }
-        if (messenger) {
-            auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-                vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
-            destroy(instance, messenger, nullptr);
-        }
-        if (instance) vkDestroyInstance(instance, nullptr);
     }
 };
+
+// No message from the SDK's validation nor from the host's messenger (taken, so the next check
+// sees only what came after this one).
+inline void checkNoMessages(Device& d, Host& host) {
+    const std::vector<std::string> messages = d.takeValidationMessages();
+    const std::vector<std::string> hostErrors = host.takeErrors();
+    for (const std::string& m : messages) UNSCOPED_INFO("validation: " << m);
+    for (const std::string& m : hostErrors) UNSCOPED_INFO("host validation: " << m);
+    CHECK(messages.empty());
+    CHECK(hostErrors.empty());
+}
 
 // A host-visible buffer for the host's uploads and readbacks.
 struct HostBuffer {

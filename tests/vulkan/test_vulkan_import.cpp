@@ -64,13 +64,6 @@ std::vector<double> sdkOwnAo(Device& d, AmbientObscurance& ao, uint32_t w, uint3
     return test::halfBytesToDoubles(bytes);
 }
 
-void checkNoMessages(Device& d, Host& host) {
-    const std::vector<std::string> messages = d.takeValidationMessages();
-    for (const std::string& m : messages) UNSCOPED_INFO("validation: " << m);
-    for (const std::string& m : host.errors) UNSCOPED_INFO("host validation: " << m);
-    CHECK(messages.empty());
-    CHECK(host.errors.empty());
-}
 
 }  // namespace
 

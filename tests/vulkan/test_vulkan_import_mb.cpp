@@ -25,13 +25,6 @@ using namespace sfx::hostvk;
 
 namespace {
 
-void checkNoMessages(Device& d, Host& host) {
-    const std::vector<std::string> messages = d.takeValidationMessages();
-    for (const std::string& m : messages) UNSCOPED_INFO("validation: " << m);
-    for (const std::string& m : host.errors) UNSCOPED_INFO("host validation: " << m);
-    CHECK(messages.empty());
-    CHECK(host.errors.empty());
-}
 
 vulkan::ExternalImage external(const HostImage& img, VkImageUsageFlags vkUsage, uint32_t usage, VkImageLayout layout) {
     vulkan::ExternalImage e;
