@@ -107,9 +107,9 @@ private:
 void imageBarrier(VkCommandBuffer cb, const HostImage& image, VkImageLayout from, VkImageLayout to,
                   VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
                   VkAccessFlags dstAccess);
-// The same on any VkImage (the SDK's own motion blur output).
+// The same on any VkImage (the SDK's own motion blur output), on one array layer.
 void imageBarrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
                   VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
-                  VkAccessFlags dstAccess);
+                  VkAccessFlags dstAccess, uint32_t layer = 0);
 
 }  // namespace sfx::engine

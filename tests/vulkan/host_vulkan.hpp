@@ -94,6 +94,16 @@ struct Host {
     }
 };
 
+// The SDK on the host's device, with validation (the tests ask for it; the default is off).
+inline std::unique_ptr<Device> wrapValidated(Host& host) {
+    DeviceOptions options;
+    options.validation = true;
+    Result<std::unique_ptr<Device>> wrapped = vulkan::wrapDevice(host.external(), options);
+    INFO(wrapped.status().toString());
+    REQUIRE(wrapped.isOk());
+    return std::move(wrapped.value());
+}
+
 // No message from the SDK's validation nor from the host's messenger (taken, so the next check
 // sees only what came after this one).
 inline void checkNoMessages(Device& d, Host& host) {
@@ -176,17 +186,26 @@ struct HostImage {
     }
 };
 
+// What the SDK is told of a host image (its layer 0): the Vulkan usage it was made with, what
+// the SDK may do with it, the layout the host keeps it in, and the host's view unless
+// `withView` is false (the SDK then makes its own).
+inline vulkan::ExternalImage externalImage(const HostImage& img, VkImageUsageFlags vkUsage, uint32_t usage, VkImageLayout layout,
+                                           bool withView = true) {
+    vulkan::ExternalImage e;
+    e.image = img.image;
+    e.vkFormat = img.format;
+    e.width = img.width;
+    e.height = img.height;
+    e.vkUsage = vkUsage;
+    e.usage = usage;
+    e.view = withView ? img.view : VK_NULL_HANDLE;
+    e.layout = layout;
+    return e;
+}
+
 inline void imageBarrier(VkCommandBuffer cb, const HostImage& img, uint32_t layer, VkImageLayout from, VkImageLayout to,
                   VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
-    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    b.srcAccessMask = srcAccess;
-    b.dstAccessMask = dstAccess;
-    b.oldLayout = from;
-    b.newLayout = to;
-    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = img.image;
-    b.subresourceRange = {img.aspect, 0, 1, layer, 1};
-    vkCmdPipelineBarrier(cb, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &b);
+    engine::imageBarrier(cb, img.image, img.aspect, from, to, srcStage, srcAccess, dstStage, dstAccess, layer);
 }
 
 // The host fills layer `layer` of `img` and leaves it in `layout`, everything made visible.

@@ -70,12 +70,8 @@ std::vector<double> sdkOwnAo(Device& d, AmbientObscurance& ao, uint32_t w, uint3
 TEST_CASE("vulkan import: AO reads host depth and normals and writes a host image", "[vulkan][import]") {
     Host host;
     if (!host.create()) SFX_SKIP(host.skipReason);
-    DeviceOptions options;
-    options.validation = true;
-    Result<std::unique_ptr<Device>> wrapped = vulkan::wrapDevice(host.external(), options);
-    INFO(wrapped.status().toString());
-    REQUIRE(wrapped.isOk());
-    Device& d = *wrapped.value();
+    const std::unique_ptr<Device> wrapped = wrapValidated(host);
+    Device& d = *wrapped;
     constexpr uint32_t w = 160, h = 90;
     const samples::AnalyticScene scene = samples::cornerScene(w, h);
     const std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
@@ -173,11 +169,8 @@ TEST_CASE("vulkan import: AO reads host depth and normals and writes a host imag
 TEST_CASE("vulkan import: bad imports are named errors", "[vulkan][import]") {
     Host host;
     if (!host.create()) SFX_SKIP(host.skipReason);
-    DeviceOptions options;
-    options.validation = true;
-    Result<std::unique_ptr<Device>> wrapped = vulkan::wrapDevice(host.external(), options);
-    REQUIRE(wrapped.isOk());
-    Device& d = *wrapped.value();
+    const std::unique_ptr<Device> wrapped = wrapValidated(host);
+    Device& d = *wrapped;
     HostImage img(host, VK_FORMAT_R16_SFLOAT, VK_IMAGE_USAGE_SAMPLED_BIT, 16, 16);
     vulkan::ExternalImage good;
     good.image = img.image;
@@ -235,11 +228,8 @@ TEST_CASE("vulkan import: bad imports are named errors", "[vulkan][import]") {
 TEST_CASE("vulkan import: host passes right before and after the SDK's AO in one command buffer", "[vulkan][import]") {
     Host host;
     if (!host.create()) SFX_SKIP(host.skipReason);
-    DeviceOptions options;
-    options.validation = true;
-    Result<std::unique_ptr<Device>> wrapped = vulkan::wrapDevice(host.external(), options);
-    REQUIRE(wrapped.isOk());
-    Device& d = *wrapped.value();
+    const std::unique_ptr<Device> wrapped = wrapValidated(host);
+    Device& d = *wrapped;
     constexpr uint32_t w = 160, h = 90;
     const CameraProjection camera = samples::AnalyticCamera{}.projection(w, h);
     // A floor receding row by row and a box standing on it, as the stored depth of `camera`.
@@ -270,22 +260,13 @@ TEST_CASE("vulkan import: host passes right before and after the SDK's AO in one
                  VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0);
     host.submitAndWait();
 
-    vulkan::ExternalImage de;
-    de.image = depthImg.image;
-    de.vkFormat = VK_FORMAT_D32_SFLOAT;
-    de.width = w;
-    de.height = h;
-    de.vkUsage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
-    de.view = depthImg.view;
-    de.layout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;  // as the host's depth pass leaves it
-    vulkan::ExternalImage oe;
-    oe.image = aoImg.image;
-    oe.vkFormat = VK_FORMAT_R16_SFLOAT;
-    oe.width = w;
-    oe.height = h;
-    oe.vkUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
-    oe.usage = kTextureSampled | kTextureRenderTarget;
-    oe.layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;  // as the host's sampling pass wants it
+    // The depth in the layout the host's depth pass leaves it, the AO in the one its sampling
+    // pass wants; the SDK makes its own view of the AO image.
+    const vulkan::ExternalImage de = externalImage(depthImg, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                                   kTextureSampled, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
+    const vulkan::ExternalImage oe = externalImage(aoImg, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                                   kTextureSampled | kTextureRenderTarget, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                                   /*withView=*/false);
     Result<TextureHandle> depthTex = vulkan::importImage(d, de);
     Result<TextureHandle> aoTex = vulkan::importImage(d, oe);
     INFO(depthTex.status().toString() << " / " << aoTex.status().toString());

@@ -23,34 +23,12 @@
 using namespace sfx;
 using namespace sfx::hostvk;
 
-namespace {
-
-
-vulkan::ExternalImage external(const HostImage& img, VkImageUsageFlags vkUsage, uint32_t usage, VkImageLayout layout) {
-    vulkan::ExternalImage e;
-    e.image = img.image;
-    e.vkFormat = img.format;
-    e.width = img.width;
-    e.height = img.height;
-    e.vkUsage = vkUsage;
-    e.usage = usage;
-    e.view = img.view;
-    e.layout = layout;
-    return e;
-}
-
-}  // namespace
-
 TEST_CASE("vulkan import: motion blur writes a host image in the host's command buffer, bit for bit as output()",
           "[vulkan][import][motion_blur]") {
     Host host;
     if (!host.create()) SFX_SKIP(host.skipReason);
-    DeviceOptions options;
-    options.validation = true;
-    Result<std::unique_ptr<Device>> wrapped = vulkan::wrapDevice(host.external(), options);
-    INFO(wrapped.status().toString());
-    REQUIRE(wrapped.isOk());
-    Device& d = *wrapped.value();
+    const std::unique_ptr<Device> wrapped = wrapValidated(host);
+    Device& d = *wrapped;
     constexpr uint32_t w = 96, h = 54;
     const CameraProjection camera = samples::AnalyticCamera{}.projection(w, h);
 
@@ -83,13 +61,13 @@ TEST_CASE("vulkan import: motion blur writes a host image in the host's command 
     hostUpload(host, outImg, 0, marker.data(), marker.size() * 2, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
 
     Result<TextureHandle> colorTex =
-        vulkan::importImage(d, external(colorImg, inUsage, kTextureSampled, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
+        vulkan::importImage(d, externalImage(colorImg, inUsage, kTextureSampled, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
     Result<TextureHandle> depthTex =
-        vulkan::importImage(d, external(depthImg, inUsage, kTextureSampled, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
+        vulkan::importImage(d, externalImage(depthImg, inUsage, kTextureSampled, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
     Result<TextureHandle> velocityTex =
-        vulkan::importImage(d, external(velocityImg, inUsage, kTextureSampled, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
+        vulkan::importImage(d, externalImage(velocityImg, inUsage, kTextureSampled, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
     Result<TextureHandle> outTex =
-        vulkan::importImage(d, external(outImg, outUsage, kTextureSampled | kTextureRenderTarget, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL));
+        vulkan::importImage(d, externalImage(outImg, outUsage, kTextureSampled | kTextureRenderTarget, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL));
     INFO(colorTex.status().toString() << " / " << depthTex.status().toString() << " / " << velocityTex.status().toString()
                                       << " / " << outTex.status().toString());
     REQUIRE((colorTex.isOk() && depthTex.isOk() && velocityTex.isOk() && outTex.isOk()));
