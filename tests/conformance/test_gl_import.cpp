@@ -83,24 +83,52 @@ std::vector<double> visibility(Device& d, TextureHandle t, Format f, uint32_t w,
     return out;
 }
 
+// The test device's context, current on this thread and played as a host's: the platform's GL
+// loader and the API of the test device.
+struct TestContext {
+    bool osmesa;
+    gl::GetProcAddressFn loader;
+    gl::Api api;
+};
+TestContext currentTestContext(Device& host) {
+    SFX_REQUIRE_OK(host.flush());  // the test device's context is now current
+    TestContext c;
+    c.osmesa = test::backendConfig().platform == "osmesa";
+    c.loader = c.osmesa ? reinterpret_cast<gl::GetProcAddressFn>(&OSMesaGetProcAddress)
+                        : reinterpret_cast<gl::GetProcAddressFn>(&eglGetProcAddress);
+    c.api = host.caps().backend == BackendKind::GLES ? gl::Api::GLES : gl::Api::DesktopGL;
+    return c;
+}
+
+// The SDK on that context, with the test device's ceiling and validation.
+std::unique_ptr<Device> wrapTestContext(Device& host, const TestContext& c) {
+    DeviceOptions options;
+    options.ceiling = host.caps().ceiling;
+    options.validation = true;
+    Result<std::unique_ptr<Device>> wrapped = gl::wrapCurrentContext(c.loader, c.api, options);
+    INFO(wrapped.status().toString());
+    REQUIRE(wrapped.isOk());
+    return std::move(wrapped.value());
+}
+
+// The test device's context played as a host's: the host's own GL entry points for its
+// textures, and the SDK wrapped on that context.
+struct PlayedHost {
+    HostGl gl;
+    std::unique_ptr<Device> sdk;
+    PlayedHost(Device& host, const TestContext& c) : gl(c.loader) {
+        REQUIRE(gl.isTexture);
+        sdk = wrapTestContext(host, c);
+    }
+};
+
 }  // namespace
 
 TEST_CASE("gl import: AO reads a host depth texture and writes a host texture", "[gl][import]") {
     Device& host = test::device();
-    SFX_REQUIRE_OK(host.flush());  // the test device's context is now current: play the host
-    const bool osmesa = test::backendConfig().platform == "osmesa";
-    gl::GetProcAddressFn loader = osmesa ? reinterpret_cast<gl::GetProcAddressFn>(&OSMesaGetProcAddress)
-                                         : reinterpret_cast<gl::GetProcAddressFn>(&eglGetProcAddress);
-    HostGl hostGl(loader);
-    REQUIRE(hostGl.isTexture);
-    DeviceOptions options;
-    options.ceiling = host.caps().ceiling;
-    options.validation = true;
-    const gl::Api api = host.caps().backend == BackendKind::GLES ? gl::Api::GLES : gl::Api::DesktopGL;
-    Result<std::unique_ptr<Device>> wrapped = gl::wrapCurrentContext(loader, api, options);
-    INFO(wrapped.status().toString());
-    REQUIRE(wrapped.isOk());
-    Device& d = *wrapped.value();
+    PlayedHost played(host, currentTestContext(host));
+    HostGl& hostGl = played.gl;
+    Device& d = *played.sdk;
 
     constexpr uint32_t w = 96, h = 54;
     const samples::AnalyticScene scene = samples::cornerScene(w, h);
@@ -196,7 +224,7 @@ TEST_CASE("gl import: AO reads a host depth texture and writes a host texture", 
     REQUIRE(again.isOk());
     CHECK(visibility(d, again.value(), outFormat, w, h) == imported);
     CHECK(d.takeValidationMessages().empty());
-    wrapped.value().reset();  // with `again` still imported
+    played.sdk.reset();  // with `again` still imported
     CHECK(hostGl.isTexture(outName));  // nor does the device's teardown delete it
     hostGl.deleteTextures(1, &depthName);
     hostGl.deleteTextures(1, &outName);
@@ -208,20 +236,9 @@ TEST_CASE("gl import: AO reads a host depth texture and writes a host texture", 
 // exactly the bits of the effect's own output() from the same inputs, and the SDK never deletes it.
 TEST_CASE("gl import: motion blur writes a host texture, bit for bit as output()", "[gl][import][motion_blur]") {
     Device& host = test::device();
-    SFX_REQUIRE_OK(host.flush());  // the test device's context is now current: play the host
-    const bool osmesa = test::backendConfig().platform == "osmesa";
-    gl::GetProcAddressFn loader = osmesa ? reinterpret_cast<gl::GetProcAddressFn>(&OSMesaGetProcAddress)
-                                         : reinterpret_cast<gl::GetProcAddressFn>(&eglGetProcAddress);
-    HostGl hostGl(loader);
-    REQUIRE(hostGl.isTexture);
-    DeviceOptions options;
-    options.ceiling = host.caps().ceiling;
-    options.validation = true;
-    const gl::Api api = host.caps().backend == BackendKind::GLES ? gl::Api::GLES : gl::Api::DesktopGL;
-    Result<std::unique_ptr<Device>> wrapped = gl::wrapCurrentContext(loader, api, options);
-    INFO(wrapped.status().toString());
-    REQUIRE(wrapped.isOk());
-    Device& d = *wrapped.value();
+    PlayedHost played(host, currentTestContext(host));
+    HostGl& hostGl = played.gl;
+    Device& d = *played.sdk;
 
     const reference::Scene scene = test::movingAndStillLayersScene();
     const reference::SceneFrame f = scene.render(0);
@@ -265,7 +282,7 @@ TEST_CASE("gl import: motion blur writes a host texture, bit for bit as output()
     SFX_REQUIRE_OK(d.destroyTexture(outTex.value()));
     CHECK(hostGl.isTexture(outName));
     CHECK(d.takeValidationMessages().empty());
-    wrapped.value().reset();
+    played.sdk.reset();
     hostGl.deleteTextures(1, &outName);
     SFX_REQUIRE_OK(host.flush());
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
@@ -275,11 +292,10 @@ TEST_CASE("gl import: motion blur writes a host texture, bit for bit as output()
 // with its whole message (validation_cases.cpp lists these rows as covered here).
 TEST_CASE("gl entry points: no loader, no current context, a device of another API", "[gl][validation]") {
     Device& host = test::device();
-    SFX_REQUIRE_OK(host.flush());  // the test device's context is current
-    const bool osmesa = test::backendConfig().platform == "osmesa";
-    gl::GetProcAddressFn loader = osmesa ? reinterpret_cast<gl::GetProcAddressFn>(&OSMesaGetProcAddress)
-                                         : reinterpret_cast<gl::GetProcAddressFn>(&eglGetProcAddress);
-    const gl::Api api = host.caps().backend == BackendKind::GLES ? gl::Api::GLES : gl::Api::DesktopGL;
+    const TestContext context = currentTestContext(host);
+    const bool osmesa = context.osmesa;
+    const gl::GetProcAddressFn loader = context.loader;
+    const gl::Api api = context.api;
     auto refused = [](const Status& s, validation::Error rule, const std::string& expected) {
         INFO(validation::entry(rule).name << " -> " << s.toString());
         CHECK(s.code() == validation::entry(rule).code);
