@@ -21,6 +21,7 @@
 #include <map>
 #include <sstream>
 
+#include "bench_args.hpp"
 #include "bench_device.hpp"
 #include "copy_pass.hpp"
 #include "scene.hpp"
@@ -32,6 +33,8 @@
 #include "sfx/tiers.hpp"
 
 using namespace sfx;
+using samples::median;
+using samples::splitList;
 
 namespace {
 
@@ -51,14 +54,6 @@ struct Options {
     std::vector<std::string> imageScenes{"bunny", "corner"};
 };
 constexpr double kErrorRadius = 0.5;  // the radius the error columns and images use
-
-std::vector<std::string> splitList(const std::string& text) {
-    std::vector<std::string> out;
-    std::stringstream ss(text);
-    for (std::string item; std::getline(ss, item, ',');)
-        if (!item.empty()) out.push_back(item);
-    return out;
-}
 
 bool parseOptions(int argc, char** argv, Options* o) {
     for (int i = 1; i < argc; i += 2) {
@@ -83,12 +78,6 @@ bool parseOptions(int argc, char** argv, Options* o) {
         }
     }
     return true;
-}
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
 }
 
 bool contains(const std::vector<std::string>& list, const std::string& item) {

@@ -19,6 +19,7 @@
 #include <map>
 #include <sstream>
 
+#include "bench_args.hpp"
 #include "bench_device.hpp"
 #include "copy_pass.hpp"
 #include "markdown_section.hpp"
@@ -31,6 +32,8 @@
 #include "sfx_shared_raster.h"
 
 using namespace sfx;
+using samples::median;
+using samples::splitList;
 using samples::fixed;
 
 namespace {
@@ -51,14 +54,6 @@ struct Options {
     std::string outDir = "docs";
     bool writeDoc = true;
 };
-
-std::vector<std::string> splitList(const std::string& text) {
-    std::vector<std::string> out;
-    std::stringstream ss(text);
-    for (std::string item; std::getline(ss, item, ',');)
-        if (!item.empty()) out.push_back(item);
-    return out;
-}
 
 bool parseOptions(int argc, char** argv, Options* o) {
     for (int i = 1; i < argc; ++i) {
@@ -86,12 +81,6 @@ bool parseOptions(int argc, char** argv, Options* o) {
         }
     }
     return true;
-}
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
 }
 
 // The heavy scene: `layers` panes one behind the other, filling most of the view, over a floor
