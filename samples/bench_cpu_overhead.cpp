@@ -142,8 +142,8 @@ struct Options {
     uint32_t evictMiB = 0;
 };
 
-// Writes `bytes` of `buffer` so that what the caches held before is gone (a new value each
-// call, so the stores cannot be skipped).
+// Writes one byte per cache line of `buffer`, so that what the caches held before is gone (a
+// new value each call, so the stores cannot be skipped).
 void evictCaches(std::vector<uint8_t>& buffer) {
     static uint8_t value = 0;
     ++value;

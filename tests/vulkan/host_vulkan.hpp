@@ -21,13 +21,8 @@ namespace sfx::hostvk {
 // rendering, one queue), plus a command buffer. It leaves synchronization2 off (the engine
 // sample turns it on), so these tests keep the SDK's barriers without it, one
 // vkCmdPipelineBarrier per pair of stage masks, under synchronization validation.
-struct Host {
-    engine::VkHost vk;
-    VkInstance instance = VK_NULL_HANDLE;
-    VkPhysicalDevice physical = VK_NULL_HANDLE;
-    VkDevice device = VK_NULL_HANDLE;
-    VkQueue queue = VK_NULL_HANDLE;
-    uint32_t family = 0;
+// The instance, physical device, device, queue and family are VkHost's own members.
+struct Host : engine::VkHost {
     VkCommandPool pool = VK_NULL_HANDLE;
     VkCommandBuffer cb = VK_NULL_HANDLE;
     bool validation = false;  // the layer is on (always, when create() required it)
@@ -40,11 +35,10 @@ struct Host {
             skipReason = "VK_LAYER_KHRONOS_validation is not installed (these tests need synchronization validation)";
             return false;
         }
-        if (Status s = vk.create(validation, /*wantSynchronization2=*/false); !s) {
+        if (Status s = VkHost::create(validation, /*wantSynchronization2=*/false); !s) {
             skipReason = s.toString();
             return false;
         }
-        instance = vk.instance, physical = vk.physical, device = vk.device, queue = vk.queue, family = vk.family;
         VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
         pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
         pci.queueFamilyIndex = family;
@@ -56,9 +50,6 @@ struct Host {
         vkAllocateCommandBuffers(device, &cai, &cb);
         return true;
     }
-
-    // The host messenger's warnings and errors since the last call.
-    std::vector<std::string> takeErrors() { return vk.takeMessages(); }
 
     vulkan::ExternalVulkan external() const {
         return {instance, physical, device, queue, family, vkGetInstanceProcAddr, validation};
@@ -86,7 +77,7 @@ struct Host {
         REQUIRE(vkQueueWaitIdle(queue) == VK_SUCCESS);
     }
 
-    ~Host() {  // vk then destroys the device, the messenger and the instance
+    ~Host() {  // ~VkHost then destroys the device, the messenger and the instance
         if (device) {
             vkDeviceWaitIdle(device);
             if (pool) vkDestroyCommandPool(device, pool, nullptr);
@@ -108,7 +99,7 @@ inline std::unique_ptr<Device> wrapValidated(Host& host) {
 // sees only what came after this one).
 inline void checkNoMessages(Device& d, Host& host) {
     const std::vector<std::string> messages = d.takeValidationMessages();
-    const std::vector<std::string> hostErrors = host.takeErrors();
+    const std::vector<std::string> hostErrors = host.takeMessages();
     for (const std::string& m : messages) UNSCOPED_INFO("validation: " << m);
     for (const std::string& m : hostErrors) UNSCOPED_INFO("host validation: " << m);
     CHECK(messages.empty());

@@ -111,7 +111,7 @@ TEST_CASE("vulkan: wrapped host device, host command buffer, host objects surviv
             CHECK_FALSE(d.takeValidationMessages().empty());
             // Left untaken, the next one reaches the log callback when the device goes, not stderr.
             createBadSampler();
-            (void)host.takeErrors();
+            (void)host.takeMessages();
         }
         REQUIRE(d.destroyTexture(tex.value()).isOk());
         CHECK(logged.empty());
@@ -134,8 +134,8 @@ TEST_CASE("vulkan: wrapped host device, host command buffer, host objects surviv
     vkDestroyCommandPool(host.device, pool, nullptr);
     host.pool = VK_NULL_HANDLE;
     vkDestroyDevice(host.device, nullptr);  // the layer reports any SDK object still alive
-    host.device = host.vk.device = VK_NULL_HANDLE;
-    const std::vector<std::string> hostErrors = host.takeErrors();
+    host.device = VK_NULL_HANDLE;
+    const std::vector<std::string> hostErrors = host.takeMessages();
     for (const auto& m : hostErrors) UNSCOPED_INFO("host validation: " << m);
     CHECK(hostErrors.empty());
 }
