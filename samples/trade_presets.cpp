@@ -35,7 +35,7 @@ using samples::fixed;
 
 struct Options {
     std::vector<std::string> backends{"vulkan", "gles"};
-    uint32_t costWidth = 1280, costHeight = 720, runs = 5, instants = 64;
+    uint32_t costWidth = 1280, costHeight = 720, runs = 11, instants = 64;
     std::vector<double> radii{0.25, 0.5, 1.0, 2.0};
     samples::TruthSettings truth;
     std::string costView = "contact";
@@ -167,10 +167,9 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
     const Format outFormat = samples::aoOutputFormat(dev);
     Result<std::unique_ptr<samples::CopyPass>> copy = samples::makeCopyPass(dev, tier, o.costWidth, o.costHeight, outFormat);
     if (!copy) return copy.status();
-    Result<double> copyTime = copy.value()->medianMs(4 * o.runs);
+    Result<double> copyTime = copy.value()->medianMs(4 * o.runs);  // for the log; each row times its own
     if (!copyTime) return copyTime.status();
-    const double copyMs = copyTime.value();
-    std::cout << "  copy pass at " << o.costWidth << "x" << o.costHeight << ": " << fixed(copyMs, 3) << " ms" << std::endl;
+    std::cout << "  copy pass at " << o.costWidth << "x" << o.costHeight << ": " << fixed(copyTime.value(), 3) << " ms" << std::endl;
     if (aoScores.empty()) {  // accuracy from the first backend: the backends compute the same shaders
         Result<std::map<std::string, AoAccuracy>> a = aoAccuracy(dev, tier, o, views, cases);
         if (!a) return a.status();
@@ -195,25 +194,21 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
                 AmbientObscurance::create(dev, {o.costWidth, o.costHeight, preset.params, s, in.value()->depthKind()});
             if (!ao) return ao.status();
             const AoInputs inputs{DepthSource{in.value()->depth(), in.value()->depthKind(), in.value()->camera()}, in.value()->normals(), out.value()};
-            Result<TimerReading> r = budget::timeMedian(dev, o.runs, [&] { return ao.value()->dispatch(inputs); });
+            // Timed interleaved with copies (CopyPass::timeAgainst): on a loaded machine the load
+            // drifts between configurations, and a ratio to a copy timed minutes earlier would drift
+            // with it.
+            Result<samples::CopyPass::Interleaved> r = copy.value()->timeAgainst(o.runs, [&] { return ao.value()->dispatch(inputs); });
             if (!r) {
                 status = r.status();
                 break;
             }
-            // The copy pass again, right after: on a loaded machine the load drifts between
-            // configurations, and a ratio to a copy timed minutes earlier would drift with it.
-            Result<double> copyNow = copy.value()->medianMs(o.runs);
-            if (!copyNow) {
-                status = copyNow.status();
-                break;
-            }
-            const double copyMsNow = copyNow.value();
+            const double copyMsNow = r->copyMs;
             const AoAccuracy& accuracy = aoScores.at(preset.name + "/" + toString(t));
             const samples::AoScore& score = accuracy.heldOut;
             rows.push_back({backend, toString(tier), preset.name, "ao", toString(t), preset.params.aoHalfResolution ? "half" : "full",
-                            aoTaps(preset.params, t), preset.params.aoBlurRadiusPx, r->milliseconds, r->milliseconds / copyMsNow, score.psnr,
+                            aoTaps(preset.params, t), preset.params.aoBlurRadiusPx, r->effectMs, r->ratio, score.psnr,
                             score.psnrOccluded, accuracy.analytic.psnr});
-            std::cout << "  " << backend << "/" << toString(tier) << "/" << preset.name << "/" << toString(t) << ": " << fixed(r->milliseconds, 2)
+            std::cout << "  " << backend << "/" << toString(tier) << "/" << preset.name << "/" << toString(t) << ": " << fixed(r->effectMs, 2)
                       << " ms = " << fixed(rows.back().copyPasses, 1) << " copy passes (copy " << fixed(copyMsNow, 3) << " ms), PSNR " << fixed(score.psnr, 2)
                       << " dB" << std::endl;
         }
@@ -227,8 +222,14 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
             status = mb.status();
             break;
         }
+        // Its unit: copies timed right after (the effect times itself in runMotionBlur).
+        Result<double> copyAfter = copy.value()->medianMs(o.runs);
+        if (!copyAfter) {
+            status = copyAfter.status();
+            break;
+        }
         const MotionBlurParams p = resolveMotionBlur(preset.params, {}, o.costHeight).value();
-        rows.push_back({backend, toString(tier), preset.name, "motion-blur", "-", "-", p.taps, p.radiusPx, mb->medianMs, mb->medianMs / copyMs,
+        rows.push_back({backend, toString(tier), preset.name, "motion-blur", "-", "-", p.taps, p.radiusPx, mb->medianMs, mb->medianMs / copyAfter.value(),
                         mbScores.at(preset.name), 0, 0});
         std::cout << "  " << backend << "/" << toString(tier) << "/" << preset.name << "/motion blur: " << fixed(mb->medianMs, 2) << " ms = "
                   << fixed(rows.back().copyPasses, 1) << " copy passes, PSNR " << fixed(mbScores.at(preset.name), 2) << " dB" << std::endl;
@@ -240,7 +241,7 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
 std::string markdown(const Options& o, const std::vector<Row>& rows, const std::string& machine) {
     std::ostringstream md;
     md << "Measured by `build/samples/trade_presets` on " << machine << ". Cost at " << o.costWidth << "x" << o.costHeight
-       << " (median of " << o.runs << " HAL-timed runs; copy passes = that cost over one full-screen copy of the same size on the same device, for AO timed right after each configuration); AO PSNR "
+       << " (median of " << o.runs << " HAL-timed runs; copy passes = that cost over one full-screen copy of the same size on the same device: for AO the median ratio of runs timed interleaved with copies, for motion blur copies timed right after it); AO PSNR "
           "over the held-out views of the fit at radii 0.25-2 ("
        << o.truth.width << "x" << o.truth.height << "), motion blur PSNR against " << o.instants
        << " supersampled instants on the 2.5D scenes.\n\n";

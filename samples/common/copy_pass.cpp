@@ -1,5 +1,8 @@
 #include "copy_pass.hpp"
 
+#include <algorithm>
+#include <vector>
+
 #include "sfx/budget.hpp"
 #include "sfx_shaders.hpp"
 
@@ -22,6 +25,57 @@ Result<double> CopyPass::medianMs(uint32_t runs) {
     });
     if (!r) return r.status();
     return r->milliseconds / double(kCopiesPerRun);
+}
+
+namespace {
+
+// One timed, flushed recording.
+Result<double> timeOnce(Device& dev, TimerHandle timer, const std::function<Status()>& record) {
+    SFX_TRY(dev.beginTimer(timer));
+    SFX_TRY(record());
+    SFX_TRY(dev.endTimer(timer));
+    SFX_TRY(dev.flush());
+    Result<TimerReading> r = dev.readTimer(timer);
+    if (!r) return r.status();
+    return r->milliseconds;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+}  // namespace
+
+Result<CopyPass::Interleaved> CopyPass::timeAgainst(uint32_t runs, const std::function<Status()>& record) {
+    if (runs == 0) return invalidArgument("runs", "0", "at least 1");
+    const std::function<Status()> copies = [&] {
+        for (uint32_t i = 0; i < kCopiesPerRun; ++i) SFX_TRY(this->record());
+        return Status::ok();
+    };
+    Result<TimerHandle> timer = dev.createTimer();
+    if (!timer) return timer.status();
+    std::vector<double> effect, copy, ratio;
+    Status status = Status::ok();
+    // One warm-up pair (pipelines, caches), then `runs` timed pairs.
+    for (uint32_t i = 0; i < runs + 1 && status; ++i) {
+        const bool effectFirst = i % 2 == 0;
+        Result<double> a = timeOnce(dev, timer.value(), effectFirst ? record : copies);
+        Result<double> b = a ? timeOnce(dev, timer.value(), effectFirst ? copies : record) : a;
+        if (!b) {
+            status = b.status();
+            break;
+        }
+        if (i == 0) continue;
+        const double e = effectFirst ? a.value() : b.value();
+        const double c = (effectFirst ? b.value() : a.value()) / double(kCopiesPerRun);
+        effect.push_back(e);
+        copy.push_back(c);
+        ratio.push_back(c > 0 ? e / c : 0.0);
+    }
+    (void)dev.destroyTimer(timer.value());
+    if (!status) return status;
+    return Interleaved{median(effect), median(copy), median(ratio)};
 }
 
 CopyPass::~CopyPass() {

@@ -3,6 +3,7 @@
 // across backends and machines.
 #pragma once
 
+#include <functional>
 #include <memory>
 
 #include "sfx/hal.hpp"
@@ -24,6 +25,18 @@ struct CopyPass {
     // per-pass jitter, and the timer's fixed cost is spread over eight passes.
     static constexpr uint32_t kCopiesPerRun = 8;
     Result<double> medianMs(uint32_t runs);
+    // An effect's cost in copy passes, timed interleaved with the unit: run i times `record` and
+    // one run of copies back to back (their order alternating, so neither always runs on the
+    // other's warm caches), and the cost is the median of the per-run ratios. On lavapipe the
+    // copy is memory-bound and the machine's shared last-level cache moves it by up to 2x within
+    // one process over seconds; a ratio of two medians taken seconds apart moved with it, while
+    // each pair here sees the same machine state.
+    struct Interleaved {
+        double effectMs = 0;  // median of the effect's runs
+        double copyMs = 0;    // median of the copy's runs (one pass)
+        double ratio = 0;     // median of effect / copy, pair by pair
+    };
+    Result<Interleaved> timeAgainst(uint32_t runs, const std::function<Status()>& record);
     ~CopyPass();
 };
 
