@@ -208,6 +208,7 @@ private:
     ProgramHandle aoProgram_, blurProgram_, halfDepthProgram_, upsampleProgram_;
     // Pipelines by program, format and specialisation constants; kept across resize.
     std::unique_ptr<detail::PipelineCache> pipelines_;
+    std::unique_ptr<detail::UniformWrites> uniforms_;  // every write of the uniform buffers above
     bool profiling_ = false;
     std::vector<TimerHandle> passTimers_;  // one per plan() pass while profiling, else empty
 };

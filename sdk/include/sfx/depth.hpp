@@ -14,6 +14,7 @@ namespace sfx {
 
 namespace detail {
 class PipelineCache;  // the effects' pipelines by specialisation constants (internal)
+class UniformWrites;  // the effects' uniform buffers, written when their bytes change (internal)
 }
 
 enum class DepthKind : uint32_t {
@@ -92,6 +93,7 @@ private:
     ProgramHandle linearizeProgram_, mipProgram_;
     // Linearisation (one per DepthKind seen) and MIP pipelines; kept across resize.
     std::unique_ptr<detail::PipelineCache> pipelines_;
+    std::unique_ptr<detail::UniformWrites> uniforms_;
     DepthReconstruction reconstruction_;
     DepthKind sourceKind_ = DepthKind::Hardware;
 };

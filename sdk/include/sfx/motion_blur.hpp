@@ -159,6 +159,7 @@ private:
     ProgramHandle packProgram_, tileProgram_, neighborProgram_, reconstructProgram_;
     // Pipelines by specialisation constants (camera-only, tile size, taps); kept across resize.
     std::unique_ptr<detail::PipelineCache> pipelines_;
+    std::unique_ptr<detail::UniformWrites> uniforms_;  // every write of the uniform buffers above
 };
 
 }  // namespace sfx

@@ -48,7 +48,8 @@ Result<std::unique_ptr<AmbientObscurance>> AmbientObscurance::create(Device& dev
 }
 
 AmbientObscurance::AmbientObscurance(Device& device, const AoDesc& desc)
-    : device_(device), desc_(desc), pipelines_(std::make_unique<detail::PipelineCache>(device)) {}
+    : device_(device), desc_(desc), pipelines_(std::make_unique<detail::PipelineCache>(device)),
+      uniforms_(std::make_unique<detail::UniformWrites>()) {}
 
 AmbientObscurance::~AmbientObscurance() { release(); }
 
@@ -299,7 +300,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
     p.creaseMinimum = config_.crease.minimumCrease;
     p.fadeStart = config_.crease.fadeStart;
     p.invFadeRange = std::isinf(config_.crease.fadeEnd) ? 0.0f : float(1.0 / (double(config_.crease.fadeEnd) - config_.crease.fadeStart));
-    SFX_TRY(device_.writeBuffer(aoParams_, 0, &p, sizeof p));
+    SFX_TRY(uniforms_->write(device_, aoParams_, p));
 
     // Obscurance: straight into the output at full resolution without blur.
     const bool direct = !blur && !half;
@@ -343,7 +344,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
             b.keyNear = float(keyNear);
             b.keyLog2Range = float(keyLog2Range);
             const BufferHandle buffer = blurPass == 0 ? blurParamsH_ : blurParamsV_;
-            SFX_TRY(device_.writeBuffer(buffer, 0, &b, sizeof b));
+            SFX_TRY(uniforms_->write(device_, buffer, b));
             // At half resolution the second pass goes back into the raw target, for the upsample.
             const TextureHandle src = blurPass == 0 ? aoTarget_ : blurTarget_;
             const TextureHandle dst = blurPass == 0 ? blurTarget_ : half ? aoTarget_ : in.output;

@@ -66,7 +66,7 @@ Status AmbientObscurance::recordUpsample(const AoInputs& in, Format outFormat, T
     u.denomOffset = float(rec.denomOffset);
     u.numerator = float(rec.numerator);
     const int linearize = depth_->passThrough() && depth_->sourceKind() == DepthKind::Hardware ? 1 : 0;
-    SFX_TRY(device_.writeBuffer(upsampleParams_, 0, &u, sizeof u));
+    SFX_TRY(uniforms_->write(device_, upsampleParams_, u));
     const bool mip = halfDepthFromMip();
     // The half-size depth comes with the AO texel where the target carries it (the float targets
     // of the high tier); else from the half-size depth texture or MIP level 1.

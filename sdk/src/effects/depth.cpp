@@ -36,7 +36,8 @@ Result<std::unique_ptr<LinearDepth>> LinearDepth::create(Device& device, const L
 }
 
 LinearDepth::LinearDepth(Device& device, const LinearDepthDesc& desc)
-    : device_(device), desc_(desc), pipelines_(std::make_unique<detail::PipelineCache>(device)) {}
+    : device_(device), desc_(desc), pipelines_(std::make_unique<detail::PipelineCache>(device)),
+      uniforms_(std::make_unique<detail::UniformWrites>()) {}
 
 LinearDepth::~LinearDepth() { release(); }
 
@@ -149,10 +150,10 @@ Status LinearDepth::dispatch(const DepthSource& source, std::span<const TimerHan
         // linearisation pass would have, or linearize it as that pass would (readersLinearize),
         // so the host's texture serves as it is.
         hostTexture_ = source.texture;
-        if (!params_.isNull()) SFX_TRY(device_.writeBuffer(params_, 0, &p, sizeof p));
+        if (!params_.isNull()) SFX_TRY(uniforms_->write(device_, params_, p));
         return Status::ok();
     }
-    SFX_TRY(device_.writeBuffer(params_, 0, &p, sizeof p));
+    SFX_TRY(uniforms_->write(device_, params_, p));
     // The source's kind is a branch of the shader: a specialisation constant (one pipeline each).
     const int32_t linearInput = source.kind == DepthKind::Linear ? 1 : 0;
     Result<PipelineHandle> linearize =

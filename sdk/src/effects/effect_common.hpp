@@ -2,6 +2,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <initializer_list>
 #include <span>
 #include <string>
@@ -96,6 +98,41 @@ private:
         return true;
     }
     Device& device_;
+    std::vector<Entry> entries_;
+};
+
+// The uniform buffers of an effect, each written only when its bytes differ from the last ones
+// written to it. A steady frame's parameters repeat, and every write records a staged copy and
+// its barrier (Vulkan) or a buffer upload (GL) in the middle of the effect's passes. Only the
+// effect writes its own uniform buffers, so the last bytes written are what the buffer holds.
+// Handles carry a generation, so a recreated buffer never matches an old entry.
+class UniformWrites {
+public:
+    Status write(Device& device, BufferHandle buffer, const void* data, size_t bytes) {
+        Entry* entry = nullptr;
+        for (Entry& e : entries_)
+            if (e.buffer == buffer) entry = &e;
+        if (entry && entry->bytes.size() == bytes && std::memcmp(entry->bytes.data(), data, bytes) == 0) return Status::ok();
+        if (entry) entry->bytes.clear();  // a failed write leaves no stale match behind
+        SFX_TRY(device.writeBuffer(buffer, 0, data, bytes));
+        if (!entry) {
+            entries_.push_back({buffer, {}});
+            entry = &entries_.back();
+        }
+        const auto* first = static_cast<const uint8_t*>(data);
+        entry->bytes.assign(first, first + bytes);  // same size: no allocation
+        return Status::ok();
+    }
+    template <class Block>
+    Status write(Device& device, BufferHandle buffer, const Block& block) {
+        return write(device, buffer, &block, sizeof block);
+    }
+
+private:
+    struct Entry {
+        BufferHandle buffer;
+        std::vector<uint8_t> bytes;
+    };
     std::vector<Entry> entries_;
 };
 

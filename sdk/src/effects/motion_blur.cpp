@@ -114,7 +114,8 @@ Result<std::unique_ptr<MotionBlur>> MotionBlur::create(Device& device, const Mot
 }
 
 MotionBlur::MotionBlur(Device& device, const MotionBlurDesc& desc)
-    : device_(device), desc_(desc), pipelines_(std::make_unique<detail::PipelineCache>(device)) {}
+    : device_(device), desc_(desc), pipelines_(std::make_unique<detail::PipelineCache>(device)),
+      uniforms_(std::make_unique<detail::UniformWrites>()) {}
 
 MotionBlur::~MotionBlur() { release(); }
 
@@ -289,13 +290,13 @@ Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings
     pack.radius = float(p.radiusPx);
     pack.velocityScale = float(0.5 * p.exposure);
     pack.maxDepth = float(depth_->reconstruction().maxDepth);
-    SFX_TRY(device_.writeBuffer(packParams_, 0, &pack, sizeof pack));
+    SFX_TRY(uniforms_->write(device_, packParams_, pack));
     ReconstructParams rec{};
     rec.radius = float(p.radiusPx);
     rec.softExtent = float(p.softDepthExtent);
     rec.centreWeight = float(p.centreWeight);
     rec.tileSize = int32_t(p.radiusPx);
-    SFX_TRY(device_.writeBuffer(reconstructParams_, 0, &rec, sizeof rec));
+    SFX_TRY(uniforms_->write(device_, reconstructParams_, rec));
 
     // Branches and loop counts: specialisation constants, one pipeline per combination seen.
     auto pipeline = [&](ProgramHandle program, Format format, std::initializer_list<SpecializationConstant> constants, const char* name) {
