@@ -28,9 +28,9 @@ struct CopyPass {
     // An effect's cost in copy passes, timed interleaved with the unit: run i times `record` and
     // one run of copies back to back (their order alternating, so neither always runs on the
     // other's warm caches), and the cost is the median of the per-run ratios. On lavapipe the
-    // copy is memory-bound and the machine's shared last-level cache moves it by up to 2x within
-    // one process over seconds; a ratio of two medians taken seconds apart moved with it, while
-    // each pair here sees the same machine state.
+    // copy's time moves by up to 2x within one process over seconds (one copy pass, timed three
+    // times in a row: 1.57, 2.06, 2.07 ms); a ratio of two medians taken seconds apart moved with
+    // it, while each pair here is timed within a few tens of milliseconds.
     struct Interleaved {
         double effectMs = 0;  // median of the effect's runs
         double copyMs = 0;    // median of the copy's runs (one pass)
