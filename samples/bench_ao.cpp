@@ -337,10 +337,6 @@ int main(int argc, char** argv) {
                 std::cout << "bench_ao: copy pass: " << copy.status().toString() << std::endl;
                 continue;
             }
-            // A first reading of the unit, for the log; each configuration's ratio comes from
-            // copies timed interleaved with its own runs (CopyPass::timeAgainst).
-            Result<double> copyTime = copy.value()->medianMs(4 * o.runs);
-            std::cout << "  copy pass " << (copyTime ? copyTime.value() : 0.0) << " ms (" << toString(dev.caps().timing) << ")" << std::endl;
             Result<TextureHandle> outTex = dev.createTexture({o.width, o.height, 1, outFormat, kTextureSampled | kTextureRenderTarget, "bench-ao-out"});
             if (!outTex) {
                 std::cout << "bench_ao: output: " << outTex.status().toString() << std::endl;

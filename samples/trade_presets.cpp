@@ -167,9 +167,6 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
     const Format outFormat = samples::aoOutputFormat(dev);
     Result<std::unique_ptr<samples::CopyPass>> copy = samples::makeCopyPass(dev, tier, o.costWidth, o.costHeight, outFormat);
     if (!copy) return copy.status();
-    Result<double> copyTime = copy.value()->medianMs(4 * o.runs);  // for the log; each row times its own
-    if (!copyTime) return copyTime.status();
-    std::cout << "  copy pass at " << o.costWidth << "x" << o.costHeight << ": " << fixed(copyTime.value(), 3) << " ms" << std::endl;
     if (aoScores.empty()) {  // accuracy from the first backend: the backends compute the same shaders
         Result<std::map<std::string, AoAccuracy>> a = aoAccuracy(dev, tier, o, views, cases);
         if (!a) return a.status();
