@@ -44,7 +44,7 @@ vec4 blurOut(float wide, float moderate, vec4 c) {
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     ivec2 size = textureSize(uSource, 0);
-    vec4 c = texelFetch(uSource, p, 0);
+    vec4 c = sfxTexel(uSource, p, 0);
     float z0 = blurDepth(c);
     if (!(z0 < params.maxDepth)) {
         outAo = kFinalPass != 0 ? blurOut(1.0, 1.0, c) : c;
@@ -54,7 +54,7 @@ void main() {
     for (int k = -kRadius; k <= kRadius; ++k) {
         ivec2 q = p + k * params.direction;
         if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) continue;
-        vec4 s = texelFetch(uSource, q, 0);
+        vec4 s = sfxTexel(uSource, q, 0);
         float edge = aoBlurEdgeWeight(blurDepth(s), z0);
         float w = aoBlurGaussian(k, kRadius) * edge;
         accWide += w * s.r;

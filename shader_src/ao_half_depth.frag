@@ -13,7 +13,7 @@ layout(location = 0) out float outDepth;
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    float d = texelFetch(uDepth, aoFullResPixel(p, textureSize(uDepth, 0)), 0).r;
+    float d = sfxTexel(uDepth, aoFullResPixel(p, textureSize(uDepth, 0)), 0).r;
     // Linear depth is copied as it is (every reader clamps on fetch, as for level 0); hardware
     // depth is linearized by the linearisation pass's own formula, which then never runs.
     outDepth = kLinearize != 0 ? sfxLinearizeDepth(d, params.ndcScale, params.denomOffset, params.numerator, params.maxDepth) : d;

@@ -17,21 +17,21 @@ layout(constant_id = SFX_AO_SC_UPSAMPLE_LINEARIZE) const int kLinearize = 0;
 // A half-size texel's visibility (x) and depth (y): with the depth in the AO target one fetch
 // gives both (stored clamped, as sfxLinearDepthOrFar returns it).
 vec2 halfTexel(ivec2 q) {
-    vec4 s = texelFetch(uSource, q, 0);
+    vec4 s = sfxTexel(uSource, q, 0);
     if (kHalfDepthSource == SFX_AO_HALF_DEPTH_SOURCE_G) return s.rg;
     if (kHalfDepthSource == SFX_AO_HALF_DEPTH_SOURCE_B) return s.rb;
     if (kHalfDepthSource == SFX_AO_HALF_DEPTH_SOURCE_KEY) {
         float key = aoUnpackDepthKey(s.ba);
         return vec2(s.r, key >= 1.0 ? params.maxDepth : params.keyNear * exp2(key * params.keyLog2Range));
     }
-    float d = kHalfDepthSource == SFX_AO_HALF_DEPTH_MIP ? texelFetch(uDepth, q, 1).r : texelFetch(uHalfDepth, q, 0).r;
+    float d = kHalfDepthSource == SFX_AO_HALF_DEPTH_MIP ? sfxTexel(uDepth, q, 1).r : sfxTexel(uHalfDepth, q, 0).r;
     return vec2(s.r, sfxLinearDepthOrFar(d, params.maxDepth));
 }
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     // The full-size depth, linearized here when no pass did (LinearDepthDesc.readersLinearize).
-    float d = texelFetch(uDepth, p, 0).r;
+    float d = sfxTexel(uDepth, p, 0).r;
     float z0 = kLinearize != 0 ? sfxLinearizeDepth(d, params.ndcScale, params.denomOffset, params.numerator, params.maxDepth)
                                : sfxLinearDepthOrFar(d, params.maxDepth);
     if (!(z0 < params.maxDepth)) {

@@ -9,5 +9,5 @@ layout(location = 0) out float outDepth;
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     ivec2 src = min(depthMipSource(p), textureSize(uPreviousLevel, 0) - 1);
-    outDepth = texelFetch(uPreviousLevel, src, 0).r;
+    outDepth = sfxTexel(uPreviousLevel, src, 0).r;
 }

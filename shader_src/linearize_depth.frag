@@ -11,7 +11,7 @@ layout(location = 0) out float outLinearDepth;
 layout(constant_id = SFX_DEPTH_SC_LINEAR_INPUT) const int kLinearInput = 0;
 
 void main() {
-    float d = texelFetch(uHardwareDepth, ivec2(gl_FragCoord.xy), 0).r;
+    float d = sfxTexel(uHardwareDepth, ivec2(gl_FragCoord.xy), 0).r;
     outLinearDepth = kLinearInput != 0 ? sfxLinearDepthOrFar(d, params.maxDepth)
                                                : sfxLinearizeDepth(d, params.ndcScale, params.denomOffset, params.numerator, params.maxDepth);
 }

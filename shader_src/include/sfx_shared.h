@@ -120,6 +120,17 @@ bool sfxColorIsFinite(vec4 c) { return sfxIsFinite(c.r) && sfxIsFinite(c.g) && s
 vec4 sfxColor(vec4 c) { return vec4(sfxColorChannel(c.r), sfxColorChannel(c.g), sfxColorChannel(c.b), sfxColorChannel(c.a)); }
 #endif
 
+#ifndef __cplusplus
+// One texel by its integer coordinates q in mip `lod`: the texel texelFetch(s, q, lod) reads, for
+// q inside the level, taken through the nearest, clamp-to-edge sampler that the HAL binds when a
+// binding names none (TextureBinding). Why not texelFetch: lavapipe compiles texelFetch into a
+// call of about 125 instructions per 8 pixels, and a sample at the texel's centre into a
+// fraction of that, inline; crease's obscurance pass fell from 115 to 57 million instructions
+// at half of 1280x720 (docs/trade.md). The centre (q + 0.5) / size stays within a thousandth of
+// a texel of it up to 16384 texels, so the nearest texel is q.
+vec4 sfxTexel(sampler2D s, ivec2 q, int lod) { return textureLod(s, (vec2(q) + 0.5) / vec2(textureSize(s, lod)), float(lod)); }
+#endif
+
 // Parameters of the linearisation pass (linearize_depth.frag), filled by LinearDepth. Whether
 // the source is linear already is a specialisation constant (a branch, never a uniform: see
 // sfx_shared_ao.h), its id this one.

@@ -352,7 +352,7 @@ layout(constant_id = SFX_AO_SC_HALF_RES) const int kAoHalfRes = 0;
 layout(constant_id = SFX_AO_SC_DEPTH_LAYERS) const int kAoDepthLayers = 1;
 
 // uDepth may be the host's linear depth itself (LinearDepth passing through): clamp on fetch.
-float aoDepthAt(ivec2 q, int level) { return sfxLinearDepthOrFar(texelFetch(uDepth, q, level).r, params.maxDepth); }
+float aoDepthAt(ivec2 q, int level) { return sfxLinearDepthOrFar(sfxTexel(uDepth, q, level).r, params.maxDepth); }
 float aoDepth(ivec2 q) { return aoDepthAt(q, 0); }
 #ifdef SFX_AO_MULTILAYER  // generated from the tier table (TierProfile::aoMaxDepthLayers > 1)
 // Opaque depth layers 1..3 (AoInputs.depthLayers): R32F linear depth at the AO size, full
@@ -361,7 +361,7 @@ layout(set = 0, binding = 3) uniform sampler2D uDepthLayer1;
 layout(set = 0, binding = 4) uniform sampler2D uDepthLayer2;
 layout(set = 0, binding = 5) uniform sampler2D uDepthLayer3;
 float aoLayerDepth(ivec2 q, int layer) {
-    float d = layer == 1 ? texelFetch(uDepthLayer1, q, 0).r : layer == 2 ? texelFetch(uDepthLayer2, q, 0).r : texelFetch(uDepthLayer3, q, 0).r;
+    float d = layer == 1 ? sfxTexel(uDepthLayer1, q, 0).r : layer == 2 ? sfxTexel(uDepthLayer2, q, 0).r : sfxTexel(uDepthLayer3, q, 0).r;
     return sfxLinearDepthOrFar(d, params.maxDepth);
 }
 #endif
@@ -387,7 +387,7 @@ vec3 aoDerivedNormal(ivec2 p, vec3 C, float z, ivec2 size) {
 
 vec3 aoNormal(ivec2 p, vec3 C, float z, ivec2 size) {
     if (kAoNormalSource != 0) {
-        vec3 n = texelFetch(uNormals, aoSourcePixel(p), 0).xyz;  // host normals are full size
+        vec3 n = sfxTexel(uNormals, aoSourcePixel(p), 0).xyz;  // host normals are full size
         if (kAoNormalSource == 2) n = n * 2.0 - 1.0;
         n = aoHostNormalOrZero(n);  // the host-normal rule above
         if (n != vec3(0.0)) return n;
