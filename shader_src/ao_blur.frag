@@ -24,8 +24,7 @@ float blurDepth(vec4 s) {
     // Already clamped by the obscurance pass (sfxLinearDepthOrFar), as a fetch would be.
     return kCrease != 0 ? s.b : s.g;
 #else
-    float key = aoUnpackDepthKey(s.ba);
-    return key >= 1.0 ? params.maxDepth : params.keyNear * exp2(key * params.keyLog2Range);
+    return aoUnpackDepthKey(s.ba, params.keyBase, params.maxDepth);
 #endif
 }
 

@@ -21,8 +21,7 @@ vec2 halfTexel(ivec2 q) {
     if (kHalfDepthSource == SFX_AO_HALF_DEPTH_SOURCE_G) return s.rg;
     if (kHalfDepthSource == SFX_AO_HALF_DEPTH_SOURCE_B) return s.rb;
     if (kHalfDepthSource == SFX_AO_HALF_DEPTH_SOURCE_KEY) {
-        float key = aoUnpackDepthKey(s.ba);
-        return vec2(s.r, key >= 1.0 ? params.maxDepth : params.keyNear * exp2(key * params.keyLog2Range));
+        return vec2(s.r, aoUnpackDepthKey(s.ba, params.keyBase, params.maxDepth));
     }
     float d = kHalfDepthSource == SFX_AO_HALF_DEPTH_MIP ? sfxTexel(uDepth, q, 1).r : sfxTexel(uHalfDepth, q, 0).r;
     return vec2(s.r, sfxLinearDepthOrFar(d, params.maxDepth));

@@ -238,18 +238,33 @@ float aoRotationAngle(ivec2 p) { return float(aoRotationHash(p) & 0xFFFFu) * (SF
 #endif
 
 // ---- Depth packed in two 8-bit channels (current tier, RGBA8 AO target) --------------------
-// key = log2(z / zNear) / log2(SFX_SKY_DEPTH / zNear) in [0, 1], stored as 16 bits in b (high)
-// and a (low). A log key gives the same relative precision at every distance (~3e-4 of z for
-// zNear = 0.1), far finer than the blur's SFX_AO_BLUR_DEPTH_TOLERANCE.
-#ifndef __cplusplus
-vec2 aoPackDepthKey(float key) {
-    float k = floor(clamp(key, 0.0, 1.0) * 65535.0 + 0.5);
-    float hi = floor(k / 256.0);
-    return vec2(hi, k - hi * 256.0) / 255.0;
+// A 16-bit float of the project's own, stored in b (high byte) and a (low): r = z / keyBase;
+// r >= 1 keeps 5 exponent bits (2^0 to 2^30) and the top 11 mantissa bits, rounded, so the
+// relative error is at most 2^-12 (2.4e-4); r < 1 is stored as round(r * 2048), an error of at
+// most keyBase / 4096; code 0xFFFF is sky. keyBase is the near plane, raised where needed so that
+// every depth short of SFX_SKY_DEPTH has a code (r < 2^31). Both ways are integer operations:
+// the log2 key it replaces cost a log2 per pixel and an exp2 per tap, about 32 instructions per
+// 8 pixels each on lavapipe (the blur and upsample read a key per tap; docs/trade.md).
+SFX_CONST(float, SFX_AO_KEY_MAX_RATIO, 2147483648.0)  // 2^31: above the largest code's value
+SFX_FN SFX_REAL aoDepthKeyBase(SFX_REAL nearDepth) {
+    return max(nearDepth, SFX_REAL(SFX_SKY_DEPTH) / SFX_REAL(SFX_AO_KEY_MAX_RATIO));
 }
-float aoUnpackDepthKey(vec2 ba) {
-    vec2 b = floor(ba * 255.0 + 0.5);
-    return (b.x * 256.0 + b.y) / 65535.0;
+#ifndef __cplusplus
+// z: a surface's depth (below maxDepth, so below SFX_SKY_DEPTH).
+vec2 aoPackDepthKey(float z, float keyBase) {
+    float r = z / keyBase;
+    // Adding half of the dropped mantissa rounds; a carry moves into the exponent as it should.
+    uint code = r < 1.0 ? uint(r * 2048.0 + 0.5) : ((floatBitsToUint(r) + 0x800u) >> 12) - 0x3F000u;
+    code = min(code, 0xFFFEu);
+    return vec2(float(code >> 8), float(code & 0xFFu)) / 255.0;
+}
+vec2 aoPackSkyKey() { return vec2(1.0); }
+// The depth back (maxDepth for sky), as the passes compare it with their own.
+float aoUnpackDepthKey(vec2 ba, float keyBase, float maxDepth) {
+    uvec2 b = uvec2(floor(ba * 255.0 + 0.5));
+    uint code = (b.x << 8) | b.y;
+    float r = code < 0x800u ? float(code) / 2048.0 : uintBitsToFloat((code << 12) + 0x3F000000u);
+    return code == 0xFFFFu ? maxDepth : r * keyBase;
 }
 #endif
 
@@ -303,7 +318,7 @@ SFX_BLOCK(AoParams, 2)
     SFX_M_FLOAT(epsilon) SFX_M_FLOAT(pixelsPerUnit) SFX_M_FLOAT(maxRadiusPx) SFX_M_FLOAT(maxDepth)
     SFX_M_INT(fullWidth) SFX_M_INT(fullHeight)  // the full-size image (aoFullResPixel's clamp)
     SFX_M_INT(pad4) SFX_M_INT(pad5)  // counts: constants above
-    SFX_M_FLOAT(spiralTurns) SFX_M_FLOAT(keyNear) SFX_M_FLOAT(keyInvLog2Range) SFX_M_FLOAT(sumExponent)
+    SFX_M_FLOAT(spiralTurns) SFX_M_FLOAT(keyBase) SFX_M_FLOAT(pad2) SFX_M_FLOAT(sumExponent)
     SFX_M_FLOAT(creaseRange) SFX_M_FLOAT(creaseBias) SFX_M_FLOAT(creaseAverager) SFX_M_FLOAT(creaseMinimum)
     SFX_M_FLOAT(fadeStart) SFX_M_FLOAT(invFadeRange) SFX_M_FLOAT(pad0) SFX_M_FLOAT(pad1)
 SFX_BLOCK_END(params)
@@ -314,13 +329,13 @@ SFX_BLOCK(BlurParams, 2)
     SFX_M_IVEC2(direction)
     SFX_M_INT(pad0) SFX_M_INT(pad1)  // radii and pass: the specialisation constants above
     SFX_M_INT(pad2) SFX_M_INT(pad3) SFX_M_INT(pad4) SFX_M_INT(pad5)
-    SFX_M_FLOAT(maxDepth) SFX_M_FLOAT(keyNear) SFX_M_FLOAT(keyLog2Range) SFX_M_FLOAT(pad6)
+    SFX_M_FLOAT(maxDepth) SFX_M_FLOAT(keyBase) SFX_M_FLOAT(pad6) SFX_M_FLOAT(pad7)
 SFX_BLOCK_END(params)
 #endif
 // The depth-aware upsample (ao_upsample.frag).
 #if defined(__cplusplus) || defined(SFX_AO_UPSAMPLE_PASS)
 SFX_BLOCK(UpsampleParams, 3)
-    SFX_M_FLOAT(maxDepth) SFX_M_FLOAT(keyNear) SFX_M_FLOAT(keyLog2Range) SFX_M_FLOAT(pad0)  // key: as BlurParams
+    SFX_M_FLOAT(maxDepth) SFX_M_FLOAT(keyBase) SFX_M_FLOAT(pad0) SFX_M_FLOAT(pad2)  // key: as BlurParams
     SFX_M_FLOAT(ndcScale) SFX_M_FLOAT(denomOffset) SFX_M_FLOAT(numerator) SFX_M_FLOAT(pad1)  // LinearizeParams
 SFX_BLOCK_END(params)
 #endif
@@ -402,8 +417,7 @@ vec3 aoNormal(ivec2 p, vec3 C, float z, ivec2 size) {
 void aoWrite(float visibility, float z, bool sky) {
     float v = clamp(visibility, 0.0, 1.0);
     if (kAoPackDepth == SFX_AO_DEPTH_IN_KEY_BA) {
-        float key = sky ? 1.0 : min(log2(z / params.keyNear) * params.keyInvLog2Range, 65534.0 / 65535.0);
-        outAo = vec4(v, v, aoPackDepthKey(key));
+        outAo = vec4(v, v, sky ? aoPackSkyKey() : aoPackDepthKey(z, params.keyBase));
     } else if (kAoPackDepth == SFX_AO_DEPTH_IN_FLOAT_G) {
         outAo = vec4(v, z, 0.0, 1.0);
     } else if (kAoPackDepth == SFX_AO_DEPTH_IN_FLOAT_B) {

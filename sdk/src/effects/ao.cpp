@@ -271,8 +271,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
     if (half && !halfDepthFromMip()) SFX_TRY(recordHalfDepth(passIndex++));
     const DepthReconstruction& rec = depth_->reconstruction();
     const bool blur = config_.blurRadius > 0;
-    const double keyNear = std::max(rec.nearDepth, 1e-6);
-    const double keyLog2Range = std::log2(double(shared::SFX_SKY_DEPTH) / keyNear);
+    const float keyBase = float(shared::aoDepthKeyBase(rec.nearDepth));
     // The depth the obscurance and blur passes read, and its MIP levels past their own size.
     const TextureHandle passDepth = half ? halfDepthTexture() : depth_->texture();
     const uint32_t passDepthBase = half && halfDepthFromMip() ? 1 : 0;
@@ -292,8 +291,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
     p.fullHeight = int32_t(desc_.height);
     p.spiralTurns = float(config_.spiralTurns);
     p.sumExponent = float(config_.sumExponent);
-    p.keyNear = float(keyNear);
-    p.keyInvLog2Range = float(1.0 / keyLog2Range);
+    p.keyBase = keyBase;
     p.creaseRange = config_.crease.range;
     p.creaseBias = config_.crease.bias;
     p.creaseAverager = config_.crease.averager;
@@ -341,8 +339,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
             b.direction[0] = blurPass == 0 ? 1 : 0;
             b.direction[1] = blurPass == 0 ? 0 : 1;
             b.maxDepth = float(rec.maxDepth);
-            b.keyNear = float(keyNear);
-            b.keyLog2Range = float(keyLog2Range);
+            b.keyBase = keyBase;
             const BufferHandle buffer = blurPass == 0 ? blurParamsH_ : blurParamsV_;
             SFX_TRY(uniforms_->write(device_, buffer, b));
             // At half resolution the second pass goes back into the raw target, for the upsample.

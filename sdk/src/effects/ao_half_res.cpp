@@ -59,9 +59,7 @@ Status AmbientObscurance::recordUpsample(const AoInputs& in, Format outFormat, T
     const DepthReconstruction& rec = depth_->reconstruction();
     u.maxDepth = float(rec.maxDepth);
     // The key's constants, as the obscurance pass and the blur use them (ao.cpp).
-    const double keyNear = std::max(rec.nearDepth, 1e-6);
-    u.keyNear = float(keyNear);
-    u.keyLog2Range = float(std::log2(double(shared::SFX_SKY_DEPTH) / keyNear));
+    u.keyBase = float(shared::aoDepthKeyBase(rec.nearDepth));
     u.ndcScale = float(rec.ndcScale);
     u.denomOffset = float(rec.denomOffset);
     u.numerator = float(rec.numerator);
