@@ -5,9 +5,8 @@
 #define SFX_AO_UPSAMPLE_PASS 1
 #include "sfx_shared_ao.h"
 
-layout(set = 0, binding = 0) uniform sampler2D uDepth;      // full-size linear depth (maybe the host's), + MIP
-layout(set = 0, binding = 1) uniform sampler2D uHalfDepth;  // the depth the half-size AO was computed on,
-                                                            // or uDepth again when it is its level 1
+layout(set = 0, binding = 0) uniform sampler2D uDepth;      // the host's full-size depth, linear or hardware
+layout(set = 0, binding = 1) uniform sampler2D uHalfDepth;  // the depth the half-size AO was computed on
 layout(set = 0, binding = 2) uniform sampler2D uSource;     // half-size visibility in r (+ depth: SFX_AO_DEPTH_IN_*)
 // UpsampleParams (binding 3): sfx_shared_ao.h.
 layout(location = 0) out vec4 outAo;
@@ -23,13 +22,14 @@ vec2 halfTexel(ivec2 q) {
     if (kHalfDepthSource == SFX_AO_HALF_DEPTH_SOURCE_KEY) {
         return vec2(s.r, aoUnpackDepthKey(s.ba, params.keyBase, params.maxDepth));
     }
-    float d = kHalfDepthSource == SFX_AO_HALF_DEPTH_MIP ? sfxTexel(uDepth, q, 1).r : sfxTexel(uHalfDepth, q, 0).r;
+    float d = sfxTexel(uHalfDepth, q, 0).r;
     return vec2(s.r, sfxLinearDepthOrFar(d, params.maxDepth));
 }
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    // The full-size depth, linearized here when no pass did (LinearDepthDesc.readersLinearize).
+    // The host's full-size depth, linearized here where it is hardware depth (no pass makes a
+    // full-size linear depth at half resolution).
     float d = sfxTexel(uDepth, p, 0).r;
     float z0 = kLinearize != 0 ? sfxLinearizeDepth(d, params.ndcScale, params.denomOffset, params.numerator, params.maxDepth)
                                : sfxLinearDepthOrFar(d, params.maxDepth);

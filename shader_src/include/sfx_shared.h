@@ -135,6 +135,7 @@ vec4 sfxTexel(sampler2D s, ivec2 q, int lod) { return textureLod(s, (vec2(q) + 0
 // the source is linear already is a specialisation constant (a branch, never a uniform: see
 // sfx_shared_ao.h), its id this one.
 #define SFX_DEPTH_SC_LINEAR_INPUT 0
+#define SFX_DEPTH_SC_HALF_SIZE_BASE 1  // 1: the pass writes a half-size level 0 (LinearDepthDesc.halfSizeBase)
 #if defined(__cplusplus) || defined(SFX_WANT_LINEARIZE_PARAMS)
 SFX_BLOCK(LinearizeParams, 1)
     SFX_M_FLOAT(ndcScale)     // 1 for [0,1] clip depth, 2 for [-1,1]

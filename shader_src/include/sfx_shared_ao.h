@@ -302,8 +302,7 @@ float aoUnpackDepthKey(vec2 ba, float keyBase, float maxDepth) {
                                     // holds crease's moderate blur)
 // The half-size depth the upsample weighs by (ao_upsample.frag). GL keeps one mip range per
 // texture, so MIP level 1 is read through uDepth, not bound twice.
-#define SFX_AO_HALF_DEPTH_TEXTURE 0  // uHalfDepth (the ao_half_depth pass)
-#define SFX_AO_HALF_DEPTH_MIP 1      // level 1 of uDepth (high-tier Scalable's pyramid)
+#define SFX_AO_HALF_DEPTH_TEXTURE 0  // uHalfDepth (the ao_half_depth pass, or level 0 of the half-size pyramid)
 #define SFX_AO_HALF_DEPTH_SOURCE_G 2 // g of the half-size AO itself (SFX_AO_DEPTH_IN_FLOAT_G)
 #define SFX_AO_HALF_DEPTH_SOURCE_B 3 // b of the half-size AO itself (SFX_AO_DEPTH_IN_FLOAT_B)
 #define SFX_AO_HALF_DEPTH_SOURCE_KEY 4 // the key in b, a of the half-size AO (SFX_AO_DEPTH_IN_KEY_BA),

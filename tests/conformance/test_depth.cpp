@@ -156,6 +156,20 @@ TEST_CASE("depth pyramid levels are exact rotated-grid subsamples", "[depth][con
             REQUIRE(got.size() == expected[m].values.size());
             for (size_t i = 0; i < got.size(); ++i) REQUIRE(double(got[i]) == expected[m].values[i]);
         }
+        // Starting at half size (halfSizeBase) gives levels 1.. of the same pyramid, exactly, and
+        // plans no full-size pass or texture.
+        LinearDepthDesc halfDesc{W, H, Tier::High, levels - 1};
+        halfDesc.halfSizeBase = true;
+        auto half = LinearDepth::create(device, halfDesc);
+        REQUIRE(half.isOk());
+        SFX_REQUIRE_OK(half.value()->dispatch({src.value(), DepthKind::Linear, makePerspective(pd).value()}));
+        CHECK(half.value()->sourceTexture() == src.value());
+        for (uint32_t m = 0; m + 1 < levels; ++m) {
+            std::vector<float> got = readLevel(device, half.value()->texture(), mipExtent(W, 1), mipExtent(H, 1), m);
+            REQUIRE(got.size() == expected[m + 1].values.size());
+            for (size_t i = 0; i < got.size(); ++i) REQUIRE(double(got[i]) == expected[m + 1].values[i]);
+        }
+        for (const PlannedPass& pass : half.value()->plan().passes) CHECK(pass.width <= mipExtent(W, 1));
         (void)device.destroyTexture(src.value());
     }
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();

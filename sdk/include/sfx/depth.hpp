@@ -3,6 +3,7 @@
 // struct, status returns, and a plan of the passes and bytes it holds.
 #pragma once
 
+#include <array>
 #include <memory>
 
 #include "sfx/camera.hpp"
@@ -47,6 +48,12 @@ struct LinearDepthDesc {
     // linearizeParams() holds the constants. Worth it where each pixel is fetched once or twice
     // (AO at half resolution), not where a pass reads it many times.
     bool readersLinearize = false;
+    // Level 0 at half size (MIP level 1's extent): texel q takes the source's depth at
+    // depthMipSource(q), linearized as it is fetched, which is what level 1 of the full-size
+    // pyramid holds, and the levels above continue from it. For readers that never need the
+    // full-size level (AO at half resolution): its pass, about two copy passes on a CPU
+    // rasteriser, and its texture are not made. sourceTexture() is the full-size depth.
+    bool halfSizeBase = false;
 };
 
 // Owns an R32F texture of linear depth (and its MIP pyramid when mipLevels > 1).
@@ -66,9 +73,13 @@ public:
     // R32F, mipLevels levels. Without a pass (passThrough()), the host's texture of the last
     // dispatch (null before the first).
     TextureHandle texture() const { return passThrough() ? hostTexture_ : texture_; }
+    // The DepthSource.texture of the last dispatch (null before the first).
+    TextureHandle sourceTexture() const { return hostTexture_; }
     // True when no pyramid is built and the input is linear or the readers linearize: dispatch
     // records nothing.
-    bool passThrough() const { return desc_.mipLevels == 1 && (desc_.input == DepthKind::Linear || desc_.readersLinearize); }
+    bool passThrough() const {
+        return desc_.mipLevels == 1 && !desc_.halfSizeBase && (desc_.input == DepthKind::Linear || desc_.readersLinearize);
+    }
     // The kind of the last dispatched source (what texture() holds when passing through).
     DepthKind sourceKind() const { return sourceKind_; }
     // LinearizeParams (sfx_shared.h) of the last dispatch; with readersLinearize, for the readers
@@ -84,11 +95,14 @@ private:
     Status allocate();
     Status allocateTexture();
     void release();
+    uint32_t levelZeroWidth() const;  // the texture's size: half the source's with halfSizeBase
+    uint32_t levelZeroHeight() const;
+    std::array<SpecializationConstant, 2> linearizeConstants(DepthKind kind) const;
 
     Device& device_;
     LinearDepthDesc desc_;
     TextureHandle texture_;
-    TextureHandle hostTexture_;  // the source of the last dispatch, when passing through
+    TextureHandle hostTexture_;  // the source of the last dispatch
     BufferHandle params_;
     ProgramHandle linearizeProgram_, mipProgram_;
     // Linearisation (one per DepthKind seen) and MIP pipelines; kept across resize.

@@ -59,13 +59,14 @@ Status AmbientObscurance::allocate() {
     config_ = config.value();
     const Tier tier = desc_.profile.tier;
 
-    // At half size high-tier Scalable reads the pyramid from level 1: one level more to build.
-    const uint32_t depthLevels = halfDepthFromMip() ? config_.depthMipLevels + 1 : config_.depthMipLevels;
-    LinearDepthDesc dd{desc_.width, desc_.height, tier, depthLevels, desc_.depthInput};
-    // At half resolution without a pyramid each full-size depth is fetched once by the half-size
-    // depth pass and once by the upsample: both linearize it as they fetch it, and the full-size
-    // linearisation pass (about three copy passes on a CPU rasteriser) does not run.
-    dd.readersLinearize = config_.halfResolution && depthLevels == 1;
+    LinearDepthDesc dd{desc_.width, desc_.height, tier, config_.depthMipLevels, desc_.depthInput};
+    // At half resolution no pass reads the full-size linear depth: the upsample fetches each
+    // full-size depth once and linearizes it as it does. High-tier Scalable's pyramid starts at
+    // half size (its level 0 is what level 1 of a full-size one would be); without a pyramid the
+    // half-size depth pass linearizes as it fetches too. Either way the full-size linearisation
+    // pass (about two copy passes on a CPU rasteriser) and its texture are not made.
+    dd.halfSizeBase = halfDepthFromMip();
+    dd.readersLinearize = config_.halfResolution && config_.depthMipLevels == 1;
     Result<std::unique_ptr<LinearDepth>> depth = LinearDepth::create(device_, dd);
     if (!depth) return depth.status();
     depth_ = std::move(depth.value());
@@ -274,7 +275,6 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
     const float keyBase = float(shared::aoDepthKeyBase(rec.nearDepth));
     // The depth the obscurance and blur passes read, and its MIP levels past their own size.
     const TextureHandle passDepth = half ? halfDepthTexture() : depth_->texture();
-    const uint32_t passDepthBase = half && halfDepthFromMip() ? 1 : 0;
 
     AoParams p{};
     for (int i = 0; i < 4; ++i) p.projInfo[i] = float(rec.projInfo[i]);
@@ -323,7 +323,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
     // Without host normals the normals binding gets the pass's depth, with the same mip range
     // (GL keeps one range per texture): the shader never reads it then, but every declared
     // sampler needs a valid texture.
-    const TextureBinding depthBinding{gen::ao_scalable::uDepth, passDepth, passDepthBase, config_.depthMipLevels, {}};
+    const TextureBinding depthBinding{gen::ao_scalable::uDepth, passDepth, 0, config_.depthMipLevels, {}};
     TextureBinding normalBinding = depthBinding;
     normalBinding.binding = gen::ao_scalable::uNormals;
     if (normalSource) normalBinding = TextureBinding{gen::ao_scalable::uNormals, in.normals, 0, 1, {}};

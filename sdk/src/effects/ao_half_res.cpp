@@ -63,16 +63,16 @@ Status AmbientObscurance::recordUpsample(const AoInputs& in, Format outFormat, T
     u.ndcScale = float(rec.ndcScale);
     u.denomOffset = float(rec.denomOffset);
     u.numerator = float(rec.numerator);
-    const int linearize = depth_->passThrough() && depth_->sourceKind() == DepthKind::Hardware ? 1 : 0;
+    // The full-size depth is the host's (no pass makes a full-size linear depth at half
+    // resolution, ao.cpp): linearized here where it is hardware depth.
+    const int linearize = depth_->sourceKind() == DepthKind::Hardware ? 1 : 0;
     SFX_TRY(uniforms_->write(device_, upsampleParams_, u));
-    const bool mip = halfDepthFromMip();
     // The half-size depth comes with the AO texel where the target carries it (the float targets
-    // of the high tier); else from the half-size depth texture or MIP level 1.
+    // of the high tier); else from the half-size depth texture (or level 0 of the half-size pyramid).
     const int depthIn = detail::aoDepthInTarget(desc_.profile, config_.technique, config_.blurRadius > 0, true);
     const int halfDepthSource = depthIn == SFX_AO_DEPTH_IN_FLOAT_G   ? SFX_AO_HALF_DEPTH_SOURCE_G
                                 : depthIn == SFX_AO_DEPTH_IN_FLOAT_B ? SFX_AO_HALF_DEPTH_SOURCE_B
                                 : depthIn == SFX_AO_DEPTH_IN_KEY_BA  ? SFX_AO_HALF_DEPTH_SOURCE_KEY
-                                : mip                                ? SFX_AO_HALF_DEPTH_MIP
                                                                      : SFX_AO_HALF_DEPTH_TEXTURE;
     Result<PipelineHandle> pipeline = pipelines_->get(upsampleProgram_, outFormat, {{SFX_AO_SC_UPSAMPLE_DEPTH, halfDepthSource}, {SFX_AO_SC_UPSAMPLE_LINEARIZE, linearize}},
                                                       "sfx-ao-upsample");
@@ -82,11 +82,8 @@ Status AmbientObscurance::recordUpsample(const AoInputs& in, Format outFormat, T
     pass.debugName = "sfx-ao-upsample";
     DrawDesc draw;
     draw.pipeline = pipeline.value();
-    // With the MIP, both depth bindings show levels 0 and 1 of the one texture: GL holds a single
-    // mip range per texture, so one texture bound with two ranges in a draw would see only one.
-    const uint32_t levels = mip ? 2 : 1;
-    draw.bindings.textures = {TextureBinding{gen::ao_upsample::uDepth, depth_->texture(), 0, levels, {}},
-                              TextureBinding{gen::ao_upsample::uHalfDepth, mip ? depth_->texture() : halfDepth_, 0, levels, {}},
+    draw.bindings.textures = {TextureBinding{gen::ao_upsample::uDepth, depth_->sourceTexture(), 0, 1, {}},
+                              TextureBinding{gen::ao_upsample::uHalfDepth, halfDepthTexture(), 0, 1, {}},
                               TextureBinding{gen::ao_upsample::uSource, source, 0, 1, {}}};
     draw.bindings.uniformBuffers = {BufferBinding{gen::ao_upsample::UpsampleParams, upsampleParams_, 0, 0}};
     return timed(passIndex, [&] { return device_.renderPass(pass, std::span<const DrawDesc>(&draw, 1)); });

@@ -1,5 +1,6 @@
 #include "sfx/depth.hpp"
 
+#include <array>
 #include <string>
 
 #include "effect_common.hpp"
@@ -53,9 +54,7 @@ Status LinearDepth::allocate() {
     if (!lin) return lin.status();
     linearizeProgram_ = lin.value();
     // The pipeline for the input kind of the desc, made here; a dispatch of the other kind makes its own.
-    Result<PipelineHandle> lp = pipelines_->get(linearizeProgram_, Format::R32F,
-                                                {{SFX_DEPTH_SC_LINEAR_INPUT, desc_.input == DepthKind::Linear ? 1 : 0}},
-                                                "sfx-linearize-depth");
+    Result<PipelineHandle> lp = pipelines_->get(linearizeProgram_, Format::R32F, std::span<const SpecializationConstant>(linearizeConstants(desc_.input)), "sfx-linearize-depth");
     if (!lp) return lp.status();
     if (desc_.mipLevels > 1) {
         Result<ProgramHandle> mip = loadProgram(device_, gen::depth_mip::kName, desc_.tier);
@@ -69,15 +68,22 @@ Status LinearDepth::allocate() {
 }
 
 // The size-dependent part: the linear depth texture (programs and pipelines do not depend on it).
+uint32_t LinearDepth::levelZeroWidth() const { return desc_.halfSizeBase ? mipExtent(desc_.width, 1) : desc_.width; }
+uint32_t LinearDepth::levelZeroHeight() const { return desc_.halfSizeBase ? mipExtent(desc_.height, 1) : desc_.height; }
+
+std::array<SpecializationConstant, 2> LinearDepth::linearizeConstants(DepthKind kind) const {
+    return {SpecializationConstant{SFX_DEPTH_SC_LINEAR_INPUT, kind == DepthKind::Linear ? 1 : 0}, SpecializationConstant{SFX_DEPTH_SC_HALF_SIZE_BASE, desc_.halfSizeBase ? 1 : 0}};
+}
+
 Status LinearDepth::allocateTexture() {
-    const uint32_t allowed = maxMipLevels(std::max(desc_.width, 1u), std::max(desc_.height, 1u));
-    if (desc_.width > 0 && desc_.height > 0 && desc_.mipLevels > allowed)
+    const uint32_t w = levelZeroWidth(), h = levelZeroHeight();
+    const uint32_t allowed = maxMipLevels(std::max(w, 1u), std::max(h, 1u));
+    if (w > 0 && h > 0 && desc_.mipLevels > allowed)
         return invalidArgument("LinearDepthDesc.mipLevels", std::to_string(desc_.mipLevels),
-                               "[1, " + std::to_string(allowed) + "] for " + std::to_string(desc_.width) + "x" +
-                                   std::to_string(desc_.height));
+                               "[1, " + std::to_string(allowed) + "] for " + std::to_string(w) + "x" + std::to_string(h) +
+                                   (desc_.halfSizeBase ? " (level 0 at half the source's size)" : ""));
     if (passThrough()) return Status::ok();
-    TextureDesc td{desc_.width, desc_.height, desc_.mipLevels, Format::R32F, kTextureSampled | kTextureRenderTarget,
-                   "sfx-linear-depth"};
+    TextureDesc td{w, h, desc_.mipLevels, Format::R32F, kTextureSampled | kTextureRenderTarget, "sfx-linear-depth"};
     Result<TextureHandle> tex = device_.createTexture(td);
     if (!tex) return tex.status();
     texture_ = tex.value();
@@ -104,7 +110,6 @@ Status LinearDepth::resize(uint32_t width, uint32_t height) {
     // Only the texture follows the size; programs and pipelines stay.
     if (!texture_.isNull()) (void)device_.destroyTexture(texture_);
     texture_ = {};
-    hostTexture_ = {};
     desc_.width = width;
     desc_.height = height;
     return allocateTexture();
@@ -140,6 +145,7 @@ Status LinearDepth::dispatch(const DepthSource& source, std::span<const TimerHan
     if (!rec) return rec.status();
     reconstruction_ = rec.value();
     sourceKind_ = source.kind;
+    hostTexture_ = source.texture;
     LinearizeParams p{};
     p.ndcScale = float(reconstruction_.ndcScale);
     p.denomOffset = float(reconstruction_.denomOffset);
@@ -149,15 +155,12 @@ Status LinearDepth::dispatch(const DepthSource& source, std::span<const TimerHan
         // Readers clamp what they fetch with sfxLinearDepthOrFar (sfx_shared.h), exactly as the
         // linearisation pass would have, or linearize it as that pass would (readersLinearize),
         // so the host's texture serves as it is.
-        hostTexture_ = source.texture;
         if (!params_.isNull()) SFX_TRY(uniforms_->write(device_, params_, p));
         return Status::ok();
     }
     SFX_TRY(uniforms_->write(device_, params_, p));
     // The source's kind is a branch of the shader: a specialisation constant (one pipeline each).
-    const int32_t linearInput = source.kind == DepthKind::Linear ? 1 : 0;
-    Result<PipelineHandle> linearize =
-        pipelines_->get(linearizeProgram_, Format::R32F, {{SFX_DEPTH_SC_LINEAR_INPUT, linearInput}}, "sfx-linearize-depth");
+    Result<PipelineHandle> linearize = pipelines_->get(linearizeProgram_, Format::R32F, std::span<const SpecializationConstant>(linearizeConstants(source.kind)), "sfx-linearize-depth");
     if (!linearize) return linearize.status();
     Result<PipelineHandle> mipPipeline = PipelineHandle{};
     if (desc_.mipLevels > 1) {
@@ -199,12 +202,13 @@ Plan LinearDepth::plan() const {
                                       Format::Undefined, 0, 0, 1, sizeof(LinearizeParams)});
         return plan;
     }
-    plan.passes.push_back({"depth", "linearize", desc_.width, desc_.height});
+    const uint32_t w = levelZeroWidth(), h = levelZeroHeight();
+    plan.passes.push_back({"depth", desc_.halfSizeBase ? "linearize at half size (MIP level 1's samples)" : "linearize", w, h});
     for (uint32_t level = 1; level < desc_.mipLevels; ++level)
-        plan.passes.push_back({"depth", "depth_mip " + std::to_string(level), mipExtent(desc_.width, level),
-                               mipExtent(desc_.height, level)});
-    TextureDesc td{desc_.width, desc_.height, desc_.mipLevels, Format::R32F, kTextureSampled | kTextureRenderTarget};
-    plan.resources.push_back(plannedTexture("depth", desc_.mipLevels > 1 ? "linear depth + MIP pyramid" : "linear depth", td));
+        plan.passes.push_back({"depth", "depth_mip " + std::to_string(level), mipExtent(w, level), mipExtent(h, level)});
+    TextureDesc td{w, h, desc_.mipLevels, Format::R32F, kTextureSampled | kTextureRenderTarget};
+    const std::string what = desc_.mipLevels > 1 ? "linear depth + MIP pyramid" : "linear depth";
+    plan.resources.push_back(plannedTexture("depth", what + (desc_.halfSizeBase ? " from half size (no reader needs the full-size level)" : ""), td));
     plan.resources.push_back({"depth", "linearize params", Format::Undefined, 0, 0, 1, sizeof(LinearizeParams)});
     return plan;
 }
