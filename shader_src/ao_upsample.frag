@@ -64,7 +64,9 @@ void main() {
                 int k = j == 1 ? (i == 1 ? 1 : 0) : (i == 1 ? 2 : 3);
                 t = vec2(gatheredAo[k], gatheredDepth[k]);
             } else {
-                t = halfTexel(clamp(base + ivec2(i, j), ivec2(0), halfSize - 1));
+                // Off the edge (base is -1 at the first pixel) the clamp-to-edge sampler of
+                // sfxTexel reads the edge texel, as the reference clamps.
+                t = halfTexel(base + ivec2(i, j));
             }
             float a = t.x, zq = t.y;
             float bilinear = (i == 1 ? upper.x : 1.0 - upper.x) * (j == 1 ? upper.y : 1.0 - upper.y);

@@ -251,20 +251,22 @@ SFX_FN SFX_REAL aoDepthKeyBase(SFX_REAL nearDepth) {
 }
 #ifndef __cplusplus
 // z: a surface's depth (below maxDepth, so below SFX_SKY_DEPTH).
+// Signed integers throughout: x86 without AVX-512 converts floats to and from unsigned ones in
+// several instructions each, to and from signed ones in one (codes fit either).
 vec2 aoPackDepthKey(float z, float keyBase) {
     float r = z / keyBase;
     // Adding half of the dropped mantissa rounds; a carry moves into the exponent as it should.
-    uint code = r < 1.0 ? uint(r * 2048.0 + 0.5) : ((floatBitsToUint(r) + 0x800u) >> 12) - 0x3F000u;
-    code = min(code, 0xFFFEu);
-    return vec2(float(code >> 8), float(code & 0xFFu)) / 255.0;
+    int code = r < 1.0 ? int(r * 2048.0 + 0.5) : ((floatBitsToInt(r) + 0x800) >> 12) - 0x3F000;
+    code = min(code, 0xFFFE);
+    return vec2(float(code >> 8), float(code & 0xFF)) / 255.0;
 }
 vec2 aoPackSkyKey() { return vec2(1.0); }
 // The depth back (maxDepth for sky), as the passes compare it with their own.
 float aoUnpackDepthKey(vec2 ba, float keyBase, float maxDepth) {
-    uvec2 b = uvec2(floor(ba * 255.0 + 0.5));
-    uint code = (b.x << 8) | b.y;
-    float r = code < 0x800u ? float(code) / 2048.0 : uintBitsToFloat((code << 12) + 0x3F000000u);
-    return code == 0xFFFFu ? maxDepth : r * keyBase;
+    ivec2 b = ivec2(ba * 255.0 + 0.5);  // non-negative: truncation rounds
+    int code = (b.x << 8) | b.y;
+    float r = code < 0x800 ? float(code) * (1.0 / 2048.0) : intBitsToFloat((code << 12) + 0x3F000000);
+    return code == 0xFFFF ? maxDepth : r * keyBase;
 }
 #endif
 
@@ -366,8 +368,14 @@ layout(constant_id = SFX_AO_SC_HALF_RES) const int kAoHalfRes = 0;
 layout(constant_id = SFX_AO_SC_DEPTH_LAYERS) const int kAoDepthLayers = 1;
 
 // uDepth may be the host's linear depth itself (LinearDepth passing through): clamp on fetch.
-float aoDepthAt(ivec2 q, int level) { return sfxLinearDepthOrFar(sfxTexel(uDepth, q, level).r, params.maxDepth); }
-float aoDepth(ivec2 q) { return aoDepthAt(q, 0); }
+// With a pyramid the level varies from pixel to pixel, and lavapipe samples at a per-pixel lod
+// dearer than texelFetch fetches one (high-tier Scalable at 1280x720: 10 million instructions
+// more); one level is read through sfxTexel.
+float aoDepthAt(ivec2 q, int level) {
+    float d = kAoMipLevels > 1 ? texelFetch(uDepth, q, level).r : sfxTexel(uDepth, q, 0).r;
+    return sfxLinearDepthOrFar(d, params.maxDepth);
+}
+float aoDepth(ivec2 q) { return sfxLinearDepthOrFar(sfxTexel(uDepth, q, 0).r, params.maxDepth); }
 #ifdef SFX_AO_MULTILAYER  // generated from the tier table (TierProfile::aoMaxDepthLayers > 1)
 // Opaque depth layers 1..3 (AoInputs.depthLayers): R32F linear depth at the AO size, full
 // resolution only; a pixel without that layer holds 0 or the far plane (sky: its term is 0).
