@@ -17,7 +17,7 @@ void main() {
         for (int dx = -1; dx <= 1; ++dx) {
             ivec2 q = t + ivec2(dx, dy);
             if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) continue;
-            vec2 e = texelFetch(uTileMax, q, 0).xy;
+            vec2 e = sfxTexel(uTileMax, q, 0).xy;
             vec2 d = e - 0.5;
             float len2 = dot(d, d);
             if (len2 > bestLen2) {

@@ -18,13 +18,13 @@ layout(constant_id = SFX_MB_SC_CAMERA_ONLY) const int kCameraOnly = 0;
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     // uLinearDepth may be the host's linear depth itself (LinearDepth passing through).
-    float z = sfxLinearDepthOrFar(texelFetch(uLinearDepth, p, 0).r, params.maxDepth);
+    float z = sfxLinearDepthOrFar(sfxTexel(uLinearDepth, p, 0).r, params.maxDepth);
     vec2 v;
     if (kCameraOnly != 0) {
         v = mbCameraVelocity(gl_FragCoord.xy, params.clipFromView.zw, params.target.xy, z, params.clipFromView.x,
                              params.clipFromView.y, params.reprojection);
     } else {
-        v = texelFetch(uVelocity, p, 0).xy;
+        v = sfxTexel(uVelocity, p, 0).xy;
     }
     // Non-finite, infinite and huge velocities: the rule of sfx_shared_mb.h (mbClampVelocity).
     v = mbClampVelocity(v * params.velocityScale, params.radius);

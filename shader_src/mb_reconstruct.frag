@@ -27,14 +27,14 @@ vec2 roundAway(vec2 x) { return sign(x) * floor(abs(x) + 0.5); }
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    vec4 colorC = sfxColor(texelFetch(uColor, p, 0));  // the colour rule of sfx_shared.h
-    vec2 vN = decodeVelocity(texelFetch(uNeighborMax, p / params.tileSize, 0).xy);
+    vec4 colorC = sfxColor(sfxTexel(uColor, p, 0));  // the colour rule of sfx_shared.h
+    vec2 vN = decodeVelocity(sfxTexel(uNeighborMax, p / params.tileSize, 0).xy);
     if (length(vN) < SFX_MB_STILL_PX) {
         outColor = colorC;
         return;
     }
     ivec2 size = textureSize(uColor, 0);
-    vec4 packedC = texelFetch(uPacked, p, 0);
+    vec4 packedC = sfxTexel(uPacked, p, 0);
     vec2 vC = decodeVelocity(packedC.xy);
     float zC = packedC.z + packedC.w;
     float speedC = length(vC);
@@ -51,11 +51,11 @@ void main() {
             // Clamped to the image: a sample never leaves it, however large the velocity.
             ivec2 q = clamp(p + ivec2(off), ivec2(0), size - 1);
             float dist = length(vec2(q - p));
-            vec4 packedS = texelFetch(uPacked, q, 0);
+            vec4 packedS = sfxTexel(uPacked, q, 0);
             float speedS = length(decodeVelocity(packedS.xy));
             float zS = packedS.z + packedS.w;
             float w = mbSampleWeight(zC, zS, speedC, speedS, dist, params.softExtent) * perSample;
-            vec4 colorS = texelFetch(uColor, q, 0);
+            vec4 colorS = sfxTexel(uColor, q, 0);
             if (!sfxColorIsFinite(colorS)) continue;  // a non-finite sample is left out (sfx_shared.h)
             sum += sfxColor(colorS) * w;
             total += w;

@@ -22,7 +22,7 @@ void main() {
         for (int i = 0; i < kTileSize; ++i) {
             int x = origin.x + i;
             if (x >= size.x) break;
-            vec2 e = texelFetch(uPacked, ivec2(x, y), 0).xy;
+            vec2 e = sfxTexel(uPacked, ivec2(x, y), 0).xy;
             vec2 d = e - 0.5;
             float len2 = dot(d, d);
             if (len2 > bestLen2) {
