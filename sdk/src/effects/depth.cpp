@@ -54,7 +54,8 @@ Status LinearDepth::allocate() {
     if (!lin) return lin.status();
     linearizeProgram_ = lin.value();
     // The pipeline for the input kind of the desc, made here; a dispatch of the other kind makes its own.
-    Result<PipelineHandle> lp = pipelines_->get(linearizeProgram_, Format::R32F, std::span<const SpecializationConstant>(linearizeConstants(desc_.input)), "sfx-linearize-depth");
+    const std::array<SpecializationConstant, 2> constants = linearizeConstants(desc_.input);
+    Result<PipelineHandle> lp = pipelines_->get(linearizeProgram_, Format::R32F, std::span(constants), "sfx-linearize-depth");
     if (!lp) return lp.status();
     if (desc_.mipLevels > 1) {
         Result<ProgramHandle> mip = loadProgram(device_, gen::depth_mip::kName, desc_.tier);
@@ -67,14 +68,15 @@ Status LinearDepth::allocate() {
     return allocateTexture();
 }
 
-// The size-dependent part: the linear depth texture (programs and pipelines do not depend on it).
 uint32_t LinearDepth::levelZeroWidth() const { return desc_.halfSizeBase ? mipExtent(desc_.width, 1) : desc_.width; }
 uint32_t LinearDepth::levelZeroHeight() const { return desc_.halfSizeBase ? mipExtent(desc_.height, 1) : desc_.height; }
 
 std::array<SpecializationConstant, 2> LinearDepth::linearizeConstants(DepthKind kind) const {
-    return {SpecializationConstant{SFX_DEPTH_SC_LINEAR_INPUT, kind == DepthKind::Linear ? 1 : 0}, SpecializationConstant{SFX_DEPTH_SC_HALF_SIZE_BASE, desc_.halfSizeBase ? 1 : 0}};
+    return {SpecializationConstant{SFX_DEPTH_SC_LINEAR_INPUT, kind == DepthKind::Linear ? 1 : 0},
+            SpecializationConstant{SFX_DEPTH_SC_HALF_SIZE_BASE, desc_.halfSizeBase ? 1 : 0}};
 }
 
+// The size-dependent part: the linear depth texture (programs and pipelines do not depend on it).
 Status LinearDepth::allocateTexture() {
     const uint32_t w = levelZeroWidth(), h = levelZeroHeight();
     const uint32_t allowed = maxMipLevels(std::max(w, 1u), std::max(h, 1u));
@@ -110,6 +112,7 @@ Status LinearDepth::resize(uint32_t width, uint32_t height) {
     // Only the texture follows the size; programs and pipelines stay.
     if (!texture_.isNull()) (void)device_.destroyTexture(texture_);
     texture_ = {};
+    hostTexture_ = {};
     desc_.width = width;
     desc_.height = height;
     return allocateTexture();
@@ -160,7 +163,8 @@ Status LinearDepth::dispatch(const DepthSource& source, std::span<const TimerHan
     }
     SFX_TRY(uniforms_->write(device_, params_, p));
     // The source's kind is a branch of the shader: a specialisation constant (one pipeline each).
-    Result<PipelineHandle> linearize = pipelines_->get(linearizeProgram_, Format::R32F, std::span<const SpecializationConstant>(linearizeConstants(source.kind)), "sfx-linearize-depth");
+    const std::array<SpecializationConstant, 2> constants = linearizeConstants(source.kind);
+    Result<PipelineHandle> linearize = pipelines_->get(linearizeProgram_, Format::R32F, std::span(constants), "sfx-linearize-depth");
     if (!linearize) return linearize.status();
     Result<PipelineHandle> mipPipeline = PipelineHandle{};
     if (desc_.mipLevels > 1) {
@@ -203,12 +207,14 @@ Plan LinearDepth::plan() const {
         return plan;
     }
     const uint32_t w = levelZeroWidth(), h = levelZeroHeight();
-    plan.passes.push_back({"depth", desc_.halfSizeBase ? "linearize at half size (MIP level 1's samples)" : "linearize", w, h});
+    // The name stays "linearize" at half size (the extent says it): profiles and tables key on it.
+    plan.passes.push_back({"depth", "linearize", w, h});
     for (uint32_t level = 1; level < desc_.mipLevels; ++level)
         plan.passes.push_back({"depth", "depth_mip " + std::to_string(level), mipExtent(w, level), mipExtent(h, level)});
     TextureDesc td{w, h, desc_.mipLevels, Format::R32F, kTextureSampled | kTextureRenderTarget};
     const std::string what = desc_.mipLevels > 1 ? "linear depth + MIP pyramid" : "linear depth";
-    plan.resources.push_back(plannedTexture("depth", what + (desc_.halfSizeBase ? " from half size (no reader needs the full-size level)" : ""), td));
+    const std::string from = desc_.halfSizeBase ? " from half size (level 0 holds MIP level 1's samples; no reader needs the full-size level)" : "";
+    plan.resources.push_back(plannedTexture("depth", what + from, td));
     plan.resources.push_back({"depth", "linearize params", Format::Undefined, 0, 0, 1, sizeof(LinearizeParams)});
     return plan;
 }
