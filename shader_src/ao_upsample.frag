@@ -40,7 +40,8 @@ void main() {
     ivec2 halfSize = textureSize(uSource, 0);
     ivec2 base = ivec2(aoUpsampleBase(p.x), aoUpsampleBase(p.y));
     vec2 upper = vec2(aoUpsampleUpperWeight(p.x), aoUpsampleUpperWeight(p.y));
-    float acc = 0.0, wsum = 0.0, nearestAo = 1.0, nearestGap = -1.0;
+    float acc = 0.0, wsum = 0.0, nearestAo = 1.0, nearestGap = SFX_AO_UPSAMPLE_NO_GAP;
+    float invTolerance = aoUpsampleInvTolerance(z0);
     vec4 gatheredAo = vec4(0.0), gatheredDepth = vec4(0.0);
     bool gathered = false;
 #ifdef SFX_TIER_HIGH
@@ -70,11 +71,11 @@ void main() {
             }
             float a = t.x, zq = t.y;
             float bilinear = (i == 1 ? upper.x : 1.0 - upper.x) * (j == 1 ? upper.y : 1.0 - upper.y);
-            float w = aoUpsampleWeight(bilinear, zq, z0);
+            float w = aoUpsampleWeight(bilinear, zq, z0, invTolerance);
             acc += w * a;
             wsum += w;
             float gap = abs(zq - z0);
-            if (nearestGap < 0.0 || gap < nearestGap) {
+            if (gap < nearestGap) {
                 nearestGap = gap;
                 nearestAo = a;
             }

@@ -126,9 +126,11 @@ vec4 sfxColor(vec4 c) { return vec4(sfxColorChannel(c.r), sfxColorChannel(c.g), 
 // binding names none (TextureBinding). Why not texelFetch: lavapipe compiles texelFetch into a
 // call of about 125 instructions per 8 pixels, and a sample at the texel's centre into a
 // fraction of that, inline; crease's obscurance pass fell from 115 to 57 million instructions
-// at half of 1280x720 (docs/trade.md). The centre (q + 0.5) / size stays within a thousandth of
-// a texel of it up to 16384 texels, so the nearest texel is q.
-vec4 sfxTexel(sampler2D s, ivec2 q, int lod) { return textureLod(s, (vec2(q) + 0.5) / vec2(textureSize(s, lod)), float(lod)); }
+// at half of 1280x720 (docs/trade.md). The centre is (q + 0.5) times the reciprocal of the
+// size, one divide that compilers share between the fetches of a texture where a divide per
+// fetch was dearer on lavapipe (docs/trade.md); it stays within a thousandth of a texel of the
+// exact centre up to 16384 texels, so the nearest texel is q.
+vec4 sfxTexel(sampler2D s, ivec2 q, int lod) { return textureLod(s, (vec2(q) + 0.5) * (1.0 / vec2(textureSize(s, lod))), float(lod)); }
 #endif
 
 // Parameters of the linearisation pass (linearize_depth.frag), filled by LinearDepth. Whether

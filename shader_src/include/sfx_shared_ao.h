@@ -161,12 +161,18 @@ ivec2 aoFullResPixel(ivec2 q, ivec2 fullSize) { return min(depthMipSource(q), fu
 // texel lies across an edge (thin features) it alone decides, and the blend stays continuous.
 SFX_CONST(float, SFX_AO_UPSAMPLE_DEPTH_TOLERANCE, 0.1)
 SFX_CONST(float, SFX_AO_UPSAMPLE_NEAREST_WEIGHT, 1.0e-3)
+// The nearest-depth search starts above any gap (every depth it compares is finite, at most
+// the far plane), so the first texel is taken and ties keep the first.
+SFX_CONST(float, SFX_AO_UPSAMPLE_NO_GAP, 3.0e38)
 // Along one axis, full-size index x: the lower half-size texel (may be -1: clamp it) and the
 // bilinear weight of the upper one (the lower one gets 1 minus it).
 SFX_FN int aoUpsampleBase(int x) { return (x + 1) / 2 - 1; }
 SFX_FN SFX_REAL aoUpsampleUpperWeight(int x) { return (x % 2) == 1 ? 0.25 : 0.75; }
-SFX_FN SFX_REAL aoUpsampleWeight(SFX_REAL bilinear, SFX_REAL zq, SFX_REAL z0) {
-    return bilinear * max(0.0, 1.0 - abs(zq - z0) / (SFX_REAL(SFX_AO_UPSAMPLE_DEPTH_TOLERANCE) * z0));
+// The depth weight's scale, 1 / (tolerance * z0): once per pixel, so that each of the four taps
+// multiplies instead of dividing.
+SFX_FN SFX_REAL aoUpsampleInvTolerance(SFX_REAL z0) { return 1.0 / (SFX_REAL(SFX_AO_UPSAMPLE_DEPTH_TOLERANCE) * z0); }
+SFX_FN SFX_REAL aoUpsampleWeight(SFX_REAL bilinear, SFX_REAL zq, SFX_REAL z0, SFX_REAL invTolerance) {
+    return bilinear * max(0.0, 1.0 - abs(zq - z0) * invTolerance);
 }
 // The blend of the four taps: sum of w * ao, plus the nearest texel's ao at the fixed weight.
 SFX_FN SFX_REAL aoUpsampleResolve(SFX_REAL weightedSum, SFX_REAL weightSum, SFX_REAL nearestAo) {

@@ -249,18 +249,19 @@ Grid depthAwareUpsample(const Grid& halfVisibility, const Grid& halfDepth, const
             if (isSky(z0, maxDepth)) continue;
             const int bx = sh::aoUpsampleBase(int(x)), by = sh::aoUpsampleBase(int(y));
             const double ux = sh::aoUpsampleUpperWeight(int(x)), uy = sh::aoUpsampleUpperWeight(int(y));
-            double acc = 0, wsum = 0, nearestAo = 1, nearestGap = -1;
+            double acc = 0, wsum = 0, nearestAo = 1, nearestGap = sh::SFX_AO_UPSAMPLE_NO_GAP;
+            const double invTolerance = sh::aoUpsampleInvTolerance(z0);
             for (int j = 0; j < 2; ++j)
                 for (int i = 0; i < 2; ++i) {  // the shader's order: ties keep the first
                     const uint32_t qx = uint32_t(std::clamp(bx + i, 0, hw - 1)), qy = uint32_t(std::clamp(by + j, 0, hh - 1));
                     const double zq = sh::sfxLinearDepthOrFar(halfDepth.at(qx, qy), maxDepth);
                     const double a = halfVisibility.at(qx, qy);
                     const double bilinear = (i == 1 ? ux : 1.0 - ux) * (j == 1 ? uy : 1.0 - uy);
-                    const double w = sh::aoUpsampleWeight(bilinear, zq, z0);
+                    const double w = sh::aoUpsampleWeight(bilinear, zq, z0, invTolerance);
                     acc += w * a;
                     wsum += w;
                     const double gap = std::abs(zq - z0);
-                    if (nearestGap < 0 || gap < nearestGap) {
+                    if (gap < nearestGap) {
                         nearestGap = gap;
                         nearestAo = a;
                     }
