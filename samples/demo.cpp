@@ -12,6 +12,7 @@
 #include "scene.hpp"
 #include "sfx/backends.hpp"
 #include "sfx/ao.hpp"
+#include "sfx/budget.hpp"
 #include "sfx/depth.hpp"
 #include "sfx/motion_blur.hpp"
 #include "sfx/tiers.hpp"
@@ -94,27 +95,9 @@ io::Image fromRGBA8(const std::vector<uint8_t>& bytes, uint32_t w, uint32_t h) {
     return out;
 }
 
-// The median over kTimedRuns of `record` timed on its own, after one untimed run (drivers
-// compile pipelines on first use). One run is noise on a busy machine; the benchmarks go further.
-constexpr int kTimedRuns = 5;
-template <class Record>
-Result<TimerReading> medianCost(Device& device, TimerHandle timer, Record record) {
-    SFX_TRY(record());
-    SFX_TRY(device.flush());
-    std::vector<TimerReading> readings;
-    for (int run = 0; run < kTimedRuns; ++run) {
-        SFX_TRY(device.beginTimer(timer));
-        SFX_TRY(record());
-        SFX_TRY(device.endTimer(timer));
-        SFX_TRY(device.flush());
-        Result<TimerReading> r = device.readTimer(timer);
-        if (!r) return r.status();
-        readings.push_back(r.value());
-    }
-    std::sort(readings.begin(), readings.end(),
-              [](const TimerReading& a, const TimerReading& b) { return a.milliseconds < b.milliseconds; });
-    return readings[kTimedRuns / 2];
-}
+// Each cost is budget::timeMedian over kTimedRuns after one warm-up run (drivers compile
+// pipelines on first use): one run is noise on a busy machine; the benchmarks go further.
+constexpr uint32_t kTimedRuns = 5;
 
 int fail(const Status& s) {
     std::cerr << "demo: error: " << s.toString() << "\n";
@@ -177,8 +160,6 @@ int main(int argc, char** argv) {
 
     // 2. Ambient obscurance, every technique, at the tier's defaults. Each context owns only
     //    what it needs: the depth MIP pyramid exists only for the high tier's scalable AO.
-    Result<TimerHandle> timer = device->createTimer();
-    if (!timer) return fail(timer.status());
     const AoTechnique techniques[] = {AoTechnique::Scalable, AoTechnique::Alchemy, AoTechnique::Crease};
     std::vector<std::unique_ptr<AmbientObscurance>> contexts;
     Plan plan;
@@ -221,7 +202,7 @@ int main(int argc, char** argv) {
         for (size_t t = 0; t < contexts.size(); ++t) {
             AmbientObscurance& ao = *contexts[t];
             const std::string technique = toString(techniques[t]);
-            Result<TimerReading> cost = medianCost(*device, timer.value(), [&] {
+            Result<TimerReading> cost = budget::timeMedian(*device, kTimedRuns, [&] {
                 return ao.dispatch({{g->depth, DepthKind::Hardware, g->camera}, g->normals, aoTarget.value()});
             });
             if (!cost) return fail(cost.status());
@@ -291,7 +272,7 @@ int main(int argc, char** argv) {
         } else {
             in.velocity = g->velocity;
         }
-        Result<TimerReading> cost = medianCost(*device, timer.value(), [&] { return blur.value()->dispatch(in); });
+        Result<TimerReading> cost = budget::timeMedian(*device, kTimedRuns, [&] { return blur.value()->dispatch(in); });
         if (!cost) return fail(cost.status());
         Result<std::vector<uint8_t>> blurred = readRGBA8(*device, blur.value()->output(), width, height);
         if (!blurred) return fail(blurred.status());
@@ -304,7 +285,6 @@ int main(int argc, char** argv) {
         renderer.value()->destroy(g.value());
     }
     (void)device->destroyTexture(colour.value());
-    (void)device->destroyTimer(timer.value());
 
     // 4. A scene file through the scene renderer, as `sfx render` draws it: its plan (what the
     //    scene needs and nothing more), AO on the opaque objects, the translucent ones through

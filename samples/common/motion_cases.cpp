@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sfx/budget.hpp"
+
 namespace sfx::samples {
 
 using namespace sfx::reference;
@@ -90,28 +92,16 @@ Result<MotionBlurRun> timeMotionBlur(Device& device, const TierProfile& profile,
                                      const MotionBlurInputs& in, uint32_t runs) {
     Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(device, {w, h, profile, Format::RGBA32F, in.depth.kind});
     if (!mb) return mb.status();
-    Result<TimerHandle> timer = device.createTimer();
-    if (!timer) return timer.status();
-    std::vector<double> times;
+    Result<TimerReading> cost = budget::timeMedian(device, runs, [&] { return mb.value()->dispatch(in, settings); });
+    if (!cost) return cost.status();
     MotionBlurRun run;
-    for (uint32_t i = 0; i <= runs; ++i) {
-        SFX_TRY(device.beginTimer(timer.value()));
-        SFX_TRY(mb.value()->dispatch(in, settings));
-        SFX_TRY(device.endTimer(timer.value()));
-        SFX_TRY(device.flush());
-        Result<TimerReading> r = device.readTimer(timer.value());
-        if (!r) return r.status();
-        run.source = r->source;
-        if (i > 0) times.push_back(r->milliseconds);
-    }
-    std::sort(times.begin(), times.end());
-    run.medianMs = times[times.size() / 2];
+    run.source = cost->source;
+    run.medianMs = cost->milliseconds;
     std::vector<float> out(size_t(w) * h * 4);
     SFX_TRY(device.readTexture(mb.value()->output(), 0, out.data(), out.size() * 4));
     run.output = ColorGrid(w, h);
     for (size_t i = 0; i < run.output.values.size(); ++i)
         for (int ch = 0; ch < 4; ++ch) run.output.values[i][ch] = out[i * 4 + size_t(ch)];
-    (void)device.destroyTimer(timer.value());
     return run;
 }
 
