@@ -128,7 +128,8 @@ vec4 sfxColor(vec4 c) { return vec4(sfxColorChannel(c.r), sfxColorChannel(c.g), 
 // fraction of that, inline; crease's obscurance pass fell from 115 to 57 million instructions
 // at half of 1280x720 (docs/trade.md). The centre is (q + 0.5) times the reciprocal of the
 // size, one divide that compilers share between the fetches of a texture where a divide per
-// fetch was dearer on lavapipe (docs/trade.md); it stays within a thousandth of a texel of the
+// fetch was dearer on lavapipe (docs/trade.md). Three roundings of at most 2^-24 each (the
+// reciprocal, the product, the sampler's scaling back) keep it within 0.003 of a texel of the
 // exact centre up to 16384 texels, so the nearest texel is q.
 vec4 sfxTexel(sampler2D s, ivec2 q, int lod) { return textureLod(s, (vec2(q) + 0.5) * (1.0 / vec2(textureSize(s, lod))), float(lod)); }
 #endif
