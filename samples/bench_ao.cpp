@@ -231,18 +231,23 @@ void writeOutputs(const Options& o, const std::vector<Row>& rows, const std::str
     const std::string passScene = contains(o.scenes, "bunny") ? "bunny" : o.scenes.front();
     md << "\nPer pass (profiling on), scene " << passScene << ", radius " << kErrorRadius
        << "; ms (x copy); depth_mip is the sum of its levels (each in the CSV):\n\n";
-    md << "| backend | tier | technique | copy ms | linearize | depth_mip | obscurance | blur h | blur v | sum of passes | whole effect |\n";
-    md << "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    md << "| backend | tier | technique | copy ms | linearize | depth_mip | half-size depth | obscurance | blur h | blur v | upsample | sum of passes | whole effect |\n";
+    md << "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const Row& r : rows) {
         if (!r.hasError || r.scene != passScene) continue;
         double sum = 0;
         for (const PassCost& p : r.passes) sum += p.ms;
         const double mip = passMs(r, "depth_mip");
-        char line[768];
-        std::snprintf(line, sizeof line, "| %s | %s | %s | %.3f | %s | %s | %s | %s | %s | %s | %s |\n", r.backend.c_str(), r.tier.c_str(),
-                      r.technique.c_str(), r.copyMs, cell(passMs(r, "linearize"), r.copyMs).c_str(),
-                      mip > 0 ? cell(mip, r.copyMs).c_str() : "-", cell(passMs(r, "obscurance"), r.copyMs).c_str(),
-                      cell(passMs(r, "bilateral blur h"), r.copyMs).c_str(), cell(passMs(r, "bilateral blur v"), r.copyMs).c_str(),
+        // A pass the configuration does not plan (no MIP, full resolution, no linearisation) is "-".
+        const auto optional = [&](const std::string& prefix) {
+            const double ms = passMs(r, prefix);
+            return ms > 0 ? cell(ms, r.copyMs) : std::string("-");
+        };
+        char line[1024];
+        std::snprintf(line, sizeof line, "| %s | %s | %s | %.3f | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", r.backend.c_str(),
+                      r.tier.c_str(), r.technique.c_str(), r.copyMs, optional("linearize").c_str(), mip > 0 ? cell(mip, r.copyMs).c_str() : "-",
+                      optional("half-size depth").c_str(), cell(passMs(r, "obscurance"), r.copyMs).c_str(),
+                      optional("bilateral blur h").c_str(), optional("bilateral blur v").c_str(), optional("depth-aware upsample").c_str(),
                       cell(sum, r.copyMs).c_str(), totalCell(r).c_str());
         md << line;
     }
