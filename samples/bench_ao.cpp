@@ -237,7 +237,6 @@ void writeOutputs(const Options& o, const std::vector<Row>& rows, const std::str
         if (!r.hasError || r.scene != passScene) continue;
         double sum = 0;
         for (const PassCost& p : r.passes) sum += p.ms;
-        const double mip = passMs(r, "depth_mip");
         // A pass the configuration does not plan (no MIP, full resolution, no linearisation) is "-".
         const auto optional = [&](const std::string& prefix) {
             const double ms = passMs(r, prefix);
@@ -245,7 +244,7 @@ void writeOutputs(const Options& o, const std::vector<Row>& rows, const std::str
         };
         char line[1024];
         std::snprintf(line, sizeof line, "| %s | %s | %s | %.3f | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", r.backend.c_str(),
-                      r.tier.c_str(), r.technique.c_str(), r.copyMs, optional("linearize").c_str(), mip > 0 ? cell(mip, r.copyMs).c_str() : "-",
+                      r.tier.c_str(), r.technique.c_str(), r.copyMs, optional("linearize").c_str(), optional("depth_mip").c_str(),
                       optional("half-size depth").c_str(), cell(passMs(r, "obscurance"), r.copyMs).c_str(),
                       optional("bilateral blur h").c_str(), optional("bilateral blur v").c_str(), optional("depth-aware upsample").c_str(),
                       cell(sum, r.copyMs).c_str(), totalCell(r).c_str());
