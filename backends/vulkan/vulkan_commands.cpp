@@ -13,7 +13,22 @@ Status VulkanDevice::noHostCommandBuffer(const char* call) const {
     return Status::ok();
 }
 
+Result<VkCommandBuffer> VulkanDevice::allocateCommandBuffer(VkCommandBufferLevel level) {
+    VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    ai.commandPool = commandPool_;
+    ai.level = level;
+    ai.commandBufferCount = 1;
+    VkCommandBuffer cb = VK_NULL_HANDLE;
+    SFX_VK(vk_.vkAllocateCommandBuffers(device_, &ai, &cb));
+    return cb;
+}
+
 Result<VkCommandBuffer> VulkanDevice::recording() {
+    if (mode_ == CallMode::Recording) return open_.commandBuffer;
+    return primaryRecording();
+}
+
+Result<VkCommandBuffer> VulkanDevice::primaryRecording() {
     if (hostCommandBuffer_) return hostCommandBuffer_;
     if (!recording_) {
         VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
@@ -46,6 +61,7 @@ Status VulkanDevice::submitAndWait() {
 }
 
 Status VulkanDevice::flush() {
+    SFX_TRY(notWhileRecording("flush"));
     if (hostCommandBuffer_) {
         // The host ends and submits its command buffer; what it used (garbage, staging blocks)
         // lives until it is done, which the next setCommandBuffer may assume.
@@ -58,6 +74,7 @@ Status VulkanDevice::flush() {
 }
 
 Status VulkanDevice::setHostCommandBuffer(VkCommandBuffer cb, bool previousFinished) {
+    SFX_TRY(notWhileRecording("setCommandBuffer"));
     if (hostCommandBuffer_) SFX_TRY(flush());  // detach the previous one
     // Work recorded on our own command buffer comes first.
     SFX_TRY(submitAndWait());

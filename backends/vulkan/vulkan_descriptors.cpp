@@ -114,6 +114,7 @@ Result<VkDescriptorSet> VulkanDevice::allocateSet(VkDescriptorSetLayout layout) 
 }
 
 void VulkanDevice::clearSetCache() {
+    changeObjects();  // recordings may have bound the sets
     Garbage& g = currentGarbage();
     g.descriptorPools.insert(g.descriptorPools.end(), descriptorPools_.begin(), descriptorPools_.end());
     g.descriptorSets += setCache_.size();

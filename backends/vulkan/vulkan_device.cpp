@@ -11,6 +11,7 @@ namespace sfx::vulkan {
 
 Result<TextureHandle> VulkanDevice::createTexture(const TextureDesc& desc) {
     SFX_TRY(validation::textureDesc(desc, caps_));
+    changeObjects();
     return makeTexture(desc);
 }
 
@@ -38,6 +39,7 @@ Status VulkanDevice::readTexture(TextureHandle h, uint32_t mip, void* out, size_
     SFX_TRY(validation::textureBytes(t.desc, mip, bytes, "bytes"));
     SFX_TRY(validation::pointer(out, "out", "the level's bytes"));
     SFX_TRY(noHostCommandBuffer("readTexture"));
+    SFX_TRY(notWhileRecording("readTexture"));
     return downloadTexture(t, mip, out, bytes);
 }
 
@@ -58,6 +60,7 @@ Status VulkanDevice::destroySampler(SamplerHandle h) {
 
 Result<BufferHandle> VulkanDevice::createBuffer(const BufferDesc& desc) {
     SFX_TRY(validation::bufferDesc(desc, caps_));
+    changeObjects();
     return makeHalBuffer(desc);
 }
 
@@ -84,6 +87,7 @@ Status VulkanDevice::readBuffer(BufferHandle h, uint64_t offset, void* out, size
     SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "readBuffer(offset, bytes)"));
     SFX_TRY(validation::pointer(out, "out", "room for the bytes read"));
     SFX_TRY(noHostCommandBuffer("readBuffer"));
+    SFX_TRY(notWhileRecording("readBuffer"));
     return readBackBuffer(b, offset, out, bytes);
 }
 
@@ -132,6 +136,8 @@ Status VulkanDevice::destroyPipeline(PipelineHandle h) {
 // ---- Commands ------------------------------------------------------------------------------
 
 Status VulkanDevice::renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) {
+    // Replaying: checked when it was recorded (the same arguments on the same objects pass again).
+    if (noteCall(&pass, draws, nullptr)) return Status::ok();
     SFX_TRY(validation::renderPass(pass, draws, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
     PassTargets& targets = scratch_.targets;
     passTargets(pass, targets);
@@ -154,6 +160,7 @@ Status VulkanDevice::renderPass(const RenderPassDesc& pass, std::span<const Draw
 }
 
 Status VulkanDevice::dispatch(const DispatchDesc& d) {
+    if (noteCall(nullptr, {}, &d)) return Status::ok();
     SFX_TRY(validation::dispatch(d, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
     const VulkanPipeline& pl = pipelines_.get(d.pipeline);
     Uses& uses = scratch_.dispatchUses;

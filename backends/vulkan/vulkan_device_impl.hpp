@@ -44,7 +44,7 @@ class VulkanDevice final : public Device {
 public:
     VulkanDevice() : serial_(nextDeviceSerial()), textures_(serial_, "texture"), buffers_(serial_, "buffer"),
                      samplers_(serial_, "sampler"), programs_(serial_, "program"), pipelines_(serial_, "pipeline"),
-                     timers_(serial_, "timer") {}
+                     timers_(serial_, "timer"), recordings_(serial_, "recording") {}
     ~VulkanDevice() override {
         shutdown();
         // Messages nobody took (teardown ones included) go to the host's log callback.
@@ -101,6 +101,13 @@ public:
     Status endTimer(TimerHandle timer) override;
     Status flush() override;
     Result<TimerReading> readTimer(TimerHandle timer) override;
+
+    // vulkan_recordings.cpp
+    Status beginRecording() override;
+    Result<RecordingHandle> endRecording() override;
+    Status beginReplay(RecordingHandle recording) override;
+    Status endReplay() override;
+    Status destroyRecording(RecordingHandle recording) override;
 
     std::vector<std::string> takeValidationMessages() override {
         std::lock_guard<std::mutex> lock(messagesMutex_);
@@ -180,7 +187,10 @@ private:
     Result<PipelineHandle> finishPipeline(VulkanPipeline& p, VkResult r, const char* call, const char* debugName);
 
     // vulkan_commands.cpp: recording, submission and the host's command buffer.
+    // The command buffer a command goes to: the open recording's, or primaryRecording().
     Result<VkCommandBuffer> recording();
+    Result<VkCommandBuffer> primaryRecording();  // the host's, or the device's own (begun here)
+    Result<VkCommandBuffer> allocateCommandBuffer(VkCommandBufferLevel level);  // from the device's pool
     Status submitAndWait();
     Status noHostCommandBuffer(const char* call) const;
     // The attachments of a render pass the shared validation accepted: size, formats, layouts.
@@ -189,6 +199,24 @@ private:
     Status recordRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, const PassTargets& targets,
                             std::span<ResolvedBindings> resolved);
     Status recordDispatch(const DispatchDesc& d, const VulkanPipeline& pl, const Uses& uses, ResolvedBindings& resolved);
+
+    // vulkan_recordings.cpp: what the calls between beginRecording/beginReplay and their end do.
+    enum class CallMode { Direct, Recording, Replaying };
+    // A renderPass's or dispatch's arguments: kept with the open recording, or compared with the
+    // replayed one's. True: replaying, the call records nothing.
+    bool noteCall(const RenderPassDesc* pass, std::span<const DrawDesc> draws, const DispatchDesc* dispatch);
+    // A timer inside a recording makes it single-use; inside a replay, a mismatch. True: skip it.
+    bool noteTimer();
+    // Recording: notes a use of a resource (the barriers of the recording's command buffer).
+    void noteRecordedUse(AccessState& s, VulkanTexture* texture, uint32_t mip, VulkanBuffer* buffer, VkImageLayout layout,
+                         VkPipelineStageFlags stages, VkAccessFlags access, bool write);
+    // The command buffer a host write (a staged copy) goes to: the primary one, unless the open
+    // recording has used the resource already (the copy must follow that use: it goes into the
+    // recording, which is then not reusable).
+    Result<VkCommandBuffer> writeRecording(const AccessState& s);
+    bool usedByOpenRecording(const AccessState& s) const { return mode_ == CallMode::Recording && s.recordingSerial == recordingSerial_; }
+    Status notWhileRecording(const char* call) const;
+    void changeObjects() { ++objectEpoch_; }  // a create or destroy: recordings made before are stale
 
     // vulkan_garbage.cpp: deferred destruction.
     Garbage& currentGarbage() { return hostCommandBuffer_ ? hostPending_ : pending_; }
@@ -213,6 +241,7 @@ private:
     HandlePool<ProgramTag, VulkanProgram> programs_;
     HandlePool<PipelineTag, VulkanPipeline> pipelines_;
     HandlePool<TimerTag, VulkanTimer> timers_;
+    HandlePool<RecordingTag, VulkanRecording> recordings_;
     std::vector<TextureHandle> externals_;  // imported images, handed back at every flush
 
 public:  // set up by the factory functions
@@ -255,6 +284,20 @@ private:
     Garbage pending_;       // released after the next flush
     Garbage hostPending_;   // used by a host command buffer: released at the next setCommandBuffer
     std::chrono::steady_clock::time_point recordStart_{};
+
+    // Reusable recordings (vulkan_recordings.cpp).
+    bool reuseRecordings_ = true;  // DeviceOptions::reuseRecordings
+    CallMode mode_ = CallMode::Direct;
+    VulkanRecording open_;             // Recording: being recorded
+    RecordingHandle replaying_;        // Replaying: the recording compared with
+    size_t replayCursor_ = 0;          // Replaying: how much of its calls the calls so far matched
+    bool replayMatches_ = true;
+    uint64_t recordingSerial_ = 0;     // of the open recording (marks AccessState::recordingSerial)
+    uint64_t objectEpoch_ = 1;         // bumped by every create and destroy of an object
+    std::vector<uint64_t> callScratch_;  // one call's arguments, flattened
+    std::vector<VkCommandBuffer> freeSecondaries_;
+    std::vector<ImageUse> replayImages_;
+    std::vector<BufferUse> replayBuffers_;
 
     std::mutex messagesMutex_;
     std::vector<std::string> messages_;

@@ -125,6 +125,7 @@ Result<TextureHandle> VulkanDevice::importExternal(const ExternalImage& e) {
     t.hostView = e.view;
     t.mips.assign(desc.mipLevels, hostState(e.layout));
     t.attachmentViews.assign(desc.mipLevels, VK_NULL_HANDLE);
+    changeObjects();
     TextureHandle h = textures_.insert(std::move(t));
     externals_.push_back(h);
     return h;

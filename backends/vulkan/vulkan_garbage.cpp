@@ -41,6 +41,8 @@ void VulkanDevice::releaseGarbage(Garbage& g) {
     for (VkDescriptorPool p : g.descriptorPools) vk_.vkDestroyDescriptorPool(device_, p, nullptr);
     descriptorPoolCount_.remove(g.descriptorPools.size());
     descriptorSetCount_.remove(g.descriptorSets);
+    // No command buffer that executed them is pending any more: they can be begun again.
+    freeSecondaries_.insert(freeSecondaries_.end(), g.secondaries.begin(), g.secondaries.end());
     g = Garbage{};
 }
 

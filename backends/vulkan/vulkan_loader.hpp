@@ -86,6 +86,7 @@ namespace sfx::vulkan {
     X(vkCmdSetViewport)                 \
     X(vkCmdSetScissor)                  \
     X(vkCmdDraw)                        \
+    X(vkCmdExecuteCommands)             \
     X(vkCmdDrawIndexed)                 \
     X(vkCmdDispatch)
 

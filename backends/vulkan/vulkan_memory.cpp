@@ -77,14 +77,14 @@ Result<BufferHandle> VulkanDevice::makeHalBuffer(const BufferDesc& desc) {
 }
 
 Status VulkanDevice::stageBufferWrite(VulkanBuffer& b, uint64_t offset, const void* data, size_t bytes) {
-    if (!recording_ && !hostCommandBuffer_) {
+    if (!recording_ && !hostCommandBuffer_ && !usedByOpenRecording(b.state)) {
         // Nothing recorded and the GPU idle since the last flush: the mapping can take it now.
         std::memcpy(static_cast<uint8_t*>(b.alloc.mapped) + offset, data, bytes);
         return Status::ok();
     }
     // Recorded commands may still read the old contents: copy in order with them, through the
-    // staging ring.
-    Result<VkCommandBuffer> cb = recording();
+    // staging ring (before an open recording, unless that has read the buffer already).
+    Result<VkCommandBuffer> cb = writeRecording(b.state);
     if (!cb) return cb.status();
     Result<StagingSlice> staging = stage(bytes);
     if (!staging) return staging.status();
@@ -111,6 +111,7 @@ Status VulkanDevice::readBackBuffer(VulkanBuffer& b, uint64_t offset, void* out,
 
 DeviceStats VulkanDevice::stats() const {
     DeviceStats s = halObjectStats(textures_, buffers_, samplers_, programs_, pipelines_, timers_);
+    s.recordings = objectCount(recordings_);
     s.memoryAllocations = memoryCount_;
     s.stagingBuffers = stagingCount_;
     s.descriptorSets = descriptorSetCount_;

@@ -35,7 +35,13 @@ struct AccessState {
     // only costs an extra barrier).
     std::array<std::pair<VkPipelineStageFlags, VkAccessFlags>, 4> visible{};
     uint32_t visibleCount = 0;
+    // The open recording that has used this resource (its serial) and the index of its entry
+    // there (vulkan_recordings.cpp); not part of the state sameState() compares.
+    uint64_t recordingSerial = 0;
+    uint32_t recordingEntry = 0;
 };
+// The same tracked access, the recording marks aside.
+bool sameState(const AccessState& a, const AccessState& b);
 
 struct VulkanBuffer {
     BufferDesc desc;
@@ -104,7 +110,34 @@ struct Garbage {
     std::vector<VkDescriptorSetLayout> setLayouts;
     std::vector<VkShaderModule> modules;
     std::vector<VkDescriptorPool> descriptorPools;  // of a cleared descriptor-set cache
+    std::vector<VkCommandBuffer> secondaries;       // of destroyed recordings: back to the free list
     uint64_t descriptorSets = 0;                    // the sets they held
+};
+
+// A buffer or image mip that a recording uses: its state where the recording starts and ends,
+// and the stages and accesses of all its uses there (vulkan_recordings.cpp).
+struct VulkanTexture;
+struct RecordedResource {
+    VulkanTexture* texture = nullptr;  // with mip; else buffer
+    uint32_t mip = 0;
+    VulkanBuffer* buffer = nullptr;
+    AccessState entry, exit;
+    VkPipelineStageFlags stages = 0;
+    VkAccessFlags access = 0;
+    // Written or moved to another layout: a replay needs exactly the entry state. A resource only
+    // read needs the entry layout, and gets the barrier its reads need from whatever came before.
+    bool written = false;
+};
+
+// Commands recorded once and replayed (Device::beginRecording): a secondary command buffer, the
+// arguments of its HAL calls (to compare a replay's calls with), and what it needs of resources.
+struct VulkanRecording {
+    VkCommandBuffer commandBuffer = VK_NULL_HANDLE;
+    uint64_t epoch = 0;    // the device's object epoch when recorded
+    bool reusable = true;  // false: wrote a resource it had used, or held a timer
+    const char* why = "";  // when not reusable
+    std::vector<uint64_t> calls;  // the HAL calls' arguments, flattened
+    std::vector<RecordedResource> resources;
 };
 
 // Timestamp query pairs in the device's pool, and descriptor sets per descriptor pool.

@@ -264,17 +264,16 @@ Status VulkanDevice::finishInit(const DeviceOptions& options, bool) {
     vk_.vkGetPhysicalDeviceQueueFamilyProperties(physical_, &qCount, families.data());
     timestampValidBits_ = families[queueFamily_].timestampValidBits;
     fullFeatures_ = options.ceiling == CapabilityCeiling::None;
+    reuseRecordings_ = options.reuseRecordings;
     fillCaps(options);
 
     VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     pci.queueFamilyIndex = queueFamily_;
     SFX_VK(vk_.vkCreateCommandPool(device_, &pci, nullptr, &commandPool_));
-    VkCommandBufferAllocateInfo cai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    cai.commandPool = commandPool_;
-    cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    cai.commandBufferCount = 1;
-    SFX_VK(vk_.vkAllocateCommandBuffers(device_, &cai, &commandBuffer_));
+    Result<VkCommandBuffer> primary = allocateCommandBuffer(VK_COMMAND_BUFFER_LEVEL_PRIMARY);
+    if (!primary) return primary.status();
+    commandBuffer_ = primary.value();
     VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     SFX_VK(vk_.vkCreateFence(device_, &fci, nullptr, &fence_));
 

@@ -81,7 +81,7 @@ Result<VkImageView> VulkanDevice::attachmentView(VulkanTexture& t, uint32_t mip)
 Status VulkanDevice::uploadTexture(VulkanTexture& t, uint32_t mip, const void* data, size_t bytes) {
     if (t.external && !(t.vkUsage & VK_IMAGE_USAGE_TRANSFER_DST_BIT))
         return {StatusCode::UnsupportedFeature, "writeTexture: texture is an imported image without VK_IMAGE_USAGE_TRANSFER_DST_BIT"};
-    Result<VkCommandBuffer> cb = recording();
+    Result<VkCommandBuffer> cb = writeRecording(t.mips[mip]);
     if (!cb) return cb.status();
     Result<StagingSlice> staging = stage(bytes);
     if (!staging) return staging.status();

@@ -43,6 +43,7 @@ Status VulkanDevice::destroyTimer(TimerHandle h) {
 
 Status VulkanDevice::beginTimer(TimerHandle h) {
     SFX_TRY(timers_.check(h, "timer"));
+    if (noteTimer()) return Status::ok();
     VulkanTimer& t = timers_.get(h);
     Result<VkCommandBuffer> cb = recording();
     if (!cb) return cb.status();
@@ -56,6 +57,7 @@ Status VulkanDevice::beginTimer(TimerHandle h) {
 
 Status VulkanDevice::endTimer(TimerHandle h) {
     SFX_TRY(timers_.check(h, "timer"));
+    if (noteTimer()) return Status::ok();
     VulkanTimer& t = timers_.get(h);
     if (t.state != VulkanTimer::State::Begun) return validation::fail(validation::Error::TimerNotBegun, {});
     Result<VkCommandBuffer> cb = recording();

@@ -147,4 +147,14 @@ Result<TimerReading> FaultInjectingDevice::readTimer(TimerHandle timer) {
     return inner_.readTimer(timer);
 }
 
+Status FaultInjectingDevice::beginRecording() {
+    if (Status s = enter("beginRecording", false, false); !s) return s;
+    return inner_.beginRecording();
+}
+
+Status FaultInjectingDevice::beginReplay(RecordingHandle recording) {
+    if (Status s = enter("beginReplay", false, false); !s) return s;
+    return inner_.beginReplay(recording);
+}
+
 }  // namespace sfx::test

@@ -69,6 +69,14 @@ public:
     Status flush() override;
     Result<TimerReading> readTimer(TimerHandle timer) override;
 
+    // Beginning one can fail like any call; ending and destroying one are always forwarded (as
+    // destroys are), so that the wrapped device is never left with a recording or replay open.
+    Status beginRecording() override;
+    Result<RecordingHandle> endRecording() override { return inner_.endRecording(); }
+    Status beginReplay(RecordingHandle recording) override;
+    Status endReplay() override { return inner_.endReplay(); }
+    Status destroyRecording(RecordingHandle recording) override { return inner_.destroyRecording(recording); }
+
     DeviceStats stats() const override { return inner_.stats(); }
     std::vector<std::string> takeValidationMessages() override { return inner_.takeValidationMessages(); }
 

@@ -271,6 +271,9 @@ struct DeviceCaps {
     bool floatRenderTargets = false;  // R32F, RG16F, RGBA16F colour-renderable
     bool float32Filterable = false;
     TimingSource timing = TimingSource::WallClockAfterFinish;
+    // Device::beginRecording / beginReplay work (Vulkan, unless DeviceOptions::reuseRecordings is
+    // off); elsewhere they report UnsupportedFeature and effects record their commands each frame.
+    bool reusableRecordings = false;
 
     ClipDepthRange clipDepth = ClipDepthRange::ZeroToOne;  // the API's default
     FramebufferOrigin origin = FramebufferOrigin::UpperLeft;
@@ -301,6 +304,10 @@ struct DeviceOptions {
     // are also kept for Device::takeValidationMessages(); the ones still untaken when the
     // device is destroyed go here (LogSeverity::Error) so none is lost silently.
     LogCallback log;
+    // Vulkan: effects record their passes once and replay them in frames that issue the same
+    // commands (Device::beginRecording), which takes most of a dispatch's CPU cost away. Off:
+    // every frame records every command, as capture tools that follow calls one by one may want.
+    bool reuseRecordings = true;
 };
 
 // How many objects of one kind exist now and how many were ever made.
@@ -318,6 +325,7 @@ struct ObjectCount {
 // (0 where a backend has no such thing: GL has no descriptor sets, the null backend no memory).
 struct DeviceStats {
     ObjectCount textures, buffers, samplers, programs, pipelines, timers;
+    ObjectCount recordings;         // Device::endRecording (Vulkan: secondary command buffers)
     ObjectCount memoryAllocations;  // Vulkan: vkAllocateMemory; GL: texture and buffer storage
     ObjectCount stagingBuffers;     // Vulkan: blocks of the upload/readback ring; GL: readback copies
     ObjectCount descriptorSets;     // Vulkan: sets in the cache (made once per distinct binding set)
@@ -395,12 +403,40 @@ public:
     // The time between the timer's begin and end of the last flushed use.
     virtual Result<TimerReading> readTimer(TimerHandle timer) = 0;
 
+    // Reusable recordings (caps().reusableRecordings; elsewhere all five report UnsupportedFeature).
+    // The commands between beginRecording and endRecording run where they were called, as
+    // always, and are kept (Vulkan: a secondary command buffer, executed by endRecording). A later
+    // beginReplay ... endReplay around the same calls with the same arguments runs the kept
+    // commands instead of recording them again: renderPass and dispatch there only compare their
+    // arguments with the recorded ones, and endReplay runs the recording, with the barriers that the
+    // resources' states at that point need. Buffers and textures are used by handle, so contents
+    // written before (writeBuffer: a changed uniform) are what the replay reads. endReplay reports
+    // StaleHandle, and runs nothing, when the calls differed from the recorded ones, an object was
+    // created or destroyed since the recording, a resource the recording writes is not in the
+    // state it was recorded from (a recording made from fresh textures: the frame after it), or
+    // the recording could not be reused (it wrote a resource it had used, or held a timer);
+    // beginReplay reports StaleHandle for a destroyed recording. The caller then makes the same
+    // calls again inside beginRecording ... endRecording. Resources it only reads may be in any
+    // state: endReplay records the barrier and layout transition their reads need.
+    // Between begin and end: flush, reads, and another begin are refused (InvalidArgument).
+    virtual Status beginRecording() { return noRecordings("beginRecording"); }
+    virtual Result<RecordingHandle> endRecording() { return noRecordings("endRecording"); }
+    virtual Status beginReplay(RecordingHandle) { return noRecordings("beginReplay"); }
+    virtual Status endReplay() { return noRecordings("endReplay"); }
+    virtual Status destroyRecording(RecordingHandle) { return noRecordings("destroyRecording"); }
+
     // Counts of what the device made (see DeviceStats); cheap, callable every frame.
     virtual DeviceStats stats() const = 0;
 
     // Messages from the API's validation since the last call: Vulkan validation-layer
     // messages, GL errors caught by the per-call checks and GL debug output. Tests fail on any.
     virtual std::vector<std::string> takeValidationMessages() { return {}; }
+
+private:
+    Status noRecordings(const char* call) const {
+        return {StatusCode::UnsupportedFeature, std::string(call) + ": the " + toString(caps().backend) +
+                                                    " device keeps no reusable recordings (caps().reusableRecordings is false)"};
+    }
 };
 
 // Byte size of one mip level of a texture.

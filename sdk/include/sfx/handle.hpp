@@ -26,12 +26,14 @@ struct SamplerTag;
 struct ProgramTag;
 struct PipelineTag;
 struct TimerTag;
+struct RecordingTag;
 using TextureHandle = Handle<TextureTag>;
 using BufferHandle = Handle<BufferTag>;
 using SamplerHandle = Handle<SamplerTag>;
 using ProgramHandle = Handle<ProgramTag>;
 using PipelineHandle = Handle<PipelineTag>;
 using TimerHandle = Handle<TimerTag>;
+using RecordingHandle = Handle<RecordingTag>;
 
 // Returns a process-unique serial for a new device (1..65535, wrapping past 0).
 uint16_t nextDeviceSerial();
