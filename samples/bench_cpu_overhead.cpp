@@ -1,7 +1,7 @@
 // bench_cpu_overhead (docs/integration.md, "CPU overhead"): the CPU time an effect's dispatch()
 // costs the host's render thread, and its heap traffic. Not a test: numbers depend on the machine.
 //   bench_cpu_overhead [--frames 300] [--warmup 30] [--width 1280] [--height 720]
-//                      [--backends vulkan,gles,gl-egl] [--out file.md]
+//                      [--backends vulkan,gles,gl-egl] [--out file.md] [--recordings both|replay|record]
 // Per backend (validation off, the best tier's profile), per effect (AO alchemy / scalable /
 // crease with their default settings, motion blur at its defaults) on the columns scene's
 // G-buffer: after the warm-up, each frame times dispatch() alone and the whole frame (dispatch
@@ -140,6 +140,9 @@ struct Options {
     // that the dispatch starts with caches as cold as after a large frame of software
     // rasterisation on the same cores; 0: no eviction.
     uint32_t evictMiB = 0;
+    // Vulkan: effects replaying their recorded passes in steady frames (DeviceOptions::
+    // reuseRecordings, the default), recording every command every frame, or both in one run.
+    std::string recordings = "both";
 };
 
 // Writes one byte per cache line of `buffer`, so that what the caches held before is gone (a
@@ -228,11 +231,12 @@ Result<Row> measure(Device& dev, const Options& o, Dispatch&& dispatch) {
     return r;
 }
 
-Status runBackend(const std::string& backend, const Options& o, std::vector<Row>& rows) {
+Status runBackend(const std::string& backend, const Options& o, bool reuseRecordings, std::vector<Row>& rows) {
     BackendConfig config;
     if (!parseBackendConfig(backend, &config)) return invalidArgument("--backends", "'" + backend + "'", "vulkan, gles, gl-egl, gl-osmesa");
     DeviceOptions options;
     options.validation = false;  // a host's release build; validation would be timed too
+    options.reuseRecordings = reuseRecordings;
     Result<std::unique_ptr<Device>> opened = openDevice(config, options);
     if (!opened) {
         std::cout << "bench_cpu_overhead: skipping " << backend << ": " << opened.status().toString() << std::endl;
@@ -244,7 +248,11 @@ Status runBackend(const std::string& backend, const Options& o, std::vector<Row>
         std::cout << "bench_cpu_overhead: skipping " << backend << ": " << choice.status().toString() << std::endl;
         return Status::ok();
     }
-    std::cout << "bench_cpu_overhead: " << backend << ": " << dev.caps().summary() << ", tier " << toString(choice->tier) << std::endl;
+    // Only Vulkan keeps recordings: elsewhere the option changes nothing.
+    const std::string label = dev.caps().reusableRecordings ? backend + " (replayed)"
+                              : config.backend == BackendKind::Vulkan ? backend + " (recorded every frame)"
+                                                                   : backend;
+    std::cout << "bench_cpu_overhead: " << label << ": " << dev.caps().summary() << ", tier " << toString(choice->tier) << std::endl;
 
     Result<samples::Scene> scene = samples::makeScene("columns");
     if (!scene) return scene.status();
@@ -260,7 +268,7 @@ Status runBackend(const std::string& backend, const Options& o, std::vector<Row>
 
     auto addRow = [&](const std::string& effect, Result<Row> r) -> Status {
         if (!r) return Status{r.status().code(), effect + ": " + r.status().message()};
-        r->backend = backend, r->tier = toString(choice->tier), r->effect = effect;
+        r->backend = label, r->tier = toString(choice->tier), r->effect = effect;
         std::printf("  %-12s dispatch CPU median %7.1f us (p90 %7.1f), wall %9.1f us; frame CPU %7.1f us, wall %9.1f us; "
                     "%.1f new / %.1f KiB, %.1f malloc / %.1f KiB, %.1f waits + %.1f preemptions per dispatch\n",
                     effect.c_str(), r->dispatchCpuUs.median, r->dispatchCpuUs.p90, r->dispatchUs.median, r->frameCpuUs.median,
@@ -330,6 +338,8 @@ int main(int argc, char** argv) {
     app.add_option("--height", o.height, "height")->check(CLI::Range(1u, 16384u));
     app.add_option("--backends", o.backends, "vulkan, gles, gl-egl, gl-osmesa")->delimiter(',');
     app.add_option("--out", o.out, "also write the table to this markdown file");
+    app.add_option("--recordings", o.recordings, "Vulkan: replay (steady frames replay the recorded passes), record (every frame records), both")
+        ->check(CLI::IsMember({"both", "replay", "record"}));
     app.add_option("--evict-mib", o.evictMiB, "MiB to write before each timed dispatch, to start it with cold caches")
         ->check(CLI::Range(0u, 4096u));
     CLI11_PARSE(app, argc, argv);
@@ -337,11 +347,16 @@ int main(int argc, char** argv) {
     (void)argc, (void)argv;
 #endif
     std::vector<Row> rows;
-    for (const std::string& b : o.backends)
-        if (Status st = runBackend(b, o, rows); !st) {
-            std::cerr << "bench_cpu_overhead: " << b << ": " << st.toString() << std::endl;
-            return 1;
-        }
+    for (const std::string& b : o.backends) {
+        std::vector<bool> modes;
+        if (o.recordings != "record") modes.push_back(true);
+        if (o.recordings != "replay" && b == "vulkan") modes.push_back(false);
+        for (bool reuse : modes)
+            if (Status st = runBackend(b, o, reuse, rows); !st) {
+                std::cerr << "bench_cpu_overhead: " << b << ": " << st.toString() << std::endl;
+                return 1;
+            }
+    }
     const std::string t = table(rows, o);
     std::cout << "\n" << t;
     if (!o.out.empty()) {

@@ -49,6 +49,7 @@ inline void checkNothingMade(const DeviceStats& before, const DeviceStats& after
     same("programs", before.programs, after.programs);
     same("pipelines", before.pipelines, after.pipelines);
     same("timers", before.timers, after.timers);
+    same("recordings", before.recordings, after.recordings);
     same("memory allocations", before.memoryAllocations, after.memoryAllocations);
     same("staging buffers", before.stagingBuffers, after.stagingBuffers);
     same("descriptor sets", before.descriptorSets, after.descriptorSets);

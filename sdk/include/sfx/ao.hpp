@@ -192,6 +192,9 @@ private:
     template <class Record>
     Status timed(size_t passIndex, Record&& record);
     Status allocateHalfRes();
+    // Every pass of a dispatch whose inputs were checked; `out` is the output's description,
+    // `normalSource` the shaders' normal source (0 derived, 1 signed float, 2 RGBA8).
+    Status recordPasses(const AoInputs& in, const TextureDesc& out, int32_t normalSource);
     Status recordHalfDepth(size_t passIndex);
     Status recordUpsample(const AoInputs& in, Format outFormat, TextureHandle source, size_t passIndex);
     // Half resolution: whether the half-size depth is depth MIP level 1 (high-tier Scalable),
@@ -209,6 +212,8 @@ private:
     // Pipelines by program, format and specialisation constants; kept across resize.
     std::unique_ptr<detail::PipelineCache> pipelines_;
     std::unique_ptr<detail::UniformWrites> uniforms_;  // every write of the uniform buffers above
+    // The passes as a recording replayed in steady frames (Vulkan), unless profiling.
+    std::unique_ptr<detail::RecordedPasses> recorded_;
     bool profiling_ = false;
     std::vector<TimerHandle> passTimers_;  // one per plan() pass while profiling, else empty
 };

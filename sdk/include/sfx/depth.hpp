@@ -16,6 +16,7 @@ namespace sfx {
 namespace detail {
 class PipelineCache;  // the effects' pipelines by specialisation constants (internal)
 class UniformWrites;  // the effects' uniform buffers, written when their bytes change (internal)
+class RecordedPasses;  // the effects' passes recorded once and replayed (internal)
 }
 
 enum class DepthKind : uint32_t {

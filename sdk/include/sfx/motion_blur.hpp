@@ -146,6 +146,8 @@ private:
     Status allocate();
     Status allocateTargets();
     Status allocateTiles(uint32_t radiusPx);
+    // Every pass of a dispatch whose inputs were checked, into `target`.
+    Status recordPasses(const MotionBlurInputs& in, const MotionBlurParams& p, TextureHandle target);
     void release();
     void releaseTargets();
     void releaseTiles();
@@ -160,6 +162,8 @@ private:
     // Pipelines by specialisation constants (camera-only, tile size, taps); kept across resize.
     std::unique_ptr<detail::PipelineCache> pipelines_;
     std::unique_ptr<detail::UniformWrites> uniforms_;  // every write of the uniform buffers above
+    // The passes as a recording replayed in steady frames (Vulkan), unless profiling.
+    std::unique_ptr<detail::RecordedPasses> recorded_;
 };
 
 }  // namespace sfx

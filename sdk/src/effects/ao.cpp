@@ -8,6 +8,7 @@
 #include "sfx/ao.hpp"
 #include "ao_internal.hpp"
 #include "effect_common.hpp"
+#include "recorded_passes.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared_ao.h"
 
@@ -49,7 +50,7 @@ Result<std::unique_ptr<AmbientObscurance>> AmbientObscurance::create(Device& dev
 
 AmbientObscurance::AmbientObscurance(Device& device, const AoDesc& desc)
     : device_(device), desc_(desc), pipelines_(std::make_unique<detail::PipelineCache>(device)),
-      uniforms_(std::make_unique<detail::UniformWrites>()) {}
+      uniforms_(std::make_unique<detail::UniformWrites>()), recorded_(std::make_unique<detail::RecordedPasses>(device)) {}
 
 AmbientObscurance::~AmbientObscurance() { release(); }
 
@@ -178,6 +179,7 @@ Result<std::vector<PassTiming>> AmbientObscurance::passTimings() {
 
 void AmbientObscurance::release() {
     // Destroy calls on null handles report InvalidHandle; there is nothing to release then.
+    recorded_->clear();
     pipelines_->clear();
     for (ProgramHandle* p : {&aoProgram_, &blurProgram_, &halfDepthProgram_, &upsampleProgram_}) {
         if (!p->isNull()) (void)device_.destroyProgram(*p);
@@ -259,7 +261,14 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
                                                         "; allowed RGBA16F/RGBA32F (signed xyz) or RGBA8 (xyz * 0.5 + 0.5)"};
     }
     SFX_TRY(detail::checkDepthLayers(device_, in, config_, desc_.width, desc_.height));
+    // Pass timers make a recording single-use: profiling records every frame.
+    if (profiling_) return recordPasses(in, out.value(), normalSource);
+    const uint64_t key = detail::RecordedPasses::key({in.depth.texture.bits, in.normals.bits, in.output.bits, in.depthLayers[0].bits,
+                                                      in.depthLayers[1].bits, in.depthLayers[2].bits});
+    return recorded_->run(key, [&] { return recordPasses(in, out.value(), normalSource); });
+}
 
+Status AmbientObscurance::recordPasses(const AoInputs& in, const TextureDesc& out, int32_t normalSource) {
     // Profiling: plan() order is the depth passes (linearize + one per MIP level past 0), at half
     // resolution the half-size depth unless MIP level 1 is it, the obscurance pass, blur h and v,
     // at half resolution the upsample. timed() records a pass bare when profiling is off.
@@ -313,7 +322,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
         {SFX_AO_SC_HALF_RES, half ? 1 : 0},
         {SFX_AO_SC_DEPTH_LAYERS, int32_t(config_.depthLayers)},
     };
-    Result<PipelineHandle> aoPipeline = pipelines_->get(aoProgram_, direct ? out->format : targetFormat_, aoConstants, "sfx-ao");
+    Result<PipelineHandle> aoPipeline = pipelines_->get(aoProgram_, direct ? out.format : targetFormat_, aoConstants, "sfx-ao");
     if (!aoPipeline) return aoPipeline.status();
     RenderPassDesc pass;
     pass.colors = {ColorAttachment{aoDest, 0, LoadOp::DontCare, {}}};
@@ -352,7 +361,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
                 {SFX_AO_SC_BLUR_FINAL_PASS, blurPass},
                 {SFX_AO_SC_BLUR_KEEP_DEPTH, half ? 1 : 0},
             };
-            Result<PipelineHandle> bp = pipelines_->get(blurProgram_, blurPass == 0 || half ? targetFormat_ : out->format, blurConstants,
+            Result<PipelineHandle> bp = pipelines_->get(blurProgram_, blurPass == 0 || half ? targetFormat_ : out.format, blurConstants,
                                                         blurPass == 0 ? "sfx-ao-blur-h" : "sfx-ao-blur-v");
             if (!bp) return bp.status();
             RenderPassDesc bpass;
@@ -366,7 +375,7 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
             SFX_TRY(timed(passIndex++, [&] { return device_.renderPass(bpass, std::span<const DrawDesc>(&bdraw, 1)); }));
         }
     }
-    if (half) SFX_TRY(recordUpsample(in, out->format, aoTarget_, passIndex++));
+    if (half) SFX_TRY(recordUpsample(in, out.format, aoTarget_, passIndex++));
     return Status::ok();
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "effect_common.hpp"
+#include "recorded_passes.hpp"
 #include "sfx/validation_errors.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared.h"
@@ -115,7 +116,7 @@ Result<std::unique_ptr<MotionBlur>> MotionBlur::create(Device& device, const Mot
 
 MotionBlur::MotionBlur(Device& device, const MotionBlurDesc& desc)
     : device_(device), desc_(desc), pipelines_(std::make_unique<detail::PipelineCache>(device)),
-      uniforms_(std::make_unique<detail::UniformWrites>()) {}
+      uniforms_(std::make_unique<detail::UniformWrites>()), recorded_(std::make_unique<detail::RecordedPasses>(device)) {}
 
 MotionBlur::~MotionBlur() { release(); }
 
@@ -192,6 +193,7 @@ void MotionBlur::releaseTiles() {
 
 void MotionBlur::release() {
     // Destroy calls on null handles report InvalidHandle; there is nothing to release then.
+    recorded_->clear();
     pipelines_->clear();
     for (ProgramHandle* p : {&packProgram_, &tileProgram_, &neighborProgram_, &reconstructProgram_}) {
         if (!p->isNull()) (void)device_.destroyProgram(*p);
@@ -268,8 +270,15 @@ Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings
             return invalidArgument("MotionBlurInputs.velocity usage", "without kTextureSampled", "a sampled texture");
     }
 
-    SFX_TRY(depth_->dispatch(in.depth));
+    // Before the passes: a new tile size makes textures, which no recording may span.
     SFX_TRY(allocateTiles(p.radiusPx));
+    const uint64_t key = detail::RecordedPasses::key({in.color.bits, in.depth.texture.bits, in.velocity.bits, target.bits});
+    return recorded_->run(key, [&] { return recordPasses(in, p, target); });
+}
+
+Status MotionBlur::recordPasses(const MotionBlurInputs& in, const MotionBlurParams& p, TextureHandle target) {
+    const bool cameraOnly = in.velocity.isNull();
+    SFX_TRY(depth_->dispatch(in.depth));
 
     PackParams pack{};
     const glm::dmat4 reprojection = in.camera.previousViewProjection * glm::inverse(in.camera.currentViewProjection);
