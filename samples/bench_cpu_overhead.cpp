@@ -39,6 +39,16 @@
 #define SFX_HAVE_CLI11 1
 #endif
 
+// Under callgrind (valgrind --tool=callgrind --collect-atstart=no) only the timed dispatch()
+// calls are counted: instructions per steady dispatch, by library, with no warm-up compile in
+// them. Outside valgrind the macro does nothing.
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#define SFX_COLLECT_TOGGLE() CALLGRIND_TOGGLE_COLLECT
+#else
+#define SFX_COLLECT_TOGGLE() ((void)0)
+#endif
+
 #include "bench_device.hpp"
 #include "scene.hpp"
 #include "sfx/ao.hpp"
@@ -201,7 +211,9 @@ Result<Row> measure(Device& dev, const Options& o, Dispatch&& dispatch) {
         const auto t0 = std::chrono::steady_clock::now();
         tHeap = {};
         tCounting = true;
+        SFX_COLLECT_TOGGLE();
         const Status st = dispatch();
+        SFX_COLLECT_TOGGLE();
         tCounting = false;
         const auto t1 = std::chrono::steady_clock::now();
         const double cpuDispatch = threadCpuSeconds();
