@@ -105,9 +105,10 @@ Status VulkanDevice::notWhileRecording(const char* call) const {
                                              " is open; allowed after " + (mode_ == CallMode::Recording ? "endRecording" : "endReplay")};
 }
 
+// With DeviceOptions::reuseRecordings off each call answers as on a device without recordings
+// (the HAL's default: UnsupportedFeature).
 Status VulkanDevice::beginRecording() {
-    if (!reuseRecordings_)
-        return {StatusCode::UnsupportedFeature, "beginRecording: DeviceOptions::reuseRecordings is off (caps().reusableRecordings is false)"};
+    if (!reuseRecordings_) return Device::beginRecording();
     SFX_TRY(notWhileRecording("beginRecording"));
     VkCommandBuffer cb = VK_NULL_HANDLE;
     if (!freeSecondaries_.empty()) {
@@ -138,6 +139,7 @@ Status VulkanDevice::beginRecording() {
 }
 
 Result<RecordingHandle> VulkanDevice::endRecording() {
+    if (!reuseRecordings_) return Device::endRecording();
     if (mode_ != CallMode::Recording) return Status{StatusCode::InvalidArgument, "endRecording: no recording is open; allowed after beginRecording"};
     mode_ = CallMode::Direct;
     VulkanRecording rec = std::move(open_);
@@ -161,6 +163,7 @@ Result<RecordingHandle> VulkanDevice::endRecording() {
 }
 
 Status VulkanDevice::beginReplay(RecordingHandle h) {
+    if (!reuseRecordings_) return Device::beginReplay(h);
     SFX_TRY(notWhileRecording("beginReplay"));
     SFX_TRY(recordings_.check(h, "recording"));
     mode_ = CallMode::Replaying;
@@ -171,6 +174,7 @@ Status VulkanDevice::beginReplay(RecordingHandle h) {
 }
 
 Status VulkanDevice::endReplay() {
+    if (!reuseRecordings_) return Device::endReplay();
     if (mode_ != CallMode::Replaying) return {StatusCode::InvalidArgument, "endReplay: no replay is open; allowed after beginReplay"};
     mode_ = CallMode::Direct;
     const VulkanRecording& rec = recordings_.get(replaying_);
@@ -202,6 +206,7 @@ Status VulkanDevice::endReplay() {
 }
 
 Status VulkanDevice::destroyRecording(RecordingHandle h) {
+    if (!reuseRecordings_) return Device::destroyRecording(h);
     SFX_TRY(recordings_.check(h, "recording"));
     if (mode_ == CallMode::Replaying && h == replaying_)
         return {StatusCode::InvalidArgument, "destroyRecording: the recording is being replayed; allowed after endReplay"};

@@ -75,15 +75,27 @@ bool keepsNone() {
 }  // namespace
 
 TEST_CASE("hal: recordings are the named UnsupportedFeature where the device keeps none", "[hal][recordings]") {
-    if (dev().caps().reusableRecordings) {
-        SUCCEED("this device keeps recordings: the other cases cover them");
+    auto checkNone = [](Device& d) {
+        CHECK_FALSE(d.caps().reusableRecordings);
+        checkNamed(d.beginRecording(), StatusCode::UnsupportedFeature, "reusableRecordings");
+        checkNamed(d.endRecording().status(), StatusCode::UnsupportedFeature, "reusableRecordings");
+        checkNamed(d.beginReplay({}), StatusCode::UnsupportedFeature, "reusableRecordings");
+        checkNamed(d.endReplay(), StatusCode::UnsupportedFeature, "reusableRecordings");
+        checkNamed(d.destroyRecording({}), StatusCode::UnsupportedFeature, "reusableRecordings");
+    };
+    if (!dev().caps().reusableRecordings) {
+        checkNone(dev());
         return;
     }
-    checkNamed(dev().beginRecording(), StatusCode::UnsupportedFeature, "reusableRecordings");
-    checkNamed(dev().endRecording().status(), StatusCode::UnsupportedFeature, "reusableRecordings");
-    checkNamed(dev().beginReplay({}), StatusCode::UnsupportedFeature, "reusableRecordings");
-    checkNamed(dev().endReplay(), StatusCode::UnsupportedFeature, "reusableRecordings");
-    checkNamed(dev().destroyRecording({}), StatusCode::UnsupportedFeature, "reusableRecordings");
+    // A device that keeps them, opened again with DeviceOptions::reuseRecordings off.
+    DeviceOptions options;
+    options.validation = true;
+    options.reuseRecordings = false;
+    Result<std::unique_ptr<Device>> other = openDevice(backendConfig(), options);
+    INFO(other.status().toString());
+    REQUIRE(other.isOk());
+    checkNone(*other.value());
+    CHECK(other.value()->takeValidationMessages().empty());
 }
 
 TEST_CASE("hal: a replay runs the recorded passes on the buffers' and textures' contents of the moment", "[hal][recordings]") {
