@@ -83,19 +83,13 @@ TEST_CASE("hal: recordings are the named UnsupportedFeature where the device kee
         checkNamed(d.endReplay(), StatusCode::UnsupportedFeature, "reusableRecordings");
         checkNamed(d.destroyRecording({}), StatusCode::UnsupportedFeature, "reusableRecordings");
     };
-    if (!dev().caps().reusableRecordings) {
-        checkNone(dev());
+    if (dev().caps().reusableRecordings) {
+        // tests/vulkan checks a Vulkan device opened with DeviceOptions::reuseRecordings off,
+        // among the cases that open their own Vulkan devices.
+        SUCCEED("this device keeps recordings: the other cases cover them");
         return;
     }
-    // A device that keeps them, opened again with DeviceOptions::reuseRecordings off.
-    DeviceOptions options;
-    options.validation = true;
-    options.reuseRecordings = false;
-    Result<std::unique_ptr<Device>> other = openDevice(backendConfig(), options);
-    INFO(other.status().toString());
-    REQUIRE(other.isOk());
-    checkNone(*other.value());
-    CHECK(other.value()->takeValidationMessages().empty());
+    checkNone(dev());
 }
 
 TEST_CASE("hal: a replay runs the recorded passes on the buffers' and textures' contents of the moment", "[hal][recordings]") {

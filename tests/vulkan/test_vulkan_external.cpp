@@ -157,6 +157,25 @@ TEST_CASE("vulkan: own device opens, and wrapDevice rejects missing host objects
     CHECK(bad.status().code() == StatusCode::InvalidArgument);
 }
 
+TEST_CASE("vulkan: an own device with DeviceOptions::reuseRecordings off keeps no recordings", "[vulkan]") {
+    DeviceOptions options;
+    options.validation = true;
+    options.reuseRecordings = false;
+    Result<std::unique_ptr<Device>> own = vulkan::createDevice(options);
+    if (!own) {
+        CHECK(own.status().code() == StatusCode::BackendUnavailable);
+        SFX_SKIP(own.status().toString());
+    }
+    Device& d = *own.value();
+    CHECK_FALSE(d.caps().reusableRecordings);
+    for (const Status& s : {d.beginRecording(), d.endRecording().status(), d.beginReplay({}), d.endReplay(), d.destroyRecording({})}) {
+        INFO(s.toString());
+        CHECK(s.code() == StatusCode::UnsupportedFeature);
+        CHECK(s.message().find("caps().reusableRecordings is false") != std::string::npos);
+    }
+    CHECK(d.takeValidationMessages().empty());
+}
+
 // Steady frames recorded into the host's command buffer: after warm-up, AO of each technique and
 // motion blur make no object and keep resident memory flat, as with the SDK's own command buffers
 // (tests/conformance/test_steady_frames.cpp), with synchronization validation watching.
