@@ -8,8 +8,10 @@
 // - A replay's renderPass and dispatch calls are compared, argument by argument, with the recorded
 //   ones; any difference (a changed setting, another input texture) makes endReplay stale and the
 //   caller records again.
-// - Any create or destroy of an object bumps the device's object epoch: descriptor sets, views and
-//   the pointers a recording keeps to its resources' tracked states are then suspect.
+// - Creating or importing a texture or buffer, destroying any of them or a sampler or pipeline,
+//   and dropping the descriptor-set cache bump the device's object epoch: descriptor sets, views
+//   and the pointers a recording keeps to its resources' tracked states are then suspect.
+//   (Creating a program, pipeline, sampler or timer moves nothing a recording holds.)
 // - Barriers: the recording's command buffer holds the barriers between its own passes, computed
 //   from the states its resources had when it was recorded. A resource the recording writes (or
 //   moves to another layout) must be in exactly that state again for those barriers to be right;

@@ -411,9 +411,10 @@ public:
     // arguments with the recorded ones, and endReplay runs the recording, with the barriers that the
     // resources' states at that point need. Buffers and textures are used by handle, so contents
     // written before (writeBuffer: a changed uniform) are what the replay reads. endReplay reports
-    // StaleHandle, and runs nothing, when the calls differed from the recorded ones, an object was
-    // created or destroyed since the recording, a resource the recording writes is not in the
-    // state it was recorded from (a recording made from fresh textures: the frame after it), or
+    // StaleHandle, and runs nothing, when the calls differed from the recorded ones, a texture or
+    // buffer was created (or a texture, buffer, sampler or pipeline destroyed) since the
+    // recording, a resource it writes is not in the state it was recorded from (a recording
+    // made from fresh textures: the frame after it), or
     // the recording could not be reused (it wrote a resource it had used, or held a timer);
     // beginReplay reports StaleHandle for a destroyed recording. The caller then makes the same
     // calls again inside beginRecording ... endRecording. Resources it only reads may be in any
