@@ -12,6 +12,7 @@
 #include "analytic_scenes.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/half.hpp"
+#include "fault_injection.hpp"
 #include "sfx/motion_blur.hpp"
 #include "test_device.hpp"
 
@@ -145,6 +146,57 @@ TEST_CASE("recordings: replayed motion blur frames equal a fresh effect's as the
         INFO("camera motion " << i);
         CHECK(replayed[i] == direct);
     }
+    for (TextureHandle t : {depth, colorTex, out}) SFX_REQUIRE_OK(dev.destroyTexture(t));
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
+TEST_CASE("recordings: a frame whose new recording failed is recorded again at the next frame", "[recordings][motionblur]") {
+    // A settings change makes the kept recording stale; if the same frame's new recording then
+    // fails (a device error at its last call), the next frame must record afresh rather than
+    // try to replay a recording that was never made.
+    Device& dev = test::device();
+    test::FaultInjectingDevice fd(dev);
+    const samples::AnalyticScene scene = samples::tiltedPlaneScene(kWidth, kHeight);
+    TextureHandle depth = dev.createTexture({kWidth, kHeight, 1, Format::R32F, kTextureSampled, "refail-depth"}).value();
+    writeDepth(depth, scene);
+    const std::vector<uint16_t> color(size_t(kWidth) * kHeight * 4, floatToHalf(0.5f));
+    TextureHandle colorTex = dev.createTexture({kWidth, kHeight, 1, Format::RGBA16F, kTextureSampled, "refail-colour"}).value();
+    SFX_REQUIRE_OK(dev.writeTexture(colorTex, 0, color.data(), color.size() * sizeof(uint16_t)));
+    TextureHandle out =
+        dev.createTexture({kWidth, kHeight, 1, Format::RGBA16F, kTextureSampled | kTextureRenderTarget, "refail-blurred"}).value();
+    const MotionBlurDesc desc{kWidth, kHeight, test::tierProfile(), Format::RGBA16F, DepthKind::Linear};
+    MotionBlurInputs in;
+    in.color = colorTex;
+    in.depth = DepthSource{depth, DepthKind::Linear, scene.camera};
+    in.output = out;
+    in.camera.previousViewProjection = glm::translate(glm::dmat4(1.0), glm::dvec3(0.03, 0.0, 0.0));
+    MotionBlurSettings first, second;
+    second.samples = 5;  // another pipeline: the kept recording's calls no longer match
+
+    // The calls of the frame with the new settings, counted on an effect that runs it cleanly.
+    uint64_t calls = 0;
+    {
+        std::unique_ptr<MotionBlur> mb = MotionBlur::create(fd, desc).value();
+        for (int i = 0; i < 3; ++i) (void)frame([&] { return mb->dispatch(in, first); }, out);
+        fd.resetCounts();
+        SFX_REQUIRE_OK(mb->dispatch(in, second));
+        calls = fd.calls();
+        SFX_REQUIRE_OK(fd.flush());
+    }
+    std::unique_ptr<MotionBlur> mb = MotionBlur::create(fd, desc).value();
+    for (int i = 0; i < 3; ++i) (void)frame([&] { return mb->dispatch(in, first); }, out);
+    fd.loseDevice(calls);  // the frame's last call fails
+    const Status failed = mb->dispatch(in, second);
+    fd.clearFaults();
+    INFO(failed.toString());
+    CHECK(failed.code() == StatusCode::DeviceError);
+    SFX_REQUIRE_OK(fd.flush());
+    std::vector<uint8_t> recovered;
+    for (int i = 0; i < 3; ++i) recovered = frame([&] { return mb->dispatch(in, second); }, out);
+    mb.reset();
+    std::unique_ptr<MotionBlur> fresh = MotionBlur::create(dev, desc).value();
+    CHECK(recovered == frame([&] { return fresh->dispatch(in, second); }, out));
+    fresh.reset();
     for (TextureHandle t : {depth, colorTex, out}) SFX_REQUIRE_OK(dev.destroyTexture(t));
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }

@@ -44,7 +44,8 @@ public:
         if (!device_.caps().reusableRecordings) return record();
         Entry* e = find(key);
         if (e && e->misses >= kMaxMisses) return record();  // never steady: recording would only add work
-        if (e) {
+        // An entry without a recording: the last attempt to record for it failed; record again.
+        if (e && !e->recording.isNull()) {
             SFX_TRY(device_.beginReplay(e->recording));
             const Status recorded = record();
             const Status replayed = device_.endReplay();
