@@ -149,7 +149,7 @@ void VulkanDevice::barriers(VkCommandBuffer cb, std::span<const ImageUse> images
     const bool intoRecording = mode_ == CallMode::Recording && cb == open_.commandBuffer;
     for (const MipBarrierUse& e : mips) {
         if (intoRecording)
-            noteRecordedUse(e.texture->mips[e.mip], e.texture, e.mip, nullptr, e.use.layout, e.use.stages, e.use.access, e.use.write);
+            noteRecordedUse(e.texture, e.mip, nullptr, e.use.layout, e.use.stages, e.use.access, e.use.write);
         const Hazard h = track(e.texture->mips[e.mip], true, e.use.layout, e.use.stages, e.use.access, e.use.write);
         if (!h.needed) continue;
         VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
@@ -168,7 +168,7 @@ void VulkanDevice::barriers(VkCommandBuffer cb, std::span<const ImageUse> images
             batchFor(batches, batchCount, h.src, e.use.stages).images.push_back(legacyBarrier(b));
     }
     for (const BufferUse& u : buffers) {
-        if (intoRecording) noteRecordedUse(u.buffer->state, nullptr, 0, u.buffer, VK_IMAGE_LAYOUT_UNDEFINED, u.stages, u.access, u.write);
+        if (intoRecording) noteRecordedUse(nullptr, 0, u.buffer, VK_IMAGE_LAYOUT_UNDEFINED, u.stages, u.access, u.write);
         const Hazard h = track(u.buffer->state, false, VK_IMAGE_LAYOUT_UNDEFINED, u.stages, u.access, u.write);
         if (!h.needed) continue;
         VkBufferMemoryBarrier2 b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};

@@ -24,7 +24,7 @@ void VulkanDevice::fillCaps(const DeviceOptions& options) {
     c.storageImages = fullFeatures_;
     c.fragmentStoresAndAtomics = fullFeatures_ && fragmentStoresAndAtomics_;
     c.timing = timestampValidBits_ > 0 ? TimingSource::GpuTimestamps : TimingSource::WallClockAfterFinish;
-    c.reusableRecordings = reuseRecordings_;
+    c.reusableRecordings = options.reuseRecordings;
     c.clipDepth = ClipDepthRange::ZeroToOne;
     c.origin = FramebufferOrigin::UpperLeft;
 

@@ -208,7 +208,8 @@ private:
     // A timer inside a recording makes it single-use; inside a replay, a mismatch. True: skip it.
     bool noteTimer();
     // Recording: notes a use of a resource (the barriers of the recording's command buffer).
-    void noteRecordedUse(AccessState& s, VulkanTexture* texture, uint32_t mip, VulkanBuffer* buffer, VkImageLayout layout,
+    // `texture` and `mip`, or `buffer`, name it; called before the use is tracked.
+    void noteRecordedUse(VulkanTexture* texture, uint32_t mip, VulkanBuffer* buffer, VkImageLayout layout,
                          VkPipelineStageFlags stages, VkAccessFlags access, bool write);
     // The command buffer a host write (a staged copy) goes to: the primary one, unless the open
     // recording has used the resource already (the copy must follow that use: it goes into the
@@ -216,7 +217,9 @@ private:
     Result<VkCommandBuffer> writeRecording(const AccessState& s);
     bool usedByOpenRecording(const AccessState& s) const { return mode_ == CallMode::Recording && s.recordingSerial == recordingSerial_; }
     Status notWhileRecording(const char* call) const;
-    void changeObjects() { ++objectEpoch_; }  // a create or destroy: recordings made before are stale
+    // A texture or buffer made or imported, one destroyed (or a sampler or pipeline), the
+    // descriptor-set cache dropped: recordings made before are stale.
+    void changeObjects() { ++objectEpoch_; }
 
     // vulkan_garbage.cpp: deferred destruction.
     Garbage& currentGarbage() { return hostCommandBuffer_ ? hostPending_ : pending_; }
@@ -286,14 +289,13 @@ private:
     std::chrono::steady_clock::time_point recordStart_{};
 
     // Reusable recordings (vulkan_recordings.cpp).
-    bool reuseRecordings_ = true;  // DeviceOptions::reuseRecordings
     CallMode mode_ = CallMode::Direct;
     VulkanRecording open_;             // Recording: being recorded
     RecordingHandle replaying_;        // Replaying: the recording compared with
     size_t replayCursor_ = 0;          // Replaying: how much of its calls the calls so far matched
     bool replayMatches_ = true;
     uint64_t recordingSerial_ = 0;     // of the open recording (marks AccessState::recordingSerial)
-    uint64_t objectEpoch_ = 1;         // bumped by every create and destroy of an object
+    uint64_t objectEpoch_ = 1;         // bumped by changeObjects()
     std::vector<uint64_t> callScratch_;  // one call's arguments, flattened
     std::vector<VkCommandBuffer> freeSecondaries_;
     std::vector<ImageUse> replayImages_;

@@ -125,7 +125,8 @@ struct RecordedResource {
     VkPipelineStageFlags stages = 0;
     VkAccessFlags access = 0;
     // Written or moved to another layout: a replay needs exactly the entry state. A resource only
-    // read needs the entry layout, and gets the barrier its reads need from whatever came before.
+    // read may be in any state: the replay records the barrier (and layout transition) its reads
+    // need after whatever came before.
     bool written = false;
 };
 

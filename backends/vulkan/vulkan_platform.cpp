@@ -264,7 +264,6 @@ Status VulkanDevice::finishInit(const DeviceOptions& options, bool) {
     vk_.vkGetPhysicalDeviceQueueFamilyProperties(physical_, &qCount, families.data());
     timestampValidBits_ = families[queueFamily_].timestampValidBits;
     fullFeatures_ = options.ceiling == CapabilityCeiling::None;
-    reuseRecordings_ = options.reuseRecordings;
     fillCaps(options);
 
     VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};

@@ -30,7 +30,10 @@ namespace {
 
 Status stale(const char* why) { return {StatusCode::StaleHandle, std::string("endReplay: the recording is stale: ") + why}; }
 
-AccessState& stateOf(const RecordedResource& r) { return r.texture ? r.texture->mips[r.mip] : r.buffer->state; }
+AccessState& stateOf(VulkanTexture* texture, uint32_t mip, VulkanBuffer* buffer) {
+    return texture ? texture->mips[mip] : buffer->state;
+}
+AccessState& stateOf(const RecordedResource& r) { return stateOf(r.texture, r.mip, r.buffer); }
 
 uint64_t floatBits(float f) { return std::bit_cast<uint32_t>(f); }
 
@@ -107,10 +110,10 @@ Status VulkanDevice::notWhileRecording(const char* call) const {
                                              " is open; allowed after " + (mode_ == CallMode::Recording ? "endRecording" : "endReplay")};
 }
 
-// With DeviceOptions::reuseRecordings off each call answers as on a device without recordings
-// (the HAL's default: UnsupportedFeature).
+// With DeviceOptions::reuseRecordings off (caps().reusableRecordings false) each call answers as
+// on a device without recordings (the HAL's default: UnsupportedFeature).
 Status VulkanDevice::beginRecording() {
-    if (!reuseRecordings_) return Device::beginRecording();
+    if (!caps_.reusableRecordings) return Device::beginRecording();
     SFX_TRY(notWhileRecording("beginRecording"));
     VkCommandBuffer cb = VK_NULL_HANDLE;
     if (!freeSecondaries_.empty()) {
@@ -141,7 +144,7 @@ Status VulkanDevice::beginRecording() {
 }
 
 Result<RecordingHandle> VulkanDevice::endRecording() {
-    if (!reuseRecordings_) return Device::endRecording();
+    if (!caps_.reusableRecordings) return Device::endRecording();
     if (mode_ != CallMode::Recording) return Status{StatusCode::InvalidArgument, "endRecording: no recording is open; allowed after beginRecording"};
     mode_ = CallMode::Direct;
     VulkanRecording rec = std::move(open_);
@@ -165,7 +168,7 @@ Result<RecordingHandle> VulkanDevice::endRecording() {
 }
 
 Status VulkanDevice::beginReplay(RecordingHandle h) {
-    if (!reuseRecordings_) return Device::beginReplay(h);
+    if (!caps_.reusableRecordings) return Device::beginReplay(h);
     SFX_TRY(notWhileRecording("beginReplay"));
     SFX_TRY(recordings_.check(h, "recording"));
     mode_ = CallMode::Replaying;
@@ -176,7 +179,7 @@ Status VulkanDevice::beginReplay(RecordingHandle h) {
 }
 
 Status VulkanDevice::endReplay() {
-    if (!reuseRecordings_) return Device::endReplay();
+    if (!caps_.reusableRecordings) return Device::endReplay();
     if (mode_ != CallMode::Replaying) return {StatusCode::InvalidArgument, "endReplay: no replay is open; allowed after beginReplay"};
     mode_ = CallMode::Direct;
     const VulkanRecording& rec = recordings_.get(replaying_);
@@ -208,7 +211,7 @@ Status VulkanDevice::endReplay() {
 }
 
 Status VulkanDevice::destroyRecording(RecordingHandle h) {
-    if (!reuseRecordings_) return Device::destroyRecording(h);
+    if (!caps_.reusableRecordings) return Device::destroyRecording(h);
     SFX_TRY(recordings_.check(h, "recording"));
     if (mode_ == CallMode::Replaying && h == replaying_)
         return {StatusCode::InvalidArgument, "destroyRecording: the recording is being replayed; allowed after endReplay"};
@@ -246,8 +249,9 @@ bool VulkanDevice::noteTimer() {
     return true;
 }
 
-void VulkanDevice::noteRecordedUse(AccessState& s, VulkanTexture* texture, uint32_t mip, VulkanBuffer* buffer,
-                                   VkImageLayout layout, VkPipelineStageFlags stages, VkAccessFlags access, bool write) {
+void VulkanDevice::noteRecordedUse(VulkanTexture* texture, uint32_t mip, VulkanBuffer* buffer, VkImageLayout layout,
+                                   VkPipelineStageFlags stages, VkAccessFlags access, bool write) {
+    AccessState& s = stateOf(texture, mip, buffer);
     if (s.recordingSerial != recordingSerial_) {
         s.recordingSerial = recordingSerial_;
         s.recordingEntry = uint32_t(open_.resources.size());
