@@ -13,6 +13,7 @@
 #include "sfx/ao.hpp"
 #include "sfx/half.hpp"
 #include "fault_injection.hpp"
+#include "hal_fixture.hpp"
 #include "sfx/motion_blur.hpp"
 #include "test_device.hpp"
 
@@ -21,14 +22,6 @@ using namespace sfx;
 namespace {
 
 constexpr uint32_t kWidth = 64, kHeight = 36;
-
-std::vector<uint8_t> readBytes(TextureHandle t) {
-    Device& dev = test::device();
-    const TextureDesc d = dev.textureDesc(t).value();
-    std::vector<uint8_t> bytes(mipLevelBytes(d, 0));
-    SFX_REQUIRE_OK(dev.readTexture(t, 0, bytes.data(), bytes.size()));
-    return bytes;
-}
 
 void writeDepth(TextureHandle t, const samples::AnalyticScene& scene) {
     const std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
@@ -41,7 +34,7 @@ template <class Dispatch>
 std::vector<uint8_t> frame(Dispatch&& dispatch, TextureHandle output) {
     SFX_REQUIRE_OK(dispatch());
     SFX_REQUIRE_OK(test::device().flush());
-    return readBytes(output);
+    return test::readLevel<uint8_t>(output);
 }
 
 // Replays made no recording: the count of recordings ever made is the same.
