@@ -145,10 +145,10 @@ uint64_t fingerprint(const reference::AoInput& in) {
 }
 
 // The same technique, converged: many samples, no blur, no MIP, no radius clamp.
-AoConfig convergedConfig(const AoSettings& settings, uint32_t samples) {
+AoConfig convergedConfig(const AoSettings& settings, uint32_t samples, uint32_t rows) {
     AoSettings s = settings;
     s.blur = false;
-    AoConfig c = resolveAoConfig(s, tiers::profile(Tier::High), 1).value();
+    AoConfig c = resolveAoConfig(s, tiers::profile(Tier::High), 1, rows).value();
     if (c.technique != AoTechnique::Crease) c.samples = samples;  // Crease's 24-tap pattern is fixed
     c.depthMipLevels = 1;
     c.maxRadiusPx = 0;
@@ -398,7 +398,7 @@ int main(int argc, char** argv) {
                             }
                             const auto key = std::make_pair(print, t);
                             if (!converged.count(key))
-                                converged[key] = reference::ambientVisibility(refInput.value(), convergedConfig(settings, o.referenceSamples));
+                                converged[key] = reference::ambientVisibility(refInput.value(), convergedConfig(settings, o.referenceSamples, o.height));
                             const reference::Grid& ref = converged[key];
                             double sq = 0;
                             for (size_t i = 0; i < ref.values.size(); ++i) {

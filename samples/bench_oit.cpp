@@ -176,7 +176,7 @@ Result<Measured> measure(Device& dev, samples::CopyPass& copy, const Frame& f, c
         AoSettings s;
         s.technique = AoTechnique::Scalable;
         s.radius = 0.5f;
-        Result<AoConfig> c = resolveAoConfig(s, d.profile, 1);
+        Result<AoConfig> c = resolveAoConfig(s, d.profile, 1, d.height);
         if (!c) return c.status();
         d.ao.enabled = true;
         d.ao.config = c.value();

@@ -1,12 +1,13 @@
 #version 450
 // Crease shading (Fox & Compton 2007): the 24 taps of the 11x11 stippled diamond, or on the
-// current tier one checkerboard half of it per pixel (kAoSamples 12); a tap occludes by how far
-// the centre's normal faces it beyond the minimum crease, attenuated by distance.
+// current tier one checkerboard half of it per pixel (kAoSamples 12), its offsets times the
+// stride that keeps its share of the image at every size; a tap occludes by how far the
+// centre's normal faces it beyond the minimum crease, attenuated by distance.
 #define SFX_AO_PASS 1
 #include "sfx_shared_ao.h"
 
 float creaseTap(ivec2 p, ivec2 offset, vec3 C, vec3 n, ivec2 size) {
-    ivec2 q = clamp(p + offset, ivec2(0), size - 1);
+    ivec2 q = clamp(p + offset * params.creaseStride, ivec2(0), size - 1);
     vec3 v = aoPosition(q, aoDepth(q)) - C;
     float term = aoCreaseTerm(dot(v, v), dot(v, n), params.creaseRange, params.creaseMinimum, params.creaseBias, params.epsilon);
 #ifdef SFX_AO_MULTILAYER

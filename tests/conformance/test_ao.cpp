@@ -142,6 +142,44 @@ TEST_CASE("ao: each technique matches its CPU reference, at full and half resolu
                        << worstBias << " (bound " << biasTol << ")");
 }
 
+TEST_CASE("ao: at 360 rows crease's strided diamond and Scalable's scaled clamp match the reference", "[ao]") {
+    if (drawsNothing()) SFX_SKIP("the null backend draws nothing: GPU results are not compared on " << test::label());
+    // The sizes of the test above leave crease's stride at 1; at 360 rows it is 3 half-size and 6
+    // full-size pixels, and the current tier's clamp 40 and 80 pixels (docs/ao.md). The high tier
+    // has no clamp: its Scalable is left to the test above (at this radius its MIP taps put a
+    // rare pixel 0.05 off, a float-vs-double tap rounding that the clamp does not touch).
+    const bool clamped = test::tierProfile().aoScalableMaxRadiusPx > 0.0f;
+    for (AoResolution resolution : {AoResolution::Full, AoResolution::Half})
+        for (AoTechnique t : {AoTechnique::Scalable, AoTechnique::Crease}) {
+            if (t == AoTechnique::Scalable && !clamped) continue;
+            const samples::AnalyticScene scene = samples::sphereOnPlaneScene(128, 360, 1.0);
+            AoSettings s = settingsFor(t);
+            s.resolution = resolution;
+            s.radius = 2.0f;  // projects past the clamp on the current tier
+            INFO(test::label() << " " << toString(t) << " " << toString(resolution));
+            const GpuAo gpu = runAo(scene, s);
+            const bool half = resolution == AoResolution::Half;
+            if (t == AoTechnique::Crease) CHECK(gpu.config.creaseStride == (half ? 3u : 6u));
+            if (t == AoTechnique::Scalable) CHECK(gpu.config.maxRadiusPx == Approx(half ? 40.0 : 80.0));
+            const Grid ref = reference::ambientVisibility(scene.aoInput(false), gpu.config);
+            double sq = 0, maxErr = 0, occludedSigned = 0;
+            size_t off = 0, occluded = 0;
+            for (size_t i = 0; i < ref.values.size(); ++i) {
+                const double e = std::abs(gpu.visibility.values[i] - ref.values[i]);
+                REQUIRE(std::isfinite(gpu.visibility.values[i]));
+                sq += e * e, maxErr = std::max(maxErr, e), off += e > tolerance().pixel;
+                if (ref.values[i] < 1.0 - 1e-6) occludedSigned += gpu.visibility.values[i] - ref.values[i], ++occluded;
+            }
+            REQUIRE(occluded > ref.values.size() / 100);  // the contact shadow is there to compare
+            INFO("rmse " << std::sqrt(sq / double(ref.values.size())) << " worst pixel " << maxErr << " pixels off " << off
+                         << " mean signed error occluded " << occludedSigned / double(occluded));
+            CHECK(std::sqrt(sq / double(ref.values.size())) < tolerance().rmse);
+            CHECK(double(off) < 0.01 * double(ref.values.size()));
+            CHECK(maxErr <= tolerance().worst);
+            CHECK(std::abs(occludedSigned / double(occluded)) <= kAoOccludedBiasBound);
+        }
+}
+
 TEST_CASE("ao: at the smallest radius and epsilon the GPU matches the reference, no NaN", "[ao][bad-input]") {
     if (drawsNothing()) SFX_SKIP("the null backend draws nothing: GPU results are not compared on " << test::label());
     // Nearly every tap lands on the centre pixel: the guard !(|v|^2 > epsilon r^2) must drop it

@@ -29,10 +29,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     s.crease.fadeStart = fuzz::hostileFloat(in);
     s.crease.fadeEnd = fuzz::hostileFloat(in);
     const uint32_t mipLevelsAllowed = in.ConsumeIntegralInRange<uint32_t>(1, 16);
+    const uint32_t outputRows = in.ConsumeIntegralInRange<uint32_t>(1, 16384);  // a context's height
     s.sumExponent = in.ConsumeBool() ? -1.0f : fuzz::hostileFloat(in);
 
     const Status valid = validateAoSettings(s, profile);
-    Result<AoConfig> config = resolveAoConfig(s, profile, mipLevelsAllowed);
+    Result<AoConfig> config = resolveAoConfig(s, profile, mipLevelsAllowed, outputRows);
     if (bool(valid) != bool(config)) std::abort();  // resolve validates exactly as validate does
     if (!config) {
         if (!fuzz::namesField(config.status(), {"AoSettings.", "AoDesc.profile"})) std::abort();

@@ -24,8 +24,9 @@ namespace {
 const AoTechnique kTechniques[] = {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease};
 const Tier kTiers[] = {Tier::Current, Tier::High};
 
+// rows: the output's height (the scenes here are mostly 96x64).
 AoConfig configFor(AoTechnique t, Tier tier, double scale = 1.0, bool blur = true, double radius = 0.5,
-                   AoResolution resolution = AoResolution::Tier) {
+                   AoResolution resolution = AoResolution::Tier, uint32_t rows = 64) {
     AoSettings s;
     s.technique = t;
     s.resolution = resolution;
@@ -41,7 +42,7 @@ AoConfig configFor(AoTechnique t, Tier tier, double scale = 1.0, bool blur = tru
     s.crease.range = float(1.0 * scale);
     s.crease.fadeStart = float(50 * scale);
     s.crease.fadeEnd = float(100 * scale);
-    Result<AoConfig> c = resolveAoConfig(s, tiers::profile(tier), 5);
+    Result<AoConfig> c = resolveAoConfig(s, tiers::profile(tier), 5, rows);
     REQUIRE(c.isOk());
     return c.value();
 }
@@ -156,7 +157,7 @@ TEST_CASE("ao settings resolve to the tier table", "[ao]") {
             const AoLook& look = tiers::profile(tier).aoLook[uint32_t(t)];
             AoSettings d;
             d.technique = t;
-            const AoConfig c = resolveAoConfig(d, tiers::profile(tier), 5).value();
+            const AoConfig c = resolveAoConfig(d, tiers::profile(tier), 5, 64).value();
             CHECK(c.intensity == Approx(look.intensity));
             CHECK(c.contrast == Approx(look.contrast));
             if (t != AoTechnique::Crease) CHECK(c.bias == Approx(look.bias));
@@ -164,7 +165,7 @@ TEST_CASE("ao settings resolve to the tier table", "[ao]") {
             CHECK(c.crease.range == Approx(look.creaseRange));
             CHECK(c.crease.bias == Approx(look.creaseBias));
             d.intensity = 3.0f, d.contrast = 2.0f, d.crease.range = 0.7f;
-            const AoConfig set = resolveAoConfig(d, tiers::profile(tier), 5).value();
+            const AoConfig set = resolveAoConfig(d, tiers::profile(tier), 5, 64).value();
             CHECK(set.intensity == Approx(3.0));
             CHECK(set.contrast == Approx(2.0));
             CHECK(set.crease.range == Approx(0.7));
@@ -186,19 +187,70 @@ TEST_CASE("ao settings resolve to the tier table", "[ao]") {
     CHECK_FALSE(sHighFull.halfResolution);
     CHECK(sHighFull.depthMipLevels == 5);
     CHECK(sHighFull.blurRadius == 6);
-    const AoConfig sCur = configFor(AoTechnique::Scalable, Tier::Current);
+    const AoConfig sCur = configFor(AoTechnique::Scalable, Tier::Current, 1.0, true, 0.5, AoResolution::Tier, 180);
     CHECK(sCur.samples == 4);
     CHECK(sCur.mirrored);
     CHECK(sCur.halfResolution);
-    CHECK(sCur.maxRadiusPx == Approx(20));  // in texels of the pass's depth: the same at half size
+    CHECK(sCur.maxRadiusPx == Approx(20));  // 160 px at 720 rows: 40 output px at 180 rows, 20 half-size texels
     CHECK(sCur.depthMipLevels == 1);
     CHECK(sCur.blurRadius == 1);
-    const AoConfig sCurFull = configFor(AoTechnique::Scalable, Tier::Current, 1.0, true, 0.5, AoResolution::Full);
-    CHECK(sCurFull.maxRadiusPx == Approx(20));
+    const AoConfig sCurFull = configFor(AoTechnique::Scalable, Tier::Current, 1.0, true, 0.5, AoResolution::Full, 180);
+    CHECK(sCurFull.maxRadiusPx == Approx(40));
     CHECK(sCurFull.blurRadius == 2);
     CHECK(configFor(AoTechnique::Crease, Tier::High, 1.0, false).blurRadius == 0);
     CHECK(configFor(AoTechnique::Crease, Tier::High, 1.0, true).samples == 24);
     CHECK(configFor(AoTechnique::Crease, Tier::Current, 1.0, true).samples == 12);
+}
+
+TEST_CASE("ao config: Scalable's clamp and crease's tap spacing follow the output's rows", "[ao]") {
+    // Both are output pixels at SFX_AO_REFERENCE_ROWS (720), scaled with the rows and halved at
+    // half size, so the look fitted at 320x180 covers the same share of the image at every size.
+    const auto clamp = [](uint32_t rows, AoResolution r) {
+        return configFor(AoTechnique::Scalable, Tier::Current, 1.0, true, 0.5, r, rows).maxRadiusPx;
+    };
+    CHECK(clamp(180, AoResolution::Half) == Approx(20));
+    CHECK(clamp(720, AoResolution::Half) == Approx(80));
+    CHECK(clamp(1080, AoResolution::Half) == Approx(120));
+    CHECK(clamp(720, AoResolution::Full) == Approx(160));
+    CHECK(clamp(1, AoResolution::Half) == Approx(1));  // at least one pass pixel
+    CHECK(configFor(AoTechnique::Scalable, Tier::High, 1.0, true, 0.5, AoResolution::Tier, 720).maxRadiusPx == 0);  // no clamp
+    for (Tier tier : kTiers) {
+        INFO(toString(tier));
+        const auto stride = [tier](uint32_t rows, AoResolution r) { return configFor(AoTechnique::Crease, tier, 1.0, true, 0.5, r, rows).creaseStride; };
+        CHECK(stride(1, AoResolution::Half) == 1);  // at least one pixel
+        CHECK(stride(64, AoResolution::Half) == 1);
+        CHECK(stride(180, AoResolution::Half) == 2);  // 12 px at 720 rows: 1.5 half-size pixels, rounded
+        CHECK(stride(360, AoResolution::Half) == 3);
+        CHECK(stride(720, AoResolution::Half) == 6);
+        CHECK(stride(1080, AoResolution::Half) == 9);
+        CHECK(stride(180, AoResolution::Full) == 3);
+        CHECK(stride(720, AoResolution::Full) == 12);
+    }
+    // The reference's taps step by the stride.
+    const auto rec = samples::facingPlaneScene(64, 48).reconstruction;
+    const AoConfig c = configFor(AoTechnique::Crease, Tier::High, 1.0, true, 0.5, AoResolution::Half, 480);
+    REQUIRE(c.creaseStride == 4);
+    const std::vector<reference::AoTap> taps = reference::aoTaps(c, rec, 64, 48, 30, 20, 5.0);
+    REQUIRE(taps.size() == 24);
+    for (int j = 0; j < shared::SFX_AO_CREASE_HALF_TAPS; ++j) {
+        CHECK(taps[2 * j].x == 30 + 4 * shared::SFX_AO_CREASE_HALF_0[j].x);
+        CHECK(taps[2 * j].y == 20 + 4 * shared::SFX_AO_CREASE_HALF_0[j].y);
+        CHECK(taps[2 * j + 1].x == 30 + 4 * shared::SFX_AO_CREASE_HALF_1[j].x);
+    }
+}
+
+TEST_CASE("ao config: no output rows or a hand-filled crease spacing out of range is a named error", "[ao][bad-input]") {
+    const Status rows = resolveAoConfig(AoSettings{}, tiers::profile(Tier::Current), 1, 0).status();
+    CHECK(rows.code() == StatusCode::InvalidArgument);
+    CHECK(rows.message().find("outputRows") != std::string::npos);
+    for (float spacing : {0.0f, -1.0f, 65.0f, std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+        INFO("aoCreaseSpacingPx " << spacing);
+        TierProfile p = tiers::profile(Tier::High);
+        p.aoCreaseSpacingPx = spacing;
+        const Status s = validateAoSettings(AoSettings{}, p);
+        CHECK(s.code() == StatusCode::InvalidArgument);
+        CHECK(s.message().find("AoDesc.profile") != std::string::npos);
+    }
 }
 
 TEST_CASE("ao shared patterns: the crease diamond is 24 distinct stippled taps", "[ao]") {
@@ -379,8 +431,9 @@ TEST_CASE("ao reference: doubling resolution changes AO only within tolerance", 
         for (Tier tier : kTiers) {
             INFO(name(t, tier));
             for (auto make : {&samples::cornerScene, &samples::sphereOnPlaneScene}) {
-                const Grid lo = reference::ambientVisibility(make(96, 64, 1.0).aoInput(false), configFor(t, tier));
-                const Grid hi = samples::downsample2x(reference::ambientVisibility(make(192, 128, 1.0).aoInput(false), configFor(t, tier)));
+                const Grid lo = reference::ambientVisibility(make(96, 64, 1.0).aoInput(false), configFor(t, tier, 1.0, true, 0.5, AoResolution::Tier, 64));
+                const Grid hi = samples::downsample2x(
+                    reference::ambientVisibility(make(192, 128, 1.0).aoInput(false), configFor(t, tier, 1.0, true, 0.5, AoResolution::Tier, 128)));
                 double meanAbs = 0, meanLo = 0, meanHi = 0;
                 for (size_t i = 0; i < lo.values.size(); ++i) {
                     meanAbs += std::abs(lo.values[i] - hi.values[i]);
@@ -389,13 +442,38 @@ TEST_CASE("ao reference: doubling resolution changes AO only within tolerance", 
                 }
                 meanAbs /= double(lo.values.size());
                 const double meanShift = std::abs(meanLo - meanHi) / double(lo.values.size());
-                // Crease's kernel is fixed in pixels: at twice the resolution it spans half the
-                // world distance, so it is allowed to change more (docs/ao.md).
+                // Crease's tap spacing is a whole number of pass pixels, at least 1: at 64 and
+                // 128 rows it is 1 pixel at both sizes and spans half the world distance at the
+                // larger, so it is allowed to change more here (below: where the spacing doubles).
                 const double tol = t == AoTechnique::Crease ? 0.05 : 0.03;
                 CHECK(meanAbs < tol);
                 CHECK(meanShift < tol / 2);
             }
         }
+    // From 360 to 720 rows crease's spacing doubles with them (3 then 6 half-size pixels), so its
+    // diamond spans the same world distance and the band it darkens along the corner's crease
+    // keeps its width: compared where either is occluded, with the tier's look (the papers' is
+    // too faint to tell): 0.009 and 0.011 (high, current); a spacing left at 3 pixels at 720
+    // rows differs by more than 0.1.
+    for (Tier tier : kTiers) {
+        INFO(name(AoTechnique::Crease, tier));
+        AoSettings s;
+        s.technique = AoTechnique::Crease;
+        const AoConfig lo = resolveAoConfig(s, tiers::profile(tier), 5, 360).value();
+        const AoConfig hi = resolveAoConfig(s, tiers::profile(tier), 5, 720).value();
+        REQUIRE(lo.creaseStride == 3);
+        REQUIRE(hi.creaseStride == 6);
+        const Grid a = reference::ambientVisibility(samples::cornerScene(640, 360, 1.0).aoInput(false), lo);
+        const Grid b = samples::downsample2x(reference::ambientVisibility(samples::cornerScene(1280, 720, 1.0).aoInput(false), hi));
+        double meanAbs = 0;
+        size_t n = 0;
+        for (size_t i = 0; i < a.values.size(); ++i)
+            if (std::min(a.values[i], b.values[i]) < 0.95) meanAbs += std::abs(a.values[i] - b.values[i]), ++n;
+        REQUIRE(n > a.values.size() / 50);
+        meanAbs /= double(n);
+        INFO("mean |difference| " << meanAbs << " over " << n << " occluded pixels");
+        CHECK(meanAbs < 0.03);
+    }
 }
 
 TEST_CASE("ao reference: sky is unoccluded; tiny and huge radii and far depths stay finite", "[ao]") {
@@ -407,7 +485,7 @@ TEST_CASE("ao reference: sky is unoccluded; tiny and huge radii and far depths s
                 AoSettings s;
                 s.technique = t;
                 s.radius = radius;
-                const AoConfig c = resolveAoConfig(s, tiers::profile(tier), 5).value();
+                const AoConfig c = resolveAoConfig(s, tiers::profile(tier), 5, 64).value();
                 const Grid v = reference::ambientVisibility(cols.aoInput(false), c);
                 requireValid(v);
                 for (uint32_t y = 0; y < v.height; ++y)
@@ -553,5 +631,5 @@ TEST_CASE("ao: an empty tier profile is a named error, not black output", "[ao][
     Status s = validateAoSettings(AoSettings{}, empty);
     CHECK(s.code() == StatusCode::InvalidArgument);
     CHECK(s.message().find("AoDesc.profile") != std::string::npos);
-    CHECK(resolveAoConfig(AoSettings{}, empty, 4).status().code() == StatusCode::InvalidArgument);
+    CHECK(resolveAoConfig(AoSettings{}, empty, 4, 64).status().code() == StatusCode::InvalidArgument);
 }

@@ -22,7 +22,7 @@ namespace {
 // Every parameter of a profile, for comparing whole profiles.
 auto fields(const TierProfile& p) {
     return std::make_tuple(p.tier, p.aoScalableTaps, p.aoScalableMirrored, p.aoScalableMaxRadiusPx, p.aoUsesDepthMip,
-                           p.aoDepthMipLevels, p.aoAlchemySamples, p.aoBlurRadiusPx, p.aoCreaseTaps, p.aoPackedDepthTarget, p.mbTaps,
+                           p.aoDepthMipLevels, p.aoAlchemySamples, p.aoBlurRadiusPx, p.aoCreaseTaps, p.aoCreaseSpacingPx, p.aoPackedDepthTarget, p.mbTaps,
                            p.mbMaxRadiusPx, p.mbJitterSize, p.abufferOit);
 }
 
@@ -69,13 +69,17 @@ TEST_CASE("tier table: a row per tier, in order, each with its default preset fi
 
 TEST_CASE("tier table: the default presets hold the parameters the tiers always had", "[tiers]") {
     // Written out here, apart from the table, so that moving the values into it changed none.
+    // Scalable's clamp and crease's spacing are output pixels at 720 rows since 2026-12-04: the
+    // clamp the 20 half-size texels it was at 320x180, where the looks were fitted; the spacing
+    // 2 half-size pixels there (it was 1), which scored better held out (docs/trade.md).
     TierProfile expected[kTierCount];
-    expected[0] = {.tier = Tier::Current, .aoScalableTaps = 4, .aoScalableMirrored = true, .aoScalableMaxRadiusPx = 20.0f,
+    expected[0] = {.tier = Tier::Current, .aoScalableTaps = 4, .aoScalableMirrored = true, .aoScalableMaxRadiusPx = 160.0f,
                    .aoUsesDepthMip = false, .aoDepthMipLevels = 1, .aoAlchemySamples = 6, .aoBlurRadiusPx = 2, .aoCreaseTaps = 12,
+                   .aoCreaseSpacingPx = 12.0f,
                    .aoPackedDepthTarget = true, .mbTaps = 7, .mbMaxRadiusPx = 10.0f, .mbJitterSize = 2, .abufferOit = false};
     expected[1] = {.tier = Tier::High, .aoScalableTaps = 9, .aoScalableMirrored = false, .aoScalableMaxRadiusPx = 0.0f,
                    .aoUsesDepthMip = true, .aoDepthMipLevels = uint32_t(shared::SFX_DEPTH_MIP_MAX_LEVELS),
-                   .aoAlchemySamples = 12, .aoBlurRadiusPx = 6, .aoCreaseTaps = 24, .aoPackedDepthTarget = false, .mbTaps = 9,
+                   .aoAlchemySamples = 12, .aoBlurRadiusPx = 6, .aoCreaseTaps = 24, .aoCreaseSpacingPx = 12.0f, .aoPackedDepthTarget = false, .mbTaps = 9,
                    .mbMaxRadiusPx = 18.0f, .mbJitterSize = 4, .abufferOit = true};
     for (uint32_t i = 0; i < kTierCount; ++i) {
         INFO(toString(Tier(i)));

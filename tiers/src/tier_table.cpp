@@ -62,7 +62,9 @@ TierProfile currentDefault() {
     p.tier = Tier::Current;
     p.aoScalableTaps = 4;  // mirrored: 2 offsets, each also negated
     p.aoScalableMirrored = true;
-    p.aoScalableMaxRadiusPx = 20.0f;  // texels of the pass's depth (half size: 40 output pixels)
+    // 160 output pixels at 720 rows, scaled with the rows: the 20 half-size texels at 320x180
+    // (a fifth of the height) that the look was fitted with, at every size.
+    p.aoScalableMaxRadiusPx = 160.0f;
     p.aoUsesDepthMip = false;
     p.aoDepthMipLevels = 1;
     p.aoAlchemySamples = 6;
@@ -70,6 +72,10 @@ TierProfile currentDefault() {
     // Crease's diamond halved by checkerboard (the blur completes it): its 24 fetches made the
     // current tier's crease the one default over issue 10's 12 copy passes (docs/trade.md).
     p.aoCreaseTaps = 12;
+    // The diamond's tap spacing: 12 output pixels at 720 rows, so 2 half-size pixels at 320x180
+    // and 6 at 1280x720. The look was fitted at 1 pixel (320x180); held out, 12 beat 8 (1 pixel
+    // at 320x180) and 16 at both 320x180 and 1280x720 (fit_ao --diagnose, docs/trade.md).
+    p.aoCreaseSpacingPx = 12.0f;
     // The look fitted against ray-traced truth (samples/fit_ao, docs/trade.md); before the
     // calibration every tier had the papers' 1, 1, 1e-4 / 0.02, range 1, bias 0.25.
     p.aoLook[0] = {.intensity = 0.472871f, .contrast = 1.38237f, .bias = 1.59371e-7f};                             // alchemy
@@ -101,6 +107,7 @@ TierProfile highDefault() {
     p.aoAlchemySamples = 12;  // the paper's 12 samples per pixel
     p.aoBlurRadiusPx = 6;     // 13-tap, as Alchemy's filter
     p.aoCreaseTaps = 24;      // the article's whole diamond
+    p.aoCreaseSpacingPx = 12.0f;  // as the current tier
     p.aoLook[0] = {.intensity = 0.392128f, .contrast = 1.77828f, .bias = 1e-7f};                               // alchemy
     // Scalable with its sum exponent fitted (samples/fit_ao --start tier, at half resolution).
     p.aoLook[1] = {.intensity = 0.187609f, .contrast = 7.36525f, .bias = 0.0468752f, .sumExponent = 0.707107f};  // scalable

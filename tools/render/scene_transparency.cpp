@@ -44,7 +44,7 @@ Result<std::unique_ptr<SceneTransparency>> SceneTransparency::create(Device& dev
         AoSettings s;
         s.technique = *layerAo.technique;
         s.radius = layerAo.radius;
-        Result<AoConfig> c = resolveAoConfig(s, tier.profile, 1);
+        Result<AoConfig> c = resolveAoConfig(s, tier.profile, 1, height);
         if (!c) return c.status();
         desc.compressedNodes = layerAo.nodes;
         desc.ao.enabled = true;

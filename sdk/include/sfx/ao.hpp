@@ -108,6 +108,7 @@ struct AoConfig {
     bool mirrored = false;        // Scalable: samples / 2 offsets, each also negated
     double spiralTurns = 7;       // Scalable spiral turns
     double maxRadiusPx = 0;       // Scalable: screen radius clamp, 0 = none
+    uint32_t creaseStride = 1;    // Crease: pixels between neighbouring taps of the diamond
     uint32_t depthMipLevels = 1;  // Scalable: depth MIP levels read, from the pass's size (1 = that size only)
     uint32_t depthLayers = 1;     // multilayer AO: layers each tap tests (AoSettings.depthLayers)
     uint32_t blurRadius = 0;      // 0 = no blur
@@ -117,8 +118,10 @@ struct AoConfig {
 
 // InvalidArgument naming the first field out of range.
 Status validateAoSettings(const AoSettings& settings, const TierProfile& profile);
-// Settings + tier -> config. mipLevelsAllowed: what the target size allows (maxMipLevels).
-Result<AoConfig> resolveAoConfig(const AoSettings& settings, const TierProfile& profile, uint32_t mipLevelsAllowed);
+// Settings + tier -> config. mipLevelsAllowed: what the target size allows (maxMipLevels);
+// outputRows: the output's height, which scales the tier's pixel extents defined at
+// SFX_AO_REFERENCE_ROWS (Scalable's radius clamp, crease's tap spacing).
+Result<AoConfig> resolveAoConfig(const AoSettings& settings, const TierProfile& profile, uint32_t mipLevelsAllowed, uint32_t outputRows);
 
 struct AoDesc {
     uint32_t width = 0;  // [1, caps.limits.maxTextureSize]

@@ -48,7 +48,10 @@ struct TierProfile {
     // Ambient obscurance
     uint32_t aoScalableTaps = 0;       // 4 (mirrored) or 9 (spiral)
     bool aoScalableMirrored = false;   // current tier: each offset also used negated
-    float aoScalableMaxRadiusPx = 0;   // screen-space clamp of the AO radius (0 = none)
+    // Scalable's screen-space clamp of the AO radius (0 = none), in output pixels at
+    // SFX_AO_REFERENCE_ROWS (720) rows and scaled with the output's rows, like crease's tap
+    // spacing below: a clamp fixed in pixels made the look depend on the resolution.
+    float aoScalableMaxRadiusPx = 0;
     bool aoUsesDepthMip = false;       // Scalable AO reads the depth MIP pyramid (SFX_AO_DEPTH_MIP)
     uint32_t aoDepthMipLevels = 0;     // levels of that pyramid (level 0 included)
     uint32_t aoAlchemySamples = 0;     // default Alchemy sample count
@@ -56,6 +59,10 @@ struct TierProfile {
     // Crease taps per pixel: 24 (the article's 11x11 stippled diamond) or 12 (its checkerboard
     // half, alternating between neighbours: the blur sees all 24 at half the fetches).
     uint32_t aoCreaseTaps = 24;
+    // Output pixels between neighbouring taps of crease's diamond at SFX_AO_REFERENCE_ROWS rows,
+    // scaled with the output's rows: the diamond covers the same share of the image at every
+    // size (AoConfig::creaseStride is it in the pass's pixels, at least 1).
+    float aoCreaseSpacingPx = 12;
     AoLook aoLook[3];                  // per technique, indexed by AoTechnique (alchemy, scalable, crease)
     // With blur, where the blur finds each pixel's depth. true (current tier): the raw AO goes to
     // an RGBA8 target with a 16-bit depth key packed in b, a (one fetch per tap, 8-bit targets

@@ -55,7 +55,7 @@ AmbientObscurance::AmbientObscurance(Device& device, const AoDesc& desc)
 AmbientObscurance::~AmbientObscurance() { release(); }
 
 Status AmbientObscurance::allocate() {
-    Result<AoConfig> config = resolveAoConfig(desc_.settings, desc_.profile, maxMipLevels(desc_.width, desc_.height));
+    Result<AoConfig> config = resolveAoConfig(desc_.settings, desc_.profile, maxMipLevels(desc_.width, desc_.height), desc_.height);
     if (!config) return config.status();
     config_ = config.value();
     const Tier tier = desc_.profile.tier;
@@ -198,7 +198,7 @@ void AmbientObscurance::release() {
 Status AmbientObscurance::resize(uint32_t width, uint32_t height) {
     SFX_TRY(detail::checkTargetSize(device_, width, height, ""));
     if (width == desc_.width && height == desc_.height && depth_) return Status::ok();
-    Result<AoConfig> config = resolveAoConfig(desc_.settings, desc_.profile, maxMipLevels(width, height));
+    Result<AoConfig> config = resolveAoConfig(desc_.settings, desc_.profile, maxMipLevels(width, height), height);
     if (!config) return config.status();
     // The MIP level count follows the size only below 2^levels pixels, and with it whether MIP
     // level 1 is the half-size depth; then everything is rebuilt.
@@ -210,9 +210,11 @@ Status AmbientObscurance::resize(uint32_t width, uint32_t height) {
         return allocate();
     }
     // Otherwise only textures follow the size: programs and pipelines (their constants do not
-    // depend on it) stay, and the size-dependent uniforms are written at every dispatch.
+    // depend on it) stay, and the size-dependent uniforms are written at every dispatch, from the
+    // config of the new size (the clamp and crease's stride follow the rows).
     desc_.width = width;
     desc_.height = height;
+    config_ = config.value();
     releaseTargets();
     Status s = depth_->resize(width, height);
     if (s) s = allocateTargets();
@@ -222,7 +224,7 @@ Status AmbientObscurance::resize(uint32_t width, uint32_t height) {
 
 Status AmbientObscurance::setSettings(const AoSettings& settings) {
     SFX_TRY(validateAoSettings(settings, desc_.profile));
-    Result<AoConfig> config = resolveAoConfig(settings, desc_.profile, maxMipLevels(desc_.width, desc_.height));
+    Result<AoConfig> config = resolveAoConfig(settings, desc_.profile, maxMipLevels(desc_.width, desc_.height), desc_.height);
     if (!config) return config.status();
     desc_.settings = settings;
     // Looks, counts and radii are uniforms and specialisation constants: a dispatch compiles the
@@ -295,6 +297,7 @@ Status AmbientObscurance::recordPasses(const AoInputs& in, const TextureDesc& ou
     // Screen radii are in the pass's pixels: half as many per unit at half size.
     p.pixelsPerUnit = float(rec.pixelsPerUnitAtUnitDepth * (half ? 0.5 : 1.0));
     p.maxRadiusPx = float(config_.maxRadiusPx);
+    p.creaseStride = int32_t(config_.creaseStride);
     p.maxDepth = float(rec.maxDepth);
     p.fullWidth = int32_t(desc_.width);
     p.fullHeight = int32_t(desc_.height);

@@ -21,6 +21,9 @@ constexpr float kTierValue = -1.0f;
 float orTier(float value, float tierValue) { return value == kTierValue ? tierValue : value; }
 // Crease's other tap count: the checkerboard half of its diamond (shared::aoCreaseTapIndex).
 constexpr uint32_t kCreaseHalfTaps = uint32_t(shared::SFX_AO_CREASE_TAPS) / 2;
+// A hand-filled profile's crease spacing beyond this (output pixels at the reference rows) would
+// spread the 11x11 diamond over more than the image's height.
+constexpr float kMaxCreaseSpacingPx = 64.0f;
 
 Status checkRange(const char* field, double v, double lo, bool loOpen, double hi, bool hiOpen, const char* allowed) {
     const bool aboveLo = loOpen ? v > lo : v >= lo;
@@ -87,7 +90,7 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
         (profile.aoScalableMirrored && profile.aoScalableTaps % 2 != 0) ||
         profile.aoBlurRadiusPx > uint32_t(shared::SFX_AO_MAX_BLUR_RADIUS) || !(profile.aoScalableMaxRadiusPx >= 0.0f) ||
         (profile.aoCreaseTaps != kCreaseHalfTaps && profile.aoCreaseTaps != uint32_t(shared::SFX_AO_CREASE_TAPS)) ||
-        std::isinf(profile.aoScalableMaxRadiusPx))
+        std::isinf(profile.aoScalableMaxRadiusPx) || !(profile.aoCreaseSpacingPx > 0.0f && profile.aoCreaseSpacingPx <= kMaxCreaseSpacingPx))
         return invalidArgument("AoDesc.profile", "a tier profile with counts outside the shaders' limits",
                                "tiers::profile(tier) or tiers::choose(caps)->profile");
     if (uint32_t(s.technique) > 2) return invalidArgument("AoSettings.technique", std::to_string(uint32_t(s.technique)), "Alchemy, Scalable or Crease");
@@ -136,8 +139,9 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
     return Status::ok();
 }
 
-Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile, uint32_t mipLevelsAllowed) {
+Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile, uint32_t mipLevelsAllowed, uint32_t outputRows) {
     SFX_TRY(validateAoSettings(s, profile));
+    if (outputRows == 0) return invalidArgument("outputRows", "0", "the output's height, >= 1");
     AoConfig c;
     c.technique = s.technique;
     c.radius = s.radius;
@@ -153,7 +157,10 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
     // Multilayer AO is full size (its layers are): the tier's half resolution does not apply.
     c.halfResolution = s.resolution == AoResolution::Half || (s.resolution == AoResolution::Tier && profile.aoHalfResolution && s.depthLayers == 1);
     // Pixel counts are the pass's: at half size the blur keeps its footprint in output pixels
-    // with (r + 1) / 2 taps each side, and the screen radius clamp halves.
+    // with (r + 1) / 2 taps each side. The tier's extents defined at the reference rows (the
+    // clamp, crease's spacing) scale with the output's rows, then halve at half size: the look
+    // the fit calibrated (docs/trade.md) then holds at every resolution.
+    const double passPxPerReferencePx = double(outputRows) / double(shared::SFX_AO_REFERENCE_ROWS) * (c.halfResolution ? 0.5 : 1.0);
     const uint32_t blurPx = s.blurRadius ? s.blurRadius : profile.aoBlurRadiusPx;
     c.blurRadius = s.blur ? (c.halfResolution ? std::max(1u, (blurPx + 1) / 2) : blurPx) : 0;
     switch (s.technique) {
@@ -167,9 +174,11 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
             c.samples = s.samples ? s.samples : profile.aoScalableTaps;
             c.mirrored = profile.aoScalableMirrored;
             c.spiralTurns = c.mirrored ? shared::SFX_AO_SPIRAL_TURNS_MIRRORED : shared::SFX_AO_SPIRAL_TURNS_SPIRAL;
-            // The clamp bounds a tap's reach in texels of the pass's depth (the texture cache, the
-            // paper's reason): at half size the same 20 texels, not half of them.
-            c.maxRadiusPx = profile.aoScalableMaxRadiusPx;
+            // The clamp keeps the taps near the centre (the texture cache, the paper's reason). A
+            // clamp fixed in texels cut the radius 4x more at 1280x720 than at 320x180, and the
+            // current tier's Scalable lost 2.5 dB against the truth there (docs/trade.md): it is
+            // a share of the image's height instead, at least one pass pixel.
+            c.maxRadiusPx = profile.aoScalableMaxRadiusPx > 0.0f ? std::max(1.0, double(profile.aoScalableMaxRadiusPx) * passPxPerReferencePx) : 0.0;
             c.depthMipLevels = profile.aoUsesDepthMip ? std::max(1u, std::min(profile.aoDepthMipLevels, mipLevelsAllowed)) : 1;
             // At half size the pass reads the pyramid from level 1: one level fewer of its own.
             if (c.halfResolution) c.depthMipLevels = std::max(1u, c.depthMipLevels - 1);
@@ -180,6 +189,7 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
         case AoTechnique::Crease:
             c.bias = 0;
             c.samples = s.samples ? s.samples : profile.aoCreaseTaps;
+            c.creaseStride = uint32_t(std::max(1.0, std::round(double(profile.aoCreaseSpacingPx) * passPxPerReferencePx)));
             break;
     }
     return c;

@@ -85,7 +85,8 @@ std::vector<AoTap> aoTaps(const AoConfig& c, const DepthReconstruction& rec, uin
                 for (int half = 0; half < 2; ++half) {
                     if (!sh::aoCreaseTakesHalf(int(c.samples), half, sh::aoCreaseParity(int(x), int(y)))) continue;
                     const auto o = half == 0 ? sh::SFX_AO_CREASE_HALF_0[j] : sh::SFX_AO_CREASE_HALF_1[j];
-                    taps.push_back({std::clamp(int(x) + o.x, 0, int(w) - 1), std::clamp(int(y) + o.y, 0, int(h) - 1), 0});
+                    const int s = int(c.creaseStride);
+                    taps.push_back({std::clamp(int(x) + o.x * s, 0, int(w) - 1), std::clamp(int(y) + o.y * s, 0, int(h) - 1), 0});
                 }
             break;
     }
