@@ -174,6 +174,7 @@ Result<AoSettings> fit(samples::AoEvaluator& ev, const AoSettings& start, const 
 // taps: the noise left; full resolution: what half resolution costs; no screen-radius clamp).
 Status diagnose(samples::AoEvaluator& ev, Tier tier, AoTechnique technique, const std::vector<samples::AoCase>& heldOut) {
     const TierProfile base = tiers::choose(ev.device().caps(), tier)->profile;
+    const samples::AoScore none = samples::noAoScore(heldOut);  // the baseline of issue 10's 4 dB goal
     struct Variant {
         const char* name;
         std::function<void(AoSettings&, TierProfile&)> apply;
@@ -187,6 +188,8 @@ Status diagnose(samples::AoEvaluator& ev, Tier tier, AoTechnique technique, cons
         {"full resolution", [](AoSettings& s, TierProfile&) { s.resolution = AoResolution::Full; }},
         {"no radius clamp", [](AoSettings&, TierProfile& p) { p.aoScalableMaxRadiusPx = 0; }},
         {"radius clamp doubled", [](AoSettings&, TierProfile& p) { p.aoScalableMaxRadiusPx *= 2; }},
+        {"crease spacing x1.5", [](AoSettings&, TierProfile& p) { p.aoCreaseSpacingPx *= 1.5f; }},
+        {"crease spacing doubled", [](AoSettings&, TierProfile& p) { p.aoCreaseSpacingPx *= 2; }},
     };
     for (const Variant& v : variants) {
         AoSettings s;
@@ -198,7 +201,8 @@ Status diagnose(samples::AoEvaluator& ev, Tier tier, AoTechnique technique, cons
         Result<samples::AoScore> r = ev.score(s, heldOut);
         if (!r) return r.status();
         std::cout << "  diagnose " << toString(tier) << "/" << toString(technique) << " " << v.name << ": held out " << fixed(r->psnr, 2) << " / "
-                  << fixed(r->psnrOccluded, 2) << " dB, signed error occluded " << fixed(r->signedOccluded, 3) << std::endl;
+                  << fixed(r->psnrOccluded, 2) << " dB, signed error occluded " << fixed(r->signedOccluded, 3) << ", gain over no AO occluded "
+                  << fixed(r->psnrOccluded - none.psnrOccluded, 2) << " dB" << std::endl;
     }
     ev.setProfile(base);
     return Status::ok();

@@ -3,8 +3,9 @@
 //   - cost at --cost-size (median of HAL-timed runs, as ms and as copy passes of that size on
 //     the same device): AO on the G-buffer of one sample view, motion blur on the "pan" scene;
 //   - accuracy: AO's PSNR against the ray-traced truth on the held-out views of fit_ao (radii
-//     0.25-2, 320x180; computed on the first backend, the backends agree), motion blur's PSNR
-//     against its temporally supersampled truth on the 2.5D scenes.
+//     0.25-2, 320x180; computed on the first backend, the backends agree) and on their analytic
+//     scenes alone at --anchor-size (1280x720, the size of the issue's XeGTAO figures), motion
+//     blur's PSNR against its temporally supersampled truth on the 2.5D scenes.
 // Writes <out-dir>/trade_presets.csv, one SVG Pareto plot per backend and effect under
 // <out-dir>/images/ and the tables into <out-dir>/trade.md between its markers. A program, not a test.
 #include <CLI/CLI.hpp>
@@ -38,6 +39,8 @@ struct Options {
     uint32_t costWidth = 1280, costHeight = 720, runs = 11, instants = 64;
     std::vector<double> radii{0.25, 0.5, 1.0, 2.0};
     samples::TruthSettings truth;
+    // The analytic scenes' accuracy, compared with the XeGTAO anchors, at the anchors' size.
+    samples::TruthSettings anchorTruth{1280, 720, 256, truth.cacheDir};
     std::string costView = "contact";
     std::string outDir = "docs";
 };
@@ -47,7 +50,7 @@ struct Row {
     std::string resolution = "-";                           // AO: "full" or "half"
     uint32_t taps = 0, blurOrRadius = 0;                    // AO: taps, blur half-width; MB: taps, max radius px
     double ms = 0, copyPasses = 0, psnr = 0, psnrOccluded = 0;
-    double psnrAnalytic = 0;  // AO: over the held-out analytic scenes only (the anchors' kind)
+    double psnrAnalytic = 0;  // AO: over the held-out analytic scenes only (the anchors' kind), at the anchors' size
 };
 
 // Intel's XeGTAO as issue 10 quotes it (item 7): on this machine's llvmpipe at 1280x720 against
@@ -107,37 +110,43 @@ uint32_t aoTaps(const TierProfile& p, AoTechnique t) {
     return t == AoTechnique::Alchemy ? p.aoAlchemySamples : t == AoTechnique::Scalable ? p.aoScalableTaps : p.aoCreaseTaps;
 }
 
-// A preset x technique's AO accuracy: over all held-out cases, and over their analytic scenes only.
+// A preset x technique's AO accuracy: over all held-out cases, and over their analytic scenes
+// only, rendered and traced at the anchors' size.
 struct AoAccuracy {
     samples::AoScore heldOut, analytic;
 };
 
+// The held-out cases at the truth's size, and those of the analytic views again at the anchors' size.
+struct AccuracyCases {
+    std::vector<samples::TradeView> views, analyticViews;
+    std::vector<samples::AoCase> heldOut, analytic;  // AoCase::view indexes views, analyticViews
+};
+
 // AO accuracy of every preset x technique of a tier on the held-out views: key "preset/technique".
 
-Result<std::map<std::string, AoAccuracy>> aoAccuracy(Device& dev, Tier tier, const Options& o, const std::vector<samples::TradeView>& views,
-                                                           const std::vector<samples::AoCase>& cases) {
+Result<std::map<std::string, AoAccuracy>> aoAccuracy(Device& dev, Tier tier, const Options& o, const AccuracyCases& cases) {
+    if (cases.analytic.empty()) return invalidArgument("views", "no analytic scene among the held-out views", "at least one analytic view");
     samples::AoEvaluator ev(dev, tier, o.truth.width, o.truth.height);
-    SFX_TRY(ev.prepare(views));
-    bool anyAnalytic = false;
-    for (const samples::AoCase& c : cases) anyAnalytic = anyAnalytic || views[c.view].analytic;
-    if (!anyAnalytic) return invalidArgument("views", "no analytic scene among the held-out views", "at least one analytic view");
+    SFX_TRY(ev.prepare(cases.views));
+    samples::AoEvaluator anchorEv(dev, tier, o.anchorTruth.width, o.anchorTruth.height);
+    SFX_TRY(anchorEv.prepare(cases.analyticViews));
     std::map<std::string, AoAccuracy> out;
     for (const tiers::Preset& preset : tiers::row(tier).presets)
         for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}) {
             ev.setProfile(preset.params);
+            anchorEv.setProfile(preset.params);
             AoSettings s;
             s.technique = t;
             s.normals = AoNormals::FromTexture;
-            // One render per case; the analytic scenes' score is a subset of the same comparisons.
-            Result<std::vector<truth::Comparison>> errors = ev.run(s, cases);
+            Result<std::vector<truth::Comparison>> errors = ev.run(s, cases.heldOut);
             if (!errors) return errors.status();
-            std::vector<truth::Comparison> analytic;
-            for (size_t i = 0; i < cases.size(); ++i)
-                if (views[cases[i].view].analytic) analytic.push_back(errors.value()[i]);
-            const AoAccuracy a{samples::summarise(errors.value()), samples::summarise(analytic)};
+            Result<std::vector<truth::Comparison>> analytic = anchorEv.run(s, cases.analytic);
+            if (!analytic) return analytic.status();
+            const AoAccuracy a{samples::summarise(errors.value()), samples::summarise(analytic.value())};
             out[preset.name + "/" + toString(t)] = a;
             std::cout << "  " << toString(tier) << "/" << preset.name << "/" << toString(t) << ": held-out PSNR " << fixed(a.heldOut.psnr, 2)
-                      << " dB, occluded " << fixed(a.heldOut.psnrOccluded, 2) << " dB; analytic scenes " << fixed(a.analytic.psnr, 2) << " dB" << std::endl;
+                      << " dB, occluded " << fixed(a.heldOut.psnrOccluded, 2) << " dB; analytic scenes at " << o.anchorTruth.width << "x"
+                      << o.anchorTruth.height << " " << fixed(a.analytic.psnr, 2) << " dB" << std::endl;
         }
     return out;
 }
@@ -161,14 +170,13 @@ Result<std::map<std::string, double>> motionAccuracy(Device& dev, Tier tier, con
     return out;
 }
 
-Status runDevice(Device& dev, const std::string& backend, Tier tier, const Options& o, const std::vector<samples::TradeView>& views,
-                 const std::vector<samples::AoCase>& cases, std::map<std::string, AoAccuracy>& aoScores, std::map<std::string, double>& mbScores,
-                 std::vector<Row>& rows) {
+Status runDevice(Device& dev, const std::string& backend, Tier tier, const Options& o, const AccuracyCases& cases,
+                 std::map<std::string, AoAccuracy>& aoScores, std::map<std::string, double>& mbScores, std::vector<Row>& rows) {
     const Format outFormat = samples::aoOutputFormat(dev);
     Result<std::unique_ptr<samples::CopyPass>> copy = samples::makeCopyPass(dev, tier, o.costWidth, o.costHeight, outFormat);
     if (!copy) return copy.status();
     if (aoScores.empty()) {  // accuracy from the first backend: the backends compute the same shaders
-        Result<std::map<std::string, AoAccuracy>> a = aoAccuracy(dev, tier, o, views, cases);
+        Result<std::map<std::string, AoAccuracy>> a = aoAccuracy(dev, tier, o, cases);
         if (!a) return a.status();
         aoScores = a.value();
         Result<std::map<std::string, double>> m = motionAccuracy(dev, tier, o);
@@ -248,11 +256,13 @@ std::string markdown(const Options& o, const std::vector<Row>& rows, const std::
     }
     md << "XeGTAO anchors (issue 10, item 7: the issue's figures for Intel's XeGTAO on this machine's llvmpipe at 1280x720, not run here; "
           "High at the low end of its 23-29 copy passes) against the high tier's presets of this run, with the presets' PSNR over the held-out "
-          "analytic scenes (the kind the issue scored XeGTAO on) and over all held-out views. The costs are this run's, the "
-          "accuracies at " << o.truth.width << "x" << o.truth.height << " where XeGTAO's were at 1280x720:\n\n";
+          "analytic scenes (the kind the issue scored XeGTAO on), rendered and traced at "
+       << o.anchorTruth.width << "x" << o.anchorTruth.height << ", and over all held-out views at " << o.truth.width << "x" << o.truth.height
+       << ". The costs are this run's:\n\n";
     for (const std::string& line : xeGtaoDominance(o, rows)) md << "- " << line << "\n";
     md << "\n";
-    md << "| backend | tier | preset | effect | technique | AO resolution | taps | blur px / max radius px | ms | copy passes | PSNR | PSNR occluded | PSNR analytic scenes |\n"
+    md << "| backend | tier | preset | effect | technique | AO resolution | taps | blur px / max radius px | ms | copy passes | PSNR | PSNR occluded | PSNR analytic scenes at "
+       << o.anchorTruth.width << "x" << o.anchorTruth.height << " |\n"
           "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const Row& r : rows)
         md << "| " << r.backend << " | " << r.tier << " | " << r.preset << " | " << r.effect << " | " << r.technique << " | " << r.resolution << " | " << r.taps << " | "
@@ -291,18 +301,29 @@ int main(int argc, char** argv) {
     app.add_option("--runs", o.runs, "timed runs per configuration (median)")->capture_default_str();
     app.add_option("--instants", o.instants, "instants of the motion blur truth")->capture_default_str();
     app.add_option("--cache-dir", o.truth.cacheDir, "where truth images are cached")->capture_default_str();
+    app.add_option("--anchor-width", o.anchorTruth.width, "pixels of the analytic scenes' accuracy (the XeGTAO anchors' size)")->capture_default_str();
+    app.add_option("--anchor-height", o.anchorTruth.height, "pixels of the analytic scenes' accuracy")->capture_default_str();
     app.add_option("--out-dir", o.outDir, "trade_presets.csv, images/pareto_*.svg and trade.md")->capture_default_str();
     CLI11_PARSE(app, argc, argv);
     const auto started = std::chrono::steady_clock::now();
     auto elapsed = [&] { return fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(), 1); };
 
-    const std::vector<samples::TradeView> views = samples::heldOutViews();
-    Result<std::vector<samples::AoCase>> cases =
-        samples::loadCases(views, 0, views.size(), o.radii, o.truth, [&](const std::string& line) { std::cout << "[" << elapsed() << " s] " << line << std::endl; });
-    if (!cases) {
-        std::cerr << "trade_presets: " << cases.status().toString() << "\n";
+    o.anchorTruth.cacheDir = o.truth.cacheDir;
+    o.anchorTruth.samples = o.truth.samples;
+    AccuracyCases cases;
+    cases.views = samples::heldOutViews();
+    for (const samples::TradeView& v : cases.views)
+        if (v.analytic) cases.analyticViews.push_back(v);
+    const auto progress = [&](const std::string& line) { std::cout << "[" << elapsed() << " s] " << line << std::endl; };
+    Result<std::vector<samples::AoCase>> heldOut = samples::loadCases(cases.views, 0, cases.views.size(), o.radii, o.truth, progress);
+    Result<std::vector<samples::AoCase>> analytic = heldOut ? samples::loadCases(cases.analyticViews, 0, cases.analyticViews.size(), o.radii, o.anchorTruth, progress)
+                                                            : Result<std::vector<samples::AoCase>>(heldOut.status());
+    if (!analytic) {
+        std::cerr << "trade_presets: " << analytic.status().toString() << "\n";
         return 1;
     }
+    cases.heldOut = std::move(heldOut.value());
+    cases.analytic = std::move(analytic.value());
     std::map<Tier, std::map<std::string, AoAccuracy>> aoScores;
     std::map<Tier, std::map<std::string, double>> mbScores;
     std::vector<Row> rows;
@@ -310,7 +331,7 @@ int main(int argc, char** argv) {
     const Status run = samples::forEachDevice(o.backends, {Tier::High, Tier::Current}, "trade_presets", [&](Device& dev, const std::string& backend, Tier tier) {
         if (machine.empty()) machine = dev.caps().deviceName;
         std::cout << "[" << elapsed() << " s] " << dev.caps().summary() << ", tier " << toString(tier) << std::endl;
-        return runDevice(dev, backend, tier, o, views, cases.value(), aoScores[tier], mbScores[tier], rows);
+        return runDevice(dev, backend, tier, o, cases, aoScores[tier], mbScores[tier], rows);
     });
     if (!run) {
         std::cerr << "trade_presets: " << run.toString() << "\n";
@@ -318,11 +339,11 @@ int main(int argc, char** argv) {
     }
     std::filesystem::create_directories(o.outDir);
     std::ofstream csv(o.outDir + "/trade_presets.csv");
-    csv << "backend,tier,preset,effect,technique,ao_resolution,taps,blur_or_max_radius_px,cost_width,cost_height,ms,copy_passes,psnr_db,psnr_occluded_db,psnr_analytic_db\n";
+    csv << "backend,tier,preset,effect,technique,ao_resolution,taps,blur_or_max_radius_px,cost_width,cost_height,ms,copy_passes,psnr_db,psnr_occluded_db,psnr_analytic_db,analytic_width,analytic_height\n";
     for (const Row& r : rows)
         csv << r.backend << "," << r.tier << "," << r.preset << "," << r.effect << "," << r.technique << "," << r.resolution << "," << r.taps << "," << r.blurOrRadius << ","
             << o.costWidth << "," << o.costHeight << "," << fixed(r.ms, 3) << "," << fixed(r.copyPasses, 2) << "," << fixed(r.psnr, 3) << ","
-            << fixed(r.psnrOccluded, 3) << "," << fixed(r.psnrAnalytic, 3) << "\n";
+            << fixed(r.psnrOccluded, 3) << "," << fixed(r.psnrAnalytic, 3) << "," << o.anchorTruth.width << "," << o.anchorTruth.height << "\n";
     for (const std::string& line : xeGtaoDominance(o, rows)) std::cout << "dominance: " << line << std::endl;
     Status st = writePlots(o, rows);
     if (st) st = samples::replaceMarkdownSection(o.outDir + "/trade.md", "trade_presets", markdown(o, rows, machine.empty() ? "no device" : machine));
