@@ -389,8 +389,14 @@ TEST_CASE("ao: switching resolution with setSettings and resize keeps matching t
         s.resolution = AoResolution::Half;
         SFX_REQUIRE_OK(ao.setSettings(s));
         CHECK(ao.config().halfResolution);
-        for (auto [w, h] : {std::pair{40u, 30u}, std::pair{57u, 41u}}) {
+        // 96x360: crease's stride and the current tier's clamp follow the rows, so the resized
+        // context must hold the config of its new size, as a fresh context of that size does.
+        for (auto [w, h] : {std::pair{40u, 30u}, std::pair{57u, 41u}, std::pair{96u, 360u}}) {
             SFX_REQUIRE_OK(ao.resize(w, h));
+            auto fresh = AmbientObscurance::create(dev, {w, h, test::tierProfile(), s});
+            REQUIRE(fresh.isOk());
+            CHECK(ao.config().creaseStride == fresh.value()->config().creaseStride);
+            CHECK(ao.config().maxRadiusPx == fresh.value()->config().maxRadiusPx);
             const samples::AnalyticScene scene = samples::sphereOnPlaneScene(w, h);
             const Grid gpu = dispatchOn(dev, ao, scene);
             SFX_REQUIRE_NO_VALIDATION_MESSAGES();
