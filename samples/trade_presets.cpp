@@ -40,7 +40,8 @@ struct Options {
     std::vector<double> radii{0.25, 0.5, 1.0, 2.0};
     samples::TruthSettings truth;
     // The analytic scenes' accuracy, compared with the XeGTAO anchors, at the anchors' size.
-    samples::TruthSettings anchorTruth{1280, 720, 256, truth.cacheDir};
+    uint32_t anchorWidth = 1280, anchorHeight = 720;
+    samples::TruthSettings anchorTruth() const { return {anchorWidth, anchorHeight, truth.samples, truth.cacheDir}; }
     std::string costView = "contact";
     std::string outDir = "docs";
 };
@@ -128,7 +129,7 @@ Result<std::map<std::string, AoAccuracy>> aoAccuracy(Device& dev, Tier tier, con
     if (cases.analytic.empty()) return invalidArgument("views", "no analytic scene among the held-out views", "at least one analytic view");
     samples::AoEvaluator ev(dev, tier, o.truth.width, o.truth.height);
     SFX_TRY(ev.prepare(cases.views));
-    samples::AoEvaluator anchorEv(dev, tier, o.anchorTruth.width, o.anchorTruth.height);
+    samples::AoEvaluator anchorEv(dev, tier, o.anchorWidth, o.anchorHeight);
     SFX_TRY(anchorEv.prepare(cases.analyticViews));
     std::map<std::string, AoAccuracy> out;
     for (const tiers::Preset& preset : tiers::row(tier).presets)
@@ -145,8 +146,8 @@ Result<std::map<std::string, AoAccuracy>> aoAccuracy(Device& dev, Tier tier, con
             const AoAccuracy a{samples::summarise(errors.value()), samples::summarise(analytic.value())};
             out[preset.name + "/" + toString(t)] = a;
             std::cout << "  " << toString(tier) << "/" << preset.name << "/" << toString(t) << ": held-out PSNR " << fixed(a.heldOut.psnr, 2)
-                      << " dB, occluded " << fixed(a.heldOut.psnrOccluded, 2) << " dB; analytic scenes at " << o.anchorTruth.width << "x"
-                      << o.anchorTruth.height << " " << fixed(a.analytic.psnr, 2) << " dB" << std::endl;
+                      << " dB, occluded " << fixed(a.heldOut.psnrOccluded, 2) << " dB; analytic scenes at " << o.anchorWidth << "x"
+                      << o.anchorHeight << " " << fixed(a.analytic.psnr, 2) << " dB" << std::endl;
         }
     return out;
 }
@@ -257,12 +258,12 @@ std::string markdown(const Options& o, const std::vector<Row>& rows, const std::
     md << "XeGTAO anchors (issue 10, item 7: the issue's figures for Intel's XeGTAO on this machine's llvmpipe at 1280x720, not run here; "
           "High at the low end of its 23-29 copy passes) against the high tier's presets of this run, with the presets' PSNR over the held-out "
           "analytic scenes (the kind the issue scored XeGTAO on), rendered and traced at "
-       << o.anchorTruth.width << "x" << o.anchorTruth.height << ", and over all held-out views at " << o.truth.width << "x" << o.truth.height
+       << o.anchorWidth << "x" << o.anchorHeight << ", and over all held-out views at " << o.truth.width << "x" << o.truth.height
        << ". The costs are this run's:\n\n";
     for (const std::string& line : xeGtaoDominance(o, rows)) md << "- " << line << "\n";
     md << "\n";
     md << "| backend | tier | preset | effect | technique | AO resolution | taps | blur px / max radius px | ms | copy passes | PSNR | PSNR occluded | PSNR analytic scenes at "
-       << o.anchorTruth.width << "x" << o.anchorTruth.height << " |\n"
+       << o.anchorWidth << "x" << o.anchorHeight << " |\n"
           "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const Row& r : rows)
         md << "| " << r.backend << " | " << r.tier << " | " << r.preset << " | " << r.effect << " | " << r.technique << " | " << r.resolution << " | " << r.taps << " | "
@@ -301,22 +302,20 @@ int main(int argc, char** argv) {
     app.add_option("--runs", o.runs, "timed runs per configuration (median)")->capture_default_str();
     app.add_option("--instants", o.instants, "instants of the motion blur truth")->capture_default_str();
     app.add_option("--cache-dir", o.truth.cacheDir, "where truth images are cached")->capture_default_str();
-    app.add_option("--anchor-width", o.anchorTruth.width, "pixels of the analytic scenes' accuracy (the XeGTAO anchors' size)")->capture_default_str();
-    app.add_option("--anchor-height", o.anchorTruth.height, "pixels of the analytic scenes' accuracy")->capture_default_str();
+    app.add_option("--anchor-width", o.anchorWidth, "pixels of the analytic scenes' accuracy (the XeGTAO anchors' size)")->capture_default_str();
+    app.add_option("--anchor-height", o.anchorHeight, "pixels of the analytic scenes' accuracy")->capture_default_str();
     app.add_option("--out-dir", o.outDir, "trade_presets.csv, images/pareto_*.svg and trade.md")->capture_default_str();
     CLI11_PARSE(app, argc, argv);
     const auto started = std::chrono::steady_clock::now();
     auto elapsed = [&] { return fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(), 1); };
 
-    o.anchorTruth.cacheDir = o.truth.cacheDir;
-    o.anchorTruth.samples = o.truth.samples;
     AccuracyCases cases;
     cases.views = samples::heldOutViews();
     for (const samples::TradeView& v : cases.views)
         if (v.analytic) cases.analyticViews.push_back(v);
     const auto progress = [&](const std::string& line) { std::cout << "[" << elapsed() << " s] " << line << std::endl; };
     Result<std::vector<samples::AoCase>> heldOut = samples::loadCases(cases.views, 0, cases.views.size(), o.radii, o.truth, progress);
-    Result<std::vector<samples::AoCase>> analytic = heldOut ? samples::loadCases(cases.analyticViews, 0, cases.analyticViews.size(), o.radii, o.anchorTruth, progress)
+    Result<std::vector<samples::AoCase>> analytic = heldOut ? samples::loadCases(cases.analyticViews, 0, cases.analyticViews.size(), o.radii, o.anchorTruth(), progress)
                                                             : Result<std::vector<samples::AoCase>>(heldOut.status());
     if (!analytic) {
         std::cerr << "trade_presets: " << analytic.status().toString() << "\n";
@@ -343,7 +342,7 @@ int main(int argc, char** argv) {
     for (const Row& r : rows)
         csv << r.backend << "," << r.tier << "," << r.preset << "," << r.effect << "," << r.technique << "," << r.resolution << "," << r.taps << "," << r.blurOrRadius << ","
             << o.costWidth << "," << o.costHeight << "," << fixed(r.ms, 3) << "," << fixed(r.copyPasses, 2) << "," << fixed(r.psnr, 3) << ","
-            << fixed(r.psnrOccluded, 3) << "," << fixed(r.psnrAnalytic, 3) << "," << o.anchorTruth.width << "," << o.anchorTruth.height << "\n";
+            << fixed(r.psnrOccluded, 3) << "," << fixed(r.psnrAnalytic, 3) << "," << o.anchorWidth << "," << o.anchorHeight << "\n";
     for (const std::string& line : xeGtaoDominance(o, rows)) std::cout << "dominance: " << line << std::endl;
     Status st = writePlots(o, rows);
     if (st) st = samples::replaceMarkdownSection(o.outDir + "/trade.md", "trade_presets", markdown(o, rows, machine.empty() ? "no device" : machine));
