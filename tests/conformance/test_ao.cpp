@@ -49,6 +49,43 @@ const Tolerance& tolerance() { return kTolerance[size_t(test::tier())]; }
 
 AoSettings settingsFor(AoTechnique t, double scale = 1.0) { return test::aoTestSettings(t, scale); }
 
+// A GPU result against its reference: every pixel finite and in [0, 1], then the figures the
+// tier's Tolerance and kAoOccludedBiasBound bound.
+struct AgainstReference {
+    double rmse = 0, worst = 0, occludedBias = 0;
+    size_t off = 0, occluded = 0;  // pixels off by more than Tolerance::pixel; pixels the reference occludes
+};
+AgainstReference compareWithReference(const Grid& gpu, const Grid& ref) {
+    AgainstReference r;
+    double sq = 0, occludedSigned = 0;
+    for (size_t i = 0; i < ref.values.size(); ++i) {
+        const double g = gpu.values[i];
+        REQUIRE(std::isfinite(g));
+        REQUIRE(g >= 0.0);
+        REQUIRE(g <= 1.0);
+        const double e = std::abs(g - ref.values[i]);
+        sq += e * e;
+        r.worst = std::max(r.worst, e);
+        r.off += e > tolerance().pixel;
+        if (ref.values[i] < 1.0 - 1e-6) {
+            occludedSigned += g - ref.values[i];
+            ++r.occluded;
+        }
+    }
+    r.rmse = std::sqrt(sq / double(ref.values.size()));
+    r.occludedBias = r.occluded ? occludedSigned / double(r.occluded) : 0.0;
+    return r;
+}
+// The four bounds, with the figures in the message.
+void checkWithinTolerance(const AgainstReference& r, size_t pixels) {
+    INFO("rmse " << r.rmse << " worst pixel " << r.worst << " pixels off " << r.off << " mean signed error over " << r.occluded
+                 << " occluded pixels " << r.occludedBias);
+    CHECK(r.rmse < tolerance().rmse);
+    CHECK(double(r.off) < 0.01 * double(pixels));
+    CHECK(r.worst <= tolerance().worst);
+    CHECK(std::abs(r.occludedBias) <= kAoOccludedBiasBound);
+}
+
 // One dispatch of an existing context on `scene` (linear depth read in place, R32F output
 // where renderable, else RGBA8), read back.
 Grid dispatchOn(Device& dev, AmbientObscurance& ao, const samples::AnalyticScene& scene) {
@@ -87,8 +124,6 @@ TEST_CASE("ao: each technique matches its CPU reference, at full and half resolu
     // worst pixel, and a bound on the mean signed error over the occluded pixels (reference
     // below 1), which the many unoccluded pixels cannot dilute and which catches a bias. At half
     // resolution the reference runs the same half-size pipeline and upsample (config.halfResolution).
-    const double rmseTol = tolerance().rmse;
-    const double pixelTol = tolerance().pixel;
     const double worstTol = tolerance().worst;
     const double biasTol = kAoOccludedBiasBound;
     double worstSeen = 0, worstBias = 0;
@@ -110,32 +145,10 @@ TEST_CASE("ao: each technique matches its CPU reference, at full and half resolu
                     const GpuAo gpu = runAo(scene, s);
                     REQUIRE(gpu.config.halfResolution == half);
                     const Grid ref = reference::ambientVisibility(scene.aoInput(gbuffer), gpu.config);
-                    double sq = 0, maxErr = 0, occludedSigned = 0;
-                    size_t off = 0, occluded = 0;
-                    for (size_t i = 0; i < ref.values.size(); ++i) {
-                        const double g = gpu.visibility.values[i];
-                        REQUIRE(std::isfinite(g));
-                        REQUIRE(g >= 0.0);
-                        REQUIRE(g <= 1.0);
-                        const double e = std::abs(g - ref.values[i]);
-                        sq += e * e;
-                        maxErr = std::max(maxErr, e);
-                        off += e > pixelTol;
-                        if (ref.values[i] < 1.0 - 1e-6) {
-                            occludedSigned += g - ref.values[i];
-                            ++occluded;
-                        }
-                    }
-                    const double rmse = std::sqrt(sq / double(ref.values.size()));
-                    const double bias = occluded ? occludedSigned / double(occluded) : 0.0;
-                    worstSeen = std::max(worstSeen, maxErr);
-                    worstBias = std::max(worstBias, std::abs(bias));
-                    INFO("rmse " << rmse << " worst pixel " << maxErr << " pixels off " << off << " mean signed error over "
-                                 << occluded << " occluded pixels " << bias);
-                    CHECK(rmse < rmseTol);
-                    CHECK(double(off) < 0.01 * double(ref.values.size()));
-                    CHECK(maxErr <= worstTol);
-                    CHECK(std::abs(bias) <= biasTol);
+                    const AgainstReference r = compareWithReference(gpu.visibility, ref);
+                    worstSeen = std::max(worstSeen, r.worst);
+                    worstBias = std::max(worstBias, std::abs(r.occludedBias));
+                    checkWithinTolerance(r, ref.values.size());
                 }
     // The measured worst values, for docs/ao.md and docs/conformance.md beside the bounds.
     WARN(test::label() << ": worst pixel " << worstSeen << " (bound " << worstTol << "), worst |mean signed error| "
@@ -162,21 +175,9 @@ TEST_CASE("ao: at 360 rows crease's strided diamond and Scalable's scaled clamp 
             if (t == AoTechnique::Crease) CHECK(gpu.config.creaseStride == (half ? 3u : 6u));
             if (t == AoTechnique::Scalable) CHECK(gpu.config.maxRadiusPx == Approx(half ? 40.0 : 80.0));
             const Grid ref = reference::ambientVisibility(scene.aoInput(false), gpu.config);
-            double sq = 0, maxErr = 0, occludedSigned = 0;
-            size_t off = 0, occluded = 0;
-            for (size_t i = 0; i < ref.values.size(); ++i) {
-                const double e = std::abs(gpu.visibility.values[i] - ref.values[i]);
-                REQUIRE(std::isfinite(gpu.visibility.values[i]));
-                sq += e * e, maxErr = std::max(maxErr, e), off += e > tolerance().pixel;
-                if (ref.values[i] < 1.0 - 1e-6) occludedSigned += gpu.visibility.values[i] - ref.values[i], ++occluded;
-            }
-            REQUIRE(occluded > ref.values.size() / 100);  // the contact shadow is there to compare
-            INFO("rmse " << std::sqrt(sq / double(ref.values.size())) << " worst pixel " << maxErr << " pixels off " << off
-                         << " mean signed error occluded " << occludedSigned / double(occluded));
-            CHECK(std::sqrt(sq / double(ref.values.size())) < tolerance().rmse);
-            CHECK(double(off) < 0.01 * double(ref.values.size()));
-            CHECK(maxErr <= tolerance().worst);
-            CHECK(std::abs(occludedSigned / double(occluded)) <= kAoOccludedBiasBound);
+            const AgainstReference r = compareWithReference(gpu.visibility, ref);
+            REQUIRE(r.occluded > ref.values.size() / 100);  // the contact shadow is there to compare
+            checkWithinTolerance(r, ref.values.size());
         }
 }
 
