@@ -39,6 +39,9 @@ std::vector<BackendConfig> compiledBackends() {
 }
 
 Result<std::unique_ptr<Device>> openDevice(const BackendConfig& config, const DeviceOptions& options) {
+    if (!options.physicalDevice.empty() && config.backend != BackendKind::Vulkan)
+        return Status{StatusCode::InvalidArgument, "DeviceOptions.physicalDevice is '" + options.physicalDevice + "'; backend '" +
+                                                       toString(config) + "' has no choice of device: allowed only empty"};
     switch (config.backend) {
     case BackendKind::Null: return null::createDevice(options);
     case BackendKind::Vulkan:
@@ -59,6 +62,20 @@ Result<std::unique_ptr<Device>> openDevice(const BackendConfig& config, const De
     }
     }
     return Status{StatusCode::InvalidArgument, "backend '" + toString(config) + "' is not compiled into this build"};
+}
+
+Result<std::vector<std::string>> describeVulkanDevices() {
+#ifdef SFX_HAS_VULKAN
+    Result<std::vector<vulkan::PhysicalDeviceInfo>> devices = vulkan::listPhysicalDevices();
+    if (!devices) return devices.status();
+    std::vector<std::string> lines;
+    for (const vulkan::PhysicalDeviceInfo& d : devices.value())
+        lines.push_back(std::to_string(d.index) + ": " + d.name + ", " + d.type + ", Vulkan " + d.apiVersion + ", " +
+                        (d.usable ? std::string("usable") : "unusable: " + d.unusableReason));
+    return lines;
+#else
+    return Status{StatusCode::InvalidArgument, "backend 'vulkan' is not compiled into this build"};
+#endif
 }
 
 Result<DeviceSelection> openBestDevice(const DeviceOptions& options) {

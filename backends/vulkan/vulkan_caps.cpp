@@ -16,6 +16,7 @@ void VulkanDevice::fillCaps(const DeviceOptions& options) {
     c.apiName = "Vulkan " + std::to_string(c.apiMajor) + "." + std::to_string(c.apiMinor) + "." +
                 std::to_string(VK_API_VERSION_PATCH(props_.apiVersion));
     c.deviceName = props_.deviceName;
+    c.deviceChoice = ownsDevice_ ? deviceChoice_ : "the host's VkPhysicalDevice (wrapDevice)";
     c.dialect = ShaderDialect::Spirv;
     c.ceiling = options.ceiling;
     c.computeShaders = fullFeatures_;

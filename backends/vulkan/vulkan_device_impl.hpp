@@ -125,7 +125,7 @@ private:
     // vulkan_platform.cpp
     Status createInstance(const DeviceOptions& options, uint32_t& apiVersion);
     // Needs a graphics+compute queue and dynamic rendering; discrete first.
-    Status pickPhysicalDevice(uint32_t apiVersion, bool& needsKhrDynamicRendering);
+    Status pickPhysicalDevice(uint32_t apiVersion, const std::string& wanted, bool& needsKhrDynamicRendering);
     Status createLogicalDevice(bool needsKhrDynamicRendering);
     Status finishInit(const DeviceOptions& options, bool ownsDevice);
     void setName(VkObjectType type, uint64_t handle, const char* name);
@@ -253,6 +253,7 @@ public:  // set up by the factory functions
     VkDevice device_ = VK_NULL_HANDLE;
     VkQueue queue_ = VK_NULL_HANDLE;
     uint32_t queueFamily_ = 0;
+    std::string deviceChoice_;  // why pickPhysicalDevice took physical_ (own device)
     bool ownsDevice_ = false;
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
     LogCallback log_;  // DeviceOptions::log

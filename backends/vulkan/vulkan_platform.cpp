@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "vulkan_device_impl.hpp"
+#include "vulkan_physical_devices.hpp"
 
 #include "sfx/validation_errors.hpp"
 
@@ -39,7 +40,7 @@ Status VulkanDevice::initOwn(const DeviceOptions& options) {
     uint32_t apiVersion = 0;
     SFX_TRY(createInstance(options, apiVersion));
     bool needsKhrDynamicRendering = false;
-    SFX_TRY(pickPhysicalDevice(apiVersion, needsKhrDynamicRendering));
+    SFX_TRY(pickPhysicalDevice(apiVersion, options.physicalDevice, needsKhrDynamicRendering));
     SFX_TRY(createLogicalDevice(needsKhrDynamicRendering));
     return finishInit(options, true);
 }
@@ -101,57 +102,13 @@ Status VulkanDevice::createInstance(const DeviceOptions& options, uint32_t& apiV
     return Status::ok();
 }
 
-Status VulkanDevice::pickPhysicalDevice(uint32_t apiVersion, bool& needsKhrDynamicRendering) {
-    uint32_t count = 0;
-    vk_.vkEnumeratePhysicalDevices(setup_.instance, &count, nullptr);
-    std::vector<VkPhysicalDevice> gpus(count);
-    vk_.vkEnumeratePhysicalDevices(setup_.instance, &count, gpus.data());
-    if (gpus.empty()) return {StatusCode::BackendUnavailable, "Vulkan reports no physical device (no ICD installed?)"};
-    int bestScore = -1;
-    bool bestNeedsKhr = false;
-    std::string rejected;
-    for (VkPhysicalDevice gpu : gpus) {
-        VkPhysicalDeviceProperties p;
-        vk_.vkGetPhysicalDeviceProperties(gpu, &p);
-        uint32_t extCount = 0;
-        vk_.vkEnumerateDeviceExtensionProperties(gpu, nullptr, &extCount, nullptr);
-        std::vector<VkExtensionProperties> exts(extCount);
-        vk_.vkEnumerateDeviceExtensionProperties(gpu, nullptr, &extCount, exts.data());
-        bool khrDynamic = false;
-        for (const auto& e : exts) khrDynamic |= std::strcmp(e.extensionName, VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME) == 0;
-        const bool core13 = p.apiVersion >= VK_API_VERSION_1_3 && apiVersion >= VK_API_VERSION_1_3;
-        if (!core13 && !(khrDynamic && p.apiVersion >= VK_API_VERSION_1_1)) {
-            rejected += std::string(" ") + p.deviceName + " (no dynamic rendering);";
-            continue;
-        }
-        uint32_t qCount = 0;
-        vk_.vkGetPhysicalDeviceQueueFamilyProperties(gpu, &qCount, nullptr);
-        std::vector<VkQueueFamilyProperties> families(qCount);
-        vk_.vkGetPhysicalDeviceQueueFamilyProperties(gpu, &qCount, families.data());
-        int family = -1;
-        for (uint32_t i = 0; i < qCount; ++i)
-            if ((families[i].queueFlags & (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT)) ==
-                (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT)) {
-                family = int(i);
-                break;
-            }
-        if (family < 0) {
-            rejected += std::string(" ") + p.deviceName + " (no graphics+compute queue);";
-            continue;
-        }
-        int score = p.deviceType == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU     ? 4
-                    : p.deviceType == VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU ? 3
-                    : p.deviceType == VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU    ? 2
-                                                                             : 1;
-        if (score > bestScore) {
-            bestScore = score;
-            physical_ = gpu;
-            queueFamily_ = uint32_t(family);
-            bestNeedsKhr = !core13;
-        }
-    }
-    if (!physical_) return {StatusCode::BackendUnavailable, "no Vulkan device is usable:" + rejected};
-    needsKhrDynamicRendering = bestNeedsKhr;
+Status VulkanDevice::pickPhysicalDevice(uint32_t apiVersion, const std::string& wanted, bool& needsKhrDynamicRendering) {
+    std::vector<PhysicalDeviceCandidate> candidates = describePhysicalDevices(vk_, setup_.instance, apiVersion);
+    Result<size_t> chosen = choosePhysicalDevice(candidates, wanted, deviceChoice_);
+    if (!chosen) return chosen.status();
+    physical_ = candidates[chosen.value()].handle;
+    queueFamily_ = candidates[chosen.value()].queueFamily;
+    needsKhrDynamicRendering = candidates[chosen.value()].needsKhrDynamicRendering;
     return Status::ok();
 }
 

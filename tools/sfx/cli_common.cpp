@@ -12,6 +12,8 @@ void DeviceFlags::add(CLI::App& app) {
     app.add_option("--backend", backend, "auto | vulkan | gles | gl | gl-egl | gl-osmesa")->capture_default_str();
     app.add_option("--tier", tier, "auto, or a tier (" + tierNameList() + "; a lower tier runs under its capability ceiling)")
         ->capture_default_str();
+    app.add_option("--device", device,
+                   "Vulkan: the physical device, by its index or part of its name (sfx info lists them); default the best by type");
     app.add_flag("--validate", validate,
                  "API validation (Vulkan validation layer, GL error checks); messages go to stderr");
 }
@@ -26,6 +28,7 @@ Result<OpenedDevice> openDevice(const DeviceFlags& flags) {
     }
     DeviceOptions options;
     options.validation = flags.validate;
+    options.physicalDevice = flags.device;
     // The tool, not the library, prints: validation messages reach stderr through the log callback
     // when the device is destroyed.
     options.log = [](LogSeverity, std::string_view message) { std::cerr << "sfx: " << message << "\n"; };

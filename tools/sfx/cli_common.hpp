@@ -16,11 +16,12 @@
 
 namespace sfx::cli {
 
-// --backend auto|vulkan|gles|gl|gl-egl|gl-osmesa, --tier auto|current|high and --validate.
+// --backend auto|vulkan|gles|gl|gl-egl|gl-osmesa, --device, --tier auto|current|high and --validate.
 struct DeviceFlags {
     std::string backend = "auto";
     std::string tier = "auto";
     bool validate = false;  // API validation; its messages are printed on stderr
+    std::string device;     // Vulkan: the physical device, by index or part of its name
     void add(CLI::App& app);
 };
 

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <ostream>
 
@@ -106,9 +107,17 @@ void printRules(std::ostream& out) {
     }
 }
 
+// The platform's cache directory (XDG base directories): $XDG_CACHE_HOME/scalablefx, else
+// ~/.cache/scalablefx; with neither variable set, sfx-cost-cache under the working directory.
+std::string defaultCostCacheDir() {
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg == '/') return std::string(xdg) + "/scalablefx";
+    if (const char* home = std::getenv("HOME"); home && *home) return std::string(home) + "/.cache/scalablefx";
+    return "sfx-cost-cache";
+}
+
 struct BudgetFlags {
     double budgetMs = 0;  // 0: no budget asked for
-    std::string size = "1920x1080", effect = "ao", cacheDir = "sfx-cost-cache";
+    std::string size = "1920x1080", effect = "ao", cacheDir = defaultCostCacheDir();
     bool recalibrate = false;
 };
 
@@ -158,7 +167,7 @@ Command addInfoCommand(CLI::App& app) {
     c.app->add_option("--budget", budgetFlags.budgetMs, "a cost budget in ms: print the most accurate preset that fits on the best device, and the table");
     c.app->add_option("--size", budgetFlags.size, "with --budget: the frame size, WIDTHxHEIGHT")->capture_default_str();
     c.app->add_option("--effect", budgetFlags.effect, "with --budget: ao or motion-blur")->capture_default_str();
-    c.app->add_option("--cache-dir", budgetFlags.cacheDir, "with --budget: where measured cost tables are cached")->capture_default_str();
+    c.app->add_option("--cache-dir", budgetFlags.cacheDir, "with --budget: where measured cost tables are cached ($XDG_CACHE_HOME/scalablefx or ~/.cache/scalablefx)")->capture_default_str();
     c.app->add_flag("--recalibrate", budgetFlags.recalibrate, "with --budget: measure the costs again");
     c.run = [] {
         if (rules) {
@@ -166,6 +175,11 @@ Command addInfoCommand(CLI::App& app) {
             return 0;
         }
         if (budgetFlags.budgetMs != 0) return printBudgetChoice(budgetFlags);
+        Result<std::vector<std::string>> vulkanDevices = describeVulkanDevices();
+        if (vulkanDevices) {
+            std::cout << "vulkan physical devices (pick one with --device INDEX|NAME):\n";
+            for (const std::string& line : vulkanDevices.value()) std::cout << "  " << line << "\n";
+        }
         for (const BackendConfig& config : compiledBackends()) {
             for (CapabilityCeiling ceiling : {CapabilityCeiling::None, CapabilityCeiling::GLES30}) {
                 DeviceOptions options;
@@ -178,6 +192,7 @@ Command addInfoCommand(CLI::App& app) {
                     continue;
                 }
                 std::cout << dev.value()->caps().summary() << "\n";
+                if (config.backend == BackendKind::Vulkan) std::cout << "  device: " << dev.value()->caps().deviceChoice << "\n";
                 Result<tiers::TierChoice> t = tiers::choose(dev.value()->caps());
                 std::cout << "  " << (t ? t->reason : t.status().toString()) << "\n";
             }

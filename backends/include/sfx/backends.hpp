@@ -28,6 +28,12 @@ std::vector<BackendConfig> compiledBackends();
 // absent on this machine; InvalidArgument for a backend this build does not include.
 Result<std::unique_ptr<Device>> openDevice(const BackendConfig& config, const DeviceOptions& options = {});
 
+// The Vulkan physical devices the loader sees, one line each in the loader's order:
+// "0: llvmpipe (LLVM 15.0.6, 256 bits), CPU, Vulkan 1.3.239, usable". DeviceOptions::physicalDevice
+// takes the index or part of the name. BackendUnavailable without a loader or driver;
+// InvalidArgument when this build has no Vulkan backend.
+Result<std::vector<std::string>> describeVulkanDevices();
+
 struct DeviceSelection {
     std::unique_ptr<Device> device;
     BackendConfig config;

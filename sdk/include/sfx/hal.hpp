@@ -255,6 +255,7 @@ struct DeviceCaps {
     std::string apiName;      // "Vulkan 1.3.239", "OpenGL ES 3.2 Mesa 22.3.6", ...
     uint32_t apiMajor = 0, apiMinor = 0;
     std::string deviceName;   // "llvmpipe (LLVM 15.0.6, 256 bits)", "NVIDIA H100 ..."
+    std::string deviceChoice; // why this device: "the only usable device of 1", "asked for by ..."
     ShaderDialect dialect = ShaderDialect::Spirv;  // what createProgram consumes
     CapabilityCeiling ceiling = CapabilityCeiling::None;
 
@@ -308,6 +309,11 @@ struct DeviceOptions {
     // commands (Device::beginRecording), which takes most of a dispatch's CPU cost away. Off:
     // every frame records every command, as capture tools that follow calls one by one may want.
     bool reuseRecordings = true;
+    // Vulkan, own device: which physical device to open. Empty: the usable one of the best type
+    // (discrete, integrated, virtual, CPU); otherwise its index in the loader's order or part of
+    // its name ("SwiftShader", "llvmpipe"). Other backends have no choice to make and refuse a
+    // non-empty value (InvalidArgument).
+    std::string physicalDevice;
 };
 
 // How many objects of one kind exist now and how many were ever made.

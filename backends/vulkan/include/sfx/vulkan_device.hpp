@@ -5,6 +5,8 @@
 #include <vulkan/vulkan.h>
 
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "sfx/hal.hpp"
 
@@ -14,6 +16,20 @@ namespace sfx::vulkan {
 // device (discrete first). BackendUnavailable with the reason when the loader, an ICD, a 1.3
 // device or (with options.validation) VK_LAYER_KHRONOS_validation is missing.
 Result<std::unique_ptr<Device>> createDevice(const DeviceOptions& options = {});
+
+// One Vulkan physical device the loader sees (VK_ICD_FILENAMES / VK_DRIVER_FILES select drivers),
+// in the loader's order: what DeviceOptions::physicalDevice picks among.
+struct PhysicalDeviceInfo {
+    uint32_t index = 0;
+    std::string name;        // VkPhysicalDeviceProperties::deviceName
+    std::string type;        // "discrete GPU", "integrated GPU", "virtual GPU", "CPU", "other"
+    std::string apiVersion;  // "1.3.239"
+    int typeRank = 0;        // what the default choice prefers: discrete 4, integrated 3, virtual 2, else 1
+    bool usable = false;
+    std::string unusableReason;  // when not usable: "no dynamic rendering", "no graphics+compute queue"
+};
+// BackendUnavailable when there is no loader or no driver.
+Result<std::vector<PhysicalDeviceInfo>> listPhysicalDevices();
 
 // A host engine's Vulkan objects. The SDK uses them but never destroys them; they must outlive
 // the Device. The device must have been created with dynamic rendering enabled (Vulkan 1.3
