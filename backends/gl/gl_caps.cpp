@@ -86,6 +86,11 @@ Status GlDevice::init(CapabilityCeiling ceiling) {
         return uint64_t(std::max<GLint64>(x, 0));
     };
     c.limits.maxTextureSize = geti(GL_MAX_TEXTURE_SIZE);
+    GLint viewport[2] = {0, 0};
+    gl_.glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+    const uint32_t renderbuffer = geti(GL_MAX_RENDERBUFFER_SIZE);
+    c.limits.maxRenderTargetWidth = std::min({uint32_t(std::max(viewport[0], 0)), renderbuffer, c.limits.maxTextureSize});
+    c.limits.maxRenderTargetHeight = std::min({uint32_t(std::max(viewport[1], 0)), renderbuffer, c.limits.maxTextureSize});
     c.limits.maxColorAttachments = std::min(geti(GL_MAX_COLOR_ATTACHMENTS), geti(GL_MAX_DRAW_BUFFERS));
     c.limits.maxUniformBlockSize = get64(GL_MAX_UNIFORM_BLOCK_SIZE);
     c.limits.maxStorageBufferSize = full ? get64(GL_MAX_SHADER_STORAGE_BLOCK_SIZE) : 0;

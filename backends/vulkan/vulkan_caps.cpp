@@ -31,6 +31,8 @@ void VulkanDevice::fillCaps(const DeviceOptions& options) {
 
     const VkPhysicalDeviceLimits& l = props_.limits;
     c.limits.maxTextureSize = l.maxImageDimension2D;
+    c.limits.maxRenderTargetWidth = std::min({l.maxFramebufferWidth, l.maxViewportDimensions[0], l.maxImageDimension2D});
+    c.limits.maxRenderTargetHeight = std::min({l.maxFramebufferHeight, l.maxViewportDimensions[1], l.maxImageDimension2D});
     c.limits.maxColorAttachments = std::min<uint32_t>(l.maxColorAttachments, 8);
     c.limits.maxUniformBlockSize = l.maxUniformBufferRange;
     c.limits.maxStorageBufferSize = fullFeatures_ ? l.maxStorageBufferRange : 0;

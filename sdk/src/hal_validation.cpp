@@ -13,6 +13,9 @@ Status textureDesc(const TextureDesc& d, const DeviceCaps& caps) {
     const uint32_t maxSize = caps.limits.maxTextureSize;
     if (d.width == 0 || d.width > maxSize) return fail(Error::TextureWidth, {str(d.width), str(maxSize)});
     if (d.height == 0 || d.height > maxSize) return fail(Error::TextureHeight, {str(d.height), str(maxSize)});
+    if ((d.usage & kTextureRenderTarget) && (d.width > caps.limits.maxRenderTargetWidth || d.height > caps.limits.maxRenderTargetHeight))
+        return fail(Error::TextureRenderTargetSize,
+                    {str(d.width), str(d.height), str(caps.limits.maxRenderTargetWidth), str(caps.limits.maxRenderTargetHeight)});
     const uint32_t maxLevels = maxMipLevels(d.width, d.height);
     if (d.mipLevels == 0 || d.mipLevels > maxLevels)
         return fail(Error::TextureMipLevels, {str(d.mipLevels), str(maxLevels), str(d.width), str(d.height)});

@@ -22,6 +22,7 @@ constexpr ErrorEntry kTable[] = {
 
     {E::TextureWidth, C::InvalidArgument, "TextureWidth", "TextureDesc.width is {}; allowed [1, {}]"},
     {E::TextureHeight, C::InvalidArgument, "TextureHeight", "TextureDesc.height is {}; allowed [1, {}]"},
+    {E::TextureRenderTargetSize, C::InvalidArgument, "TextureRenderTargetSize", "TextureDesc is {}x{} with usage render-target; allowed at most {}x{} (the device's framebuffer and viewport limits)"},
     {E::TextureMipLevels, C::InvalidArgument, "TextureMipLevels", "TextureDesc.mipLevels is {}; allowed [1, {}] for {}x{}"},
     {E::TextureFormatUnknown, C::UnsupportedFormat, "TextureFormatUnknown", "TextureDesc.format is {}, not a Format; allowed {}"},
     {E::TextureUsage, C::InvalidArgument, "TextureUsage", "TextureDesc.usage is {}; allowed a non-empty combination of sampled, render-target and storage"},

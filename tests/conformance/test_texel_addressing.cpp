@@ -11,13 +11,16 @@
 
 using namespace sfx;
 
-TEST_CASE("sfxTexel reads every texel at its own index up to 16384 texels", "[hal][texel]") {
+TEST_CASE("sfxTexel reads every texel at its own index up to the device's render-target limit", "[hal][texel]") {
     Device& dev = test::device();
     if (dev.caps().backend == BackendKind::Null) SFX_SKIP("the null backend draws nothing: no texel to read on " << test::label());
-    // The largest size, one below it, and sizes whose reciprocals are not powers of two.
-    const uint32_t lengths[] = {16384, 16383, 12345, 10001};
-    for (uint32_t n : lengths)
-        for (bool row : {true, false}) {
+    // The largest size (16384 on lavapipe and llvmpipe, 8192 on SwiftShader), one below it, and
+    // sizes whose reciprocals are not powers of two.
+    const DeviceLimits& limits = dev.caps().limits;
+    for (bool row : {true, false})
+        for (uint32_t n : {row ? limits.maxRenderTargetWidth : limits.maxRenderTargetHeight,
+                           (row ? limits.maxRenderTargetWidth : limits.maxRenderTargetHeight) - 1, 12345u, 10001u, 6173u}) {
+            if (n > (row ? limits.maxRenderTargetWidth : limits.maxRenderTargetHeight)) continue;
             const uint32_t w = row ? n : 1, h = row ? 1 : n;
             INFO(test::label() << " " << w << "x" << h);
             Result<std::unique_ptr<samples::CopyPass>> copy = samples::makeCopyPass(dev, test::tier(), w, h, Format::R32F);

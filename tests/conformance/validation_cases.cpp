@@ -159,6 +159,15 @@ std::vector<ValidationCase> makeCases() {
         [](Objects& o) {
             return o.dev.createTexture({4, o.dev.caps().limits.maxTextureSize + 1, 1, Format::RGBA8, kTextureSampled}).status();
         });
+    add("render target beyond the framebuffer limit", Error::TextureRenderTargetSize,
+        [](const Caps& c) { return c.limits.maxRenderTargetWidth < c.limits.maxTextureSize; },
+        [](const Caps& c) {
+            return "TextureDesc is " + str(c.limits.maxRenderTargetWidth + 1) + "x4 with usage render-target; allowed at most " +
+                   str(c.limits.maxRenderTargetWidth) + "x" + str(c.limits.maxRenderTargetHeight) + " (the device's framebuffer and viewport limits)";
+        },
+        [](Objects& o) {
+            return o.dev.createTexture({o.dev.caps().limits.maxRenderTargetWidth + 1, 4, 1, Format::RGBA8, kTextureSampled | kTextureRenderTarget}).status();
+        });
     add("too many mips", Error::TextureMipLevels, {}, fixed("TextureDesc.mipLevels is 4; allowed [1, 3] for 4x4"),
         [](Objects& o) { return o.dev.createTexture({4, 4, 4, Format::RGBA8, kTextureSampled}).status(); });
     add("unknown format", Error::TextureFormatUnknown, {},
@@ -380,6 +389,7 @@ std::vector<DeviceCaps> craftedNullCaps() {
     DeviceCaps lacking = null::defaultCaps();
     lacking.sampledFormat[size_t(Format::RG32F)] = false;
     lacking.renderableFormat[size_t(Format::RG32F)] = false;
+    lacking.limits.maxRenderTargetWidth = lacking.limits.maxRenderTargetHeight = 8192;  // SwiftShader's framebuffer limit
     DeviceCaps vulkanLike = null::defaultCaps();
     vulkanLike.dialect = ShaderDialect::Spirv;
     vulkanLike.limits.maxStorageBufferSize = 1u << 20;  // below maxBufferSize, as on real devices

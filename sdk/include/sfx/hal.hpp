@@ -236,6 +236,10 @@ const char* toString(CapabilityCeiling ceiling);
 
 struct DeviceLimits {
     uint32_t maxTextureSize = 0;
+    // The largest render target: the smaller of the framebuffer and viewport limits and
+    // maxTextureSize (Vulkan maxFramebufferWidth/Height and maxViewportDimensions; GL
+    // MAX_VIEWPORT_DIMS and MAX_RENDERBUFFER_SIZE). A texture with usage render-target beyond it is refused.
+    uint32_t maxRenderTargetWidth = 0, maxRenderTargetHeight = 0;
     uint32_t maxColorAttachments = 0;
     uint64_t maxUniformBlockSize = 0;
     uint64_t maxStorageBufferSize = 0;  // 0 without storage buffers

@@ -23,6 +23,7 @@ enum class Error : uint32_t {
     // Descriptions of resources.
     TextureWidth,
     TextureHeight,
+    TextureRenderTargetSize,
     TextureMipLevels,
     TextureFormatUnknown,
     TextureUsage,

@@ -29,10 +29,10 @@ inline Result<ProgramHandle> loadProgram(Device& device, const char* name, Tier 
 // A target size inside the device's limits; `what` prefixes the field names in the message
 // ("AoDesc" gives "AoDesc.width is 0; allowed [1, 16384]").
 inline Status checkTargetSize(const Device& device, uint32_t width, uint32_t height, const std::string& what) {
-    const uint32_t maxSize = device.caps().limits.maxTextureSize;
-    const std::string range = "[1, " + std::to_string(maxSize) + "]";
-    if (width == 0 || width > maxSize) return invalidArgument(what + "width", std::to_string(width), range);
-    if (height == 0 || height > maxSize) return invalidArgument(what + "height", std::to_string(height), range);
+    const DeviceLimits& limits = device.caps().limits;
+    const auto range = [](uint32_t max) { return "[1, " + std::to_string(max) + "] (the device's render-target limit)"; };
+    if (width == 0 || width > limits.maxRenderTargetWidth) return invalidArgument(what + "width", std::to_string(width), range(limits.maxRenderTargetWidth));
+    if (height == 0 || height > limits.maxRenderTargetHeight) return invalidArgument(what + "height", std::to_string(height), range(limits.maxRenderTargetHeight));
     return Status::ok();
 }
 
