@@ -100,7 +100,24 @@ TEST_CASE("hal: depth formats upload and read back in the HAL's byte layout", "[
     // float, so one step of the 24 bits is allowed.
     std::vector<uint32_t> u24(w * h);
     for (size_t i = 0; i < u24.size(); ++i) u24[i] = (uint32_t(i * 1000003u % 16777216u) << 8) | 0x5Au;
-    TextureHandle d24 = makeTexture(c, w, h, Format::D24S8, kTextureSampled | kTextureRenderTarget);
+    // A device without D24S8 (SwiftShader can neither sample it nor render to it: the format
+    // properties say so) refuses it by name; the SDK's effects never need it.
+    if (!dev().caps().renderableFormat[size_t(Format::D24S8)]) {
+        const Status refused = dev().createTexture({w, h, 1, Format::D24S8, kTextureRenderTarget}).status();
+        CHECK(refused.code() == StatusCode::UnsupportedFormat);
+        CHECK(refused.message().find("TextureDesc.format is D24S8, which this device cannot render to") != std::string::npos);
+        SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+        return;
+    }
+    // Renderable but not sampled: the sampled usage is refused by name, the attachment still
+    // uploads and reads back.
+    const bool d24Sampled = dev().caps().sampledFormat[size_t(Format::D24S8)];
+    if (!d24Sampled) {
+        const Status refused = dev().createTexture({w, h, 1, Format::D24S8, kTextureSampled | kTextureRenderTarget}).status();
+        CHECK(refused.code() == StatusCode::UnsupportedFormat);
+        CHECK(refused.message().find("TextureDesc.format is D24S8, which this device cannot sample") != std::string::npos);
+    }
+    TextureHandle d24 = makeTexture(c, w, h, Format::D24S8, kTextureRenderTarget | (d24Sampled ? kTextureSampled : 0u));
     SFX_REQUIRE_OK(dev().writeTexture(d24, 0, u24.data(), u24.size() * 4));
     std::vector<uint32_t> back24 = readLevel<uint32_t>(d24);
     for (size_t i = 0; i < u24.size(); ++i) {
