@@ -115,6 +115,21 @@ std::string defaultCostCacheDir() {
     return "sfx-cost-cache";
 }
 
+// The limits and formats the tiers and effects rely on, two lines.
+void printLimitsAndFormats(std::ostream& out, const DeviceCaps& caps) {
+    const DeviceLimits& l = caps.limits;
+    out << "  limits: textures up to " << l.maxTextureSize << ", render targets up to " << l.maxRenderTargetWidth << "x"
+        << l.maxRenderTargetHeight << ", " << l.maxColorAttachments << " colour attachments, uniform blocks "
+        << l.maxUniformBlockSize << " bytes, storage buffers " << l.maxStorageBufferSize << " bytes, compute work groups "
+        << l.maxComputeWorkGroupInvocations << " invocations, " << l.maxTextureBindings << " texture bindings\n";
+    std::string sampled, renderable;
+    for (size_t f = 1; f < size_t(Format::Count); ++f) {
+        if (caps.sampledFormat[f]) sampled += std::string(sampled.empty() ? "" : " ") + toString(Format(f));
+        if (caps.renderableFormat[f]) renderable += std::string(renderable.empty() ? "" : " ") + toString(Format(f));
+    }
+    out << "  formats sampled: " << sampled << "; render targets: " << renderable << "\n";
+}
+
 struct BudgetFlags {
     double budgetMs = 0;  // 0: no budget asked for
     std::string size = "1920x1080", effect = "ao", cacheDir = defaultCostCacheDir();
@@ -193,6 +208,7 @@ Command addInfoCommand(CLI::App& app) {
                 }
                 std::cout << dev.value()->caps().summary() << "\n";
                 if (config.backend == BackendKind::Vulkan) std::cout << "  device: " << dev.value()->caps().deviceChoice << "\n";
+                printLimitsAndFormats(std::cout, dev.value()->caps());
                 Result<tiers::TierChoice> t = tiers::choose(dev.value()->caps());
                 std::cout << "  " << (t ? t->reason : t.status().toString()) << "\n";
             }
