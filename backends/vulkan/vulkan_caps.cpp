@@ -13,8 +13,7 @@ void VulkanDevice::fillCaps(const DeviceOptions& options) {
     c.platform = "vulkan-loader";
     c.apiMajor = VK_API_VERSION_MAJOR(props_.apiVersion);
     c.apiMinor = VK_API_VERSION_MINOR(props_.apiVersion);
-    c.apiName = "Vulkan " + std::to_string(c.apiMajor) + "." + std::to_string(c.apiMinor) + "." +
-                std::to_string(VK_API_VERSION_PATCH(props_.apiVersion));
+    c.apiName = "Vulkan " + vkVersionString(props_.apiVersion);
     c.deviceName = props_.deviceName;
     c.deviceChoice = ownsDevice_ ? deviceChoice_ : "the host's VkPhysicalDevice (wrapDevice)";
     c.dialect = ShaderDialect::Spirv;

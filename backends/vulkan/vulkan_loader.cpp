@@ -55,6 +55,21 @@ Status loadDeviceFunctions(Functions& f, VkDevice device) {
     return Status::ok();
 }
 
+std::string vkVersionString(uint32_t version) {
+    return std::to_string(VK_API_VERSION_MAJOR(version)) + "." + std::to_string(VK_API_VERSION_MINOR(version)) + "." +
+           std::to_string(VK_API_VERSION_PATCH(version));
+}
+
+uint32_t instanceApiVersion(const Functions& f) {
+    uint32_t version = VK_API_VERSION_1_0;
+    if (f.vkEnumerateInstanceVersion) f.vkEnumerateInstanceVersion(&version);
+    return version >= VK_API_VERSION_1_3 ? VK_API_VERSION_1_3 : version;
+}
+
+Status instanceCreationFailed(VkResult r) {
+    return {StatusCode::BackendUnavailable, "vkCreateInstance failed (" + vkResultName(r) + "): no usable Vulkan driver (ICD) on this machine"};
+}
+
 std::string vkResultName(VkResult r) {
     switch (r) {
     case VK_SUCCESS: return "VK_SUCCESS";

@@ -132,6 +132,12 @@ Status loadInstanceFunctions(Functions& f, VkInstance instance);
 Status loadDeviceFunctions(Functions& f, VkDevice device);
 
 std::string vkResultName(VkResult r);
+// "1.3.239": a packed Vulkan version as major.minor.patch.
+std::string vkVersionString(uint32_t version);
+// The API version an own instance is made for: the loader's, at most 1.3.
+uint32_t instanceApiVersion(const Functions& f);
+// BackendUnavailable for a failed vkCreateInstance: no usable driver.
+Status instanceCreationFailed(VkResult r);
 // DeviceError naming the call and its result.
 Status vkError(const char* call, VkResult r);
 

@@ -57,8 +57,7 @@ std::vector<PhysicalDeviceCandidate> describePhysicalDevices(const Functions& vk
         c.info.index = i;
         c.info.name = p.deviceName;
         c.info.type = typeName(p.deviceType);
-        c.info.apiVersion = std::to_string(VK_API_VERSION_MAJOR(p.apiVersion)) + "." + std::to_string(VK_API_VERSION_MINOR(p.apiVersion)) +
-                            "." + std::to_string(VK_API_VERSION_PATCH(p.apiVersion));
+        c.info.apiVersion = vkVersionString(p.apiVersion);
         c.info.typeRank = typeRank(p.deviceType);
         uint32_t extCount = 0;
         vk.vkEnumerateDeviceExtensionProperties(gpus[i], nullptr, &extCount, nullptr);
@@ -130,18 +129,16 @@ Result<std::vector<PhysicalDeviceInfo>> listPhysicalDevices() {
         closeLoader(library);
         return opened;
     }
-    uint32_t instanceVersion = VK_API_VERSION_1_0;
-    if (vk.vkEnumerateInstanceVersion) vk.vkEnumerateInstanceVersion(&instanceVersion);
     VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
     app.pApplicationName = "ScalableFX";
-    app.apiVersion = instanceVersion >= VK_API_VERSION_1_3 ? VK_API_VERSION_1_3 : instanceVersion;
+    app.apiVersion = instanceApiVersion(vk);
     VkInstanceCreateInfo ci{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
     ci.pApplicationInfo = &app;
     VkInstance instance = VK_NULL_HANDLE;
     VkResult r = vk.vkCreateInstance(&ci, nullptr, &instance);
     if (r != VK_SUCCESS) {
         closeLoader(library);
-        return Status{StatusCode::BackendUnavailable, "vkCreateInstance failed (" + vkResultName(r) + "): no usable Vulkan driver (ICD) on this machine"};
+        return instanceCreationFailed(r);
     }
     std::vector<PhysicalDeviceInfo> out;
     if (loadInstanceFn(vk, instance, "vkDestroyInstance", &vk.vkDestroyInstance) &&

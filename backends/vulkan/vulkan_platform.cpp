@@ -49,8 +49,7 @@ Status VulkanDevice::initOwn(const DeviceOptions& options) {
 // the validation layer and debug utils when asked; apiVersion is what the instance was made for.
 Status VulkanDevice::createInstance(const DeviceOptions& options, uint32_t& apiVersion) {
     SFX_TRY(openLoader(vk_, setup_.loaderLibrary));
-    uint32_t instanceVersion = VK_API_VERSION_1_0;
-    if (vk_.vkEnumerateInstanceVersion) vk_.vkEnumerateInstanceVersion(&instanceVersion);
+    const uint32_t instanceVersion = instanceApiVersion(vk_);
     if (instanceVersion < VK_API_VERSION_1_1)
         return {StatusCode::BackendUnavailable, "the Vulkan loader supports only Vulkan 1.0; 1.1 or later is needed"};
 
@@ -74,7 +73,7 @@ Status VulkanDevice::createInstance(const DeviceOptions& options, uint32_t& apiV
     VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
     app.pApplicationName = "ScalableFX";
     app.pEngineName = "ScalableFX";
-    app.apiVersion = instanceVersion >= VK_API_VERSION_1_3 ? VK_API_VERSION_1_3 : instanceVersion;
+    app.apiVersion = instanceVersion;
     VkInstanceCreateInfo ci{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
     ci.pApplicationInfo = &app;
     ci.enabledLayerCount = uint32_t(layers.size());
@@ -93,8 +92,7 @@ Status VulkanDevice::createInstance(const DeviceOptions& options, uint32_t& apiV
     if (options.validation) ci.pNext = &features;
     VkResult r = vk_.vkCreateInstance(&ci, nullptr, &setup_.instance);
     if (r != VK_SUCCESS)
-        return {StatusCode::BackendUnavailable, "vkCreateInstance failed (" + vkResultName(r) +
-                                                    "): no usable Vulkan driver (ICD) on this machine"};
+        return instanceCreationFailed(r);
     setup_.ownsInstance = true;
     setup_.debugUtils = options.validation;
     SFX_TRY(loadInstanceFunctions(vk_, setup_.instance));
