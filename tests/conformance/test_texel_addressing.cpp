@@ -17,10 +17,10 @@ TEST_CASE("sfxTexel reads every texel at its own index up to the device's render
     // The largest size (16384 on lavapipe and llvmpipe, 8192 on SwiftShader), one below it, and
     // sizes whose reciprocals are not powers of two.
     const DeviceLimits& limits = dev.caps().limits;
-    for (bool row : {true, false})
-        for (uint32_t n : {row ? limits.maxRenderTargetWidth : limits.maxRenderTargetHeight,
-                           (row ? limits.maxRenderTargetWidth : limits.maxRenderTargetHeight) - 1, 12345u, 10001u, 6173u}) {
-            if (n > (row ? limits.maxRenderTargetWidth : limits.maxRenderTargetHeight)) continue;
+    for (bool row : {true, false}) {
+        const uint32_t limit = row ? limits.maxRenderTargetWidth : limits.maxRenderTargetHeight;
+        for (uint32_t n : {limit, limit - 1, 12345u, 10001u, 6173u}) {
+            if (n > limit) continue;
             const uint32_t w = row ? n : 1, h = row ? 1 : n;
             INFO(test::label() << " " << w << "x" << h);
             Result<std::unique_ptr<samples::CopyPass>> copy = samples::makeCopyPass(dev, test::tier(), w, h, Format::R32F);
@@ -37,4 +37,5 @@ TEST_CASE("sfxTexel reads every texel at its own index up to the device's render
                 if (out[i] != values[i] && wrong++ < 5) UNSCOPED_INFO("texel " << i << " read " << out[i]);
             CHECK(wrong == 0);
         }
+    }
 }
