@@ -12,13 +12,11 @@ void main() {
     vec3 C = aoPosition(p, z);
     vec3 n = aoNormal(p, C, z, size);
     float r = params.radius;
-    float screenRadius = r * params.pixelsPerUnit / z;
-    float phi = aoRotationAngle(p);
+    float screenRadius = aoScreenRadius(r, params.pixelsPerUnit, z);
+    int rotation = aoRotationIndex(p);
     float sum = 0.0;
     for (int i = 0; i < kAoSamples; ++i) {
-        float rho = sqrt((float(i) + 0.5) / float(kAoSamples)) * screenRadius;
-        float theta = float(i) * SFX_AO_GOLDEN_ANGLE + phi;
-        ivec2 q = aoTap(p, rho * vec2(cos(theta), sin(theta)), size);
+        ivec2 q = aoTap(p, aoDiskTapRadius(i, kAoSamples, screenRadius), aoTapDirection(aoAlchemyTurnsQ16(i), rotation), size);
         vec3 v = aoPosition(q, aoDepth(q)) - C;
         float term = aoAlchemyTerm(dot(v, v), dot(v, n), z, r, params.bias, params.epsilon);
 #ifdef SFX_AO_MULTILAYER

@@ -6,8 +6,8 @@
 #define SFX_AO_PASS 1
 #include "sfx_shared_ao.h"
 
-float scalableTap(ivec2 p, vec2 offset, int level, ivec2 size, vec3 C, vec3 n) {
-    ivec2 q = aoTap(p, offset, size);
+float scalableTap(ivec2 p, float h, vec2 d, int level, ivec2 size, vec3 C, vec3 n) {
+    ivec2 q = aoTap(p, h, d, size);
     ivec2 m = min(q >> level, textureSize(uDepth, level) - 1);
     vec3 v = aoPosition(q, aoDepthAt(m, level)) - C;
     float term = aoScalableTerm(dot(v, v), dot(v, n), params.radius, params.bias, params.epsilon);
@@ -31,23 +31,21 @@ void main() {
     bool sky = !(z < params.maxDepth);
     vec3 C = aoPosition(p, z);
     vec3 n = aoNormal(p, C, z, size);
-    float screenRadius = params.radius * params.pixelsPerUnit / z;
+    float screenRadius = aoScreenRadius(params.radius, params.pixelsPerUnit, z);
     if (kAoClampRadius != 0) screenRadius = min(screenRadius, params.maxRadiusPx);
-    float phi = aoRotationAngle(p);
+    int rotation = aoRotationIndex(p);
     const int offsets = kAoMirrored != 0 ? kAoSamples / 2 : kAoSamples;
     float sum = 0.0;
     for (int i = 0; i < offsets; ++i) {
-        float alpha = (float(i) + 0.5) / float(offsets);
-        float h = alpha * screenRadius;
-        float theta = SFX_AO_TWO_PI * alpha * params.spiralTurns + phi;
-        vec2 offset = h * vec2(cos(theta), sin(theta));
+        float h = aoSpiralTapRadius(i, offsets, screenRadius);
+        vec2 d = aoTapDirection(aoSpiralTurnsQ16(i, params.spiralHalfStepQ16), rotation);
         int level = 0;
 #ifdef SFX_AO_DEPTH_MIP  // generated from the tier table (TierProfile::aoUsesDepthMip)
         if (kAoMipLevels > 1 && h >= 1.0)
-            level = clamp(int(floor(log2(h))) - SFX_AO_MIP_LEVEL_OFFSET, 0, kAoMipLevels - 1);
+            level = clamp(aoFloorLog2(h) - SFX_AO_MIP_LEVEL_OFFSET, 0, kAoMipLevels - 1);
 #endif
-        sum += scalableTap(p, offset, level, size, C, n);
-        if (kAoMirrored != 0) sum += scalableTap(p, -offset, level, size, C, n);
+        sum += scalableTap(p, h, d, level, size, C, n);
+        if (kAoMirrored != 0) sum += scalableTap(p, h, -d, level, size, C, n);
     }
     float occlusion = aoScalableOcclusion(sum, params.intensity, kAoSamples, params.sumExponent);
     aoWrite(sky ? 1.0 : aoFinish(occlusion), z, sky);

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 namespace sfx::shared {
 using glm::cross;
@@ -26,10 +27,82 @@ using std::sqrt;
 #define SFX_AO_VEC3 vec3
 #endif
 
-SFX_CONST(float, SFX_AO_TWO_PI, 6.28318530717958647692)
+// ---- Tap directions ------------------------------------------------------------------------
+// Every tap direction is one of 256 unit vectors, k / 256 of a turn, read from a table of the
+// first quarter turn and turned by exact quarter turns: no sin or cos in any pass. Vulkan and
+// GL ES bound sin and cos only to 2^-11 absolute inside [-pi, pi] and not at all outside it, and
+// an angle such as i golden angles plus the pixel's rotation reaches 160 radians: drivers moved
+// taps by hundredths of a pixel and across pixel edges. With the table a tap's offset is its
+// radius times a constant, which the GPU and the reference round alike to within an ulp.
+// Angles are integers in 1/65536 of a turn (Q16), so both languages compute the same index.
+SFX_ARRAY_BEGIN(vec2, SFX_AO_QUARTER_TURN, 64)
+    SFX_VEC2(1.0, 0.0), SFX_VEC2(0.999698818, 0.024541229), SFX_VEC2(0.99879545, 0.0490676761), SFX_VEC2(0.997290432, 0.0735645667),
+    SFX_VEC2(0.99518472, 0.0980171412), SFX_VEC2(0.992479563, 0.122410677), SFX_VEC2(0.989176512, 0.146730468), SFX_VEC2(0.985277653, 0.170961887),
+    SFX_VEC2(0.980785251, 0.195090324), SFX_VEC2(0.975702107, 0.219101235), SFX_VEC2(0.970031261, 0.242980182), SFX_VEC2(0.963776052, 0.266712755),
+    SFX_VEC2(0.956940353, 0.290284663), SFX_VEC2(0.949528158, 0.313681751), SFX_VEC2(0.941544056, 0.336889863), SFX_VEC2(0.932992816, 0.359895051),
+    SFX_VEC2(0.923879504, 0.382683426), SFX_VEC2(0.914209783, 0.405241311), SFX_VEC2(0.903989315, 0.427555084), SFX_VEC2(0.893224299, 0.449611336),
+    SFX_VEC2(0.881921291, 0.471396744), SFX_VEC2(0.870086968, 0.492898196), SFX_VEC2(0.857728601, 0.514102757), SFX_VEC2(0.84485358, 0.534997642),
+    SFX_VEC2(0.831469595, 0.555570245), SFX_VEC2(0.817584813, 0.575808167), SFX_VEC2(0.803207517, 0.59569931), SFX_VEC2(0.78834641, 0.615231574),
+    SFX_VEC2(0.773010433, 0.634393275), SFX_VEC2(0.757208824, 0.653172851), SFX_VEC2(0.740951121, 0.671558976), SFX_VEC2(0.724247098, 0.689540565),
+    SFX_VEC2(0.707106769, 0.707106769), SFX_VEC2(0.689540565, 0.724247098), SFX_VEC2(0.671558976, 0.740951121), SFX_VEC2(0.653172851, 0.757208824),
+    SFX_VEC2(0.634393275, 0.773010433), SFX_VEC2(0.615231574, 0.78834641), SFX_VEC2(0.59569931, 0.803207517), SFX_VEC2(0.575808167, 0.817584813),
+    SFX_VEC2(0.555570245, 0.831469595), SFX_VEC2(0.534997642, 0.84485358), SFX_VEC2(0.514102757, 0.857728601), SFX_VEC2(0.492898196, 0.870086968),
+    SFX_VEC2(0.471396744, 0.881921291), SFX_VEC2(0.449611336, 0.893224299), SFX_VEC2(0.427555084, 0.903989315), SFX_VEC2(0.405241311, 0.914209783),
+    SFX_VEC2(0.382683426, 0.923879504), SFX_VEC2(0.359895051, 0.932992816), SFX_VEC2(0.336889863, 0.941544056), SFX_VEC2(0.313681751, 0.949528158),
+    SFX_VEC2(0.290284663, 0.956940353), SFX_VEC2(0.266712755, 0.963776052), SFX_VEC2(0.242980182, 0.970031261), SFX_VEC2(0.219101235, 0.975702107),
+    SFX_VEC2(0.195090324, 0.980785251), SFX_VEC2(0.170961887, 0.985277653), SFX_VEC2(0.146730468, 0.989176512), SFX_VEC2(0.122410677, 0.992479563),
+    SFX_VEC2(0.0980171412, 0.99518472), SFX_VEC2(0.0735645667, 0.997290432), SFX_VEC2(0.0490676761, 0.99879545), SFX_VEC2(0.024541229, 0.999698818)
+SFX_ARRAY_END
+// The unit vector at k / 256 of a turn (k taken modulo 256).
+SFX_FN vec2 aoDirection(int k) {
+    vec2 v = SFX_AO_QUARTER_TURN[k & 63];
+    int quarter = (k >> 6) & 3;
+    if ((quarter & 1) != 0) v = SFX_VEC2(-v.y, v.x);
+    if ((quarter & 2) != 0) v = SFX_VEC2(-v.x, -v.y);
+    return v;
+}
+// A tap at turnsQ16 (of 65536), turned by the pixel's rotation (of 256, aoRotationIndex).
+SFX_FN vec2 aoTapDirection(int turnsQ16, int rotation) { return aoDirection(((turnsQ16 + 128) >> 8) + rotation); }
+
+// ---- Where a tap lands -----------------------------------------------------------------------
+// Which pixel a tap reads is a discrete decision, so the reference (aoTaps) makes it with the
+// shader's own single-precision operations on the float values the shader receives. Vulkan
+// rounds products and sums correctly, and `precise` keeps a driver from fusing them into one
+// rounding; only the division by depth and the square root may differ by the few ulps the
+// specification allows. The offset is floored on its own, then added to the integer pixel:
+// floor(p + 0.5 + o) in float would round to the ulp of p (2^-10 px at 8192 pixels), while
+// floor(0.5 + o) rounds to the ulp of o. The MIP level a Scalable tap reads is the highest set
+// bit of its distance's integer part, exactly floor(log2(h)) without a log2 whose result a driver
+// may round up across the integer just below a power of two.
+#ifdef __cplusplus
+inline float aoScreenRadius(float radius, float pixelsPerUnit, float z) { return radius * pixelsPerUnit / z; }
+// Alchemy's tap i of samples: sqrt((i + 0.5) / samples) of the screen radius.
+inline float aoDiskTapRadius(int i, int samples, float screenRadius) { return std::sqrt((float(i) + 0.5f) / float(samples)) * screenRadius; }
+// Scalable's tap i of offsets: (i + 0.5) / offsets of the screen radius.
+inline float aoSpiralTapRadius(int i, int offsets, float screenRadius) { return (float(i) + 0.5f) / float(offsets) * screenRadius; }
+// The tap's pixel relative to its centre's. Each float operation rounds on its own here (x86-64
+// without -mfma has no fused multiply-add to contract into).
+inline ivec2 aoTapStep(float rho, vec2 d) {
+    const float ox = rho * d.x, oy = rho * d.y;
+    return ivec2{int(std::floor(0.5f + ox)), int(std::floor(0.5f + oy))};
+}
+// floor(log2(h)) for h >= 1 (distances past 65536 pixels count as 65536: no level is that deep).
+inline int aoFloorLog2(float h) { return int(std::bit_width(uint32_t(std::min(h, 65536.0f)))) - 1; }
+#else
+float aoScreenRadius(float radius, float pixelsPerUnit, float z) { return radius * pixelsPerUnit / z; }
+float aoDiskTapRadius(int i, int samples, float screenRadius) { return sqrt((float(i) + 0.5) / float(samples)) * screenRadius; }
+float aoSpiralTapRadius(int i, int offsets, float screenRadius) { return (float(i) + 0.5) / float(offsets) * screenRadius; }
+ivec2 aoTapStep(float rho, vec2 d) {
+    precise vec2 o = rho * d;
+    precise vec2 t = 0.5 + o;
+    return ivec2(floor(t));
+}
+int aoFloorLog2(float h) { return findMSB(int(min(h, 65536.0))); }
+#endif
 
 // ---- Spiral taps (Scalable AO) -----------------------------------------------------------
-// Tap i of N: alpha = (i + 0.5) / N, screen radius alpha * R, angle 2 pi alpha turns + phi.
+// Tap i of N: alpha = (i + 0.5) / N, screen radius alpha * R, angle alpha * turns (a turn being
+// 2 pi) plus the pixel's rotation.
 // 7 turns for 9 taps is the Scalable Ambient Obscurance reference's choice (a prime: no two
 // taps line up). The current tier uses 2 offsets, each also negated (4 taps): with an integer
 // number of turns both offsets would lie on one line through the centre; 1.5 turns puts them
@@ -38,11 +111,23 @@ SFX_CONST(float, SFX_AO_SPIRAL_TURNS_SPIRAL, 7.0)
 SFX_CONST(float, SFX_AO_SPIRAL_TURNS_MIRRORED, 1.5)
 // A tap at screen distance h reads depth MIP level clamp(floor(log2(h)) - Q, 0, levels - 1).
 SFX_CONST(int, SFX_AO_MIP_LEVEL_OFFSET, 3)
+// Tap i's angle, (2i + 1) half steps of turns / N each: the half step, in Q16 modulo a turn, is
+// what the host gives the shader (AoParams::spiralHalfStepQ16; aoSpiralHalfStepQ16 below).
+SFX_FN int aoSpiralTurnsQ16(int i, int halfStepQ16) { return ((2 * i + 1) * halfStepQ16) & 0xFFFF; }
+#ifdef __cplusplus
+// samples taps, in mirrored pairs (N = samples / 2 offsets) or not (N = samples).
+inline int32_t aoSpiralHalfStepQ16(double turns, uint32_t samples, bool mirrored) {
+    const double offsets = double(mirrored ? samples / 2 : samples);
+    return int32_t(std::llround(turns / (2.0 * offsets) * 65536.0) & 0xFFFF);
+}
+#endif
 
 // ---- Alchemy disk pattern -----------------------------------------------------------------
 // Sample i of s lies at radius sqrt((i + 0.5) / s) * R (uniform density in the projected disk)
-// and angle i * golden angle + phi (a Vogel spiral: no two samples share a direction).
-SFX_CONST(float, SFX_AO_GOLDEN_ANGLE, 2.39996322972865332)
+// and angle i golden angles plus the pixel's rotation (a Vogel spiral: no two samples share a
+// direction). The golden angle, 1 - 1 / golden ratio of a turn, is 25033 / 65536 (Q16).
+SFX_CONST(int, SFX_AO_GOLDEN_ANGLE_Q16, 25033)
+SFX_FN int aoAlchemyTurnsQ16(int i) { return (i * SFX_AO_GOLDEN_ANGLE_Q16) & 0xFFFF; }
 
 // ---- Crease shading: the 24 taps of the 11x11 stippled diamond ------------------------------
 // The pixels (dx, dy) with |dx| + |dy| in {2, 4}: every other pixel of the diamond of
@@ -190,13 +275,17 @@ SFX_FN SFX_REAL aoUpsampleResolve(SFX_REAL weightedSum, SFX_REAL weightSum, SFX_
 //   first, so a non-finite (NaN, +-inf), non-positive or overflowing neighbour is sky: the far
 //   plane, maxDepth. Positions, and so the normal, are then always finite.
 // - On each axis the tangent runs to the neighbour whose depth is closer to the centre's; ties
-//   (two sky neighbours, say) take the lower index; at the image border the only in-bounds one.
+//   take the lower index; at the image border the only in-bounds one. A tie is any pair whose
+//   differences from the centre agree to SFX_AO_NORMAL_TIE of the lower one's: the pixel on a
+//   crease, its two neighbours mirrored about it, has differences equal in float and a rounding
+//   apart in double, and a strict comparison let that rounding pick the side (and the normal).
 //   A sky neighbour is thus used only when the other is as far from the centre or absent.
 // - normal = normalize(cross(dx, dy)), facing the camera; a zero cross product gives +z.
 // aoNormalUsesNext: along an axis of `size` pixels, at index i, whether the next neighbour
 // (i + 1) is the one, given the (clamped) depths zPrev, zNext and the centre's z.
+SFX_CONST(float, SFX_AO_NORMAL_TIE, 0.0009765625)  // 2^-10, far above float's 2^-24
 SFX_FN bool aoNormalUsesNext(int i, int size, SFX_REAL zPrev, SFX_REAL zNext, SFX_REAL z) {
-    return i == 0 || (i < size - 1 && abs(zNext - z) < abs(zPrev - z));
+    return i == 0 || (i < size - 1 && abs(zNext - z) < abs(zPrev - z) * (1.0 - SFX_REAL(SFX_AO_NORMAL_TIE)));
 }
 // The unit normal of tangents dx, dy at view position C, turned to face the eye (C is the ray).
 SFX_FN SFX_AO_VEC3 aoFacingNormal(SFX_AO_VEC3 dx, SFX_AO_VEC3 dy, SFX_AO_VEC3 C) {
@@ -224,9 +313,8 @@ SFX_FN SFX_AO_VEC3 aoHostNormalOrZero(SFX_AO_VEC3 n) {
 }
 
 // ---- Per-pixel rotation --------------------------------------------------------------------
-// An integer hash of the pixel, so the GPU (32-bit float) and the reference (double) rotate
-// each pixel's pattern by the same angle: phi = (hash & 0xFFFF) * 2 pi / 65536. The low 16 bits
-// are exact in float, only the final multiply rounds.
+// An integer hash of the pixel turns its whole pattern by (hash & 255) / 256 of a turn, the same
+// on the GPU and in the reference (aoTapDirection adds it to each tap's direction index).
 #ifdef __cplusplus
 inline constexpr uint32_t aoRotationHash(int x, int y) {
     uint32_t h = (uint32_t(x) * 73856093u) ^ (uint32_t(y) * 19349663u);
@@ -235,7 +323,7 @@ inline constexpr uint32_t aoRotationHash(int x, int y) {
     h ^= h >> 15;
     return h;
 }
-inline double aoRotationAngle(int x, int y) { return double(aoRotationHash(x, y) & 0xFFFFu) * (6.28318530717958647692 / 65536.0); }
+inline constexpr int aoRotationIndex(int x, int y) { return int(aoRotationHash(x, y) & 0xFFu); }
 #else
 uint aoRotationHash(ivec2 p) {
     uint h = (uint(p.x) * 73856093u) ^ (uint(p.y) * 19349663u);
@@ -244,7 +332,7 @@ uint aoRotationHash(ivec2 p) {
     h ^= h >> 15;
     return h;
 }
-float aoRotationAngle(ivec2 p) { return float(aoRotationHash(p) & 0xFFFFu) * (SFX_AO_TWO_PI / 65536.0); }
+int aoRotationIndex(ivec2 p) { return int(aoRotationHash(p) & 0xFFu); }
 #endif
 
 // ---- Depth packed in two 8-bit channels (current tier, RGBA8 AO target) --------------------
@@ -329,7 +417,7 @@ SFX_BLOCK(AoParams, 2)
     SFX_M_FLOAT(epsilon) SFX_M_FLOAT(pixelsPerUnit) SFX_M_FLOAT(maxRadiusPx) SFX_M_FLOAT(maxDepth)
     SFX_M_INT(fullWidth) SFX_M_INT(fullHeight)  // the full-size image (aoFullResPixel's clamp)
     SFX_M_INT(creaseStride) SFX_M_INT(pad5)  // crease: pass pixels between diamond taps; counts: constants above
-    SFX_M_FLOAT(spiralTurns) SFX_M_FLOAT(keyBase) SFX_M_FLOAT(pad2) SFX_M_FLOAT(sumExponent)
+    SFX_M_INT(spiralHalfStepQ16) SFX_M_FLOAT(keyBase) SFX_M_FLOAT(pad2) SFX_M_FLOAT(sumExponent)
     SFX_M_FLOAT(creaseRange) SFX_M_FLOAT(creaseBias) SFX_M_FLOAT(creaseAverager) SFX_M_FLOAT(creaseMinimum)
     SFX_M_FLOAT(fadeStart) SFX_M_FLOAT(invFadeRange) SFX_M_FLOAT(pad0) SFX_M_FLOAT(pad1)
 SFX_BLOCK_END(params)
@@ -352,7 +440,7 @@ SFX_BLOCK_END(params)
 #endif
 #ifdef __cplusplus
 static_assert(sizeof(AoParams) == 112 && offsetof(AoParams, radius) == 16 && offsetof(AoParams, maxDepth) == 44 &&
-              offsetof(AoParams, spiralTurns) == 64 && offsetof(AoParams, fadeStart) == 96);
+              offsetof(AoParams, spiralHalfStepQ16) == 64 && offsetof(AoParams, fadeStart) == 96);
 static_assert(sizeof(BlurParams) == 48 && offsetof(BlurParams, direction) == 0 && offsetof(BlurParams, maxDepth) == 32);
 static_assert(sizeof(UpsampleParams) == 32);
 #endif
@@ -400,8 +488,8 @@ float aoLayerDepth(ivec2 q, int layer) {
 // At half size a texel's position is its full-size source pixel's (aoFullResPixel).
 ivec2 aoSourcePixel(ivec2 q) { return kAoHalfRes != 0 ? aoFullResPixel(q, ivec2(params.fullWidth, params.fullHeight)) : q; }
 vec3 aoPosition(ivec2 q, float z) { return reconstructViewPosition(vec2(aoSourcePixel(q)) + 0.5, z, params.projInfo); }
-// The pixel a tap lands on: floor(centre + offset), clamped to the image (as the reference).
-ivec2 aoTap(ivec2 p, vec2 offset, ivec2 size) { return clamp(ivec2(floor(vec2(p) + 0.5 + offset)), ivec2(0), size - 1); }
+// The pixel a tap at distance rho in direction d lands on, clamped to the image (as the reference).
+ivec2 aoTap(ivec2 p, float rho, vec2 d, ivec2 size) { return clamp(p + aoTapStep(rho, d), ivec2(0), size - 1); }
 
 // Normal from depth by the rule above (aoDepth applies sfxLinearDepthOrFar to every fetch).
 vec3 aoDerivedNormal(ivec2 p, vec3 C, float z, ivec2 size) {

@@ -39,7 +39,7 @@ float opaqueDepthAt(ivec2 q) {
     return sfxLinearizeDepth(texelFetch(uOpaqueDepth, q, 0).r, ao.ndcScale, ao.denomOffset, ao.numerator, ao.maxDepth);
 }
 vec3 positionAt(ivec2 q, float z) { return reconstructViewPosition(vec2(q) + 0.5, z, ao.projInfo); }
-ivec2 tapPixel(ivec2 p, vec2 offset) { return clamp(ivec2(floor(vec2(p) + 0.5 + offset)), ivec2(0), gSize - 1); }
+ivec2 tapPixel(ivec2 p, float rho, vec2 d) { return clamp(p + aoTapStep(rho, d), ivec2(0), gSize - 1); }
 
 // The opaque surface's normal from its depth (sfx_shared_ao.h's rule, as normalsFromDepth).
 vec3 opaqueNormal(ivec2 p, vec3 C, float z) {
@@ -104,14 +104,13 @@ float tapOcclusion(ivec2 q, vec3 C, vec3 n, float z, float exteriorWeight) {
 // Visibility of a receiver at pixel p, linear depth z, normal n (Algorithm 1 over the taps).
 float receiverVisibility(ivec2 p, float z, vec3 n, float exteriorWeight) {
     vec3 C = positionAt(p, z);
-    float screenRadius = ao.radius * ao.pixelsPerUnit / z;
-    float phi = aoRotationAngle(p);
+    float screenRadius = aoScreenRadius(ao.radius, ao.pixelsPerUnit, z);
+    int rotation = aoRotationIndex(p);
     float sum = 0.0;
     if (kTechnique == 0) {
         for (int i = 0; i < kSamples; ++i) {
-            float rho = sqrt((float(i) + 0.5) / float(kSamples)) * screenRadius;
-            float theta = float(i) * SFX_AO_GOLDEN_ANGLE + phi;
-            sum += tapOcclusion(tapPixel(p, rho * vec2(cos(theta), sin(theta))), C, n, z, exteriorWeight);
+            ivec2 q = tapPixel(p, aoDiskTapRadius(i, kSamples, screenRadius), aoTapDirection(aoAlchemyTurnsQ16(i), rotation));
+            sum += tapOcclusion(q, C, n, z, exteriorWeight);
         }
         return clamp(finishOcclusion(2.0 * ao.intensity * ao.radius / float(kSamples) * sum), 0.0, 1.0);
     }
@@ -120,12 +119,10 @@ float receiverVisibility(ivec2 p, float z, vec3 n, float exteriorWeight) {
     screenRadius = ao.maxRadiusPx > 0.0 ? min(screenRadius, ao.maxRadiusPx) : screenRadius;
     const int offsets = kMirrored != 0 ? kSamples / 2 : kSamples;
     for (int i = 0; i < offsets; ++i) {
-        float alpha = (float(i) + 0.5) / float(offsets);
-        float h = alpha * screenRadius;
-        float theta = SFX_AO_TWO_PI * alpha * ao.spiralTurns + phi;
-        vec2 offset = h * vec2(cos(theta), sin(theta));
-        sum += tapOcclusion(tapPixel(p, offset), C, n, z, exteriorWeight);
-        if (kMirrored != 0) sum += tapOcclusion(tapPixel(p, -offset), C, n, z, exteriorWeight);
+        float h = aoSpiralTapRadius(i, offsets, screenRadius);
+        vec2 d = aoTapDirection(aoSpiralTurnsQ16(i, ao.spiralHalfStepQ16), rotation);
+        sum += tapOcclusion(tapPixel(p, h, d), C, n, z, exteriorWeight);
+        if (kMirrored != 0) sum += tapOcclusion(tapPixel(p, h, -d), C, n, z, exteriorWeight);
     }
     return clamp(finishOcclusion(aoScalableOcclusion(sum, ao.intensity, kSamples, ao.sumExponent)), 0.0, 1.0);
 }

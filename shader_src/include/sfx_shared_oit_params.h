@@ -55,7 +55,7 @@ SFX_BLOCK(OitAoParams, 4)
     SFX_M_VEC4(projInfo)
     SFX_M_FLOAT(radius) SFX_M_FLOAT(intensity) SFX_M_FLOAT(contrast) SFX_M_FLOAT(bias)
     SFX_M_FLOAT(epsilon) SFX_M_FLOAT(pixelsPerUnit) SFX_M_FLOAT(maxRadiusPx) SFX_M_FLOAT(maxDepth)
-    SFX_M_FLOAT(spiralTurns) SFX_M_FLOAT(ndcScale) SFX_M_FLOAT(denomOffset) SFX_M_FLOAT(numerator)
+    SFX_M_INT(spiralHalfStepQ16) SFX_M_FLOAT(ndcScale) SFX_M_FLOAT(denomOffset) SFX_M_FLOAT(numerator)
     SFX_M_FLOAT(zNear) SFX_M_FLOAT(zFar) SFX_M_INT(pad0) SFX_M_FLOAT(sumExponent)  // walks: the pool header's capacity
 SFX_BLOCK_END(ao)
 #endif

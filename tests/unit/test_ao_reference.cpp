@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <set>
 #include <vector>
 
 #include "analytic_scenes.hpp"
@@ -248,11 +249,36 @@ TEST_CASE("ao shared patterns: the crease diamond is 24 distinct stippled taps",
     double sumCos = 0, sumSin = 0;
     for (int y = 0; y < 32; ++y)
         for (int x = 0; x < 32; ++x) {
-            sumCos += std::cos(shared::aoRotationAngle(x, y));
-            sumSin += std::sin(shared::aoRotationAngle(x, y));
+            const shared::vec2 d = shared::aoDirection(shared::aoRotationIndex(x, y));
+            sumCos += d.x;
+            sumSin += d.y;
         }
     CHECK(std::abs(sumCos) / 1024 < 0.1);
     CHECK(std::abs(sumSin) / 1024 < 0.1);
+}
+
+TEST_CASE("ao tap directions: the table is the float of each angle's cosine and sine, turned by exact quarter turns", "[ao]") {
+    for (int k = 0; k < 512; ++k) {
+        const double angle = 2.0 * 3.14159265358979323846 * double(k % 256) / 256.0;
+        const shared::vec2 d = shared::aoDirection(k);
+        INFO("direction " << k);
+        // Within 2^-24 of the exact value (an ulp of floats in [0.5, 1)): the literals round to nearest.
+        CHECK(std::abs(double(d.x) - std::cos(angle)) <= 0x1p-24);
+        CHECK(std::abs(double(d.y) - std::sin(angle)) <= 0x1p-24);
+        if (k % 64 == 0) CHECK((d.x == 0.0f || d.y == 0.0f));  // axis directions are exact
+    }
+    // Alchemy: 64 taps at the golden angle take 64 different directions; Scalable's spiral of 9
+    // taps over 7 turns lands where (i + 0.5) / 9 * 7 turns says, to the table's 1/256 turn.
+    std::set<int> golden;
+    for (int i = 0; i < 64; ++i) golden.insert(((shared::aoAlchemyTurnsQ16(i) + 128) >> 8) & 255);
+    CHECK(golden.size() == 64);
+    const int halfStep = shared::aoSpiralHalfStepQ16(7.0, 9, false);
+    for (int i = 0; i < 9; ++i) {
+        const double turns = (i + 0.5) / 9.0 * 7.0;
+        const double table = double(shared::aoSpiralTurnsQ16(i, halfStep)) / 65536.0;
+        const double diff = std::abs(table - (turns - std::floor(turns)));
+        CHECK(std::min(diff, 1.0 - diff) < 1.0 / 65536.0 * 10);
+    }
 }
 
 TEST_CASE("ao normals from depth: exact on planes, close on spheres, no differencing across edges", "[ao]") {
@@ -310,6 +336,9 @@ TEST_CASE("ao normals from depth: a non-finite or out-of-range neighbour is sky,
         }
     // The rule's pieces, as the shaders run them: ties take the lower index, borders the inside.
     CHECK_FALSE(shared::aoNormalUsesNext(3, 8, 9.0, 9.0, 1.0));
+    // Differences a rounding apart are a tie (the lower index), a clear gap is not.
+    CHECK_FALSE(shared::aoNormalUsesNext(3, 8, 3.0, 5.0 - 1e-12, 4.0));
+    CHECK(shared::aoNormalUsesNext(3, 8, 3.0, 4.99, 4.0));
     CHECK(shared::aoNormalUsesNext(0, 8, 0.0, 50.0, 1.0));
     CHECK_FALSE(shared::aoNormalUsesNext(7, 8, 50.0, 0.0, 1.0));
     CHECK(shared::aoFacingNormal(glm::dvec3(1, 0, 0), glm::dvec3(2, 0, 0), glm::dvec3(0, 0, -1)) == glm::dvec3(0, 0, 1));

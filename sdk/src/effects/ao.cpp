@@ -301,7 +301,7 @@ Status AmbientObscurance::recordPasses(const AoInputs& in, const TextureDesc& ou
     p.maxDepth = float(rec.maxDepth);
     p.fullWidth = int32_t(desc_.width);
     p.fullHeight = int32_t(desc_.height);
-    p.spiralTurns = float(config_.spiralTurns);
+    p.spiralHalfStepQ16 = shared::aoSpiralHalfStepQ16(config_.spiralTurns, config_.samples, config_.mirrored);
     p.sumExponent = float(config_.sumExponent);
     p.keyBase = keyBase;
     p.creaseRange = config_.crease.range;

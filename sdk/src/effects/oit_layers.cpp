@@ -103,7 +103,7 @@ Status Transparency::renderLayerAo(const TransparencyInputs& in, const DepthReco
     p.pixelsPerUnit = float(rec.pixelsPerUnitAtUnitDepth);
     p.maxRadiusPx = float(c.maxRadiusPx);
     p.maxDepth = float(rec.maxDepth);
-    p.spiralTurns = float(c.spiralTurns);
+    p.spiralHalfStepQ16 = shared::aoSpiralHalfStepQ16(c.spiralTurns, c.samples, c.mirrored);
     p.sumExponent = float(c.sumExponent);
     p.ndcScale = float(rec.ndcScale);
     p.denomOffset = float(rec.denomOffset);

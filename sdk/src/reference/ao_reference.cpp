@@ -15,11 +15,12 @@ double saturate(double v) { return std::clamp(v, 0.0, 1.0); }
 
 bool isSky(double z, double maxDepth) { return !(z < maxDepth); }
 
-// The pixel a tap lands on: floor of the pixel centre plus the offset, clamped to the image
-// (the shaders clamp the same way; texelFetch outside the image is undefined).
-void tapPixel(uint32_t x, uint32_t y, double ox, double oy, uint32_t w, uint32_t h, int* qx, int* qy) {
-    *qx = std::clamp(int(std::floor(double(x) + 0.5 + ox)), 0, int(w) - 1);
-    *qy = std::clamp(int(std::floor(double(y) + 0.5 + oy)), 0, int(h) - 1);
+// The pixel a tap at distance rho in direction d lands on, decided in float as the shaders do
+// (sfx_shared_ao.h, "Where a tap lands"), clamped to the image as they clamp it (texelFetch
+// outside the image is undefined).
+AoTap tapAt(uint32_t x, uint32_t y, float rho, sh::vec2 d, uint32_t w, uint32_t h, int level) {
+    const sh::ivec2 step = sh::aoTapStep(rho, d);
+    return AoTap{std::clamp(int(x) + step.x, 0, int(w) - 1), std::clamp(int(y) + step.y, 0, int(h) - 1), level};
 }
 
 // Where the pixels of a pass lie in the full-size image: themselves, or at half size each
@@ -46,37 +47,28 @@ double aoFinishVisibility(double occlusion, double contrast) { return std::pow(s
 std::vector<AoTap> aoTaps(const AoConfig& c, const DepthReconstruction& rec, uint32_t w, uint32_t h, uint32_t x, uint32_t y,
                           double z) {
     std::vector<AoTap> taps;
-    const double r = c.radius;
-    const double phi = sh::aoRotationAngle(int(x), int(y));
+    const int rotation = sh::aoRotationIndex(int(x), int(y));
+    // The float values the shader receives: AoParams' radius and pixels per unit, the depth texel.
+    float screenRadius = sh::aoScreenRadius(float(c.radius), float(rec.pixelsPerUnitAtUnitDepth), float(z));
     switch (c.technique) {
-        case AoTechnique::Alchemy: {
-            const double screenRadius = r * rec.pixelsPerUnitAtUnitDepth / z;
+        case AoTechnique::Alchemy:
             for (uint32_t i = 0; i < c.samples; ++i) {
-                const double rho = std::sqrt((double(i) + 0.5) / double(c.samples)) * screenRadius;
-                const double theta = double(i) * double(sh::SFX_AO_GOLDEN_ANGLE) + phi;
-                AoTap t;
-                tapPixel(x, y, rho * std::cos(theta), rho * std::sin(theta), w, h, &t.x, &t.y);
-                taps.push_back(t);
+                const float rho = sh::aoDiskTapRadius(int(i), int(c.samples), screenRadius);
+                taps.push_back(tapAt(x, y, rho, sh::aoTapDirection(sh::aoAlchemyTurnsQ16(int(i)), rotation), w, h, 0));
             }
             break;
-        }
         case AoTechnique::Scalable: {
-            double screenRadius = r * rec.pixelsPerUnitAtUnitDepth / z;
-            if (c.maxRadiusPx > 0) screenRadius = std::min(screenRadius, c.maxRadiusPx);
+            if (c.maxRadiusPx > 0) screenRadius = std::min(screenRadius, float(c.maxRadiusPx));
             const uint32_t offsets = c.mirrored ? c.samples / 2 : c.samples;
+            const int halfStep = sh::aoSpiralHalfStepQ16(c.spiralTurns, c.samples, c.mirrored);
             for (uint32_t i = 0; i < offsets; ++i) {
-                const double alpha = (double(i) + 0.5) / double(offsets);
-                const double hPx = alpha * screenRadius;
-                const double theta = double(sh::SFX_AO_TWO_PI) * alpha * c.spiralTurns + phi;
+                const float hPx = sh::aoSpiralTapRadius(int(i), int(offsets), screenRadius);
+                const sh::vec2 d = sh::aoTapDirection(sh::aoSpiralTurnsQ16(int(i), halfStep), rotation);
                 int level = 0;
-                if (c.depthMipLevels > 1 && hPx >= 1.0)
-                    level = std::clamp(int(std::floor(std::log2(hPx))) - int(sh::SFX_AO_MIP_LEVEL_OFFSET), 0, int(c.depthMipLevels) - 1);
-                for (int sign = 1; sign >= (c.mirrored ? -1 : 1); sign -= 2) {
-                    AoTap t;
-                    t.level = level;
-                    tapPixel(x, y, sign * hPx * std::cos(theta), sign * hPx * std::sin(theta), w, h, &t.x, &t.y);
-                    taps.push_back(t);
-                }
+                if (c.depthMipLevels > 1 && hPx >= 1.0f)
+                    level = std::clamp(sh::aoFloorLog2(hPx) - int(sh::SFX_AO_MIP_LEVEL_OFFSET), 0, int(c.depthMipLevels) - 1);
+                taps.push_back(tapAt(x, y, hPx, d, w, h, level));
+                if (c.mirrored) taps.push_back(tapAt(x, y, hPx, sh::vec2{-d.x, -d.y}, w, h, level));
             }
             break;
         }
