@@ -92,6 +92,7 @@ Status GlDevice::init(CapabilityCeiling ceiling) {
     c.limits.maxRenderTargetWidth = std::min({uint32_t(std::max(viewport[0], 0)), renderbuffer, c.limits.maxTextureSize});
     c.limits.maxRenderTargetHeight = std::min({uint32_t(std::max(viewport[1], 0)), renderbuffer, c.limits.maxTextureSize});
     c.limits.maxColorAttachments = std::min(geti(GL_MAX_COLOR_ATTACHMENTS), geti(GL_MAX_DRAW_BUFFERS));
+    c.limits.subPixelPrecisionBits = geti(GL_SUBPIXEL_BITS);
     c.limits.maxUniformBlockSize = get64(GL_MAX_UNIFORM_BLOCK_SIZE);
     c.limits.maxStorageBufferSize = full ? get64(GL_MAX_SHADER_STORAGE_BLOCK_SIZE) : 0;
     c.limits.maxBufferSize = uint64_t(1) << 30;  // GL has no query; generous for screen-space buffers

@@ -215,6 +215,7 @@ DeviceCaps defaultCaps(CapabilityCeiling ceiling) {
     c.limits.maxTextureSize = 16384;
     c.limits.maxRenderTargetWidth = c.limits.maxRenderTargetHeight = 16384;
     c.limits.maxColorAttachments = 8;
+    c.limits.subPixelPrecisionBits = 8;
     c.limits.maxUniformBlockSize = 65536;
     c.limits.maxStorageBufferSize = full ? (1u << 30) : 0;
     c.limits.maxBufferSize = 1u << 30;

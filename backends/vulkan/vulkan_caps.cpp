@@ -33,6 +33,7 @@ void VulkanDevice::fillCaps(const DeviceOptions& options) {
     c.limits.maxRenderTargetWidth = std::min({l.maxFramebufferWidth, l.maxViewportDimensions[0], l.maxImageDimension2D});
     c.limits.maxRenderTargetHeight = std::min({l.maxFramebufferHeight, l.maxViewportDimensions[1], l.maxImageDimension2D});
     c.limits.maxColorAttachments = std::min<uint32_t>(l.maxColorAttachments, 8);
+    c.limits.subPixelPrecisionBits = l.subPixelPrecisionBits;
     c.limits.maxUniformBlockSize = l.maxUniformBufferRange;
     c.limits.maxStorageBufferSize = fullFeatures_ ? l.maxStorageBufferRange : 0;
     // Buffers are one allocation each; keep them well inside what any heap offers.

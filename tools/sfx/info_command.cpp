@@ -119,7 +119,8 @@ std::string defaultCostCacheDir() {
 void printLimitsAndFormats(std::ostream& out, const DeviceCaps& caps) {
     const DeviceLimits& l = caps.limits;
     out << "  limits: textures up to " << l.maxTextureSize << ", render targets up to " << l.maxRenderTargetWidth << "x"
-        << l.maxRenderTargetHeight << ", " << l.maxColorAttachments << " colour attachments, uniform blocks "
+        << l.maxRenderTargetHeight << ", " << l.maxColorAttachments << " colour attachments, " << l.subPixelPrecisionBits
+        << " sub-pixel bits, uniform blocks "
         << l.maxUniformBlockSize << " bytes, storage buffers " << l.maxStorageBufferSize << " bytes, compute work groups "
         << l.maxComputeWorkGroupInvocations << " invocations, " << l.maxTextureBindings << " texture bindings\n";
     std::string sampled, renderable;

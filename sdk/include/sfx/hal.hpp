@@ -241,6 +241,10 @@ struct DeviceLimits {
     // MAX_VIEWPORT_DIMS and MAX_RENDERBUFFER_SIZE). A texture with usage render-target beyond it is refused.
     uint32_t maxRenderTargetWidth = 0, maxRenderTargetHeight = 0;
     uint32_t maxColorAttachments = 0;
+    // Bits of sub-pixel precision to which the rasteriser snaps vertex positions (Vulkan
+    // subPixelPrecisionBits, GL SUBPIXEL_BITS; both specifications require at least 4): an edge
+    // may move by up to 2^-bits / sqrt(2) pixels from where exact arithmetic puts it.
+    uint32_t subPixelPrecisionBits = 0;
     uint64_t maxUniformBlockSize = 0;
     uint64_t maxStorageBufferSize = 0;  // 0 without storage buffers
     uint64_t maxBufferSize = 0;
