@@ -38,21 +38,35 @@ struct Opened {
     std::unique_ptr<Device> device;
 };
 
-// Every compiled backend at `tier` (current: under the GL ES 3.0 ceiling). An absent backend
-// is reported; with SFX_REQUIRE_ALL_BACKENDS set it fails the test.
+// Every compiled backend at `tier` (current: under the GL ES 3.0 ceiling), and the Vulkan
+// backend once on each physical device the loader lists (given lavapipe and SwiftShader, two
+// independent compilers compared in one run). An absent backend is reported; with
+// SFX_REQUIRE_ALL_BACKENDS set it fails the test.
 std::vector<Opened> openAll(Tier tier) {
     std::vector<Opened> out;
     for (const BackendConfig& config : compiledBackends()) {
-        DeviceOptions options;
-        options.validation = true;
-        options.ceiling = tiers::row(tier).ceiling;
-        Result<std::unique_ptr<Device>> device = openDevice(config, options);
-        if (!device) {
-            WARN("backend " << toString(config) << " could not be opened: " << device.status().toString());
-            if (test::requireAllBackends()) FAIL("SFX_REQUIRE_ALL_BACKENDS is set: every backend is required here");
-            continue;
+        std::vector<std::string> choices{""};  // "": the backend's own choice
+        if (config.backend == BackendKind::Vulkan) {
+            if (Result<std::vector<std::string>> listed = describeVulkanDevices(); listed && listed->size() > 1) {
+                choices.clear();
+                for (size_t i = 0; i < listed->size(); ++i) choices.push_back(std::to_string(i));
+            }
         }
-        out.push_back({toString(config), std::move(device.value())});
+        for (const std::string& choice : choices) {
+            DeviceOptions options;
+            options.validation = true;
+            options.ceiling = tiers::row(tier).ceiling;
+            options.physicalDevice = choice;
+            Result<std::unique_ptr<Device>> device = openDevice(config, options);
+            if (!device) {
+                WARN("backend " << toString(config) << (choice.empty() ? "" : " device " + choice)
+                                << " could not be opened: " << device.status().toString());
+                if (test::requireAllBackends()) FAIL("SFX_REQUIRE_ALL_BACKENDS is set: every backend is required here");
+                continue;
+            }
+            const std::string name = choice.empty() ? toString(config) : toString(config) + " (" + device.value()->caps().deviceName + ")";
+            out.push_back({name, std::move(device.value())});
+        }
     }
     return out;
 }
