@@ -4,9 +4,11 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "analytic_scenes.hpp"
 #include "effect_runs.hpp"
+#include "portability_rows.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/reference/ao_reference.hpp"
 #include "skips.hpp"
@@ -52,12 +54,12 @@ AoSettings settingsFor(AoTechnique t, double scale = 1.0) { return test::aoTestS
 // A GPU result against its reference: every pixel finite and in [0, 1], then the figures the
 // tier's Tolerance and kAoOccludedBiasBound bound.
 struct AgainstReference {
-    double rmse = 0, worst = 0, occludedBias = 0;
+    double rmse = 0, worst = 0, occludedBias = 0, meanAbs = 0;
     size_t off = 0, occluded = 0;  // pixels off by more than Tolerance::pixel; pixels the reference occludes
 };
 AgainstReference compareWithReference(const Grid& gpu, const Grid& ref) {
     AgainstReference r;
-    double sq = 0, occludedSigned = 0;
+    double sq = 0, occludedSigned = 0, sumAbs = 0;
     for (size_t i = 0; i < ref.values.size(); ++i) {
         const double g = gpu.values[i];
         REQUIRE(std::isfinite(g));
@@ -65,6 +67,7 @@ AgainstReference compareWithReference(const Grid& gpu, const Grid& ref) {
         REQUIRE(g <= 1.0);
         const double e = std::abs(g - ref.values[i]);
         sq += e * e;
+        sumAbs += e;
         r.worst = std::max(r.worst, e);
         r.off += e > tolerance().pixel;
         if (ref.values[i] < 1.0 - 1e-6) {
@@ -73,6 +76,7 @@ AgainstReference compareWithReference(const Grid& gpu, const Grid& ref) {
         }
     }
     r.rmse = std::sqrt(sq / double(ref.values.size()));
+    r.meanAbs = sumAbs / double(ref.values.size());
     r.occludedBias = r.occluded ? occludedSigned / double(r.occluded) : 0.0;
     return r;
 }
@@ -127,6 +131,7 @@ TEST_CASE("ao: each technique matches its CPU reference, at full and half resolu
     const double worstTol = tolerance().worst;
     const double biasTol = kAoOccludedBiasBound;
     double worstSeen = 0, worstBias = 0;
+    std::map<AoTechnique, std::pair<double, double>> perTechnique;  // worst pixel, summed mean |error|
     for (AoResolution resolution : {AoResolution::Full, AoResolution::Half})
     for (AoTechnique t : kTechniques)
         for (bool blur : {false, true})
@@ -148,8 +153,12 @@ TEST_CASE("ao: each technique matches its CPU reference, at full and half resolu
                     const AgainstReference r = compareWithReference(gpu.visibility, ref);
                     worstSeen = std::max(worstSeen, r.worst);
                     worstBias = std::max(worstBias, std::abs(r.occludedBias));
+                    perTechnique[t].first = std::max(perTechnique[t].first, r.worst);
+                    perTechnique[t].second += r.meanAbs / 24.0;  // 2 resolutions x 2 blurs x 2 normals x 3 scenes
                     checkWithinTolerance(r, ref.values.size());
                 }
+    for (const auto& [t, figures] : perTechnique)
+        test::addPortabilityRow(std::string("AO ") + toString(t), figures.first, figures.second);
     // The measured worst values, for docs/ao.md and docs/conformance.md beside the bounds.
     WARN(test::label() << ": worst pixel " << worstSeen << " (bound " << worstTol << "), worst |mean signed error| "
                        << worstBias << " (bound " << biasTol << ")");

@@ -12,6 +12,7 @@
 #include "sfx/reference/motion_blur_reference.hpp"
 #include "sfx/validation_errors.hpp"
 #include "effect_runs.hpp"
+#include "portability_rows.hpp"
 #include "skips.hpp"
 #include "test_device.hpp"
 
@@ -60,12 +61,13 @@ ColorGrid noise(uint32_t w, uint32_t h, uint32_t seed) {
 // lavapipe, which rounds fp16 toward zero); the RMSE stays small (0.003 measured).
 void compareWithReference(const ColorGrid& gpu, const ColorGrid& ref, const char* what) {
     size_t far = 0;
-    double sq = 0, worst = 0;
+    double sq = 0, worst = 0, sumAbs = 0;
     for (size_t i = 0; i < gpu.values.size(); ++i)
         for (int c = 0; c < 4; ++c) {
             REQUIRE(std::isfinite(gpu.values[i][c]));
             const double e = std::fabs(gpu.values[i][c] - ref.values[i][c]);
             sq += e * e;
+            sumAbs += e;
             worst = std::max(worst, e);
             if (e > 2e-3) ++far;
         }
@@ -74,6 +76,7 @@ void compareWithReference(const ColorGrid& gpu, const ColorGrid& ref, const char
     INFO(test::label() << " " << what << ": rmse " << rmse << ", worst " << worst << ", beyond 2e-3: " << far);
     CHECK(double(far) <= 0.03 * n);
     CHECK(rmse <= 5e-3);
+    test::addPortabilityRow(std::string("motion blur, ") + what, worst, sumAbs / n);
 }
 
 }  // namespace

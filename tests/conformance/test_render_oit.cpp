@@ -26,6 +26,7 @@
 
 #include "sfx/reference/oit_reference.hpp"
 #include "sfx/scene_render.hpp"
+#include "portability_rows.hpp"
 #include "sfx/tiers.hpp"
 #include "test_device.hpp"
 
@@ -194,8 +195,8 @@ Reference rasterise(const scene::Scene& scene, const render::RenderResult::Opaqu
 }
 
 struct Errors {
-    double worst = 0, worstExact = 0;
-    size_t covered = 0, ambiguous = 0, deeperThanK = 0;
+    double worst = 0, worstExact = 0, sumAbs = 0;
+    size_t covered = 0, ambiguous = 0, deeperThanK = 0, compared = 0;  // compared: channels of the pixels in the bound
 };
 
 Errors compare(const scene::Scene& scene, const render::RenderResult& r) {
@@ -219,6 +220,8 @@ Errors compare(const scene::Scene& scene, const render::RenderResult& r) {
             const double gpu = r.color.pixels[i * 3 + size_t(c)];
             REQUIRE(std::isfinite(gpu));
             e.worst = std::max(e.worst, std::abs(gpu - expected[c]));
+            e.sumAbs += std::abs(gpu - expected[c]);
+            ++e.compared;
             e.worstExact = std::max(e.worstExact, std::abs(gpu - exact[c]));
             if (f.empty()) REQUIRE(gpu == opaque.color[c]);  // no layer: the opaque picture untouched
         }
@@ -236,6 +239,7 @@ void checkScene(const char* name, size_t minCovered) {
     WARN(name << " on " << test::label() << ": worst channel error " << e.worst << " vs the tier's reference, " << e.worstExact
               << " vs the exact sort; " << e.ambiguous << " of " << e.covered << " covered pixels left out");
     CHECK(e.covered >= minCovered);
+    test::addPortabilityRow(std::string("transparency through sfx render, ") + name, e.worst, e.compared ? e.sumAbs / double(e.compared) : 0.0);
     CHECK(e.ambiguous * 4 <= e.covered);
     CHECK(r.stats.transparencyRan);
     CHECK(r.warnings.empty());
