@@ -97,6 +97,11 @@ Status GlDevice::init(CapabilityCeiling ceiling) {
     c.limits.maxStorageBufferSize = full ? get64(GL_MAX_SHADER_STORAGE_BLOCK_SIZE) : 0;
     c.limits.maxBufferSize = uint64_t(1) << 30;  // GL has no query; generous for screen-space buffers
     c.limits.maxComputeWorkGroupInvocations = full ? geti(GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS) : 0;
+    for (GLuint axis = 0; axis < 3; ++axis) {
+        GLint groups = 0;
+        if (full) gl_.glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, axis, &groups);
+        c.limits.maxComputeWorkGroupCount[axis] = uint32_t(std::max(groups, 0));
+    }
     c.limits.maxTextureBindings = geti(GL_MAX_TEXTURE_IMAGE_UNITS);
     c.limits.minUniformBufferOffsetAlignment = std::max<uint32_t>(1, geti(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT));
     c.limits.minStorageBufferOffsetAlignment = modern ? std::max<uint32_t>(1, geti(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT)) : 1;

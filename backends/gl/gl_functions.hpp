@@ -14,6 +14,7 @@ namespace sfx::gl {
     X(PFNGLGETSTRINGIPROC, glGetStringi)                                \
     X(PFNGLGETINTEGERVPROC, glGetIntegerv)                              \
     X(PFNGLGETINTEGER64VPROC, glGetInteger64v)                          \
+    X(PFNGLGETINTEGERI_VPROC, glGetIntegeri_v)                          \
     X(PFNGLENABLEPROC, glEnable)                                        \
     X(PFNGLDISABLEPROC, glDisable)                                      \
     X(PFNGLFINISHPROC, glFinish)                                        \

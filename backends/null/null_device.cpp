@@ -220,6 +220,7 @@ DeviceCaps defaultCaps(CapabilityCeiling ceiling) {
     c.limits.maxStorageBufferSize = full ? (1u << 30) : 0;
     c.limits.maxBufferSize = 1u << 30;
     c.limits.maxComputeWorkGroupInvocations = full ? 1024 : 0;
+    c.limits.maxComputeWorkGroupCount = full ? std::array<uint32_t, 3>{65535, 65535, 65535} : std::array<uint32_t, 3>{};
     c.limits.maxTextureBindings = 16;
     // The largest alignment common hardware asks for, so code that passes here passes there.
     c.limits.minUniformBufferOffsetAlignment = 256;

@@ -41,6 +41,7 @@ void VulkanDevice::fillCaps(const DeviceOptions& options) {
     for (uint32_t i = 0; i < memProps_.memoryHeapCount; ++i) largestHeap = std::max(largestHeap, memProps_.memoryHeaps[i].size);
     c.limits.maxBufferSize = std::min<uint64_t>(uint64_t(1) << 30, largestHeap / 4);
     c.limits.maxComputeWorkGroupInvocations = fullFeatures_ ? l.maxComputeWorkGroupInvocations : 0;
+    for (int axis = 0; axis < 3; ++axis) c.limits.maxComputeWorkGroupCount[axis] = fullFeatures_ ? l.maxComputeWorkGroupCount[axis] : 0;
     c.limits.maxTextureBindings = std::min<uint32_t>(l.maxPerStageDescriptorSampledImages, 64);
     c.limits.minUniformBufferOffsetAlignment = std::max<uint64_t>(1, l.minUniformBufferOffsetAlignment);
     c.limits.minStorageBufferOffsetAlignment = std::max<uint64_t>(1, l.minStorageBufferOffsetAlignment);

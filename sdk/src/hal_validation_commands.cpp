@@ -346,8 +346,10 @@ Status renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, c
 Status dispatch(const DispatchDesc& d, const ObjectLookup& objects, const DeviceCaps& caps) {
     if (!caps.computeShaders) return fail(Error::DispatchUnsupported, {underCeiling(caps)});
     const std::pair<const char*, uint32_t> groups[] = {{"X", d.groupsX}, {"Y", d.groupsY}, {"Z", d.groupsZ}};
-    for (const auto& [axis, count] : groups)
-        if (count == 0 || count > 65535) return fail(Error::DispatchGroups, {axis, str(count)});
+    for (size_t axis = 0; axis < 3; ++axis) {
+        const uint32_t count = groups[axis].second, limit = caps.limits.maxComputeWorkGroupCount[axis];
+        if (count == 0 || count > limit) return fail(Error::DispatchGroups, {groups[axis].first, str(count), str(limit)});
+    }
     Result<const PipelineInfo*> found =
         named(Arg("DispatchDesc.pipeline"), [&](const std::string& name) { return objects.pipeline(d.pipeline, name); });
     if (!found) return found.status();

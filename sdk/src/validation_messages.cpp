@@ -90,7 +90,7 @@ constexpr ErrorEntry kTable[] = {
     {E::DrawIndexCount, C::InvalidArgument, "DrawIndexCount", "{}.count is {}; allowed [0, {}], the 32-bit indices in its index buffer of {} bytes"},
     {E::DrawVertexCount, C::InvalidArgument, "DrawVertexCount", "{}.count is {}; allowed [0, {}], the vertices of stride {} in its vertex buffer of {} bytes"},
     {E::DispatchUnsupported, C::UnsupportedFeature, "DispatchUnsupported", "dispatch: this device has no compute shaders{}"},
-    {E::DispatchGroups, C::InvalidArgument, "DispatchGroups", "DispatchDesc.groups{} is {}; allowed [1, 65535]"},
+    {E::DispatchGroups, C::InvalidArgument, "DispatchGroups", "DispatchDesc.groups{} is {}; allowed [1, {}] (the device's maxComputeWorkGroupCount)"},
 
     {E::BindingTwice, C::InvalidArgument, "BindingTwice", "{}: binding {} is given again ({} has it); allowed each binding once"},
     {E::BindingUnknown, C::InvalidArgument, "BindingUnknown", "{}: binding {} does not exist in program '{}'; its bindings are {}"},

@@ -295,11 +295,27 @@ std::vector<ValidationCase> pipelineAndCommandCases() {
     add("dispatch without compute", Error::DispatchUnsupported, noCompute,
         [](const Caps& c) { return "dispatch: this device has no compute shaders" + ceiling(c); },
         [](Objects& o) { return o.dev.dispatch({}); });
-    add("no groups", Error::DispatchGroups, compute, fixed("DispatchDesc.groupsY is 0; allowed [1, 65535]"), [](Objects& o) {
-        DispatchDesc d;
-        d.groupsY = 0;
-        return o.dev.dispatch(d);
-    });
+    add("no groups", Error::DispatchGroups, compute,
+        [](const Caps& c) {
+            return "DispatchDesc.groupsY is 0; allowed [1, " + str(c.limits.maxComputeWorkGroupCount[1]) +
+                   "] (the device's maxComputeWorkGroupCount)";
+        },
+        [](Objects& o) {
+            DispatchDesc d;
+            d.groupsY = 0;
+            return o.dev.dispatch(d);
+        });
+    add("more groups than the device launches", Error::DispatchGroups,
+        [](const Caps& c) { return compute(c) && c.limits.maxComputeWorkGroupCount[0] < 0xFFFFFFFFu; },
+        [](const Caps& c) {
+            return "DispatchDesc.groupsX is " + str(c.limits.maxComputeWorkGroupCount[0] + 1) + "; allowed [1, " +
+                   str(c.limits.maxComputeWorkGroupCount[0]) + "] (the device's maxComputeWorkGroupCount)";
+        },
+        [](Objects& o) {
+            DispatchDesc d;
+            d.groupsX = o.dev.caps().limits.maxComputeWorkGroupCount[0] + 1;
+            return o.dev.dispatch(d);
+        });
 
     // ---- Bindings ----------------------------------------------------------------------------
     add("binding given twice", Error::BindingTwice, {},

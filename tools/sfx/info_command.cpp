@@ -122,7 +122,8 @@ void printLimitsAndFormats(std::ostream& out, const DeviceCaps& caps) {
         << l.maxRenderTargetHeight << ", " << l.maxColorAttachments << " colour attachments, " << l.subPixelPrecisionBits
         << " sub-pixel bits, uniform blocks "
         << l.maxUniformBlockSize << " bytes, storage buffers " << l.maxStorageBufferSize << " bytes, compute work groups "
-        << l.maxComputeWorkGroupInvocations << " invocations, " << l.maxTextureBindings << " texture bindings\n";
+        << l.maxComputeWorkGroupInvocations << " invocations and " << l.maxComputeWorkGroupCount[0] << "x"
+        << l.maxComputeWorkGroupCount[1] << "x" << l.maxComputeWorkGroupCount[2] << " groups, " << l.maxTextureBindings << " texture bindings\n";
     std::string sampled, renderable;
     for (size_t f = 1; f < size_t(Format::Count); ++f) {
         if (caps.sampledFormat[f]) sampled += std::string(sampled.empty() ? "" : " ") + toString(Format(f));

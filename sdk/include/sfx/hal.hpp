@@ -249,6 +249,9 @@ struct DeviceLimits {
     uint64_t maxStorageBufferSize = 0;  // 0 without storage buffers
     uint64_t maxBufferSize = 0;
     uint32_t maxComputeWorkGroupInvocations = 0;  // 0 without compute
+    // Work groups one dispatch may launch along x, y and z (Vulkan maxComputeWorkGroupCount, GL
+    // MAX_COMPUTE_WORK_GROUP_COUNT; both require at least 65535); 0 without compute.
+    std::array<uint32_t, 3> maxComputeWorkGroupCount{};
     uint32_t maxTextureBindings = 0;
     // A uniform / storage BufferBinding's offset is a multiple of these (Vulkan
     // minUniformBufferOffsetAlignment / minStorageBufferOffsetAlignment, GL's
