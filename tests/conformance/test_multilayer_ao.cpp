@@ -8,6 +8,7 @@
 
 #include "analytic_scenes.hpp"
 #include "effect_runs.hpp"
+#include "portability_rows.hpp"
 #include "scene.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/reference/ao_reference.hpp"
@@ -149,6 +150,9 @@ TEST_CASE("multilayer ao: the GPU matches reference::multilayerVisibility", "[ao
             CHECK(worst <= kMultilayerWorstPixel);
             for (double v : r.gpu.values) REQUIRE(std::isfinite(v));
             WARN("multilayer worst pixel " << test::label() << " " << toString(t) << " L=" << layers << ": " << worst);
+            double meanAbs = 0.0;
+            for (size_t i = 0; i < r.gpu.values.size(); ++i) meanAbs += std::abs(r.gpu.values[i] - r.reference.values[i]) / double(r.gpu.values.size());
+            test::addPortabilityRow("multilayer AO " + std::string(toString(t)) + ", " + std::to_string(layers) + " layers", worst, meanAbs);
         }
 }
 
