@@ -22,9 +22,11 @@ struct ivec2 { int x, y; };
 // Functions written once for both languages: double in C++ (the references), float in GLSL.
 #define SFX_FN inline
 #define SFX_REAL double
+#define SFX_PRECISE  // C++: each float operation rounds on its own (x86-64 without -mfma has no FMA to contract into)
 #else
 #define SFX_FN
 #define SFX_REAL float
+#define SFX_PRECISE precise  // no fused multiply-add: each operation rounds as the C++ reference's does
 #define SFX_CONST(type, name, value) const type name = value;
 #define SFX_ARRAY_BEGIN(type, name, count) const type name[count] = type[count](
 #define SFX_ARRAY_END );

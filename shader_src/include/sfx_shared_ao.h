@@ -19,6 +19,7 @@ using glm::length;
 using std::abs;
 using std::clamp;
 using std::exp;
+using std::floor;
 using std::max;
 using std::pow;
 using std::sqrt;
@@ -74,29 +75,24 @@ SFX_FN vec2 aoTapDirection(int turnsQ16, int rotation) { return aoDirection(((tu
 // floor(0.5 + o) rounds to the ulp of o. The MIP level a Scalable tap reads is the highest set
 // bit of its distance's integer part, exactly floor(log2(h)) without a log2 whose result a driver
 // may round up across the integer just below a power of two.
-#ifdef __cplusplus
-inline float aoScreenRadius(float radius, float pixelsPerUnit, float z) { return radius * pixelsPerUnit / z; }
+// These are float in both languages (not SFX_REAL): the reference runs the shader's operations.
+SFX_FN float aoScreenRadius(float radius, float pixelsPerUnit, float z) { return radius * pixelsPerUnit / z; }
 // Alchemy's tap i of samples: sqrt((i + 0.5) / samples) of the screen radius.
-inline float aoDiskTapRadius(int i, int samples, float screenRadius) { return std::sqrt((float(i) + 0.5f) / float(samples)) * screenRadius; }
+SFX_FN float aoDiskTapRadius(int i, int samples, float screenRadius) { return sqrt((float(i) + 0.5f) / float(samples)) * screenRadius; }
 // Scalable's tap i of offsets: (i + 0.5) / offsets of the screen radius.
-inline float aoSpiralTapRadius(int i, int offsets, float screenRadius) { return (float(i) + 0.5f) / float(offsets) * screenRadius; }
-// The tap's pixel relative to its centre's. Each float operation rounds on its own here (x86-64
-// without -mfma has no fused multiply-add to contract into).
-inline ivec2 aoTapStep(float rho, vec2 d) {
-    const float ox = rho * d.x, oy = rho * d.y;
-    return ivec2{int(std::floor(0.5f + ox)), int(std::floor(0.5f + oy))};
+SFX_FN float aoSpiralTapRadius(int i, int offsets, float screenRadius) { return (float(i) + 0.5f) / float(offsets) * screenRadius; }
+// The tap's pixel relative to its centre's.
+SFX_FN ivec2 aoTapStep(float rho, vec2 d) {
+    SFX_PRECISE float ox = rho * d.x;
+    SFX_PRECISE float oy = rho * d.y;
+    SFX_PRECISE float tx = 0.5f + ox;
+    SFX_PRECISE float ty = 0.5f + oy;
+    return SFX_IVEC2(int(floor(tx)), int(floor(ty)));
 }
 // floor(log2(h)) for h >= 1 (distances past 65536 pixels count as 65536: no level is that deep).
+#ifdef __cplusplus
 inline int aoFloorLog2(float h) { return int(std::bit_width(uint32_t(std::min(h, 65536.0f)))) - 1; }
 #else
-float aoScreenRadius(float radius, float pixelsPerUnit, float z) { return radius * pixelsPerUnit / z; }
-float aoDiskTapRadius(int i, int samples, float screenRadius) { return sqrt((float(i) + 0.5) / float(samples)) * screenRadius; }
-float aoSpiralTapRadius(int i, int offsets, float screenRadius) { return (float(i) + 0.5) / float(offsets) * screenRadius; }
-ivec2 aoTapStep(float rho, vec2 d) {
-    precise vec2 o = rho * d;
-    precise vec2 t = 0.5 + o;
-    return ivec2(floor(t));
-}
 int aoFloorLog2(float h) { return findMSB(int(min(h, 65536.0))); }
 #endif
 
@@ -275,10 +271,11 @@ SFX_FN SFX_REAL aoUpsampleResolve(SFX_REAL weightedSum, SFX_REAL weightSum, SFX_
 //   first, so a non-finite (NaN, +-inf), non-positive or overflowing neighbour is sky: the far
 //   plane, maxDepth. Positions, and so the normal, are then always finite.
 // - On each axis the tangent runs to the neighbour whose depth is closer to the centre's; ties
-//   take the lower index; at the image border the only in-bounds one. A tie is any pair whose
-//   differences from the centre agree to SFX_AO_NORMAL_TIE of the lower one's: the pixel on a
-//   crease, its two neighbours mirrored about it, has differences equal in float and a rounding
-//   apart in double, and a strict comparison let that rounding pick the side (and the normal).
+//   take the lower index; at the image border the only in-bounds one. The next neighbour is
+//   taken only when its difference is smaller by more than SFX_AO_NORMAL_TIE of the previous
+//   one's; anything closer is a tie. The pixel on a crease, its two neighbours mirrored about
+//   it, has differences equal in float and a rounding apart in double, and a strict comparison
+//   let that rounding pick the side (and the normal).
 //   A sky neighbour is thus used only when the other is as far from the centre or absent.
 // - normal = normalize(cross(dx, dy)), facing the camera; a zero cross product gives +z.
 // aoNormalUsesNext: along an axis of `size` pixels, at index i, whether the next neighbour
