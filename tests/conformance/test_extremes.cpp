@@ -42,10 +42,8 @@ void addRow(const std::string& effect, const std::string& input, const std::stri
     static bool first = true;
     std::ofstream out(test::outputDir() + "/extremes_rows.md", first ? std::ios::trunc : std::ios::app);
     first = false;
-    const std::string label = test::label();
-    const size_t slash = label.find('/');
-    out << "| " << effect << " | " << input << " | " << rule << " | " << label.substr(0, slash) << " | "
-        << label.substr(slash + 1) << " | " << (passed ? "finite, matches reference" : "FAILED") << " |\n";
+    out << "| " << effect << " | " << input << " | " << rule << " | " << toString(test::backendConfig()) << " | "
+        << toString(test::tier()) << " | " << (passed ? "finite, matches reference" : "FAILED") << " |\n";
 }
 
 bool drawsNothing() { return test::device().caps().backend == BackendKind::Null; }

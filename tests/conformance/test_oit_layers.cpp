@@ -67,12 +67,10 @@ struct WindowQuad {
 };
 WindowQuad windowQuad(const Quad& q, const DepthReconstruction& rec) {
     const double* pi = rec.projInfo;
-    const double grid = std::ldexp(1.0, int(test::device().caps().limits.subPixelPrecisionBits));
     const dvec3 c[4] = {q.corner, q.corner + q.edgeU, q.corner + q.edgeU + q.edgeV, q.corner + q.edgeV};
     WindowQuad out;
     for (int i = 0; i < 4; ++i) {
-        out.p[i] = glm::dvec2((c[i].x / -c[i].z - pi[2]) / pi[0], (c[i].y / -c[i].z - pi[3]) / pi[1]);
-        out.p[i] = glm::round(out.p[i] * grid) / grid;
+        out.p[i] = test::snapToSubPixelGrid(glm::dvec2((c[i].x / -c[i].z - pi[2]) / pi[0], (c[i].y / -c[i].z - pi[3]) / pi[1]));
         out.w[i] = -c[i].z;
     }
     return out;
@@ -126,16 +124,18 @@ Frame rasterize(const std::vector<Quad>& quads) {
     const DepthReconstruction rec = makeDepthReconstruction(cam, kW, kH).value();
     Frame f{FragmentImage(kW, kH, rec), std::vector<float>(size_t(kW) * kH, 1.0f)};
     Grid stored(kW, kH, 1.0);
+    std::vector<WindowQuad> windows;
+    for (const Quad& q : quads) windows.push_back(windowQuad(q, rec));
     for (uint32_t y = 0; y < kH; ++y)
         for (uint32_t x = 0; x < kW; ++x) {
             double nearest = 0;
-            for (const Quad& q : quads) {
-                const double margin = outlineDistancePx(windowQuad(q, rec), x, y);
+            for (size_t qi = 0; qi < quads.size(); ++qi) {
+                const double margin = outlineDistancePx(windows[qi], x, y);
                 INFO("pixel " << x << ", " << y << " is " << margin << " px from a quad's edge on " << test::label());
                 REQUIRE(margin > 0.01);  // the scenes keep edges away from pixel centres
-                const double t = rasterDepth(windowQuad(q, rec), x, y);
+                const double t = rasterDepth(windows[qi], x, y);
                 if (!(t > 0 && t < kFar * 0.999)) continue;  // not covered, or sky
-                if (q.opaque && (nearest == 0 || t < nearest)) nearest = t;
+                if (quads[qi].opaque && (nearest == 0 || t < nearest)) nearest = t;
             }
             if (nearest > 0) {
                 f.storedDepth[y * kW + x] = float(storedDepthFromLinear(cam, nearest));
@@ -145,13 +145,13 @@ Frame rasterize(const std::vector<Quad>& quads) {
     const Grid linear = linearizeDepth(stored, rec);
     const std::vector<dvec3> normals = normalsFromDepth(linear, rec);
     uint32_t draw = 0;
-    for (const Quad& q : quads) {
+    for (size_t qi = 0; qi < quads.size(); ++qi) {
+        const Quad& q = quads[qi];
         if (q.opaque) continue;
-        const WindowQuad wq = windowQuad(q, rec);
         for (uint32_t y = 0; y < kH; ++y)
             for (uint32_t x = 0; x < kW; ++x) {
                 const dvec3 d = ray(rec, x, y);
-                const double t = rasterDepth(wq, x, y);
+                const double t = rasterDepth(windows[qi], x, y);
                 if (!(t > 0 && t < kFar * 0.999)) continue;
                 OitFragment fr;
                 fr.alpha = q.alpha;

@@ -24,9 +24,9 @@
 #include <string>
 #include <tuple>
 
+#include "portability_rows.hpp"
 #include "sfx/reference/oit_reference.hpp"
 #include "sfx/scene_render.hpp"
-#include "portability_rows.hpp"
 #include "sfx/tiers.hpp"
 #include "test_device.hpp"
 
@@ -35,7 +35,7 @@ using namespace sfx;
 namespace {
 
 constexpr uint32_t kW = 96, kH = 54;
-constexpr double kEdgeBand = 0.01;  // pixels
+constexpr double kEdgeBand = 0.01;     // pixels
 constexpr double kDepthBand = 2e-5;    // window depth
 constexpr double kOrderBand = 1e-4;    // relative view depth between fragments of different objects
 // Half an 8-bit step: fp16 storage of the opaque colour, the nodes' premultiplied colours and the
@@ -93,15 +93,13 @@ Reference rasterise(const scene::Scene& scene, const render::RenderResult::Opaqu
     ref.fragments.resize(size_t(kW) * kH);
     ref.ambiguous.assign(size_t(kW) * kH, false);
     const glm::dmat4 vp = in.projection * in.view;
-    const double subPixelGrid = std::ldexp(1.0, int(test::device().caps().limits.subPixelPrecisionBits));
     const bool zeroToOne = in.clipDepth == ClipDepthRange::ZeroToOne;
     auto project = [&](const glm::dmat4& model, const glm::vec3& v) {
         const glm::dvec4 c = vp * model * glm::dvec4(glm::dvec3(v), 1.0);
         REQUIRE(c.w > scene.camera.nearPlane);  // the test scenes keep translucent geometry in front of the near plane
         const glm::dvec3 ndc = glm::dvec3(c) / c.w;
-        // Snapped to the device's sub-pixel grid, as its rasteriser snaps vertices (to nearest).
         const glm::dvec2 window((ndc.x + 1.0) * 0.5 * kW, (ndc.y + 1.0) * 0.5 * kH);
-        return Projected{glm::round(window * subPixelGrid) / subPixelGrid, zeroToOne ? ndc.z : ndc.z * 0.5 + 0.5, c.w};
+        return Projected{test::snapToSubPixelGrid(window), zeroToOne ? ndc.z : ndc.z * 0.5 + 0.5, c.w};
     };
     auto markBand = [&](glm::dvec2 a, glm::dvec2 b) {
         const int x0 = std::max(0, int(std::floor(std::min(a.x, b.x) - kEdgeBand - 0.5)));

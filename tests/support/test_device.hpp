@@ -3,7 +3,10 @@
 // The current tier runs under the GL ES 3.0 capability ceiling, so it is really tested.
 #pragma once
 
+#include <cmath>
 #include <string>
+
+#include <glm/glm.hpp>
 
 #include "sfx/backends.hpp"
 #include "sfx/hal.hpp"
@@ -22,6 +25,14 @@ std::vector<std::string> takeValidationMessages();
 
 // Where tests write diff images and other artifacts: $SFX_TEST_OUTPUT or build/test-output.
 std::string outputDir();
+
+// A window position (pixels) snapped to the device's sub-pixel grid (to nearest), as its
+// rasteriser snaps vertices (DeviceLimits::subPixelPrecisionBits): a CPU rasteriser compared with
+// the GPU's covers pixel centres and interpolates from the snapped positions.
+inline glm::dvec2 snapToSubPixelGrid(const glm::dvec2& windowPx) {
+    const double grid = std::ldexp(1.0, int(device().caps().limits.subPixelPrecisionBits));
+    return glm::round(windowPx * grid) / grid;
+}
 
 }  // namespace sfx::test
 
