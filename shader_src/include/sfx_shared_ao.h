@@ -89,6 +89,12 @@ SFX_FN ivec2 aoTapStep(float rho, vec2 d) {
     SFX_PRECISE float ty = 0.5f + oy;
     return SFX_IVEC2(int(floor(tx)), int(floor(ty)));
 }
+// The pixel that tap lands on from pixel p, clamped to a size.x x size.y image (texelFetch
+// outside the image is undefined): what every AO pass and the reference read.
+SFX_FN ivec2 aoTap(ivec2 p, float rho, vec2 d, ivec2 size) {
+    ivec2 s = aoTapStep(rho, d);
+    return SFX_IVEC2(clamp(p.x + s.x, 0, size.x - 1), clamp(p.y + s.y, 0, size.y - 1));
+}
 // floor(log2(h)) for h >= 1 (distances past 65536 pixels count as 65536: no level is that deep).
 #ifdef __cplusplus
 inline int aoFloorLog2(float h) { return int(std::bit_width(uint32_t(std::min(h, 65536.0f)))) - 1; }
@@ -485,8 +491,6 @@ float aoLayerDepth(ivec2 q, int layer) {
 // At half size a texel's position is its full-size source pixel's (aoFullResPixel).
 ivec2 aoSourcePixel(ivec2 q) { return kAoHalfRes != 0 ? aoFullResPixel(q, ivec2(params.fullWidth, params.fullHeight)) : q; }
 vec3 aoPosition(ivec2 q, float z) { return reconstructViewPosition(vec2(aoSourcePixel(q)) + 0.5, z, params.projInfo); }
-// The pixel a tap at distance rho in direction d lands on, clamped to the image (as the reference).
-ivec2 aoTap(ivec2 p, float rho, vec2 d, ivec2 size) { return clamp(p + aoTapStep(rho, d), ivec2(0), size - 1); }
 
 // Normal from depth by the rule above (aoDepth applies sfxLinearDepthOrFar to every fetch).
 vec3 aoDerivedNormal(ivec2 p, vec3 C, float z, ivec2 size) {

@@ -39,7 +39,6 @@ float opaqueDepthAt(ivec2 q) {
     return sfxLinearizeDepth(texelFetch(uOpaqueDepth, q, 0).r, ao.ndcScale, ao.denomOffset, ao.numerator, ao.maxDepth);
 }
 vec3 positionAt(ivec2 q, float z) { return reconstructViewPosition(vec2(q) + 0.5, z, ao.projInfo); }
-ivec2 tapPixel(ivec2 p, float rho, vec2 d) { return clamp(p + aoTapStep(rho, d), ivec2(0), gSize - 1); }
 
 // The opaque surface's normal from its depth (sfx_shared_ao.h's rule, as normalsFromDepth).
 vec3 opaqueNormal(ivec2 p, vec3 C, float z) {
@@ -109,7 +108,7 @@ float receiverVisibility(ivec2 p, float z, vec3 n, float exteriorWeight) {
     float sum = 0.0;
     if (kTechnique == 0) {
         for (int i = 0; i < kSamples; ++i) {
-            ivec2 q = tapPixel(p, aoDiskTapRadius(i, kSamples, screenRadius), aoTapDirection(aoAlchemyTurnsQ16(i), rotation));
+            ivec2 q = aoTap(p, aoDiskTapRadius(i, kSamples, screenRadius), aoTapDirection(aoAlchemyTurnsQ16(i), rotation), gSize);
             sum += tapOcclusion(q, C, n, z, exteriorWeight);
         }
         return clamp(finishOcclusion(2.0 * ao.intensity * ao.radius / float(kSamples) * sum), 0.0, 1.0);
@@ -121,8 +120,8 @@ float receiverVisibility(ivec2 p, float z, vec3 n, float exteriorWeight) {
     for (int i = 0; i < offsets; ++i) {
         float h = aoSpiralTapRadius(i, offsets, screenRadius);
         vec2 d = aoTapDirection(aoSpiralTurnsQ16(i, ao.spiralHalfStepQ16), rotation);
-        sum += tapOcclusion(tapPixel(p, h, d), C, n, z, exteriorWeight);
-        if (kMirrored != 0) sum += tapOcclusion(tapPixel(p, h, -d), C, n, z, exteriorWeight);
+        sum += tapOcclusion(aoTap(p, h, d, gSize), C, n, z, exteriorWeight);
+        if (kMirrored != 0) sum += tapOcclusion(aoTap(p, h, -d, gSize), C, n, z, exteriorWeight);
     }
     return clamp(finishOcclusion(aoScalableOcclusion(sum, ao.intensity, kSamples, ao.sumExponent)), 0.0, 1.0);
 }

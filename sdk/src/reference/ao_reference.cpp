@@ -15,12 +15,11 @@ double saturate(double v) { return std::clamp(v, 0.0, 1.0); }
 
 bool isSky(double z, double maxDepth) { return !(z < maxDepth); }
 
-// The pixel a tap at distance rho in direction d lands on, decided in float as the shaders do
-// (sfx_shared_ao.h, "Where a tap lands"), clamped to the image as they clamp it (texelFetch
-// outside the image is undefined).
+// The pixel a tap at distance rho in direction d lands on, decided in float by the shaders' own
+// sh::aoTap (sfx_shared_ao.h, "Where a tap lands"), with the MIP level it reads.
 AoTap tapAt(uint32_t x, uint32_t y, float rho, sh::vec2 d, uint32_t w, uint32_t h, int level) {
-    const sh::ivec2 step = sh::aoTapStep(rho, d);
-    return AoTap{std::clamp(int(x) + step.x, 0, int(w) - 1), std::clamp(int(y) + step.y, 0, int(h) - 1), level};
+    const sh::ivec2 q = sh::aoTap(sh::ivec2{int(x), int(y)}, rho, d, sh::ivec2{int(w), int(h)});
+    return AoTap{q.x, q.y, level};
 }
 
 // Where the pixels of a pass lie in the full-size image: themselves, or at half size each
