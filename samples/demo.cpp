@@ -35,7 +35,7 @@ Result<io::Image> readR32F(Device& device, TextureHandle texture, uint32_t mip) 
 
 
 // View-space normals as a picture: n * 0.5 + 0.5.
-io::Image normalsPicture(const samples::GBufferContents& g) {
+io::Image normalsPicture(const tools::GBufferContents& g) {
     io::Image image(g.width, g.height, 3);
     for (size_t i = 0; i < g.normals.size(); ++i)
         for (int c = 0; c < 3; ++c) image.pixels[i * 3 + c] = g.normals[i][c] * 0.5f + 0.5f;
@@ -65,7 +65,7 @@ Result<std::vector<uint8_t>> readRGBA8(Device& device, TextureHandle texture, ui
 
 // A lit composite on the CPU: albedo * (ambient * visibility + key light * n.l), the key light
 // from the upper left, in view space.
-io::Image composite(const samples::GBufferContents& g, const std::vector<uint8_t>* visibility) {
+io::Image composite(const tools::GBufferContents& g, const std::vector<uint8_t>* visibility) {
     io::Image out(g.width, g.height, 3);
     const glm::vec3 light(-0.45f, 0.75f, 0.48f);
     for (size_t i = 0; i < g.normals.size(); ++i) {
@@ -110,14 +110,14 @@ int main(int argc, char** argv) {
     CLI::App app{"ScalableFX demo: renders the sample scenes through the SDK on the best device and writes PNGs"};
     std::string outDir = "out/demo", backendName = "auto", tierName = "auto";
     uint32_t width = 640, height = 360;
-    std::vector<std::string> scenes = samples::sceneNames();
+    std::vector<std::string> scenes = tools::sceneNames();
     app.add_option("--out", outDir, "output folder")->capture_default_str();
     app.add_option("--backend", backendName, "auto | vulkan | gles | gl-egl | gl-osmesa")->capture_default_str();
     app.add_option("--tier", tierName, "auto or a tier: " + tierNameList())->capture_default_str();
     app.add_option("--width", width, "width in pixels")->capture_default_str();
     app.add_option("--height", height, "height in pixels")->capture_default_str();
     app.add_option("--scenes", scenes, "scenes to render")->capture_default_str();
-    std::string sceneFile = SFX_SAMPLE_SCENES_DIR "/panes.json";
+    std::string sceneFile = SFX_SCENE_FILES_DIR "/panes.json";
     app.add_option("--scene-file", sceneFile, "a scene file drawn through the scene renderer (sfx render); '' = none")
         ->capture_default_str();
     CLI11_PARSE(app, argc, argv);
@@ -155,7 +155,7 @@ int main(int argc, char** argv) {
     std::cout << "tier: " << tier->reason << "\n";
 
     fs::create_directories(outDir);
-    Result<std::unique_ptr<samples::SceneRenderer>> renderer = samples::SceneRenderer::create(*device, tier->tier);
+    Result<std::unique_ptr<tools::SceneRenderer>> renderer = tools::SceneRenderer::create(*device, tier->tier);
     if (!renderer) return fail(renderer.status());
 
     // 2. Ambient obscurance, every technique, at the tier's defaults. Each context owns only
@@ -187,14 +187,14 @@ int main(int argc, char** argv) {
     if (!aoTarget) return fail(aoTarget.status());
 
     for (const std::string& name : scenes) {
-        Result<samples::Scene> scene = samples::makeScene(name);
+        Result<tools::Scene> scene = tools::makeScene(name);
         if (!scene) return fail(scene.status());
         if (Status s = renderer.value()->load(scene.value()); !s) return fail(s);
         std::cout << "[" << name << "] rendering " << width << "x" << height << "\n";
-        Result<samples::GBuffer> g = renderer.value()->render(scene.value(), width, height);
+        Result<tools::GBuffer> g = renderer.value()->render(scene.value(), width, height);
         if (!g) return fail(g.status());
         const std::string base = outDir + "/" + name;
-        Result<samples::GBufferContents> contents = samples::readBack(*device, g.value());
+        Result<tools::GBufferContents> contents = tools::readBack(*device, g.value());
         if (!contents) return fail(contents.status());
         if (Status s = io::writePng(base + "_normals.png", normalsPicture(contents.value())); !s) return fail(s);
         if (Status s = io::writePng(base + "_lit_no_ao.png", composite(contents.value(), nullptr)); !s) return fail(s);
@@ -244,7 +244,7 @@ int main(int argc, char** argv) {
         device->createTexture({width, height, 1, Format::RGBA8, kTextureSampled, "demo-motion-colour"});
     if (!colour) return fail(colour.status());
     for (const MotionCase& mc : motionCases) {
-        Result<samples::Scene> scene = samples::makeScene(mc.scene);
+        Result<tools::Scene> scene = tools::makeScene(mc.scene);
         if (!scene) return fail(scene.status());
         if (mc.cameraOnly) {
             scene->eyeVelocity = {0.25, 0.0, 0.0};  // world units per shutter interval
@@ -254,9 +254,9 @@ int main(int argc, char** argv) {
                 scene->meshes[m].velocity = velocities[m];  // mesh 0 is the floor: still
         }
         if (Status s = renderer.value()->load(scene.value()); !s) return fail(s);
-        Result<samples::GBuffer> g = renderer.value()->render(scene.value(), width, height, 0.0);
+        Result<tools::GBuffer> g = renderer.value()->render(scene.value(), width, height, 0.0);
         if (!g) return fail(g.status());
-        Result<samples::GBufferContents> contents = samples::readBack(*device, g.value());
+        Result<tools::GBufferContents> contents = tools::readBack(*device, g.value());
         if (!contents) return fail(contents.status());
         const io::Image sharp = composite(contents.value(), nullptr);
         const std::vector<uint8_t> sharpBytes = toRGBA8(sharp);

@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # The runtime is only the runtime: the libraries an application links (sfx, sfx_shaders,
 # sfx_core) hold no CPU reference (sfx::reference) and embed no program that only tests or
-# samples use (the names in shader_src/programs_test.txt and programs_samples.txt).
+# samples use (the names in shader_src/programs_test.txt and programs_scenes.txt).
 # Usage: check_runtime_library.sh <shader_src dir> <runtime archive>...
 set -euo pipefail
 shader_dir=$1
 shift
-names=$(cat "$shader_dir/programs_test.txt" "$shader_dir/programs_samples.txt" | awk '!/^#/ && NF {print $1}')
+names=$(cat "$shader_dir/programs_test.txt" "$shader_dir/programs_scenes.txt" | awk '!/^#/ && NF {print $1}')
 [ -n "$names" ] || { echo "FAILED: no program names read from $shader_dir"; exit 1; }
 failed=0
 seen=0

@@ -19,6 +19,7 @@ PACKAGES=(
   nlohmann-json3-dev              # scene files (sfx render)
   clang-14 libclang-rt-14-dev     # sanitizer builds and libFuzzer targets
   ccache                          # faster rebuilds; used when present
+  python3                         # tests only: the layering check
   chromium-common                 # tests only: Google's SwiftShader, a second, independent Vulkan driver
 )
 

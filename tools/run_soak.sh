@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The soak run of docs/robustness.md ("Soak"): builds samples/soak and runs it, by default 10000
+# The soak run of docs/robustness.md ("Soak"): builds tools/bench/soak and runs it, by default 10000
 # frames on every compiled backend, each backend in a process of its own so that one backend's
 # resident memory is not the baseline of the next. Exit status 0 when every backend passed.
 # Vulkan runs twice: with the validation layers (no message, every object back; the layers'
@@ -29,12 +29,12 @@ done
 status=0
 for b in ${backends//,/ }; do
   if [ "$validation" = 0 ]; then
-    "$BUILD_DIR"/samples/soak --backends "$b" --no-validation "${args[@]}" || status=1
+    "$BUILD_DIR"/tools/bench/soak --backends "$b" --no-validation "${args[@]}" || status=1
   elif [ "$b" = vulkan ]; then
-    "$BUILD_DIR"/samples/soak --backends "$b" --memory-report-only "${args[@]}" || status=1
-    "$BUILD_DIR"/samples/soak --backends "$b" --no-validation "${args[@]}" || status=1
+    "$BUILD_DIR"/tools/bench/soak --backends "$b" --memory-report-only "${args[@]}" || status=1
+    "$BUILD_DIR"/tools/bench/soak --backends "$b" --no-validation "${args[@]}" || status=1
   else
-    "$BUILD_DIR"/samples/soak --backends "$b" "${args[@]}" || status=1
+    "$BUILD_DIR"/tools/bench/soak --backends "$b" "${args[@]}" || status=1
   fi
 done
 exit $status

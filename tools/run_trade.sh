@@ -28,9 +28,9 @@ step "configure and build bench_trade, fit_ao, trade_presets"
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$BUILD_DIR" -j"$(nproc)" --target bench_trade fit_ao trade_presets sfx_cli >/dev/null
 step "fit_ao: the looks, fitted on the training views, scored on the held-out ones"
-"$BUILD_DIR"/samples/fit_ao --start tier --refinements 3 --cache-dir "$CACHE" --out-dir docs --backend "${BACKENDS%%,*}"
+"$BUILD_DIR"/tools/bench/fit_ao --start tier --refinements 3 --cache-dir "$CACHE" --out-dir docs --backend "${BACKENDS%%,*}"
 step "bench_trade: the defaults against the truth, every backend"
-"$BUILD_DIR"/samples/bench_trade --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS"
+"$BUILD_DIR"/tools/bench/bench_trade --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS"
 step "trade_presets: cost and accuracy of every preset, Pareto plots"
-"$BUILD_DIR"/samples/trade_presets --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS"
+"$BUILD_DIR"/tools/bench/trade_presets --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS"
 step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg"

@@ -109,7 +109,7 @@ sfx::Status Renderer::createGlObjects() {
 }
 
 sfx::Status Renderer::createMeshes() {
-    sfx::Result<sfx::samples::Scene> scene = sfx::samples::makeScene("bunny");
+    sfx::Result<sfx::tools::Scene> scene = sfx::tools::makeScene("bunny");
     if (!scene) return scene.status();
     eye_ = scene->eye;
     target_ = scene->target;
@@ -117,7 +117,7 @@ sfx::Status Renderer::createMeshes() {
     if (!camera) return camera.status();
     camera_ = camera.value();
     for (size_t i = 0; i < scene->meshes.size(); ++i) {
-        const sfx::samples::Mesh& source = scene->meshes[i];
+        const sfx::tools::Mesh& source = scene->meshes[i];
         Mesh m;
         m.model = source.model;
         m.spins = i > 0;  // the floor stays, the bunny turns
@@ -127,18 +127,18 @@ sfx::Status Renderer::createMeshes() {
         gl_.BindVertexArray(m.vao);
         m.vertices = gl_.genBuffer();
         gl_.BindBuffer(GL_ARRAY_BUFFER, m.vertices);
-        gl_.bufferData(GL_ARRAY_BUFFER, GLsizeiptr(source.vertices.size() * sizeof(sfx::samples::Vertex)), source.vertices.data(),
+        gl_.bufferData(GL_ARRAY_BUFFER, GLsizeiptr(source.vertices.size() * sizeof(sfx::tools::Vertex)), source.vertices.data(),
                        GL_STATIC_DRAW);
         m.indices = gl_.genBuffer();
         gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, m.indices);
         gl_.bufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(source.indices.size() * sizeof(uint32_t)), source.indices.data(),
                        GL_STATIC_DRAW);
-        const GLsizei stride = sizeof(sfx::samples::Vertex);
+        const GLsizei stride = sizeof(sfx::tools::Vertex);
         gl_.EnableVertexAttribArray(kAttribPosition);
         gl_.VertexAttribPointer(kAttribPosition, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
         gl_.EnableVertexAttribArray(kAttribNormal);
         gl_.VertexAttribPointer(kAttribNormal, 3, GL_FLOAT, GL_FALSE, stride,
-                                reinterpret_cast<const void*>(offsetof(sfx::samples::Vertex, normal)));
+                                reinterpret_cast<const void*>(offsetof(sfx::tools::Vertex, normal)));
         gl_.BindVertexArray(0);
         gl_.BindBuffer(GL_ARRAY_BUFFER, 0);
         meshes_.push_back(m);

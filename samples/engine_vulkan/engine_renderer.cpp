@@ -60,25 +60,25 @@ Status EngineRenderer::init(const EngineOptions& options) {
 // The bunny scene of samples/common (glmark2's bunny on a floor), copied into one vertex and
 // one index buffer of the host's; its camera orbits the bunny, which turns on the spot.
 Status EngineRenderer::loadScene() {
-    Result<samples::Scene> scene = samples::makeScene("bunny");
+    Result<tools::Scene> scene = tools::makeScene("bunny");
     if (!scene) return scene.status();
     Result<CameraProjection> camera = scene->projection(options_.width, options_.height, ClipDepthRange::ZeroToOne);
     if (!camera) return camera.status();
     camera_ = camera.value();
     size_t vertexCount = 0, indexCount = 0;
-    for (const samples::Mesh& m : scene->meshes) {
+    for (const tools::Mesh& m : scene->meshes) {
         vertexCount += m.vertices.size();
         indexCount += m.indices.size();
     }
-    SFX_TRY(host_.makeBuffer(vertexCount * sizeof(samples::Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, &vertices_));
+    SFX_TRY(host_.makeBuffer(vertexCount * sizeof(tools::Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, &vertices_));
     SFX_TRY(host_.makeBuffer(indexCount * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT, &indices_));
-    auto* v = static_cast<samples::Vertex*>(vertices_.mapped);
+    auto* v = static_cast<tools::Vertex*>(vertices_.mapped);
     auto* i = static_cast<uint32_t*>(indices_.mapped);
     uint32_t firstIndex = 0;
     int32_t vertexOffset = 0;
     for (size_t k = 0; k < scene->meshes.size(); ++k) {
-        const samples::Mesh& m = scene->meshes[k];
-        std::memcpy(v + vertexOffset, m.vertices.data(), m.vertices.size() * sizeof(samples::Vertex));
+        const tools::Mesh& m = scene->meshes[k];
+        std::memcpy(v + vertexOffset, m.vertices.data(), m.vertices.size() * sizeof(tools::Vertex));
         std::memcpy(i + firstIndex, m.indices.data(), m.indices.size() * sizeof(uint32_t));
         meshes_.push_back({firstIndex, uint32_t(m.indices.size()), vertexOffset, m.model, m.model});
         if (m.vertices.size() > 1000) bunny_ = k;  // the floor is one quad

@@ -1,5 +1,5 @@
 // The uniform block of the sample scenes' G-buffer raster pass (raster_gbuffer.vert/.frag),
-// declared once for GLSL and for the C++ that fills it (samples/common/scene.cpp), with the
+// declared once for GLSL and for the C++ that fills it (tools/scenes/scene.cpp), with the
 // SFX_BLOCK macros of sfx_shared.h. Samples and tests only; no effect uses it.
 #ifndef SFX_SHARED_RASTER_H
 #define SFX_SHARED_RASTER_H

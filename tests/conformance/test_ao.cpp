@@ -33,7 +33,7 @@ bool drawsNothing() { return test::device().caps().backend == BackendKind::Null;
 
 using test::GpuAo;
 
-GpuAo runAo(const samples::AnalyticScene& scene, const AoSettings& settings, DepthKind descInput = DepthKind::Linear) {
+GpuAo runAo(const tools::AnalyticScene& scene, const AoSettings& settings, DepthKind descInput = DepthKind::Linear) {
     GpuAo result = test::runAo(test::device(), test::tierProfile(), scene, settings, descInput);
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
     return result;
@@ -92,7 +92,7 @@ void checkWithinTolerance(const AgainstReference& r, size_t pixels) {
 
 // One dispatch of an existing context on `scene` (linear depth read in place, R32F output
 // where renderable, else RGBA8), read back.
-Grid dispatchOn(Device& dev, AmbientObscurance& ao, const samples::AnalyticScene& scene) {
+Grid dispatchOn(Device& dev, AmbientObscurance& ao, const tools::AnalyticScene& scene) {
     std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
     TextureHandle depthTex = dev.createTexture({scene.width, scene.height, 1, Format::R32F, kTextureSampled, "ao-test-depth"}).value();
     SFX_REQUIRE_OK(dev.writeTexture(depthTex, 0, depth.data(), depth.size() * sizeof(float)));
@@ -136,11 +136,11 @@ TEST_CASE("ao: each technique matches its CPU reference, at full and half resolu
     for (AoTechnique t : kTechniques)
         for (bool blur : {false, true})
             for (bool gbuffer : {false, true})
-                for (auto make : {&samples::cornerScene, &samples::sphereOnPlaneScene, &samples::columnsScene}) {
+                for (auto make : {&tools::cornerScene, &tools::sphereOnPlaneScene, &tools::columnsScene}) {
                     // Even sizes: an odd width puts a pixel centre exactly on the corner's crease, where the
                     // normal rule's tie (both neighbours equally close) falls either way in float.
                     const bool half = resolution == AoResolution::Half;
-                    const samples::AnalyticScene scene = make(96, 64, 1.0);
+                    const tools::AnalyticScene scene = make(96, 64, 1.0);
                     AoSettings s = settingsFor(t);
                     s.blur = blur;
                     s.resolution = resolution;
@@ -174,7 +174,7 @@ TEST_CASE("ao: at 360 rows crease's strided diamond and Scalable's scaled clamp 
     for (AoResolution resolution : {AoResolution::Full, AoResolution::Half})
         for (AoTechnique t : {AoTechnique::Scalable, AoTechnique::Crease}) {
             if (t == AoTechnique::Scalable && !clamped) continue;
-            const samples::AnalyticScene scene = samples::sphereOnPlaneScene(128, 360, 1.0);
+            const tools::AnalyticScene scene = tools::sphereOnPlaneScene(128, 360, 1.0);
             AoSettings s = settingsFor(t);
             s.resolution = resolution;
             s.radius = 2.0f;  // projects past the clamp on the current tier
@@ -196,7 +196,7 @@ TEST_CASE("ao: at the smallest radius and epsilon the GPU matches the reference,
     // on the GPU (float) exactly as in the reference (double), never dividing 0 by 0.
     for (AoTechnique t : kTechniques)
         for (bool blur : {false, true}) {
-            const samples::AnalyticScene scene = samples::cornerScene(64, 48, 1.0);
+            const tools::AnalyticScene scene = tools::cornerScene(64, 48, 1.0);
             AoSettings s = settingsFor(t);
             s.radius = kAoMinRadius;
             s.crease.range = kAoMinRadius;
@@ -221,7 +221,7 @@ TEST_CASE("ao: non-finite and out-of-range depth neighbours follow the reference
     // The host's linear depth read in place, with NaN, +-inf, 0, negative and past-the-far-plane
     // texels: the shader and the reference both read them as sky (sfx_shared_ao.h), so the derived
     // normals of their neighbours, and the obscurance there, agree. Those pixels themselves are sky.
-    samples::AnalyticScene scene = samples::cornerScene(64, 48, 1.0);
+    tools::AnalyticScene scene = tools::cornerScene(64, 48, 1.0);
     const double bad[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
                           -std::numeric_limits<double>::infinity(), 0.0, -1.0, 1e30};
     std::vector<std::pair<uint32_t, uint32_t>> poked;
@@ -269,7 +269,7 @@ TEST_CASE("ao: linear depth read in place gives the same output as the copy, one
     // Scalable) the pyramid starts at half size: no pass at half resolution is full size but
     // the upsample.
     if (drawsNothing()) SFX_SKIP("the null backend draws nothing: GPU results are not compared on " << test::label());
-    const samples::AnalyticScene scene = samples::sphereOnPlaneScene(64, 48);
+    const tools::AnalyticScene scene = tools::sphereOnPlaneScene(64, 48);
     for (AoTechnique t : kTechniques)
         for (bool blur : {false, true}) {
             INFO(test::label() << " " << toString(t) << (blur ? " blur" : ""));
@@ -300,14 +300,14 @@ TEST_CASE("ao: analytic properties hold on the GPU", "[ao]") {
     const std::vector<double> creaseEdges{0.0, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.6, 0.9};
     for (AoTechnique t : kTechniques) {
         INFO(test::label() << " " << toString(t));
-        const GpuAo plane = runAo(samples::facingPlaneScene(96, 64), settingsFor(t));
+        const GpuAo plane = runAo(tools::facingPlaneScene(96, 64), settingsFor(t));
         for (double v : plane.visibility.values) REQUIRE(v > 0.99);
-        const GpuAo corner = runAo(samples::cornerScene(160, 120), settingsFor(t));
-        const auto bins = samples::occlusionBins(samples::cornerScene(160, 120), corner.visibility, 1.0, creaseEdges,
-                                              samples::onCornerPlaneA, samples::distanceToCrease);
+        const GpuAo corner = runAo(tools::cornerScene(160, 120), settingsFor(t));
+        const auto bins = tools::occlusionBins(tools::cornerScene(160, 120), corner.visibility, 1.0, creaseEdges,
+                                              tools::onCornerPlaneA, tools::distanceToCrease);
         for (size_t i = 0; i + 1 < bins.size(); ++i) CHECK(bins[i] >= bins[i + 1] - 0.025);
         CHECK(bins.front() > bins.back() + 0.01);
-        const GpuAo scaled = runAo(samples::cornerScene(160, 120, 10.0), settingsFor(t, 10.0));
+        const GpuAo scaled = runAo(tools::cornerScene(160, 120, 10.0), settingsFor(t, 10.0));
         double meanAbs = 0;
         for (size_t i = 0; i < scaled.visibility.values.size(); ++i)
             meanAbs += std::abs(scaled.visibility.values[i] - corner.visibility.values[i]);
@@ -407,7 +407,7 @@ TEST_CASE("ao: switching resolution with setSettings and resize keeps matching t
             REQUIRE(fresh.isOk());
             CHECK(ao.config().creaseStride == fresh.value()->config().creaseStride);
             CHECK(ao.config().maxRadiusPx == fresh.value()->config().maxRadiusPx);
-            const samples::AnalyticScene scene = samples::sphereOnPlaneScene(w, h);
+            const tools::AnalyticScene scene = tools::sphereOnPlaneScene(w, h);
             const Grid gpu = dispatchOn(dev, ao, scene);
             SFX_REQUIRE_NO_VALIDATION_MESSAGES();
             const Grid ref = reference::ambientVisibility(scene.aoInput(false), ao.config());
@@ -421,7 +421,7 @@ TEST_CASE("ao: switching resolution with setSettings and resize keeps matching t
 
 TEST_CASE("ao: profiling times exactly the planned passes and leaves the output unchanged", "[ao][profiling]") {
     Device& dev = test::device();
-    const samples::AnalyticScene scene = samples::sphereOnPlaneScene(64, 48);
+    const tools::AnalyticScene scene = tools::sphereOnPlaneScene(64, 48);
     std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
     TextureHandle depthTex = dev.createTexture({scene.width, scene.height, 1, Format::R32F, kTextureSampled, "ao-profile-depth"}).value();
     SFX_REQUIRE_OK(dev.writeTexture(depthTex, 0, depth.data(), depth.size() * sizeof(float)));

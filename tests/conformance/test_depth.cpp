@@ -178,10 +178,10 @@ TEST_CASE("depth pyramid levels are exact rotated-grid subsamples", "[depth][con
 TEST_CASE("rasterised hardware depth linearises to the scene's distances", "[depth][conformance]") {
     Device& device = test::device();
     const uint32_t W = 96, H = 64;
-    auto renderer = samples::SceneRenderer::create(device, test::tier());
+    auto renderer = tools::SceneRenderer::create(device, test::tier());
     INFO(renderer.status().toString());
     REQUIRE(renderer.isOk());
-    samples::Scene scene = samples::makeScene("contact").value();
+    tools::Scene scene = tools::makeScene("contact").value();
     SFX_REQUIRE_OK(renderer.value()->load(scene));
     auto g = renderer.value()->render(scene, W, H);
     INFO(g.status().toString());

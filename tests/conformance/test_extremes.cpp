@@ -89,7 +89,7 @@ TEST_CASE("extremes: hostile linear depth is sky in AO", "[extremes][ao]") {
     if (drawsNothing()) SFX_SKIP("the null backend draws nothing: GPU results are not compared on " << test::label());
     const Hostile values[] = {{"NaN", kNaN}, {"+inf", kInf}, {"-inf", -kInf}, {"denormal", kDenormal}, {"0", 0.0f},
                               {"-float max", -kFloatMax}, {"65504", kHalfMax}, {"float max", kFloatMax}};
-    samples::AnalyticScene scene = samples::cornerScene(48, 36, 1.0);
+    tools::AnalyticScene scene = tools::cornerScene(48, 36, 1.0);
     const auto sites = pokeSites(std::size(values), 7);
     for (size_t k = 0; k < sites.size(); ++k) scene.linearDepth.at(sites[k].first, sites[k].second) = values[k % std::size(values)].value;
     bool ok = true;
@@ -126,7 +126,7 @@ TEST_CASE("extremes: unusable host normals fall back to the derived normal", "[e
                                      {"denormal", {kDenormal, kDenormal, 0}, derived},
                                      {"float max", {kFloatMax, kFloatMax, kFloatMax}, "normalised, no overflow"},
                                      {"65504 x true normal", {}, "normalised, no overflow"}};
-    samples::AnalyticScene scene = samples::cornerScene(48, 36, 1.0);
+    tools::AnalyticScene scene = tools::cornerScene(48, 36, 1.0);
     const auto sites = pokeSites(std::size(normals), 7);
     for (size_t k = 0; k < sites.size(); ++k) {
         glm::dvec3& n = scene.normals[size_t(sites[k].second) * scene.width + sites[k].first];

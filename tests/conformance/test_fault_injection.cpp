@@ -120,7 +120,7 @@ struct HostTexture {
 
 TEST_CASE("fault injection: AO of each technique fails cleanly at every creation, submit and call", "[fault][ao]") {
     Device& inner = test::device();
-    const samples::AnalyticScene scene = samples::cornerScene(kW, kH, 1.0);
+    const tools::AnalyticScene scene = tools::cornerScene(kW, kH, 1.0);
     const std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
     HostTexture depthTex(inner, {kW, kH, 1, Format::R32F, kTextureSampled, "fault-depth"}, depth.data(), depth.size() * 4);
     const Format of = test::pickFormat(inner, {Format::R32F, Format::R16F, Format::RGBA8}, true);
@@ -155,7 +155,7 @@ TEST_CASE("fault injection: AO of each technique fails cleanly at every creation
 
 TEST_CASE("fault injection: the depth pyramid fails cleanly at every creation, submit and call", "[fault][depth]") {
     Device& inner = test::device();
-    const samples::AnalyticScene scene = samples::cornerScene(kW, kH, 1.0);
+    const tools::AnalyticScene scene = tools::cornerScene(kW, kH, 1.0);
     const std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
     HostTexture depthTex(inner, {kW, kH, 1, Format::R32F, kTextureSampled, "fault-depth"}, depth.data(), depth.size() * 4);
     const uint32_t levels = test::tier() == Tier::High ? 3 : 1;
@@ -179,7 +179,7 @@ TEST_CASE("fault injection: the depth pyramid fails cleanly at every creation, s
 
 TEST_CASE("fault injection: motion blur fails cleanly at every creation, submit and call", "[fault][motion_blur]") {
     Device& inner = test::device();
-    const samples::AnalyticScene scene = samples::tiltedPlaneScene(kW, kH);
+    const tools::AnalyticScene scene = tools::tiltedPlaneScene(kW, kH);
     const std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
     std::vector<uint16_t> color(size_t(kW) * kH * 4, floatToHalf(1.0f));
     std::vector<float> velocity(size_t(kW) * kH * 2);

@@ -131,7 +131,7 @@ TEST_CASE("gl import: AO reads a host depth texture and writes a host texture", 
     Device& d = *played.sdk;
 
     constexpr uint32_t w = 96, h = 54;
-    const samples::AnalyticScene scene = samples::cornerScene(w, h);
+    const tools::AnalyticScene scene = tools::cornerScene(w, h);
     const std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
     const bool halfOut = d.caps().renderableFormat[size_t(Format::R16F)];
     const Format outFormat = halfOut ? Format::R16F : Format::RGBA8;

@@ -48,7 +48,7 @@ void checkRefusedHere() {
 // occluder single-layer AO cannot see; every further layer lies 0.06 to 0.18 (a smooth ripple)
 // behind the one before, within the AO radius, with holes (no layer: 0) on a pattern, so taps
 // see every mix of layers present and absent.
-std::vector<std::vector<float>> syntheticLayers(const samples::AnalyticScene& s, uint32_t layers) {
+std::vector<std::vector<float>> syntheticLayers(const tools::AnalyticScene& s, uint32_t layers) {
     std::vector<std::vector<float>> out(layers, std::vector<float>(size_t(s.width) * s.height, 0.0f));
     for (uint32_t y = 0; y < s.height; ++y)
         for (uint32_t x = 0; x < s.width; ++x) {
@@ -76,7 +76,7 @@ struct MultilayerRun {
     Grid gpu, reference, single;
 };
 
-MultilayerRun runMultilayer(const samples::AnalyticScene& scene, AoTechnique t, uint32_t layers) {
+MultilayerRun runMultilayer(const tools::AnalyticScene& scene, AoTechnique t, uint32_t layers) {
     Device& dev = test::device();
     AoSettings s = test::aoTestSettings(t, 1.0);
     s.blur = false;  // the reference is the raw estimate
@@ -138,7 +138,7 @@ double worstDifference(const Grid& a, const Grid& b) {
 
 TEST_CASE("multilayer ao: the GPU matches reference::multilayerVisibility", "[ao][multilayer]") {
     if (!multilayerTier()) return checkRefusedHere();
-    const samples::AnalyticScene scene = samples::cornerScene(96, 64);
+    const tools::AnalyticScene scene = tools::cornerScene(96, 64);
     for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease})
         for (uint32_t layers : {2u, 4u}) {
             const MultilayerRun r = runMultilayer(scene, t, layers);
@@ -240,7 +240,7 @@ TEST_CASE("multilayer ao: depth peeling recovers the contact shadow a foreground
     const std::vector<float> single = renderAo(1), multi = renderAo(2);
     const uint32_t w = file->width, h = file->height;
 
-    Result<samples::TruthScene> ts = samples::makeTruthScene(samples::opaqueScene(file.value()), w, h);
+    Result<tools::TruthScene> ts = tools::makeTruthScene(tools::opaqueScene(file.value()), w, h);
     REQUIRE(ts.isOk());
     Result<std::unique_ptr<truth::Tracer>> tracer = truth::Tracer::create(ts->geometry);
     if (!tracer && tracer.status().code() == StatusCode::BackendUnavailable) SFX_SKIP("Embree: " << tracer.status().message());

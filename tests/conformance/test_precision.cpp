@@ -136,7 +136,7 @@ TEST_CASE("precision: AO output formats hold the visibility to their stated quan
     const std::vector<Format> formats =
         usableFormats({Format::R8, Format::RGBA8, Format::R16F, Format::RG16F, Format::RGBA16F, Format::R32F, Format::RGBA32F}, false);
     const bool haveFloat = dev.caps().renderableFormat[size_t(Format::R32F)];
-    const samples::AnalyticScene scene = samples::cornerScene(96, 64, 1.0);
+    const tools::AnalyticScene scene = tools::cornerScene(96, 64, 1.0);
     const uint32_t w = scene.width, h = scene.height;
     const size_t n = size_t(w) * h;
     TextureHandle depth = dev.createTexture({w, h, 1, Format::R32F, kTextureSampled, "precision-depth"}).value();

@@ -23,7 +23,7 @@ namespace {
 
 constexpr uint32_t kWidth = 64, kHeight = 36;
 
-void writeDepth(TextureHandle t, const samples::AnalyticScene& scene) {
+void writeDepth(TextureHandle t, const tools::AnalyticScene& scene) {
     const std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
     SFX_REQUIRE_OK(test::device().writeTexture(t, 0, depth.data(), depth.size() * sizeof(float)));
 }
@@ -48,8 +48,8 @@ void checkNoRecordingMade(const DeviceStats& before, const char* what) {
 
 TEST_CASE("recordings: replayed AO frames equal a fresh effect's after the depth and the settings changed", "[recordings][ao]") {
     Device& dev = test::device();
-    const samples::AnalyticScene corner = samples::cornerScene(kWidth, kHeight);
-    const samples::AnalyticScene sphere = samples::sphereOnPlaneScene(kWidth, kHeight);
+    const tools::AnalyticScene corner = tools::cornerScene(kWidth, kHeight);
+    const tools::AnalyticScene sphere = tools::sphereOnPlaneScene(kWidth, kHeight);
     TextureHandle depth = dev.createTexture({kWidth, kHeight, 1, Format::R32F, kTextureSampled, "replay-depth"}).value();
     const Format outFormat = dev.caps().renderableFormat[size_t(Format::R16F)] ? Format::R16F : Format::RGBA8;
     TextureHandle out = dev.createTexture({kWidth, kHeight, 1, outFormat, kTextureSampled | kTextureRenderTarget, "replay-ao"}).value();
@@ -99,7 +99,7 @@ TEST_CASE("recordings: replayed AO frames equal a fresh effect's after the depth
 
 TEST_CASE("recordings: replayed motion blur frames equal a fresh effect's as the camera moves", "[recordings][motionblur]") {
     Device& dev = test::device();
-    const samples::AnalyticScene scene = samples::tiltedPlaneScene(kWidth, kHeight);
+    const tools::AnalyticScene scene = tools::tiltedPlaneScene(kWidth, kHeight);
     TextureHandle depth = dev.createTexture({kWidth, kHeight, 1, Format::R32F, kTextureSampled, "replay-depth"}).value();
     writeDepth(depth, scene);
     std::vector<uint16_t> color(size_t(kWidth) * kHeight * 4, floatToHalf(1.0f));
@@ -149,7 +149,7 @@ TEST_CASE("recordings: a frame whose new recording failed is recorded again at t
     // try to replay a recording that was never made.
     Device& dev = test::device();
     test::FaultInjectingDevice fd(dev);
-    const samples::AnalyticScene scene = samples::tiltedPlaneScene(kWidth, kHeight);
+    const tools::AnalyticScene scene = tools::tiltedPlaneScene(kWidth, kHeight);
     TextureHandle depth = dev.createTexture({kWidth, kHeight, 1, Format::R32F, kTextureSampled, "refail-depth"}).value();
     writeDepth(depth, scene);
     const std::vector<uint16_t> color(size_t(kWidth) * kHeight * 4, floatToHalf(0.5f));

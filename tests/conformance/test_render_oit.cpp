@@ -48,7 +48,7 @@ constexpr double kWeightedTolerance = 4.0 / 510.0;
 // (docs/oit.md, "The scene renderer").
 constexpr double kWeightedVsExact = 0.25;
 
-std::string scenePath(const char* name) { return std::string(SFX_SOURCE_DIR) + "/samples/scenes/" + name; }
+std::string scenePath(const char* name) { return std::string(SFX_SOURCE_DIR) + "/tools/scenes/files/" + name; }
 
 scene::Scene loadScene(const char* name) {
     Result<scene::Scene> s = scene::loadSceneFile(scenePath(name));

@@ -42,7 +42,7 @@ TEST_CASE("sizes: AO at 1x1, one row, one column and odd sizes matches the refer
     for (const Size& sz : kSmallSizes)
         for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}) {
             INFO(test::label() << " " << sz.w << "x" << sz.h << " " << toString(t));
-            const samples::AnalyticScene scene = samples::cornerScene(sz.w, sz.h, 1.0);
+            const tools::AnalyticScene scene = tools::cornerScene(sz.w, sz.h, 1.0);
             AoSettings s = test::aoTestSettings(t);
             const test::GpuAo gpu = test::runAo(test::device(), test::tierProfile(), scene, s);
             const Grid ref = ambientVisibility(scene.aoInput(false), gpu.config);
@@ -174,7 +174,7 @@ TEST_CASE("sizes: large and odd sizes run every effect with finite output", "[si
     for (const Run& r : runs) {
         const uint32_t w = r.size.w, h = r.size.h;
         INFO(test::label() << " " << w << "x" << h);
-        const samples::AnalyticScene scene = samples::cornerScene(w, h, 1.0);
+        const tools::AnalyticScene scene = tools::cornerScene(w, h, 1.0);
         for (AoTechnique t : r.techniques) {
             const test::GpuAo gpu = test::runAo(test::device(), test::tierProfile(), scene, test::aoTestSettings(t));
             size_t nonFinite = 0;

@@ -56,7 +56,7 @@ void checkSteady(const std::string& what, Frame&& frame) {
 
 TEST_CASE("steady frames: AO of each technique makes no object and keeps memory flat", "[steady][ao]") {
     Device& dev = test::device();
-    const samples::AnalyticScene scene = samples::cornerScene(kWidth, kHeight);
+    const tools::AnalyticScene scene = tools::cornerScene(kWidth, kHeight);
     const std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
     TextureHandle depthTex = dev.createTexture({kWidth, kHeight, 1, Format::R32F, kTextureSampled, "steady-depth"}).value();
     SFX_REQUIRE_OK(dev.writeTexture(depthTex, 0, depth.data(), depth.size() * sizeof(float)));
@@ -82,7 +82,7 @@ TEST_CASE("steady frames: AO of each technique makes no object and keeps memory 
 
 TEST_CASE("steady frames: motion blur makes no object and keeps memory flat", "[steady][motionblur]") {
     Device& dev = test::device();
-    const samples::AnalyticScene scene = samples::tiltedPlaneScene(kWidth, kHeight);
+    const tools::AnalyticScene scene = tools::tiltedPlaneScene(kWidth, kHeight);
     const std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
     TextureHandle depthTex = dev.createTexture({kWidth, kHeight, 1, Format::R32F, kTextureSampled, "steady-depth"}).value();
     SFX_REQUIRE_OK(dev.writeTexture(depthTex, 0, depth.data(), depth.size() * sizeof(float)));
@@ -118,12 +118,12 @@ namespace {
 // The depth texture, AO output, colour and velocity of one size, for the resize cases.
 struct SizedInputs {
     TextureHandle depth, aoOut, color, velocity;
-    samples::AnalyticScene scene;
+    tools::AnalyticScene scene;
 };
 
 SizedInputs makeInputs(uint32_t w, uint32_t h) {
     Device& dev = test::device();
-    SizedInputs s{{}, {}, {}, {}, samples::cornerScene(w, h)};
+    SizedInputs s{{}, {}, {}, {}, tools::cornerScene(w, h)};
     const std::vector<float> depth(s.scene.linearDepth.values.begin(), s.scene.linearDepth.values.end());
     s.depth = dev.createTexture({w, h, 1, Format::R32F, kTextureSampled, "resize-depth"}).value();
     SFX_REQUIRE_OK(dev.writeTexture(s.depth, 0, depth.data(), depth.size() * sizeof(float)));

@@ -23,7 +23,7 @@ TEST_CASE("sfxTexel reads every texel at its own index up to the device's render
             if (n > limit) continue;
             const uint32_t w = row ? n : 1, h = row ? 1 : n;
             INFO(test::label() << " " << w << "x" << h);
-            Result<std::unique_ptr<samples::CopyPass>> copy = samples::makeCopyPass(dev, test::tier(), w, h, Format::R32F);
+            Result<std::unique_ptr<tools::CopyPass>> copy = tools::makeCopyPass(dev, test::tier(), w, h, Format::R32F);
             SFX_REQUIRE_OK(copy.status());
             std::vector<float> values(n);
             for (uint32_t i = 0; i < n; ++i) values[i] = float(i);  // exact: below 2^24

@@ -113,7 +113,7 @@ void compareAo(Tier tier) {
     for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease})
         for (bool blur : {false, true}) {
             const int scale = resolution == AoResolution::Half ? 2 : 1;
-            const samples::AnalyticScene scene = samples::columnsScene(96 * scale, 64 * scale, 1.0);
+            const tools::AnalyticScene scene = tools::columnsScene(96 * scale, 64 * scale, 1.0);
             AoSettings s = test::aoTestSettings(t);
             s.blur = blur;
             s.resolution = resolution;

@@ -22,7 +22,7 @@ Format pickFormat(Device& device, std::initializer_list<Format> wanted, bool ren
     return Format::RGBA8;
 }
 
-GpuAo runAo(Device& dev, const TierProfile& tier, const samples::AnalyticScene& scene, const AoSettings& settings,
+GpuAo runAo(Device& dev, const TierProfile& tier, const tools::AnalyticScene& scene, const AoSettings& settings,
             DepthKind descInput) {
     AoDesc desc{scene.width, scene.height, tier, settings, descInput};
     Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev, desc);

@@ -33,7 +33,7 @@ Format pickFormat(Device& device, std::initializer_list<Format> wanted, bool ren
 // AO of `scene` with `settings`. descInput: what the context is told it will get. The scenes'
 // depth is linear, so Linear reads it where it lies (no linearisation pass unless a MIP is
 // built); Hardware copies it first.
-GpuAo runAo(Device& device, const TierProfile& tier, const samples::AnalyticScene& scene, const AoSettings& settings,
+GpuAo runAo(Device& device, const TierProfile& tier, const tools::AnalyticScene& scene, const AoSettings& settings,
             DepthKind descInput = DepthKind::Linear);
 
 // The motion blur tests' camera for a w x h target.

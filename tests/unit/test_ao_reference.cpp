@@ -224,7 +224,7 @@ TEST_CASE("ao shared patterns: the crease diamond is 24 distinct stippled taps",
     }
     // The reference's taps: 24 on the high tier; 12 on the current tier, a pixel and its right
     // neighbour taking complementary halves (each tap of the diamond once between them).
-    const auto rec = samples::facingPlaneScene(64, 48).reconstruction;
+    const auto rec = tools::facingPlaneScene(64, 48).reconstruction;
     const AoConfig high = configFor(AoTechnique::Crease, Tier::High, 1.0, true);
     const AoConfig current = configFor(AoTechnique::Crease, Tier::Current, 1.0, true);
     for (uint32_t y = 10; y < 13; ++y)
@@ -282,11 +282,11 @@ TEST_CASE("ao tap directions: the table is the float of each angle's cosine and 
 }
 
 TEST_CASE("ao normals from depth: exact on planes, close on spheres, no differencing across edges", "[ao]") {
-    for (const samples::AnalyticScene& s : {samples::tiltedPlaneScene(64, 48), samples::facingPlaneScene(64, 48)}) {
+    for (const tools::AnalyticScene& s : {tools::tiltedPlaneScene(64, 48), tools::facingPlaneScene(64, 48)}) {
         const auto n = reference::normalsFromDepth(s.linearDepth, s.reconstruction);
         for (size_t i = 0; i < n.size(); ++i) REQUIRE(glm::dot(n[i], s.normals[i]) > 1.0 - 1e-9);
     }
-    const samples::AnalyticScene s = samples::sphereOnPlaneScene(128, 96);
+    const tools::AnalyticScene s = tools::sphereOnPlaneScene(128, 96);
     const auto n = reference::normalsFromDepth(s.linearDepth, s.reconstruction);
     int bad = 0, edgePixels = 0;
     for (uint32_t y = 0; y < s.height; ++y)
@@ -307,7 +307,7 @@ TEST_CASE("ao normals from depth: a non-finite or out-of-range neighbour is sky,
     // sfx_shared_ao.h: every depth is read through sfxLinearDepthOrFar, so NaN, +-inf, 0, a
     // negative value and one past the far plane all read as maxDepth, and the tangent goes to the
     // other neighbour. On a tilted plane the normals next to such pixels stay the plane's normal.
-    samples::AnalyticScene s = samples::tiltedPlaneScene(32, 24);
+    tools::AnalyticScene s = tools::tiltedPlaneScene(32, 24);
     const double bad[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
                           -std::numeric_limits<double>::infinity(), 0.0, -1.0, 1e30};
     std::vector<std::pair<uint32_t, uint32_t>> poked;
@@ -349,11 +349,11 @@ TEST_CASE("ao reference: an open plane is unoccluded", "[ao]") {
         for (Tier tier : kTiers)
             for (bool gbufferNormals : {false, true}) {
                 INFO(name(t, tier) << (gbufferNormals ? " gbuffer normals" : " derived normals"));
-                const samples::AnalyticScene facing = samples::facingPlaneScene(64, 48);
+                const tools::AnalyticScene facing = tools::facingPlaneScene(64, 48);
                 const Grid v = reference::ambientVisibility(facing.aoInput(gbufferNormals), configFor(t, tier));
                 requireValid(v);
                 for (double x : v.values) REQUIRE(x > 1.0 - 1e-9);
-                const samples::AnalyticScene tilted = samples::tiltedPlaneScene(64, 48);
+                const tools::AnalyticScene tilted = tools::tiltedPlaneScene(64, 48);
                 const Grid w = reference::ambientVisibility(tilted.aoInput(gbufferNormals), configFor(t, tier));
                 requireValid(w);
                 for (double x : w.values) REQUIRE(x > 0.999);
@@ -369,20 +369,20 @@ TEST_CASE("ao reference: occlusion grows monotonically toward a crease and a con
                 INFO(name(t, tier) << (blur ? " blur" : " no blur"));
                 // Bins average 100+ pixels; unblurred, the few rotated taps still leave ~0.03 of noise.
                 const double tol = blur ? 0.02 : 0.04;
-                const samples::AnalyticScene corner = samples::cornerScene(160, 120);
+                const tools::AnalyticScene corner = tools::cornerScene(160, 120);
                 const Grid vc = reference::ambientVisibility(corner.aoInput(false), configFor(t, tier, 1.0, blur));
                 requireValid(vc);
-                const auto bc = samples::occlusionBins(corner, vc, 1.0, creaseEdges, samples::onCornerPlaneA, samples::distanceToCrease);
+                const auto bc = tools::occlusionBins(corner, vc, 1.0, creaseEdges, tools::onCornerPlaneA, tools::distanceToCrease);
                 for (size_t i = 0; i + 1 < bc.size(); ++i) {
                     INFO("crease bin " << i << ": " << bc[i] << " then " << bc[i + 1]);
                     REQUIRE(bc[i] >= 0);
                     CHECK(bc[i] >= bc[i + 1] - tol);
                 }
                 CHECK(bc.front() > bc.back() + 0.01);
-                const samples::AnalyticScene contact = samples::sphereOnPlaneScene(160, 120);
+                const tools::AnalyticScene contact = tools::sphereOnPlaneScene(160, 120);
                 const Grid vs = reference::ambientVisibility(contact.aoInput(false), configFor(t, tier, 1.0, blur, 1.0));
                 requireValid(vs);
-                const auto bs = samples::occlusionBins(contact, vs, 1.0, contactEdges, samples::onContactFloor, samples::distanceToContact);
+                const auto bs = tools::occlusionBins(contact, vs, 1.0, contactEdges, tools::onContactFloor, tools::distanceToContact);
                 for (size_t i = 0; i + 1 < bs.size(); ++i) {
                     INFO("contact bin " << i << ": " << bs[i] << " then " << bs[i + 1]);
                     REQUIRE(bs[i] >= 0);
@@ -396,8 +396,8 @@ TEST_CASE("ao reference: scaling scene and radius together leaves AO unchanged",
     for (AoTechnique t : kTechniques)
         for (Tier tier : kTiers) {
             INFO(name(t, tier));
-            const Grid a = reference::ambientVisibility(samples::cornerScene(96, 64).aoInput(false), configFor(t, tier, 1.0));
-            const Grid b = reference::ambientVisibility(samples::cornerScene(96, 64, 10.0).aoInput(false), configFor(t, tier, 10.0));
+            const Grid a = reference::ambientVisibility(tools::cornerScene(96, 64).aoInput(false), configFor(t, tier, 1.0));
+            const Grid b = reference::ambientVisibility(tools::cornerScene(96, 64, 10.0).aoInput(false), configFor(t, tier, 10.0));
             double maxDiff = 0;
             for (size_t i = 0; i < a.values.size(); ++i) maxDiff = std::max(maxDiff, std::abs(a.values[i] - b.values[i]));
             CHECK(maxDiff < 1e-6);
@@ -408,9 +408,9 @@ TEST_CASE("ao reference: doubling resolution changes AO only within tolerance", 
     for (AoTechnique t : kTechniques)
         for (Tier tier : kTiers) {
             INFO(name(t, tier));
-            for (auto make : {&samples::cornerScene, &samples::sphereOnPlaneScene}) {
+            for (auto make : {&tools::cornerScene, &tools::sphereOnPlaneScene}) {
                 const Grid lo = reference::ambientVisibility(make(96, 64, 1.0).aoInput(false), configFor(t, tier, 1.0, true, 0.5, AoResolution::Tier, 64));
-                const Grid hi = samples::downsample2x(
+                const Grid hi = tools::downsample2x(
                     reference::ambientVisibility(make(192, 128, 1.0).aoInput(false), configFor(t, tier, 1.0, true, 0.5, AoResolution::Tier, 128)));
                 double meanAbs = 0, meanLo = 0, meanHi = 0;
                 for (size_t i = 0; i < lo.values.size(); ++i) {
@@ -432,7 +432,7 @@ TEST_CASE("ao reference: doubling resolution changes AO only within tolerance", 
 }
 
 TEST_CASE("ao reference: sky is unoccluded; tiny and huge radii and far depths stay finite", "[ao]") {
-    const samples::AnalyticScene cols = samples::columnsScene(96, 64);
+    const tools::AnalyticScene cols = tools::columnsScene(96, 64);
     for (AoTechnique t : kTechniques)
         for (Tier tier : kTiers)
             for (float radius : {1e-4f, 0.5f, 50.0f, 1000.0f}) {
@@ -466,7 +466,7 @@ TEST_CASE("ao reference: the bilateral blur does not carry occlusion across a de
 }
 
 TEST_CASE("ao reference: the half-size depth takes depth MIP level 1's rotated-grid samples", "[ao][half-res]") {
-    const samples::AnalyticScene scene = samples::columnsScene(97, 65);
+    const tools::AnalyticScene scene = tools::columnsScene(97, 65);
     const Grid half = reference::halfSizeDepth(scene.linearDepth);
     REQUIRE(half.width == 48);
     REQUIRE(half.height == 32);
@@ -516,7 +516,7 @@ TEST_CASE("ao reference: Scalable's sum exponent raises the same normalised sum 
     // exponent 2 must be exponent 1 squared, and exponent 1 at least as dark wherever a < 1.
     for (Tier tier : kTiers) {
         INFO(toString(tier));
-        const samples::AnalyticScene scene = samples::cornerScene(96, 64, 1.0);
+        const tools::AnalyticScene scene = tools::cornerScene(96, 64, 1.0);
         AoConfig linear = configFor(AoTechnique::Scalable, tier, 1.0, false, 0.5, AoResolution::Full), squared = linear;
         linear.sumExponent = 1.0;
         const Grid v1 = reference::ambientVisibility(scene.aoInput(false), linear);
@@ -536,8 +536,8 @@ TEST_CASE("ao reference: half resolution stays close to full resolution on analy
     for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable})
         for (Tier tier : kTiers) {
             INFO(name(t, tier));
-            for (auto make : {&samples::cornerScene, &samples::sphereOnPlaneScene}) {
-                const samples::AnalyticScene scene = make(192, 128, 1.0);
+            for (auto make : {&tools::cornerScene, &tools::sphereOnPlaneScene}) {
+                const tools::AnalyticScene scene = make(192, 128, 1.0);
                 const AoConfig full = configFor(t, tier, 1.0, true, 0.5, AoResolution::Full);
                 const AoConfig half = configFor(t, tier, 1.0, true, 0.5, AoResolution::Half);
                 const Grid a = reference::ambientVisibility(scene.aoInput(false), full);
@@ -554,7 +554,7 @@ TEST_CASE("ao reference: half resolution stays close to full resolution on analy
 
 // Not a check: writes the G-buffer files the `sfx ao` CTest entries read (fixture ao_cli_files).
 TEST_CASE("ao cli fixture: write small G-buffer files", "[.ao-cli-fixture]") {
-    const samples::AnalyticScene s = samples::cornerScene(64, 48);
+    const tools::AnalyticScene s = tools::cornerScene(64, 48);
     io::Image depth(s.width, s.height, 1), normals(s.width, s.height, 3);
     for (uint32_t y = 0; y < s.height; ++y)
         for (uint32_t x = 0; x < s.width; ++x) {

@@ -58,7 +58,7 @@ TEST_CASE("ao config: Scalable's clamp and crease's tap spacing follow the outpu
         CHECK(stride(720, AoResolution::Full) == 12);
     }
     // The reference's taps step by the stride.
-    const auto rec = samples::facingPlaneScene(64, 48).reconstruction;
+    const auto rec = tools::facingPlaneScene(64, 48).reconstruction;
     const AoConfig c = resolved(AoTechnique::Crease, Tier::High, 480, AoResolution::Half);
     REQUIRE(c.creaseStride == 4);
     const std::vector<reference::AoTap> taps = reference::aoTaps(c, rec, 64, 48, 30, 20, 5.0);
@@ -96,8 +96,8 @@ TEST_CASE("ao reference: where crease's spacing doubles with the rows, its band 
         const AoConfig hi = resolved(AoTechnique::Crease, tier, 720);
         REQUIRE(lo.creaseStride == 3);
         REQUIRE(hi.creaseStride == 6);
-        const Grid a = reference::ambientVisibility(samples::cornerScene(640, 360, 1.0).aoInput(false), lo);
-        const Grid b = samples::downsample2x(reference::ambientVisibility(samples::cornerScene(1280, 720, 1.0).aoInput(false), hi));
+        const Grid a = reference::ambientVisibility(tools::cornerScene(640, 360, 1.0).aoInput(false), lo);
+        const Grid b = tools::downsample2x(reference::ambientVisibility(tools::cornerScene(1280, 720, 1.0).aoInput(false), hi));
         double meanAbs = 0;
         size_t n = 0;
         for (size_t i = 0; i < a.values.size(); ++i)

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "sfx/budget.hpp"
+#include "sfx/null_device.hpp"
 #include "sfx/tiers.hpp"
 
 using namespace sfx;
@@ -83,19 +84,32 @@ TEST_CASE("budget: a cost table survives its file and a stale one is refused", "
 
 TEST_CASE("budget: the candidates are every preset of the tier's row (x technique for AO)", "[budget]") {
     for (Tier tier : {Tier::Current, Tier::High}) {
-        const std::vector<tiers::Preset>& presets = tiers::row(tier).presets;
-        const std::vector<Candidate> ao = candidates(Effect::AmbientObscurance, tier);
+        const std::vector<Preset>& presets = tiers::row(tier).presets;
+        const std::vector<Candidate> ao = candidates(Effect::AmbientObscurance, presets);
         REQUIRE(ao.size() == 3 * presets.size());
         for (size_t i = 0; i < ao.size(); ++i) {
             CHECK(ao[i].preset == presets[i / 3].name);
             CHECK(ao[i].psnrDb == presets[i / 3].accuracy.aoPsnrDb[i % 3]);
         }
-        const std::vector<Candidate> mb = candidates(Effect::MotionBlur, tier);
+        const std::vector<Candidate> mb = candidates(Effect::MotionBlur, presets);
         REQUIRE(mb.size() == presets.size());
-        CHECK(mb.front().name() == tiers::kDefaultPreset);
+        CHECK(mb.front().name() == kDefaultPreset);
     }
     Effect e;
     CHECK(parseEffect("motion-blur", &e));
     CHECK(e == Effect::MotionBlur);
     CHECK_FALSE(parseEffect("oit", &e));
+}
+
+TEST_CASE("budget: the cost table wants one tier's presets", "[budget]") {
+    std::unique_ptr<Device> device = null::createDevice();
+    CalibrationOptions options;
+    Status empty = costTable(*device, {}, Effect::AmbientObscurance, 64, 64, options).status();
+    CHECK(empty.code() == StatusCode::InvalidArgument);
+    CHECK_THAT(empty.message(), Catch::Contains("presets"));
+    std::vector<Preset> mixed = tiers::row(Tier::Current).presets;
+    mixed.push_back(tiers::row(Tier::High).presets.front());
+    Status mixedStatus = costTable(*device, mixed, Effect::MotionBlur, 64, 64, options).status();
+    CHECK(mixedStatus.code() == StatusCode::InvalidArgument);
+    CHECK_THAT(mixedStatus.message(), Catch::Contains("presets of one tier"));
 }

@@ -186,7 +186,7 @@ TEST_CASE("scene file: hostile text never crashes", "[scene][bad-input]") {
 }
 
 TEST_CASE("scene file: the sample scenes load", "[scene]") {
-    const std::string dir = std::string(SFX_SOURCE_DIR) + "/samples/scenes/";
+    const std::string dir = std::string(SFX_SOURCE_DIR) + "/tools/scenes/files/";
     for (const char* name : {"panes.json", "shell.json", "bunny.json"}) {
         if (std::string(name) == "bunny.json" && !std::filesystem::exists("/usr/share/glmark2/models/bunny.obj")) {
             WARN("bunny.json not checked: Debian's glmark2-data is not installed");

@@ -1,10 +1,10 @@
-// The trade's Pareto plots (samples/common/svg_plot.*): which points are non-dominated, and that
+// The trade's Pareto plots (tools/bench/common/svg_plot.*): which points are non-dominated, and that
 // the SVG carries every point, the front's line and escaped labels.
 #include <catch2/catch.hpp>
 
 #include "svg_plot.hpp"
 
-using namespace sfx::samples;
+using namespace sfx::tools;
 
 TEST_CASE("svg plot: the Pareto front is the points no other beats for no more cost", "[trade]") {
     const std::vector<PlotPoint> points = {

@@ -8,7 +8,7 @@
 #include <tuple>
 
 #include "sfx/tiers.hpp"
-#include "sfx_sample_shaders.hpp"
+#include "sfx_scene_shaders.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared.h"
 #include "sfx_shared_ao.h"
@@ -44,14 +44,14 @@ TEST_CASE("tier table: a row per tier, in order, each with its default preset fi
         CHECK_FALSE(row.requirements.empty());
         CHECK_FALSE(row.glDialects.empty());
         REQUIRE_FALSE(row.presets.empty());
-        CHECK(row.presets.front().name == tiers::kDefaultPreset);
-        for (const tiers::Preset& p : row.presets) {
+        CHECK(row.presets.front().name == kDefaultPreset);
+        for (const Preset& p : row.presets) {
             INFO(p.name);
             CHECK(p.params.tier == row.tier);
             // Presets differ only in uniforms: the structural parameters are the default's.
             CHECK(sameStructure(p.params, row.presets.front().params));
         }
-        Result<TierProfile> byName = tiers::preset(row.tier, tiers::kDefaultPreset);
+        Result<TierProfile> byName = tiers::preset(row.tier, kDefaultPreset);
         REQUIRE(byName.isOk());
         CHECK(byName->aoScalableTaps == tiers::profile(row.tier).aoScalableTaps);
         // Only the highest tier runs without a ceiling; a lower one is reachable on any device.
@@ -64,7 +64,7 @@ TEST_CASE("tier table: a row per tier, in order, each with its default preset fi
     }
     Result<TierProfile> unknown = tiers::preset(Tier::Current, "no-such-preset");
     CHECK(unknown.status().code() == StatusCode::InvalidArgument);
-    CHECK(unknown.status().message().find(tiers::kDefaultPreset) != std::string::npos);
+    CHECK(unknown.status().message().find(kDefaultPreset) != std::string::npos);
 }
 
 TEST_CASE("tier table: the default presets hold the parameters the tiers always had", "[tiers]") {
@@ -144,9 +144,9 @@ TEST_CASE("shared uniform blocks: the C++ structs have the compiled blocks' size
     };
     for (const Expected& e : expected)
         for (uint32_t t = 0; t < kTierCount; ++t) {
-            // The G-buffer raster program belongs to the samples' shader library, not the runtime's.
-            const bool sample = std::string_view(e.program) == gen::raster_gbuffer::kName;
-            Result<const CompiledProgram*> p = sample ? sample_shaders::find(e.program, Tier(t)) : shaders::find(e.program, Tier(t));
+            // The G-buffer raster program belongs to the scenes' shader library, not the runtime's.
+            const bool sceneProgram = std::string_view(e.program) == gen::raster_gbuffer::kName;
+            Result<const CompiledProgram*> p = sceneProgram ? scene_shaders::find(e.program, Tier(t)) : shaders::find(e.program, Tier(t));
             REQUIRE(p.isOk());
             INFO(e.program << " " << toString(Tier(t)) << " " << e.block);
             const auto& res = p.value()->resources;

@@ -192,8 +192,8 @@ TEST_CASE("truth: pictures trace the pixel-centre ray, are deterministic and the
 
 TEST_CASE("truth: the analytic scenes' export sees what castScene sees", "[truth]") {
     for (const std::string name : {"contact", "corner", "columns"}) {
-        const samples::AnalyticScene cast = samples::castScene(samples::analyticSceneDesc(name).value(), 64, 36);
-        auto scene = samples::makeTruthScene("analytic-" + name, 64, 36);
+        const tools::AnalyticScene cast = tools::castScene(tools::analyticSceneDesc(name).value(), 64, 36);
+        auto scene = tools::makeTruthScene("analytic-" + name, 64, 36);
         REQUIRE(scene);
         auto tracer = truth::Tracer::create(scene->geometry);
         REQUIRE(tracer);
@@ -211,10 +211,10 @@ TEST_CASE("truth: the analytic scenes' export sees what castScene sees", "[truth
         CHECK(mismatched == 0);
         CHECK(occluded > 20);
     }
-    auto rasterised = samples::makeTruthScene("steps", 32, 18);
+    auto rasterised = tools::makeTruthScene("steps", 32, 18);
     REQUIRE(rasterised);
     CHECK(rasterised->geometry.triangles.size() == 2 + 6 * 12);  // the floor and six boxes
-    auto unknown = samples::makeTruthScene("nowhere", 32, 18);
+    auto unknown = tools::makeTruthScene("nowhere", 32, 18);
     REQUIRE_FALSE(unknown);
     CHECK(unknown.status().message().find("analytic-contact") != std::string::npos);
 }

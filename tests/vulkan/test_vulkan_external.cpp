@@ -197,7 +197,7 @@ TEST_CASE("vulkan: steady frames in a host command buffer make nothing", "[vulka
         Device& d = *wrapped.value();
         const TierProfile& profile = tiers::profile(Tier::High);
         constexpr uint32_t w = 160, h = 90;
-        const samples::AnalyticScene scene = samples::cornerScene(w, h);
+        const tools::AnalyticScene scene = tools::cornerScene(w, h);
         const std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
         TextureHandle depthTex = d.createTexture({w, h, 1, Format::R32F, kTextureSampled, "host-depth"}).value();
         REQUIRE(d.writeTexture(depthTex, 0, depth.data(), depth.size() * sizeof(float)).isOk());

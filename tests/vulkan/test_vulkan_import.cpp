@@ -73,7 +73,7 @@ TEST_CASE("vulkan import: AO reads host depth and normals and writes a host imag
     const std::unique_ptr<Device> wrapped = wrapValidated(host);
     Device& d = *wrapped;
     constexpr uint32_t w = 160, h = 90;
-    const samples::AnalyticScene scene = samples::cornerScene(w, h);
+    const tools::AnalyticScene scene = tools::cornerScene(w, h);
     const std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
     std::vector<float> normals;
     for (const auto& n : scene.normals) normals.insert(normals.end(), {float(n.x), float(n.y), float(n.z), 0.0f});
@@ -231,7 +231,7 @@ TEST_CASE("vulkan import: host passes right before and after the SDK's AO in one
     const std::unique_ptr<Device> wrapped = wrapValidated(host);
     Device& d = *wrapped;
     constexpr uint32_t w = 160, h = 90;
-    const CameraProjection camera = samples::AnalyticCamera{}.projection(w, h);
+    const CameraProjection camera = tools::AnalyticCamera{}.projection(w, h);
     // A floor receding row by row and a box standing on it, as the stored depth of `camera`.
     auto stored = [&](double z) {
         const glm::dvec4 clip = camera.projection * glm::dvec4(0, 0, -z, 1);

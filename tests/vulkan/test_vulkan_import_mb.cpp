@@ -30,7 +30,7 @@ TEST_CASE("vulkan import: motion blur writes a host image in the host's command 
     const std::unique_ptr<Device> wrapped = wrapValidated(host);
     Device& d = *wrapped;
     constexpr uint32_t w = 96, h = 54;
-    const CameraProjection camera = samples::AnalyticCamera{}.projection(w, h);
+    const CameraProjection camera = tools::AnalyticCamera{}.projection(w, h);
 
     // Noise colour; a near box moving 12 px a shutter interval to the right over a still far wall.
     std::mt19937 rng(7);

@@ -76,13 +76,13 @@ TierProfile currentDefault() {
     // and 6 at 1280x720. The look was fitted at 1 pixel (320x180); held out, 12 beat 8 (1 pixel
     // at 320x180) and 16 at both 320x180 and 1280x720 (fit_ao --diagnose, docs/trade.md).
     p.aoCreaseSpacingPx = 12.0f;
-    // The look fitted against ray-traced truth (samples/fit_ao, docs/trade.md); before the
+    // The look fitted against ray-traced truth (tools/bench/fit_ao, docs/trade.md); before the
     // calibration every tier had the papers' 1, 1, 1e-4 / 0.02, range 1, bias 0.25.
     p.aoLook[0] = {.intensity = 0.472871f, .contrast = 1.38237f, .bias = 1.59371e-7f};                             // alchemy
     // Scalable refitted at half resolution with the 20 px clamp in half-size texels, its sum
-    // exponent fitted too (samples/fit_ao --start tier): below 1 where the course squares.
+    // exponent fitted too (tools/bench/fit_ao --start tier): below 1 where the course squares.
     p.aoLook[1] = {.intensity = 0.0654423f, .contrast = 7.23394f, .bias = 0.0f, .sumExponent = 0.569394f};  // scalable
-    // Crease refitted at half resolution, the default (samples/fit_ao --start tier), then again
+    // Crease refitted at half resolution, the default (tools/bench/fit_ao --start tier), then again
     // with its 12 px tap spacing (2026-12-04: held out 24.29 -> 24.69 dB at 320x180 and
     // 24.44 -> 24.65 dB at 1280x720; the high tier's refit found nothing better).
     p.aoLook[2] = {.intensity = 2.16482f, .contrast = 6.85391f, .bias = 0, .creaseRange = 0.834435f, .creaseBias = 0.165467f};  // crease
@@ -111,9 +111,9 @@ TierProfile highDefault() {
     p.aoCreaseTaps = 24;      // the article's whole diamond
     p.aoCreaseSpacingPx = 12.0f;  // as the current tier
     p.aoLook[0] = {.intensity = 0.392128f, .contrast = 1.77828f, .bias = 1e-7f};                               // alchemy
-    // Scalable with its sum exponent fitted (samples/fit_ao --start tier, at half resolution).
+    // Scalable with its sum exponent fitted (tools/bench/fit_ao --start tier, at half resolution).
     p.aoLook[1] = {.intensity = 0.187609f, .contrast = 7.36525f, .bias = 0.0468752f, .sumExponent = 0.707107f};  // scalable
-    // Crease refitted at half resolution, the default (samples/fit_ao --start tier).
+    // Crease refitted at half resolution, the default (tools/bench/fit_ao --start tier).
     p.aoLook[2] = {.intensity = 13.7531f, .contrast = 1.2864f, .bias = 0, .creaseRange = 0.73699f, .creaseBias = 0.126689f};  // crease
     p.aoPackedDepthTarget = false;  // float AO target carrying the linear depth (RG32F; RGBA32F crease)
     p.aoHalfResolution = true;      // as the current tier; the blur's 6 px become 3 half-size taps each side
@@ -138,7 +138,7 @@ Preset variant(const char* name, TierProfile p, AoRes res, uint32_t alchemy, uin
 }
 
 // Accuracy: PSNR in dB of alchemy, scalable, crease AO and of motion blur, measured by
-// samples/trade_presets (tools/run_trade.sh) on llvmpipe; the figures of docs/trade.md.
+// tools/bench/trade_presets (tools/run_trade.sh) on llvmpipe; the figures of docs/trade.md.
 std::vector<Preset> currentPresets() {
     const TierProfile d = currentDefault();
     return {{kDefaultPreset, d, {{26.97, 26.29, 24.69}, 31.04}},

@@ -5,7 +5,7 @@
 #include <tuple>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "sfx_sample_shaders.hpp"
+#include "sfx_scene_shaders.hpp"
 #include "sfx_shared_raster.h"
 
 namespace sfx::render {
@@ -18,20 +18,20 @@ void storeMatrix(float (&dst)[16], const glm::dmat4& m) {
 
 }  // namespace
 
-Result<std::unique_ptr<DepthPeel>> DepthPeel::create(Device& device, Tier tier, const samples::Scene& scene, uint32_t layers,
+Result<std::unique_ptr<DepthPeel>> DepthPeel::create(Device& device, Tier tier, const tools::Scene& scene, uint32_t layers,
                                                      uint32_t width, uint32_t height) {
     std::unique_ptr<DepthPeel> p(new DepthPeel(device, width, height));
     Result<std::unique_ptr<LinearDepth>> linear = LinearDepth::create(device, {width, height, tier, 1, DepthKind::Hardware});
     if (!linear) return linear.status();
     p->linear_ = std::move(linear.value());
-    Result<const CompiledProgram*> compiled = sample_shaders::find(gen::raster_depth_peel::kName, tier);
+    Result<const CompiledProgram*> compiled = scene_shaders::find(gen::raster_depth_peel::kName, tier);
     if (!compiled) return compiled.status();
     Result<ProgramHandle> program = device.createProgram(*compiled.value());
     if (!program) return program.status();
     p->program_ = program.value();
     GraphicsPipelineDesc pd;
     pd.program = p->program_;
-    pd.vertexLayout.stride = sizeof(samples::Vertex);
+    pd.vertexLayout.stride = sizeof(tools::Vertex);
     pd.vertexLayout.attributes = {{0, VertexFormat::Float3, 0}};  // positions only: a peel needs no normal
     pd.depth = {true, true, CompareOp::Less};
     pd.colorFormats = {Format::R32F};
@@ -52,11 +52,11 @@ Result<std::unique_ptr<DepthPeel>> DepthPeel::create(Device& device, Tier tier, 
 
     // The peel draws the same meshes as the raster pass from buffers of its own (the samples'
     // renderer keeps its buffers private); the plan counts their bytes.
-    for (const samples::Mesh& mesh : scene.meshes) {
+    for (const tools::Mesh& mesh : scene.meshes) {
         GpuMesh& g = p->meshes_.emplace_back();
         g.indexCount = uint32_t(mesh.indices.size());
         g.model = mesh.model;
-        const uint64_t vb = mesh.vertices.size() * sizeof(samples::Vertex), ib = mesh.indices.size() * sizeof(uint32_t);
+        const uint64_t vb = mesh.vertices.size() * sizeof(tools::Vertex), ib = mesh.indices.size() * sizeof(uint32_t);
         for (auto [handle, size, usage] : {std::tuple{&g.vertices, vb, kBufferVertex}, std::tuple{&g.indices, ib, kBufferIndex},
                                            std::tuple{&g.params, uint64_t(sizeof(shared::RasterParams)), kBufferUniform}}) {
             Result<BufferHandle> b = device.createBuffer({size, usage, "render-peel-geometry"});
@@ -81,7 +81,7 @@ DepthPeel::~DepthPeel() {
     if (!program_.isNull()) (void)device_.destroyProgram(program_);
 }
 
-Status DepthPeel::render(const samples::Scene& scene, const DepthSource& hardwareDepth) {
+Status DepthPeel::render(const tools::Scene& scene, const DepthSource& hardwareDepth) {
     SFX_TRY(linear_->dispatch(hardwareDepth));
     const glm::dmat4 view = scene.view();
     const glm::dmat4& projection = hardwareDepth.camera.projection;

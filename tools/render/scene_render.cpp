@@ -109,9 +109,9 @@ struct SceneRender::Impl {
     tiers::TierChoice tier;
     scene::Scene file;  // a copy: the caller's scene may go away after create()
     RenderOptions options;
-    samples::Scene scene;
+    tools::Scene scene;
     std::vector<size_t> transparent;
-    std::unique_ptr<samples::SceneRenderer> raster;
+    std::unique_ptr<tools::SceneRenderer> raster;
     std::unique_ptr<AmbientObscurance> ao;
     std::unique_ptr<DepthPeel> peel;  // only with --ao-layers > 1
     std::unique_ptr<SceneTransparency> transparency;  // only with a translucent object and --oit auto
@@ -142,12 +142,12 @@ Result<std::unique_ptr<SceneRender>> SceneRender::create(Device& device, const t
     auto impl = std::make_unique<Impl>(device, tier, file, options);
     impl->width = options.width ? options.width : file.width;
     impl->height = options.height ? options.height : file.height;
-    impl->scene = samples::opaqueScene(file);
+    impl->scene = tools::opaqueScene(file);
     for (size_t i = 0; i < file.objects.size(); ++i)
         if (file.objects[i].translucent()) impl->transparent.push_back(i);
-    for (const samples::Mesh& m : impl->scene.meshes) impl->triangles += uint32_t(m.indices.size() / 3);
+    for (const tools::Mesh& m : impl->scene.meshes) impl->triangles += uint32_t(m.indices.size() / 3);
 
-    Result<std::unique_ptr<samples::SceneRenderer>> raster = samples::SceneRenderer::create(device, tier.tier, Format::RGBA16F);
+    Result<std::unique_ptr<tools::SceneRenderer>> raster = tools::SceneRenderer::create(device, tier.tier, Format::RGBA16F);
     if (!raster) return raster.status();
     impl->raster = std::move(raster.value());
     SFX_TRY(impl->raster->load(impl->scene));
@@ -250,7 +250,7 @@ struct ReadTargets {
     std::vector<float> visibility;          // one per pixel; empty without AO
 };
 
-Result<ReadTargets> readTargets(Device& device, const samples::GBuffer& g, TextureHandle ao, Format aoFormat) {
+Result<ReadTargets> readTargets(Device& device, const tools::GBuffer& g, TextureHandle ao, Format aoFormat) {
     const size_t n = size_t(g.width) * g.height;
     ReadTargets t;
     t.albedo.resize(n * 4);
@@ -298,7 +298,7 @@ Result<RenderResult> SceneRender::render() {
     result.stats.transparentObjects = uint32_t(m.transparent.size());
     result.stats.triangles = m.triangles;
 
-    Result<samples::GBuffer> g = m.raster->render(m.scene, m.width, m.height);
+    Result<tools::GBuffer> g = m.raster->render(m.scene, m.width, m.height);
     if (!g) return g.status();
     auto work = [&]() -> Status {
         if (m.ao) {

@@ -97,12 +97,12 @@ void printRules(std::ostream& out) {
     out << "\n";
     std::vector<std::string> presetNames;
     for (const tiers::TierRow& r : table)
-        for (const tiers::Preset& p : r.presets) presetNames.push_back(std::string(toString(r.tier)) + " " + p.name);
+        for (const Preset& p : r.presets) presetNames.push_back(std::string(toString(r.tier)) + " " + p.name);
     header("parameter", presetNames);
     for (const ParameterRow& row : kParameterRows) {
         out << "| " << row.label;
         for (const tiers::TierRow& r : table)
-            for (const tiers::Preset& p : r.presets) out << " | " << row.value(p.params);
+            for (const Preset& p : r.presets) out << " | " << row.value(p.params);
         out << " |\n";
     }
 }
@@ -155,7 +155,7 @@ int printBudgetChoice(const BudgetFlags& f) {
     budget::CalibrationOptions options;
     options.cacheDir = f.cacheDir;
     options.recalibrate = f.recalibrate;
-    Result<budget::CostTable> table = budget::costTable(dev, effect, w, h, options);
+    Result<budget::CostTable> table = budget::costTable(dev, tiers::row(best->tier.tier).presets, effect, w, h, options);
     if (!table) return fail(cmd, table.status());
     std::cout << "cost table (" << budget::toString(effect) << ", " << w << "x" << h << ", tier " << toString(table->tier)
               << "; measured on this device, cached in " << budget::costTablePath(f.cacheDir, dev.caps().deviceName, effect, w, h) << "):\n";

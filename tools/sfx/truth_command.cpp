@@ -19,7 +19,7 @@ struct TruthFlags {
 
 std::string sceneList() {
     std::string known;
-    for (const std::string& n : samples::truthSceneNames()) known += (known.empty() ? "" : ", ") + n;
+    for (const std::string& n : tools::truthSceneNames()) known += (known.empty() ? "" : ", ") + n;
     return known;
 }
 
@@ -35,7 +35,7 @@ int runTruth(const TruthFlags& f) {
     s.seed = f.seed;
     s.threads = f.threads;
     if (Status st = truth::validate(s, "--radius", "--samples"); !st) return fail(cmd, st);
-    Result<samples::TruthScene> scene = samples::makeTruthScene(f.scene, f.width, f.height);
+    Result<tools::TruthScene> scene = tools::makeTruthScene(f.scene, f.width, f.height);
     if (!scene) return fail(cmd, scene.status());
     const auto start = std::chrono::steady_clock::now();
     Result<std::unique_ptr<truth::Tracer>> tracer = truth::Tracer::create(scene->geometry);

@@ -1,8 +1,9 @@
-// Settings chosen by a cost budget (issue 10): given a device, an effect, a size and a budget in
-// milliseconds, the most accurate preset whose cost measured on THIS device fits. Accuracy is
-// each candidate's PSNR against ground truth, measured offline (tools/run_trade.sh) and kept
-// beside the presets in the tier table; cost comes from a short calibration run of every
-// candidate on the device, cached in a file per device name, effect and size.
+// Settings chosen by a cost budget: given a device, an effect, a size, a tier's presets and a
+// budget in milliseconds, the most accurate preset whose cost measured on THIS device fits.
+// Accuracy is each preset's PSNR against ground truth, measured offline (tools/run_trade.sh)
+// and kept beside the presets in the tier table (tiers::row(tier).presets, sfx/tiers.hpp); cost
+// comes from a short calibration run of every candidate on the device, cached in a file per
+// device name, effect and size.
 #pragma once
 
 #include <functional>
@@ -11,6 +12,7 @@
 
 #include "sfx/ao.hpp"
 #include "sfx/hal.hpp"
+#include "sfx/tier.hpp"
 
 namespace sfx::budget {
 
@@ -46,9 +48,9 @@ struct Choice {
     CostTable table;  // the figures the choice was made from
 };
 
-// The candidates of `effect` on `tier`: every preset of the tier's row (x technique for AO), with
-// the PSNR the table records for it.
-std::vector<Candidate> candidates(Effect effect, Tier tier);
+// The candidates of `effect` among `presets`: every preset (x technique for AO), with the PSNR
+// it records.
+std::vector<Candidate> candidates(Effect effect, const std::vector<Preset>& presets);
 
 // The most accurate entry whose cost is within budgetMs (equal accuracy: the cheaper one).
 // InvalidArgument naming budgetMs when it is not a positive finite number, or naming the table
@@ -61,14 +63,13 @@ struct CalibrationOptions {
     uint32_t runs = 5;         // timed runs per candidate (median), after one warm-up
 };
 
-// The cost table of `effect` at width x height on `device` (on its highest tier): read from the
-// cache when one for this device name, effect, size and candidate list exists, else measured
-// (every candidate rendered on synthetic inputs, timed with the HAL's timers) and cached.
-Result<CostTable> costTable(Device& device, Effect effect, uint32_t width, uint32_t height, const CalibrationOptions& options);
-
-// costTable, then choose.
-Result<Choice> chooseForBudget(Device& device, Effect effect, uint32_t width, uint32_t height, double budgetMs,
-                               const CalibrationOptions& options);
+// The cost table of `effect` at width x height on `device` for `presets` (one tier's, the tier
+// the device runs): read from the cache when one for this device name, effect, size and
+// candidate list exists, else measured (every candidate rendered on synthetic inputs, timed
+// with the HAL's timers) and cached. InvalidArgument naming presets when the list is empty or
+// mixes tiers.
+Result<CostTable> costTable(Device& device, const std::vector<Preset>& presets, Effect effect, uint32_t width, uint32_t height,
+                            const CalibrationOptions& options);
 
 // Median of `runs` timed recordings (after one warm-up that compiles pipelines and warms caches),
 // each flushed on its own so a reading covers exactly one recording: the calibration's clock,

@@ -121,7 +121,7 @@ struct TransparencyDesc {
     Format depthFormat = Format::D32F;     // D16, D24S8 or D32F: the opaque depth
     TransparencyQuality quality = TransparencyQuality::Standard;
     // K itself, overriding quality's: [1, 32], 0 = quality's K. Fewer kept layers cost less in
-    // the resolve and fold more of a deep pixel into its tail (samples/bench_oit measures it).
+    // the resolve and fold more of a deep pixel into its tail (tools/bench/bench_oit measures it).
     uint32_t maxLayers = 0;
     // Nodes of the first frame's pool, before any count is known; 0 = kOitInitialNodesPerPixel
     // per pixel. Later frames size it from the scene.

@@ -30,7 +30,7 @@ bool parseTier(const std::string& text, Tier* out);
 std::string tierNameList();
 
 // The default look of one AO technique on a tier: the values AoSettings' -1 ("the tier's") fields
-// resolve to, calibrated against ray-traced ground truth by samples/fit_ao (docs/trade.md).
+// resolve to, calibrated against ray-traced ground truth by tools/bench/fit_ao (docs/trade.md).
 struct AoLook {
     float intensity = 1.0f;    // sigma
     float contrast = 1.0f;     // k
@@ -82,5 +82,24 @@ struct TierProfile {
     // Order-independent transparency
     bool abufferOit = false;
 };
+
+// A quality preset: a named set of a tier's parameters. Every tier has kDefaultPreset, the
+// parameters it has always had. Presets of one tier may differ only in what reaches the shaders
+// through uniforms (tap counts, radii, blur width); the structural parameters that become
+// shader defines (shaderDefines) are the default preset's for every preset of the tier.
+// What a preset buys, measured offline against ground truth by tools/bench/trade_presets
+// (docs/trade.md): the settings-by-budget API (sfx/budget.hpp) picks the most accurate preset
+// whose cost, measured on the device, fits. 0 = not measured.
+struct PresetAccuracy {
+    double aoPsnrDb[3] = {0, 0, 0};  // per AO technique (AoTechnique order), held-out views, radii 0.25-2
+    double motionBlurPsnrDb = 0;     // against temporally supersampled truth
+};
+
+struct Preset {
+    std::string name;
+    TierProfile params;
+    PresetAccuracy accuracy;
+};
+inline constexpr const char* kDefaultPreset = "default";
 
 }  // namespace sfx

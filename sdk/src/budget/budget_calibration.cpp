@@ -7,7 +7,6 @@
 
 #include "sfx/budget.hpp"
 #include "sfx/motion_blur.hpp"
-#include "sfx/tiers.hpp"
 
 namespace sfx::budget {
 namespace {
@@ -131,9 +130,9 @@ Result<TimerReading> timeMedian(Device& dev, uint32_t runs, const std::function<
     return last;
 }
 
-std::vector<Candidate> candidates(Effect effect, Tier tier) {
+std::vector<Candidate> candidates(Effect effect, const std::vector<Preset>& presets) {
     std::vector<Candidate> out;
-    for (const tiers::Preset& p : tiers::row(tier).presets) {
+    for (const Preset& p : presets) {
         if (effect == Effect::MotionBlur) {
             out.push_back({effect, p.name, AoTechnique::Alchemy, p.accuracy.motionBlurPsnrDb});
             continue;
@@ -144,26 +143,30 @@ std::vector<Candidate> candidates(Effect effect, Tier tier) {
     return out;
 }
 
-Result<CostTable> costTable(Device& dev, Effect effect, uint32_t width, uint32_t height, const CalibrationOptions& options) {
+Result<CostTable> costTable(Device& dev, const std::vector<Preset>& presets, Effect effect, uint32_t width, uint32_t height,
+                            const CalibrationOptions& options) {
     if (width == 0 || height == 0 || width > dev.caps().limits.maxTextureSize || height > dev.caps().limits.maxTextureSize)
         return invalidArgument("width/height", std::to_string(width) + "x" + std::to_string(height),
                                "[1, " + std::to_string(dev.caps().limits.maxTextureSize) + "] each");
     if (options.runs == 0) return invalidArgument("CalibrationOptions.runs", "0", "at least 1");
-    Result<tiers::TierChoice> choice = tiers::choose(dev.caps());
-    if (!choice) return choice.status();
-    const std::vector<Candidate> list = candidates(effect, choice->tier);
+    if (presets.empty()) return invalidArgument("presets", "empty", "one tier's presets (tiers::row(tier).presets)");
+    const Tier tier = presets.front().params.tier;
+    for (const Preset& p : presets)
+        if (p.params.tier != tier)
+            return invalidArgument("presets", "'" + p.name + "' of tier " + toString(p.params.tier) + " among presets of tier " + toString(tier),
+                                   "presets of one tier");
+    const std::vector<Candidate> list = candidates(effect, presets);
     const std::string path =
         options.cacheDir.empty() ? "" : costTablePath(options.cacheDir, dev.caps().deviceName, effect, width, height);
     if (!path.empty() && !options.recalibrate) {
         Result<CostTable> cached = readCostTable(path, list);
-        if (cached && cached->device == dev.caps().deviceName && cached->tier == choice->tier) return cached;
+        if (cached && cached->device == dev.caps().deviceName && cached->tier == tier) return cached;
     }
-    CostTable table{dev.caps().deviceName, choice->tier, effect, width, height, {}};
+    CostTable table{dev.caps().deviceName, tier, effect, width, height, {}};
     for (const Candidate& c : list) {
-        Result<TierProfile> profile = tiers::preset(choice->tier, c.preset);
-        if (!profile) return profile.status();
-        Result<double> ms = effect == Effect::MotionBlur ? timeMotionBlur(dev, profile.value(), width, height, options.runs)
-                                                         : timeAo(dev, profile.value(), c.technique, width, height, options.runs);
+        const auto preset = std::find_if(presets.begin(), presets.end(), [&](const Preset& p) { return p.name == c.preset; });
+        Result<double> ms = effect == Effect::MotionBlur ? timeMotionBlur(dev, preset->params, width, height, options.runs)
+                                                         : timeAo(dev, preset->params, c.technique, width, height, options.runs);
         if (!ms) return ms.status();
         table.entries.push_back({c, ms.value()});
     }
@@ -174,13 +177,6 @@ Result<CostTable> costTable(Device& dev, Effect effect, uint32_t width, uint32_t
         SFX_TRY(writeCostTable(path, table));
     }
     return table;
-}
-
-Result<Choice> chooseForBudget(Device& dev, Effect effect, uint32_t width, uint32_t height, double budgetMs, const CalibrationOptions& options) {
-    if (!(budgetMs > 0) || std::isinf(budgetMs)) return choose(CostTable{}, budgetMs);  // the named budgetMs error, before any calibration
-    Result<CostTable> table = costTable(dev, effect, width, height, options);
-    if (!table) return table.status();
-    return choose(table.value(), budgetMs);
 }
 
 }  // namespace sfx::budget

@@ -21,24 +21,6 @@ struct Requirement {
     bool (*met)(const DeviceCaps&);
 };
 
-// A quality preset: a named set of a tier's parameters. Every tier has kDefaultPreset, the
-// parameters it has always had. Presets of one tier may differ only in what reaches the shaders
-// through uniforms (tap counts, radii, blur width); the structural parameters that become
-// shader defines (shaderDefines) are the default preset's for every preset of the tier.
-// What a preset buys, measured offline against ground truth by samples/trade_presets
-// (docs/trade.md): the settings-by-budget API (sfx/budget.hpp) picks the most accurate preset
-// whose cost, measured on the device, fits. 0 = not measured.
-struct PresetAccuracy {
-    double aoPsnrDb[3] = {0, 0, 0};  // per AO technique (AoTechnique order), held-out views, radii 0.25-2
-    double motionBlurPsnrDb = 0;     // against temporally supersampled truth
-};
-
-struct Preset {
-    std::string name;
-    TierProfile params;
-    PresetAccuracy accuracy;
-};
-inline constexpr const char* kDefaultPreset = "default";
 
 struct TierRow {
     Tier tier = Tier::Current;

@@ -1,0 +1,2 @@
+// The tier table of the fixture tree.
+#pragma once

@@ -1,0 +1,18 @@
+// Generated tables inside hand-written Markdown pages: a program owns the text between its
+// "<!-- name: begin -->" and "<!-- name: end -->" markers and replaces only that.
+#pragma once
+
+#include <string>
+
+#include "sfx/status.hpp"
+
+namespace sfx::tools {
+
+// Replaces what lies between the markers of `name` in the file at `path` (appending the markers
+// with `text` when they are missing, creating the file when it is). FileError when unwritable.
+Status replaceMarkdownSection(const std::string& path, const std::string& name, const std::string& text);
+
+// A table cell: v with `digits` decimals, "inf" for an infinity (an exact PSNR).
+std::string fixed(double v, int digits);
+
+}  // namespace sfx::tools

@@ -1,0 +1,98 @@
+#include "trade_views.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace sfx::tools {
+
+std::string TradeView::name() const {
+    if (analytic) return "analytic-" + scene;
+    char buf[64];
+    if (distanceScale == 1 && lift == 0) std::snprintf(buf, sizeof buf, "@%g", turnDegrees);
+    else std::snprintf(buf, sizeof buf, "@%g_%g_%g", turnDegrees, distanceScale, lift);
+    return scene + buf;
+}
+
+// Training: three scenes, each from its own camera and one turned the other way round.
+std::vector<TradeView> trainingViews() {
+    std::vector<TradeView> v;
+    for (const char* s : {"corner", "steps", "columns"}) {
+        v.push_back({s, false, 0, 1, 0});
+        v.push_back({s, false, -30, 0.8, 0});
+    }
+    return v;
+}
+
+// Held out: the training scenes from a third camera, two scenes the fit never saw from three
+// cameras each, and the analytic scenes that have occlusion (exact depth, spheres, sky).
+std::vector<TradeView> heldOutViews() {
+    std::vector<TradeView> v;
+    for (const char* s : {"corner", "steps", "columns"}) v.push_back({s, false, 20, 1.25, 0.4});
+    for (const char* s : {"contact", "bunny"}) {
+        v.push_back({s, false, 0, 1, 0});
+        v.push_back({s, false, -30, 0.8, 0});
+        v.push_back({s, false, 20, 1.25, 0.4});
+    }
+    for (const char* s : {"corner", "contact", "columns"}) v.push_back({s, true, 0, 1, 0});
+    return v;
+}
+
+Result<Scene> viewScene(const TradeView& view) {
+    if (view.analytic) return invalidArgument("view", "'" + view.name() + "'", "a rasterised sample scene's view");
+    Result<Scene> scene = makeScene(view.scene);
+    if (!scene) return scene.status();
+    const double a = view.turnDegrees * 3.14159265358979323846 / 180.0;
+    const glm::dvec3 d = scene->eye - scene->target;
+    const glm::dvec3 turned(d.x * std::cos(a) + d.z * std::sin(a), d.y, -d.x * std::sin(a) + d.z * std::cos(a));
+    scene->eye = scene->target + turned * view.distanceScale + glm::dvec3(0, view.lift, 0);
+    scene->name = view.name();
+    return scene;
+}
+
+Result<TruthScene> viewTruthScene(const TradeView& view, uint32_t width, uint32_t height) {
+    if (view.analytic) return makeTruthScene(view.name(), width, height);
+    Result<Scene> scene = viewScene(view);
+    if (!scene) return scene.status();
+    return makeTruthScene(scene.value(), width, height);
+}
+
+Result<std::unique_ptr<ViewInputs>> ViewInputs::create(Device& device, Tier tier, const TradeView& view, uint32_t width, uint32_t height) {
+    std::unique_ptr<ViewInputs> in(new ViewInputs(device));
+    if (!view.analytic) {
+        Result<Scene> scene = viewScene(view);
+        if (!scene) return scene.status();
+        Result<std::unique_ptr<SceneRenderer>> renderer = SceneRenderer::create(device, tier);
+        if (!renderer) return renderer.status();
+        SFX_TRY(renderer.value()->load(scene.value()));
+        Result<GBuffer> g = renderer.value()->render(scene.value(), width, height);
+        if (!g) return g.status();
+        in->kind_ = DepthKind::Hardware;
+        in->depth_ = g->depth, in->normals_ = g->normals, in->camera_ = g->camera;
+        g->depth = {}, g->normals = {};  // kept; the renderer frees velocity and albedo
+        renderer.value()->destroy(g.value());
+        return in;
+    }
+    Result<AnalyticSceneDesc> desc = analyticSceneDesc(view.scene);
+    if (!desc) return desc.status();
+    const AnalyticScene scene = castScene(desc.value(), width, height);
+    std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end()), normals;
+    for (const glm::dvec3& n : scene.normals) normals.insert(normals.end(), {float(n.x), float(n.y), float(n.z), 0.0f});
+    Result<TextureHandle> d = device.createTexture({width, height, 1, Format::R32F, kTextureSampled, "trade-linear-depth"});
+    if (!d) return d.status();
+    in->depth_ = d.value();
+    Result<TextureHandle> n = device.createTexture({width, height, 1, Format::RGBA32F, kTextureSampled, "trade-normals"});
+    if (!n) return n.status();
+    in->normals_ = n.value();
+    SFX_TRY(device.writeTexture(in->depth_, 0, depth.data(), depth.size() * sizeof(float)));
+    SFX_TRY(device.writeTexture(in->normals_, 0, normals.data(), normals.size() * sizeof(float)));
+    in->kind_ = DepthKind::Linear;
+    in->camera_ = scene.camera;
+    return in;
+}
+
+ViewInputs::~ViewInputs() {
+    for (TextureHandle t : {depth_, normals_})
+        if (!t.isNull()) (void)device_.destroyTexture(t);
+}
+
+}  // namespace sfx::tools
