@@ -1,5 +1,5 @@
 // The checks only the GL backend makes; every other check of a GL call is the shared
-// sfx::validation, called first. Each is here because of how GL works, not what the HAL says:
+// sfx::validation, which Device's front end runs before the hook. Each is here because of how GL works, not what the HAL says:
 //   checkTextureUnits  GL uses a sampled texture's binding number as its texture unit, so a
 //                      binding at or past GL_MAX_TEXTURE_IMAGE_UNITS cannot be bound at all. On
 //                      Vulkan a binding number is only a descriptor slot, with no such limit.

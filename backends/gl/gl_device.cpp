@@ -1,6 +1,6 @@
-// The GL device itself: construction and teardown, which context is current, the commands'
-// validate-then-encode entry points, timers, and the factories of sfx/gl_device.hpp. The rest of
-// GlDevice lives by concern in the files gl_driver.hpp lists.
+// The GL device itself: construction and teardown, which context is current, the commands' hooks
+// (checked by Device's front end, then encoded), timers, and the factories of sfx/gl_device.hpp.
+// The rest of GlDevice lives by concern in the files gl_driver.hpp lists.
 #include <string_view>
 
 #include "gl_driver.hpp"
@@ -88,18 +88,16 @@ bool GlDevice::hostContext() const { return std::string_view(platform_->name()) 
 
 // ---- Timers ------------------------------------------------------------------------------
 
-Result<TimerHandle> GlDevice::createTimer() { return timers_.insert(GlTimer{}); }
+Result<TimerHandle> GlDevice::doCreateTimer() { return timers_.insert(GlTimer{}); }
 
-Status GlDevice::destroyTimer(TimerHandle h) {
-    SFX_TRY(timers_.check(h, "timer"));
+Status GlDevice::doDestroyTimer(TimerHandle h) {
     timers_.remove(h);
     return Status::ok();
 }
 
 // GL timer queries on llvmpipe report far less than the work takes; wall clock between
 // two glFinish calls is what the benchmarks can trust.
-Status GlDevice::beginTimer(TimerHandle h) {
-    SFX_TRY(timers_.check(h, "timer"));
+Status GlDevice::doBeginTimer(TimerHandle h) {
     SFX_TRY(enter());
     GL(glFinish);
     GlTimer& t = timers_.get(h);
@@ -109,8 +107,7 @@ Status GlDevice::beginTimer(TimerHandle h) {
     return takeDeviceError(Status::ok());
 }
 
-Status GlDevice::endTimer(TimerHandle h) {
-    SFX_TRY(timers_.check(h, "timer"));
+Status GlDevice::doEndTimer(TimerHandle h) {
     if (!timers_.get(h).begun) return validation::fail(validation::Error::TimerNotBegun, {});
     SFX_TRY(enter());
     GL(glFinish);
@@ -122,30 +119,27 @@ Status GlDevice::endTimer(TimerHandle h) {
     return takeDeviceError(Status::ok());
 }
 
-Result<TimerReading> GlDevice::readTimer(TimerHandle h) {
-    SFX_TRY(timers_.check(h, "timer"));
+Result<TimerReading> GlDevice::doReadTimer(TimerHandle h) {
     const GlTimer& t = timers_.get(h);
     if (t.lastMs < 0) return validation::fail(validation::Error::TimerNoMeasurement, {});
     return TimerReading{t.lastMs, caps_.timing};
 }
 
-// ---- Commands: every check before any GL work, then the encoding ---------------------------
+// ---- Commands: checked by the front end before any GL work, then the encoding ------------
 
-Status GlDevice::renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) {
-    SFX_TRY(validation::renderPass(pass, draws, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
+Status GlDevice::doRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) {
     SFX_TRY(enter());
     passTargets(pass, passTargets_);
     return takeDeviceError(encodeRenderPass(pass, draws, passTargets_));
 }
 
-Status GlDevice::dispatch(const DispatchDesc& d) {
-    SFX_TRY(validation::dispatch(d, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
+Status GlDevice::doDispatch(const DispatchDesc& d) {
     SFX_TRY(enter());
     encodeDispatch(programOf(pipelines_.get(d.pipeline)), d);
     return takeDeviceError(Status::ok());
 }
 
-Status GlDevice::flush() {
+Status GlDevice::doFlush() {
     SFX_TRY(enter());
     GL(glFinish);
     return takeDeviceError(Status::ok());

@@ -93,43 +93,43 @@ public:
 
     const DeviceCaps& caps() const override { return caps_; }
 
-    Result<TextureHandle> createTexture(const TextureDesc& desc) override;
     // gl_external_textures.cpp: host textures in, SDK textures out.
     Result<TextureHandle> importExternal(const ExternalTexture& texture);
     Result<NativeTexture> native(TextureHandle h) const;
-    Status destroyTexture(TextureHandle h) override;
-    Result<TextureDesc> textureDesc(TextureHandle h) const override;
-    Status writeTexture(TextureHandle h, uint32_t mip, const void* data, size_t bytes) override;
-    Status readTexture(TextureHandle h, uint32_t mip, void* out, size_t bytes) override;
-
-    Result<BufferHandle> createBuffer(const BufferDesc& desc) override;
-    Status destroyBuffer(BufferHandle h) override;
-    Status writeBuffer(BufferHandle h, uint64_t offset, const void* data, size_t bytes) override;
-    Status readBuffer(BufferHandle h, uint64_t offset, void* out, size_t bytes) override;
-
-    Result<SamplerHandle> createSampler(const SamplerDesc& desc) override;
-    Status destroySampler(SamplerHandle h) override;
-
-    Result<ProgramHandle> createProgram(const CompiledProgram& program) override;
-    Status destroyProgram(ProgramHandle h) override;
-    Result<PipelineHandle> createGraphicsPipeline(const GraphicsPipelineDesc& desc) override;
-    Result<PipelineHandle> createComputePipeline(const ComputePipelineDesc& desc) override;
-    Status destroyPipeline(PipelineHandle h) override;
-
-    Result<TimerHandle> createTimer() override;
-    Status destroyTimer(TimerHandle h) override;
-    Status beginTimer(TimerHandle h) override;
-    Status endTimer(TimerHandle h) override;
-    Result<TimerReading> readTimer(TimerHandle h) override;
-
-    Status renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) override;
-    Status dispatch(const DispatchDesc& d) override;
-    Status flush() override;
 
     std::vector<std::string> takeValidationMessages() override;
     DeviceStats stats() const override;  // gl_resources.cpp
 
 private:
+    // ---- Device's hooks: arguments checked by the front end (hal_device.cpp) -----------------
+    const validation::ObjectLookup& objects() const override { return lookup_; }
+    // gl_resources.cpp, but for the reads (gl_readback.cpp)
+    Result<TextureHandle> doCreateTexture(const TextureDesc& desc) override;
+    Status doDestroyTexture(TextureHandle h) override;
+    Status doWriteTexture(TextureHandle h, uint32_t mip, const void* data, size_t bytes) override;
+    Status doReadTexture(TextureHandle h, uint32_t mip, void* out, size_t bytes) override;
+    Result<BufferHandle> doCreateBuffer(const BufferDesc& desc) override;
+    Status doDestroyBuffer(BufferHandle h) override;
+    Status doWriteBuffer(BufferHandle h, uint64_t offset, const void* data, size_t bytes) override;
+    Status doReadBuffer(BufferHandle h, uint64_t offset, void* out, size_t bytes) override;
+    Result<SamplerHandle> doCreateSampler(const SamplerDesc& desc) override;
+    Status doDestroySampler(SamplerHandle h) override;
+    // gl_programs.cpp
+    Result<ProgramHandle> doCreateProgram(const CompiledProgram& program) override;
+    Status doDestroyProgram(ProgramHandle h) override;
+    Result<PipelineHandle> doCreateGraphicsPipeline(const GraphicsPipelineDesc& desc, validation::PipelineInfo info) override;
+    Result<PipelineHandle> doCreateComputePipeline(const ComputePipelineDesc& desc, validation::PipelineInfo info) override;
+    Status doDestroyPipeline(PipelineHandle h) override;
+    // gl_device.cpp
+    Result<TimerHandle> doCreateTimer() override;
+    Status doDestroyTimer(TimerHandle h) override;
+    Status doBeginTimer(TimerHandle h) override;
+    Status doEndTimer(TimerHandle h) override;
+    Result<TimerReading> doReadTimer(TimerHandle h) override;
+    Status doRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) override;
+    Status doDispatch(const DispatchDesc& d) override;
+    Status doFlush() override;
+
     // ---- Context (gl_device.cpp) ----------------------------------------------------------
     bool makeCurrent();
     Status enter();
@@ -219,6 +219,8 @@ private:
     HandlePool<ProgramTag, GlProgram> programs_;
     HandlePool<PipelineTag, GlPipeline> pipelines_;
     HandlePool<TimerTag, GlTimer> timers_;
+    const decltype(validation::poolLookup(textures_, buffers_, samplers_, programs_, pipelines_, timers_)) lookup_ =
+        validation::poolLookup(textures_, buffers_, samplers_, programs_, pipelines_, timers_);
 
     std::map<GLuint, uint32_t> programUsers_;  // pipelines per GL program object
     std::set<GLuint> destroyedPrograms_;       // destroyed programs whose pipelines still draw

@@ -6,9 +6,8 @@
 
 namespace sfx::gl {
 
-Result<ProgramHandle> GlDevice::createProgram(const CompiledProgram& program) {
-    // The shared check names what the device lacks before looking for the dialect's text.
-    SFX_TRY(validation::program(program, caps_));
+Result<ProgramHandle> GlDevice::doCreateProgram(const CompiledProgram& program) {
+    // Here, not in the front end: texture units and the compile and link need the GL context.
     SFX_TRY(checkTextureUnits(program));
     SFX_TRY(enter());
     Result<GLuint> linked = linkProgram(program);
@@ -22,8 +21,7 @@ Result<ProgramHandle> GlDevice::createProgram(const CompiledProgram& program) {
     return programs_.insert(GlProgram{validation::programInfo(program), name, sourcesOf(program, caps_.dialect)});
 }
 
-Status GlDevice::destroyProgram(ProgramHandle h) {
-    SFX_TRY(programs_.check(h, "program"));
+Status GlDevice::doDestroyProgram(ProgramHandle h) {
     SFX_TRY(enter());
     GlProgram p = programs_.remove(h);
     releaseProgramObject(p.name, true);
@@ -160,13 +158,10 @@ void GlDevice::bindResourcesByName(GLuint program, const std::vector<ShaderResou
     GL(glUseProgram, 0);
 }
 
-Result<PipelineHandle> GlDevice::createGraphicsPipeline(const GraphicsPipelineDesc& desc) {
-    SFX_TRY(programs_.check(desc.program, "GraphicsPipelineDesc.program"));
-    Result<validation::PipelineInfo> info = validation::graphicsPipeline(desc, programs_.get(desc.program).info, caps_);
-    if (!info) return info.status();
+Result<PipelineHandle> GlDevice::doCreateGraphicsPipeline(const GraphicsPipelineDesc& desc, validation::PipelineInfo info) {
     SFX_TRY(enter());
     GlPipeline p;
-    p.info = std::move(info.value());
+    p.info = std::move(info);
     p.program = programs_.get(desc.program).name;
     p.desc = desc;
     p.desc.debugName = "";
@@ -188,13 +183,10 @@ Result<PipelineHandle> GlDevice::createGraphicsPipeline(const GraphicsPipelineDe
     return pipelines_.insert(std::move(p));
 }
 
-Result<PipelineHandle> GlDevice::createComputePipeline(const ComputePipelineDesc& desc) {
-    SFX_TRY(programs_.check(desc.program, "ComputePipelineDesc.program"));
-    Result<validation::PipelineInfo> info = validation::computePipeline(desc, programs_.get(desc.program).info);
-    if (!info) return info.status();
+Result<PipelineHandle> GlDevice::doCreateComputePipeline(const ComputePipelineDesc& desc, validation::PipelineInfo info) {
     SFX_TRY(enter());
     GlPipeline p;
-    p.info = std::move(info.value());
+    p.info = std::move(info);
     p.program = programs_.get(desc.program).name;
     Result<GLuint> specialized = specialize(programs_.get(desc.program), desc.constants);
     if (!specialized) return takeDeviceError(specialized.status());
@@ -203,8 +195,7 @@ Result<PipelineHandle> GlDevice::createComputePipeline(const ComputePipelineDesc
     return pipelines_.insert(std::move(p));
 }
 
-Status GlDevice::destroyPipeline(PipelineHandle h) {
-    SFX_TRY(pipelines_.check(h, "pipeline"));
+Status GlDevice::doDestroyPipeline(PipelineHandle h) {
     SFX_TRY(enter());
     GlPipeline p = pipelines_.remove(h);
     if (p.vao) GL(glDeleteVertexArrays, 1, &p.vao);

@@ -11,20 +11,14 @@
 
 namespace sfx::gl {
 
-Status GlDevice::readTexture(TextureHandle h, uint32_t mip, void* out, size_t bytes) {
-    SFX_TRY(textures_.check(h, "texture"));
+Status GlDevice::doReadTexture(TextureHandle h, uint32_t mip, void* out, size_t /*the whole level*/) {
     const GlTexture t = textures_.get(h);
-    SFX_TRY(validation::textureBytes(t.desc, mip, bytes, "bytes"));
-    SFX_TRY(validation::pointer(out, "out", "the level's bytes"));
     SFX_TRY(enter());
     return takeDeviceError(readLevel(t, mip, out));
 }
 
-Status GlDevice::readBuffer(BufferHandle h, uint64_t offset, void* out, size_t bytes) {
-    SFX_TRY(buffers_.check(h, "buffer"));
+Status GlDevice::doReadBuffer(BufferHandle h, uint64_t offset, void* out, size_t bytes) {
     const GlBuffer& b = buffers_.get(h);
-    SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "readBuffer(offset, bytes)"));
-    SFX_TRY(validation::pointer(out, "out", "room for the bytes read"));
     SFX_TRY(enter());
     // GL ES has no glGetBufferSubData; mapping for reading works on both APIs.
     GL(glBindBuffer, GL_COPY_READ_BUFFER, b.name);

@@ -7,8 +7,7 @@
 
 namespace sfx::gl {
 
-Result<TextureHandle> GlDevice::createTexture(const TextureDesc& desc) {
-    SFX_TRY(validation::textureDesc(desc, caps_));
+Result<TextureHandle> GlDevice::doCreateTexture(const TextureDesc& desc) {
     SFX_TRY(enter());
     const GlFormat f = glFormat(desc.format);
     GlTexture t{desc, 0};
@@ -31,8 +30,7 @@ Result<TextureHandle> GlDevice::createTexture(const TextureDesc& desc) {
     return textures_.insert(t);
 }
 
-Status GlDevice::destroyTexture(TextureHandle h) {
-    SFX_TRY(textures_.check(h, "texture"));
+Status GlDevice::doDestroyTexture(TextureHandle h) {
     SFX_TRY(enter());
     GlTexture t = textures_.remove(h);
     forgetFbosOf(t.name);
@@ -43,16 +41,8 @@ Status GlDevice::destroyTexture(TextureHandle h) {
     return takeDeviceError(Status::ok());
 }
 
-Result<TextureDesc> GlDevice::textureDesc(TextureHandle h) const {
-    SFX_TRY(textures_.check(h, "texture"));
-    return textures_.get(h).desc;
-}
-
-Status GlDevice::writeTexture(TextureHandle h, uint32_t mip, const void* data, size_t bytes) {
-    SFX_TRY(textures_.check(h, "texture"));
+Status GlDevice::doWriteTexture(TextureHandle h, uint32_t mip, const void* data, size_t /*the whole level*/) {
     const GlTexture& t = textures_.get(h);
-    SFX_TRY(validation::textureBytes(t.desc, mip, bytes, "bytes"));
-    SFX_TRY(validation::pointer(data, "data", "the level's bytes"));
     SFX_TRY(enter());
     const GlFormat f = glFormat(t.desc.format);
     GL(glBindBuffer, GL_PIXEL_UNPACK_BUFFER, 0);
@@ -64,8 +54,7 @@ Status GlDevice::writeTexture(TextureHandle h, uint32_t mip, const void* data, s
     return takeDeviceError(Status::ok());
 }
 
-Result<BufferHandle> GlDevice::createBuffer(const BufferDesc& desc) {
-    SFX_TRY(validation::bufferDesc(desc, caps_));
+Result<BufferHandle> GlDevice::doCreateBuffer(const BufferDesc& desc) {
     SFX_TRY(enter());
     GlBuffer b{desc, 0};
     GL(glGenBuffers, 1, &b.name);
@@ -88,8 +77,7 @@ Result<BufferHandle> GlDevice::createBuffer(const BufferDesc& desc) {
     return buffers_.insert(b);
 }
 
-Status GlDevice::destroyBuffer(BufferHandle h) {
-    SFX_TRY(buffers_.check(h, "buffer"));
+Status GlDevice::doDestroyBuffer(BufferHandle h) {
     SFX_TRY(enter());
     GlBuffer b = buffers_.remove(h);
     storage_.remove();
@@ -98,11 +86,8 @@ Status GlDevice::destroyBuffer(BufferHandle h) {
     return takeDeviceError(Status::ok());
 }
 
-Status GlDevice::writeBuffer(BufferHandle h, uint64_t offset, const void* data, size_t bytes) {
-    SFX_TRY(buffers_.check(h, "buffer"));
+Status GlDevice::doWriteBuffer(BufferHandle h, uint64_t offset, const void* data, size_t bytes) {
     const GlBuffer& b = buffers_.get(h);
-    SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "writeBuffer(offset, bytes)"));
-    SFX_TRY(validation::pointer(data, "data", "the bytes to write"));
     SFX_TRY(enter());
     GL(glBindBuffer, GL_COPY_WRITE_BUFFER, b.name);
     GL(glBufferSubData, GL_COPY_WRITE_BUFFER, GLintptr(offset), GLsizeiptr(bytes), data);
@@ -110,8 +95,7 @@ Status GlDevice::writeBuffer(BufferHandle h, uint64_t offset, const void* data, 
     return takeDeviceError(Status::ok());
 }
 
-Result<SamplerHandle> GlDevice::createSampler(const SamplerDesc& desc) {
-    SFX_TRY(validation::samplerDesc(desc));
+Result<SamplerHandle> GlDevice::doCreateSampler(const SamplerDesc& desc) {
     SFX_TRY(enter());
     GlSampler s{desc, 0};
     GL(glGenSamplers, 1, &s.name);
@@ -121,8 +105,7 @@ Result<SamplerHandle> GlDevice::createSampler(const SamplerDesc& desc) {
     return samplers_.insert(s);
 }
 
-Status GlDevice::destroySampler(SamplerHandle h) {
-    SFX_TRY(samplers_.check(h, "sampler"));
+Status GlDevice::doDestroySampler(SamplerHandle h) {
     SFX_TRY(enter());
     GlSampler s = samplers_.remove(h);
     GL(glDeleteSamplers, 1, &s.name);

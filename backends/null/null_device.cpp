@@ -1,6 +1,6 @@
-// The null backend: every call goes through the same shared validation as on Vulkan and GL (it
-// keeps each program's reflection, each pipeline's description and each texture's and buffer's
-// description for that), then keeps contents in host memory and draws nothing.
+// The null backend: a thin backend like the others behind Device's front end, which checks every
+// call (the pools below keep the descriptions and reflection the checks read). It keeps contents
+// in host memory and draws nothing.
 #include "sfx/null_device.hpp"
 
 #include <cstring>
@@ -43,8 +43,17 @@ public:
 
     const DeviceCaps& caps() const override { return caps_; }
 
-    Result<TextureHandle> createTexture(const TextureDesc& desc) override {
-        SFX_TRY(validation::textureDesc(desc, caps_));
+    DeviceStats stats() const override {
+        // The null backend keeps its textures and buffers in host memory: that is what it holds.
+        DeviceStats s = halObjectStats(textures_, buffers_, samplers_, programs_, pipelines_, timers_);
+        s.deviceMemoryBytes = bytesHeld_;
+        return s;
+    }
+
+private:
+    const validation::ObjectLookup& objects() const override { return lookup_; }
+
+    Result<TextureHandle> doCreateTexture(const TextureDesc& desc) override {
         NullTexture t{desc, {}};
         for (uint32_t m = 0; m < desc.mipLevels; ++m) {
             t.mips.emplace_back(mipLevelBytes(desc, m), uint8_t(0));
@@ -52,134 +61,85 @@ public:
         }
         return textures_.insert(std::move(t));
     }
-    Status destroyTexture(TextureHandle h) override {
-        SFX_TRY(textures_.check(h, "texture"));
+    Status doDestroyTexture(TextureHandle h) override {
         for (const std::vector<uint8_t>& mip : textures_.remove(h).mips) bytesHeld_ -= mip.size();
         return Status::ok();
     }
-    Result<TextureDesc> textureDesc(TextureHandle h) const override {
-        SFX_TRY(textures_.check(h, "texture"));
-        return textures_.get(h).desc;
-    }
-    Status writeTexture(TextureHandle h, uint32_t mip, const void* data, size_t bytes) override {
-        SFX_TRY(textures_.check(h, "texture"));
-        NullTexture& t = textures_.get(h);
-        SFX_TRY(validation::textureBytes(t.desc, mip, bytes, "bytes"));
-        SFX_TRY(validation::pointer(data, "data", "the level's bytes"));
-        std::memcpy(t.mips[mip].data(), data, bytes);
+    Status doWriteTexture(TextureHandle h, uint32_t mip, const void* data, size_t bytes) override {
+        std::memcpy(textures_.get(h).mips[mip].data(), data, bytes);
         return Status::ok();
     }
-    Status readTexture(TextureHandle h, uint32_t mip, void* out, size_t bytes) override {
-        SFX_TRY(textures_.check(h, "texture"));
-        NullTexture& t = textures_.get(h);
-        SFX_TRY(validation::textureBytes(t.desc, mip, bytes, "bytes"));
-        SFX_TRY(validation::pointer(out, "out", "the level's bytes"));
-        std::memcpy(out, t.mips[mip].data(), bytes);
+    Status doReadTexture(TextureHandle h, uint32_t mip, void* out, size_t bytes) override {
+        std::memcpy(out, textures_.get(h).mips[mip].data(), bytes);
         return Status::ok();
     }
 
-    Result<BufferHandle> createBuffer(const BufferDesc& desc) override {
-        SFX_TRY(validation::bufferDesc(desc, caps_));
+    Result<BufferHandle> doCreateBuffer(const BufferDesc& desc) override {
         bytesHeld_ += desc.size;
         return buffers_.insert(NullBuffer{desc, std::vector<uint8_t>(desc.size, 0)});
     }
-    Status destroyBuffer(BufferHandle h) override {
-        SFX_TRY(buffers_.check(h, "buffer"));
+    Status doDestroyBuffer(BufferHandle h) override {
         bytesHeld_ -= buffers_.remove(h).bytes.size();
         return Status::ok();
     }
-    Status writeBuffer(BufferHandle h, uint64_t offset, const void* data, size_t bytes) override {
-        SFX_TRY(buffers_.check(h, "buffer"));
-        NullBuffer& b = buffers_.get(h);
-        SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "writeBuffer(offset, bytes)"));
-        SFX_TRY(validation::pointer(data, "data", "the bytes to write"));
-        std::memcpy(b.bytes.data() + offset, data, bytes);
+    Status doWriteBuffer(BufferHandle h, uint64_t offset, const void* data, size_t bytes) override {
+        std::memcpy(buffers_.get(h).bytes.data() + offset, data, bytes);
         return Status::ok();
     }
-    Status readBuffer(BufferHandle h, uint64_t offset, void* out, size_t bytes) override {
-        SFX_TRY(buffers_.check(h, "buffer"));
-        NullBuffer& b = buffers_.get(h);
-        SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "readBuffer(offset, bytes)"));
-        SFX_TRY(validation::pointer(out, "out", "room for the bytes read"));
-        std::memcpy(out, b.bytes.data() + offset, bytes);
+    Status doReadBuffer(BufferHandle h, uint64_t offset, void* out, size_t bytes) override {
+        std::memcpy(out, buffers_.get(h).bytes.data() + offset, bytes);
         return Status::ok();
     }
 
-    Result<SamplerHandle> createSampler(const SamplerDesc& desc) override {
-        SFX_TRY(validation::samplerDesc(desc));
-        return samplers_.insert(desc);
-    }
-    Status destroySampler(SamplerHandle h) override {
-        SFX_TRY(samplers_.check(h, "sampler"));
+    Result<SamplerHandle> doCreateSampler(const SamplerDesc& desc) override { return samplers_.insert(desc); }
+    Status doDestroySampler(SamplerHandle h) override {
         samplers_.remove(h);
         return Status::ok();
     }
 
-    Result<ProgramHandle> createProgram(const CompiledProgram& program) override {
-        SFX_TRY(validation::program(program, caps_));
+    Result<ProgramHandle> doCreateProgram(const CompiledProgram& program) override {
         return programs_.insert(NullProgram{validation::programInfo(program)});
     }
-    Status destroyProgram(ProgramHandle h) override {
-        SFX_TRY(programs_.check(h, "program"));
+    Status doDestroyProgram(ProgramHandle h) override {
         programs_.remove(h);
         return Status::ok();
     }
 
-    Result<PipelineHandle> createGraphicsPipeline(const GraphicsPipelineDesc& desc) override {
-        SFX_TRY(programs_.check(desc.program, "GraphicsPipelineDesc.program"));
-        Result<validation::PipelineInfo> info = validation::graphicsPipeline(desc, programs_.get(desc.program).info, caps_);
-        if (!info) return info.status();
-        return pipelines_.insert(NullPipeline{std::move(info.value())});
+    Result<PipelineHandle> doCreateGraphicsPipeline(const GraphicsPipelineDesc&, validation::PipelineInfo info) override {
+        return pipelines_.insert(NullPipeline{std::move(info)});
     }
-    Result<PipelineHandle> createComputePipeline(const ComputePipelineDesc& desc) override {
-        SFX_TRY(programs_.check(desc.program, "ComputePipelineDesc.program"));
-        Result<validation::PipelineInfo> info = validation::computePipeline(desc, programs_.get(desc.program).info);
-        if (!info) return info.status();
-        return pipelines_.insert(NullPipeline{std::move(info.value())});
+    Result<PipelineHandle> doCreateComputePipeline(const ComputePipelineDesc&, validation::PipelineInfo info) override {
+        return pipelines_.insert(NullPipeline{std::move(info)});
     }
-    Status destroyPipeline(PipelineHandle h) override {
-        SFX_TRY(pipelines_.check(h, "pipeline"));
+    Status doDestroyPipeline(PipelineHandle h) override {
         pipelines_.remove(h);
         return Status::ok();
     }
 
-    Result<TimerHandle> createTimer() override { return timers_.insert(NullTimer{}); }
-    Status destroyTimer(TimerHandle h) override {
-        SFX_TRY(timers_.check(h, "timer"));
+    Result<TimerHandle> doCreateTimer() override { return timers_.insert(NullTimer{}); }
+    Status doDestroyTimer(TimerHandle h) override {
         timers_.remove(h);
         return Status::ok();
     }
-
-    Status renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) override {
-        return validation::renderPass(pass, draws, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_);
-    }
-    Status dispatch(const DispatchDesc& d) override { return validation::dispatch(d, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_); }
-    Status beginTimer(TimerHandle h) override {
-        SFX_TRY(timers_.check(h, "timer"));
+    Status doBeginTimer(TimerHandle h) override {
         timers_.get(h).begun = true;
         return Status::ok();
     }
-    Status endTimer(TimerHandle h) override {
-        SFX_TRY(timers_.check(h, "timer"));
+    Status doEndTimer(TimerHandle h) override {
         if (!timers_.get(h).begun) return validation::fail(validation::Error::TimerNotBegun, {});
         timers_.get(h).ended = true;
         return Status::ok();
     }
-    Status flush() override { return Status::ok(); }
-
-    DeviceStats stats() const override {
-        // The null backend keeps its textures and buffers in host memory: that is what it holds.
-        DeviceStats s = halObjectStats(textures_, buffers_, samplers_, programs_, pipelines_, timers_);
-        s.deviceMemoryBytes = bytesHeld_;
-        return s;
-    }
-    Result<TimerReading> readTimer(TimerHandle h) override {
-        SFX_TRY(timers_.check(h, "timer"));
+    Result<TimerReading> doReadTimer(TimerHandle h) override {
         if (!timers_.get(h).ended) return validation::fail(validation::Error::TimerNoMeasurement, {});
         return TimerReading{0.0, caps_.timing};
     }
 
-private:
+    // Nothing is drawn: a checked command has nothing left to do.
+    Status doRenderPass(const RenderPassDesc&, std::span<const DrawDesc>) override { return Status::ok(); }
+    Status doDispatch(const DispatchDesc&) override { return Status::ok(); }
+    Status doFlush() override { return Status::ok(); }
+
     DeviceCaps caps_;
     uint16_t serial_;
     HandlePool<TextureTag, NullTexture> textures_;
@@ -188,6 +148,8 @@ private:
     HandlePool<ProgramTag, NullProgram> programs_;
     HandlePool<PipelineTag, NullPipeline> pipelines_;
     HandlePool<TimerTag, NullTimer> timers_;
+    const decltype(validation::poolLookup(textures_, buffers_, samplers_, programs_, pipelines_, timers_)) lookup_ =
+        validation::poolLookup(textures_, buffers_, samplers_, programs_, pipelines_, timers_);
     uint64_t bytesHeld_ = 0;  // texture and buffer bytes
 };
 

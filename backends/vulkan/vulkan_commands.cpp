@@ -60,7 +60,7 @@ Status VulkanDevice::submitAndWait() {
     return Status::ok();
 }
 
-Status VulkanDevice::flush() {
+Status VulkanDevice::doFlush() {
     SFX_TRY(notWhileRecording("flush"));
     if (hostCommandBuffer_) {
         // The host ends and submits its command buffer; what it used (garbage, staging blocks)

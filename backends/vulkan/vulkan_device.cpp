@@ -1,7 +1,8 @@
-// The Vulkan backend's HAL calls: each checks its arguments with the shared sfx::validation (the
-// Vulkan-only checks are SPIR-V validation, in vulkan_pipelines.cpp, and the host command buffer's
-// limits, in vulkan_commands.cpp and vulkan_timers.cpp) and delegates to the file that owns the
-// concern (see vulkan_device_impl.hpp). Timers are in vulkan_timers.cpp, flush in vulkan_commands.cpp.
+// The Vulkan backend's hooks behind Device's front end, which has checked their arguments with the
+// shared sfx::validation. What is left here is what only Vulkan can tell (SPIR-V structure, in
+// vulkan_pipelines.cpp; the host command buffer's and an open recording's limits, in
+// vulkan_commands.cpp and vulkan_timers.cpp); each hook delegates to the file that owns the concern
+// (see vulkan_device_impl.hpp). Timers are in vulkan_timers.cpp, flush in vulkan_commands.cpp.
 #include "sfx/hal_validation.hpp"
 #include "vulkan_device_impl.hpp"
 
@@ -9,14 +10,12 @@ namespace sfx::vulkan {
 
 // ---- Textures and samplers -----------------------------------------------------------------
 
-Result<TextureHandle> VulkanDevice::createTexture(const TextureDesc& desc) {
-    SFX_TRY(validation::textureDesc(desc, caps_));
+Result<TextureHandle> VulkanDevice::doCreateTexture(const TextureDesc& desc) {
     changeObjects();
     return makeTexture(desc);
 }
 
-Status VulkanDevice::destroyTexture(TextureHandle h) {
-    SFX_TRY(textures_.check(h, "texture"));
+Status VulkanDevice::doDestroyTexture(TextureHandle h) {
     VulkanTexture t = textures_.remove(h);
     if (t.external) SFX_TRY(forgetExternal(h, t));  // back in the host's layout first
     clearSetCache();  // sets may name its views
@@ -25,31 +24,21 @@ Status VulkanDevice::destroyTexture(TextureHandle h) {
     return Status::ok();
 }
 
-Status VulkanDevice::writeTexture(TextureHandle h, uint32_t mip, const void* data, size_t bytes) {
-    SFX_TRY(textures_.check(h, "texture"));
-    VulkanTexture& t = textures_.get(h);
-    SFX_TRY(validation::textureBytes(t.desc, mip, bytes, "bytes"));
-    SFX_TRY(validation::pointer(data, "data", "the level's bytes"));
-    return uploadTexture(t, mip, data, bytes);
+Status VulkanDevice::doWriteTexture(TextureHandle h, uint32_t mip, const void* data, size_t bytes) {
+    return uploadTexture(textures_.get(h), mip, data, bytes);
 }
 
-Status VulkanDevice::readTexture(TextureHandle h, uint32_t mip, void* out, size_t bytes) {
-    SFX_TRY(textures_.check(h, "texture"));
-    VulkanTexture& t = textures_.get(h);
-    SFX_TRY(validation::textureBytes(t.desc, mip, bytes, "bytes"));
-    SFX_TRY(validation::pointer(out, "out", "the level's bytes"));
+Status VulkanDevice::doReadTexture(TextureHandle h, uint32_t mip, void* out, size_t bytes) {
     SFX_TRY(noHostCommandBuffer("readTexture"));
     SFX_TRY(notWhileRecording("readTexture"));
-    return downloadTexture(t, mip, out, bytes);
+    return downloadTexture(textures_.get(h), mip, out, bytes);
 }
 
-Result<SamplerHandle> VulkanDevice::createSampler(const SamplerDesc& desc) {
-    SFX_TRY(validation::samplerDesc(desc));
+Result<SamplerHandle> VulkanDevice::doCreateSampler(const SamplerDesc& desc) {
     return makeSampler(desc);
 }
 
-Status VulkanDevice::destroySampler(SamplerHandle h) {
-    SFX_TRY(samplers_.check(h, "sampler"));
+Status VulkanDevice::doDestroySampler(SamplerHandle h) {
     clearSetCache();
     currentGarbage().samplers.push_back(samplers_.remove(h));
     releaseIdleGarbage();
@@ -58,14 +47,12 @@ Status VulkanDevice::destroySampler(SamplerHandle h) {
 
 // ---- Buffers -------------------------------------------------------------------------------
 
-Result<BufferHandle> VulkanDevice::createBuffer(const BufferDesc& desc) {
-    SFX_TRY(validation::bufferDesc(desc, caps_));
+Result<BufferHandle> VulkanDevice::doCreateBuffer(const BufferDesc& desc) {
     changeObjects();
     return makeHalBuffer(desc);
 }
 
-Status VulkanDevice::destroyBuffer(BufferHandle h) {
-    SFX_TRY(buffers_.check(h, "buffer"));
+Status VulkanDevice::doDestroyBuffer(BufferHandle h) {
     VulkanBuffer b = buffers_.remove(h);
     clearSetCache();
     retire(b, currentGarbage());
@@ -73,34 +60,25 @@ Status VulkanDevice::destroyBuffer(BufferHandle h) {
     return Status::ok();
 }
 
-Status VulkanDevice::writeBuffer(BufferHandle h, uint64_t offset, const void* data, size_t bytes) {
-    SFX_TRY(buffers_.check(h, "buffer"));
-    VulkanBuffer& b = buffers_.get(h);
-    SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "writeBuffer(offset, bytes)"));
-    SFX_TRY(validation::pointer(data, "data", "the bytes to write"));
-    return stageBufferWrite(b, offset, data, bytes);
+Status VulkanDevice::doWriteBuffer(BufferHandle h, uint64_t offset, const void* data, size_t bytes) {
+    return stageBufferWrite(buffers_.get(h), offset, data, bytes);
 }
 
-Status VulkanDevice::readBuffer(BufferHandle h, uint64_t offset, void* out, size_t bytes) {
-    SFX_TRY(buffers_.check(h, "buffer"));
-    VulkanBuffer& b = buffers_.get(h);
-    SFX_TRY(validation::bufferRange(b.desc, offset, bytes, "readBuffer(offset, bytes)"));
-    SFX_TRY(validation::pointer(out, "out", "room for the bytes read"));
+Status VulkanDevice::doReadBuffer(BufferHandle h, uint64_t offset, void* out, size_t bytes) {
     SFX_TRY(noHostCommandBuffer("readBuffer"));
     SFX_TRY(notWhileRecording("readBuffer"));
-    return readBackBuffer(b, offset, out, bytes);
+    return readBackBuffer(buffers_.get(h), offset, out, bytes);
 }
 
 // ---- Programs and pipelines ----------------------------------------------------------------
 
-Result<ProgramHandle> VulkanDevice::createProgram(const CompiledProgram& program) {
-    SFX_TRY(validation::program(program, caps_));
+Result<ProgramHandle> VulkanDevice::doCreateProgram(const CompiledProgram& program) {
+    // Here, not in the front end: walking the SPIR-V's structure is Vulkan's concern alone.
     for (const StageCode& s : program.stages) SFX_TRY(validateSpirv(program, s));
     return makeProgram(program);
 }
 
-Status VulkanDevice::destroyProgram(ProgramHandle h) {
-    SFX_TRY(programs_.check(h, "program"));
+Status VulkanDevice::doDestroyProgram(ProgramHandle h) {
     // Pipelines made from it have their own layouts and need no module after creation.
     VulkanProgram p = programs_.remove(h);
     for (auto& m : p.modules) currentGarbage().modules.push_back(m.second);
@@ -108,24 +86,17 @@ Status VulkanDevice::destroyProgram(ProgramHandle h) {
     return Status::ok();
 }
 
-Result<PipelineHandle> VulkanDevice::createGraphicsPipeline(const GraphicsPipelineDesc& desc) {
-    SFX_TRY(programs_.check(desc.program, "GraphicsPipelineDesc.program"));
-    const VulkanProgram& prog = programs_.get(desc.program);
-    Result<validation::PipelineInfo> info = validation::graphicsPipeline(desc, prog.info, caps_);
-    if (!info) return info.status();
-    return makeGraphicsPipeline(desc, prog, std::move(info.value()));
+Result<PipelineHandle> VulkanDevice::doCreateGraphicsPipeline(const GraphicsPipelineDesc& desc,
+                                                              validation::PipelineInfo info) {
+    return makeGraphicsPipeline(desc, programs_.get(desc.program), std::move(info));
 }
 
-Result<PipelineHandle> VulkanDevice::createComputePipeline(const ComputePipelineDesc& desc) {
-    SFX_TRY(programs_.check(desc.program, "ComputePipelineDesc.program"));
-    const VulkanProgram& prog = programs_.get(desc.program);
-    Result<validation::PipelineInfo> info = validation::computePipeline(desc, prog.info);
-    if (!info) return info.status();
-    return makeComputePipeline(desc, prog, std::move(info.value()));
+Result<PipelineHandle> VulkanDevice::doCreateComputePipeline(const ComputePipelineDesc& desc,
+                                                             validation::PipelineInfo info) {
+    return makeComputePipeline(desc, programs_.get(desc.program), std::move(info));
 }
 
-Status VulkanDevice::destroyPipeline(PipelineHandle h) {
-    SFX_TRY(pipelines_.check(h, "pipeline"));
+Status VulkanDevice::doDestroyPipeline(PipelineHandle h) {
     VulkanPipeline p = pipelines_.remove(h);
     clearSetCache();  // sets of its set layout
     retire(p);
@@ -135,10 +106,7 @@ Status VulkanDevice::destroyPipeline(PipelineHandle h) {
 
 // ---- Commands ------------------------------------------------------------------------------
 
-Status VulkanDevice::renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) {
-    // Replaying: checked when it was recorded (the same arguments on the same objects pass again).
-    if (noteCall(&pass, draws, nullptr)) return Status::ok();
-    SFX_TRY(validation::renderPass(pass, draws, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
+Status VulkanDevice::doRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) {
     PassTargets& targets = scratch_.targets;
     passTargets(pass, targets);
     std::vector<ResolvedBindings>& resolvedLists = scratch_.resolved;
@@ -159,9 +127,7 @@ Status VulkanDevice::renderPass(const RenderPassDesc& pass, std::span<const Draw
     return recordRenderPass(pass, draws, targets, resolved);
 }
 
-Status VulkanDevice::dispatch(const DispatchDesc& d) {
-    if (noteCall(nullptr, {}, &d)) return Status::ok();
-    SFX_TRY(validation::dispatch(d, validation::PoolLookup(textures_, buffers_, samplers_, pipelines_), caps_));
+Status VulkanDevice::doDispatch(const DispatchDesc& d) {
     const VulkanPipeline& pl = pipelines_.get(d.pipeline);
     Uses& uses = scratch_.dispatchUses;
     uses.images.clear();

@@ -1,5 +1,5 @@
-// The Vulkan backend's Device. Its public calls (vulkan_device.cpp) validate their arguments and
-// delegate to the files that own each concern; the comments below name the file of each group.
+// The Vulkan backend's Device. Its hooks (vulkan_device.cpp) take the arguments Device's front end
+// checked and delegate to the files that own each concern; the comments below name each file.
 //
 // Design, chosen for correctness over overlap:
 // - One command buffer records everything between flushes; flush() submits it and waits.
@@ -66,42 +66,6 @@ public:
     const DeviceCaps& caps() const override { return caps_; }
     DeviceStats stats() const override;  // vulkan_memory.cpp
 
-    // The HAL calls: vulkan_device.cpp, but for the timers (vulkan_timers.cpp) and flush
-    // (vulkan_commands.cpp).
-    Result<TextureHandle> createTexture(const TextureDesc& desc) override;
-    Status destroyTexture(TextureHandle texture) override;
-    Result<TextureDesc> textureDesc(TextureHandle texture) const override {
-        SFX_TRY(textures_.check(texture, "texture"));
-        return textures_.get(texture).desc;
-    }
-    Status writeTexture(TextureHandle texture, uint32_t mip, const void* data, size_t bytes) override;
-    Status readTexture(TextureHandle texture, uint32_t mip, void* out, size_t bytes) override;
-
-    Result<BufferHandle> createBuffer(const BufferDesc& desc) override;
-    Status destroyBuffer(BufferHandle buffer) override;
-    Status writeBuffer(BufferHandle buffer, uint64_t offset, const void* data, size_t bytes) override;
-    Status readBuffer(BufferHandle buffer, uint64_t offset, void* out, size_t bytes) override;
-
-    Result<SamplerHandle> createSampler(const SamplerDesc& desc) override;
-    Status destroySampler(SamplerHandle sampler) override;
-
-    Result<ProgramHandle> createProgram(const CompiledProgram& program) override;
-    Status destroyProgram(ProgramHandle program) override;
-
-    Result<PipelineHandle> createGraphicsPipeline(const GraphicsPipelineDesc& desc) override;
-    Result<PipelineHandle> createComputePipeline(const ComputePipelineDesc& desc) override;
-    Status destroyPipeline(PipelineHandle pipeline) override;
-
-    Result<TimerHandle> createTimer() override;
-    Status destroyTimer(TimerHandle timer) override;
-
-    Status renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) override;
-    Status dispatch(const DispatchDesc& dispatch) override;
-    Status beginTimer(TimerHandle timer) override;
-    Status endTimer(TimerHandle timer) override;
-    Status flush() override;
-    Result<TimerReading> readTimer(TimerHandle timer) override;
-
     // vulkan_recordings.cpp
     Status beginRecording() override;
     Result<RecordingHandle> endRecording() override;
@@ -122,6 +86,43 @@ public:
     }
 
 private:
+    // ---- Device's hooks: arguments checked by the front end (hal_device.cpp) ----------------
+    const validation::ObjectLookup& objects() const override { return lookup_; }
+    // vulkan_device.cpp, but for the timers (vulkan_timers.cpp), flush (vulkan_commands.cpp) and
+    // replayed calls (vulkan_recordings.cpp).
+    Result<TextureHandle> doCreateTexture(const TextureDesc& desc) override;
+    Status doDestroyTexture(TextureHandle texture) override;
+    Status doWriteTexture(TextureHandle texture, uint32_t mip, const void* data, size_t bytes) override;
+    Status doReadTexture(TextureHandle texture, uint32_t mip, void* out, size_t bytes) override;
+
+    Result<BufferHandle> doCreateBuffer(const BufferDesc& desc) override;
+    Status doDestroyBuffer(BufferHandle buffer) override;
+    Status doWriteBuffer(BufferHandle buffer, uint64_t offset, const void* data, size_t bytes) override;
+    Status doReadBuffer(BufferHandle buffer, uint64_t offset, void* out, size_t bytes) override;
+
+    Result<SamplerHandle> doCreateSampler(const SamplerDesc& desc) override;
+    Status doDestroySampler(SamplerHandle sampler) override;
+
+    Result<ProgramHandle> doCreateProgram(const CompiledProgram& program) override;
+    Status doDestroyProgram(ProgramHandle program) override;
+
+    Result<PipelineHandle> doCreateGraphicsPipeline(const GraphicsPipelineDesc& desc, validation::PipelineInfo info) override;
+    Result<PipelineHandle> doCreateComputePipeline(const ComputePipelineDesc& desc, validation::PipelineInfo info) override;
+    Status doDestroyPipeline(PipelineHandle pipeline) override;
+
+    Result<TimerHandle> doCreateTimer() override;
+    Status doDestroyTimer(TimerHandle timer) override;
+    Status doBeginTimer(TimerHandle timer) override;
+    Status doEndTimer(TimerHandle timer) override;
+    Result<TimerReading> doReadTimer(TimerHandle timer) override;
+
+    bool doReplayCall(const RenderPassDesc* pass, std::span<const DrawDesc> draws, const DispatchDesc* dispatch) override {
+        return noteCall(pass, draws, dispatch);
+    }
+    Status doRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) override;
+    Status doDispatch(const DispatchDesc& dispatch) override;
+    Status doFlush() override;
+
     // vulkan_platform.cpp
     Status createInstance(const DeviceOptions& options, uint32_t& apiVersion);
     // Needs a graphics+compute queue and dynamic rendering; discrete first.
@@ -245,6 +246,8 @@ private:
     HandlePool<PipelineTag, VulkanPipeline> pipelines_;
     HandlePool<TimerTag, VulkanTimer> timers_;
     HandlePool<RecordingTag, VulkanRecording> recordings_;
+    const decltype(validation::poolLookup(textures_, buffers_, samplers_, programs_, pipelines_, timers_)) lookup_ =
+        validation::poolLookup(textures_, buffers_, samplers_, programs_, pipelines_, timers_);
     std::vector<TextureHandle> externals_;  // imported images, handed back at every flush
 
 public:  // set up by the factory functions

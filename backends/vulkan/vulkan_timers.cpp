@@ -25,7 +25,7 @@ void VulkanDevice::markEndedTimersFlushed(bool hostRecorded, double wallMs) {
     });
 }
 
-Result<TimerHandle> VulkanDevice::createTimer() {
+Result<TimerHandle> VulkanDevice::doCreateTimer() {
     if (freeTimerSlots_.empty())
         // Vulkan only: timers are query pairs in one pool of fixed size (GL and null have no pool).
         return validation::fail(validation::Error::TimerPoolFull, {std::to_string(kMaxTimers)});
@@ -35,14 +35,12 @@ Result<TimerHandle> VulkanDevice::createTimer() {
     return timers_.insert(t);
 }
 
-Status VulkanDevice::destroyTimer(TimerHandle h) {
-    SFX_TRY(timers_.check(h, "timer"));
+Status VulkanDevice::doDestroyTimer(TimerHandle h) {
     freeTimerSlots_.push_back(timers_.remove(h).queryIndex / 2);
     return Status::ok();
 }
 
-Status VulkanDevice::beginTimer(TimerHandle h) {
-    SFX_TRY(timers_.check(h, "timer"));
+Status VulkanDevice::doBeginTimer(TimerHandle h) {
     if (noteTimer()) return Status::ok();
     VulkanTimer& t = timers_.get(h);
     Result<VkCommandBuffer> cb = recording();
@@ -55,8 +53,7 @@ Status VulkanDevice::beginTimer(TimerHandle h) {
     return Status::ok();
 }
 
-Status VulkanDevice::endTimer(TimerHandle h) {
-    SFX_TRY(timers_.check(h, "timer"));
+Status VulkanDevice::doEndTimer(TimerHandle h) {
     if (noteTimer()) return Status::ok();
     VulkanTimer& t = timers_.get(h);
     if (t.state != VulkanTimer::State::Begun) return validation::fail(validation::Error::TimerNotBegun, {});
@@ -67,8 +64,7 @@ Status VulkanDevice::endTimer(TimerHandle h) {
     return Status::ok();
 }
 
-Result<TimerReading> VulkanDevice::readTimer(TimerHandle h) {
-    SFX_TRY(timers_.check(h, "timer"));
+Result<TimerReading> VulkanDevice::doReadTimer(TimerHandle h) {
     VulkanTimer& t = timers_.get(h);
     if (t.state != VulkanTimer::State::Flushed)
         return validation::fail(validation::Error::TimerNoMeasurement, {});

@@ -1,6 +1,6 @@
 // The shared checks of commands: a render pass with its draws, a dispatch, and the bindings of
-// either against the pipeline's program reflection and the bound resources. Backends call
-// renderPass / dispatch with an ObjectLookup over their pools before recording anything, so a
+// either against the pipeline's program reflection and the bound resources. Device's front end
+// calls renderPass / dispatch with the backend's ObjectLookup before recording anything, so a
 // refused command leaves every target as it was. Codes and messages: validation_messages.cpp.
 // These run on every command the effects record, so the success path builds no string and
 // allocates nothing once warm: argument names ("DrawDesc.bindings.textures[1].texture") are

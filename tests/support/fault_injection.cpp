@@ -52,17 +52,17 @@ Status FaultInjectingDevice::enter(const char* what, bool creation, bool submit)
     return {};
 }
 
-Result<TextureHandle> FaultInjectingDevice::createTexture(const TextureDesc& desc) {
+Result<TextureHandle> FaultInjectingDevice::doCreateTexture(const TextureDesc& desc) {
     if (Status s = enter("createTexture", true, false); !s) return s;
     return inner_.createTexture(desc);
 }
 
-Status FaultInjectingDevice::writeTexture(TextureHandle texture, uint32_t mip, const void* data, size_t bytes) {
+Status FaultInjectingDevice::doWriteTexture(TextureHandle texture, uint32_t mip, const void* data, size_t bytes) {
     if (Status s = enter("writeTexture", false, false); !s) return s;
     return inner_.writeTexture(texture, mip, data, bytes);
 }
 
-Status FaultInjectingDevice::readTexture(TextureHandle texture, uint32_t mip, void* out, size_t bytes) {
+Status FaultInjectingDevice::doReadTexture(TextureHandle texture, uint32_t mip, void* out, size_t bytes) {
     if (Status s = enter("readTexture", false, true); !s) {
         // The recorded work is consumed all the same, as by a submit that failed on the GPU.
         (void)inner_.flush();
@@ -71,17 +71,17 @@ Status FaultInjectingDevice::readTexture(TextureHandle texture, uint32_t mip, vo
     return inner_.readTexture(texture, mip, out, bytes);
 }
 
-Result<BufferHandle> FaultInjectingDevice::createBuffer(const BufferDesc& desc) {
+Result<BufferHandle> FaultInjectingDevice::doCreateBuffer(const BufferDesc& desc) {
     if (Status s = enter("createBuffer", true, false); !s) return s;
     return inner_.createBuffer(desc);
 }
 
-Status FaultInjectingDevice::writeBuffer(BufferHandle buffer, uint64_t offset, const void* data, size_t bytes) {
+Status FaultInjectingDevice::doWriteBuffer(BufferHandle buffer, uint64_t offset, const void* data, size_t bytes) {
     if (Status s = enter("writeBuffer", false, false); !s) return s;
     return inner_.writeBuffer(buffer, offset, data, bytes);
 }
 
-Status FaultInjectingDevice::readBuffer(BufferHandle buffer, uint64_t offset, void* out, size_t bytes) {
+Status FaultInjectingDevice::doReadBuffer(BufferHandle buffer, uint64_t offset, void* out, size_t bytes) {
     if (Status s = enter("readBuffer", false, true); !s) {
         (void)inner_.flush();
         return s;
@@ -89,52 +89,52 @@ Status FaultInjectingDevice::readBuffer(BufferHandle buffer, uint64_t offset, vo
     return inner_.readBuffer(buffer, offset, out, bytes);
 }
 
-Result<SamplerHandle> FaultInjectingDevice::createSampler(const SamplerDesc& desc) {
+Result<SamplerHandle> FaultInjectingDevice::doCreateSampler(const SamplerDesc& desc) {
     if (Status s = enter("createSampler", true, false); !s) return s;
     return inner_.createSampler(desc);
 }
 
-Result<ProgramHandle> FaultInjectingDevice::createProgram(const CompiledProgram& program) {
+Result<ProgramHandle> FaultInjectingDevice::doCreateProgram(const CompiledProgram& program) {
     if (Status s = enter("createProgram", true, false); !s) return s;
     return inner_.createProgram(program);
 }
 
-Result<PipelineHandle> FaultInjectingDevice::createGraphicsPipeline(const GraphicsPipelineDesc& desc) {
+Result<PipelineHandle> FaultInjectingDevice::doCreateGraphicsPipeline(const GraphicsPipelineDesc& desc, validation::PipelineInfo) {
     if (Status s = enter("createGraphicsPipeline", true, false); !s) return s;
     return inner_.createGraphicsPipeline(desc);
 }
 
-Result<PipelineHandle> FaultInjectingDevice::createComputePipeline(const ComputePipelineDesc& desc) {
+Result<PipelineHandle> FaultInjectingDevice::doCreateComputePipeline(const ComputePipelineDesc& desc, validation::PipelineInfo) {
     if (Status s = enter("createComputePipeline", true, false); !s) return s;
     return inner_.createComputePipeline(desc);
 }
 
-Result<TimerHandle> FaultInjectingDevice::createTimer() {
+Result<TimerHandle> FaultInjectingDevice::doCreateTimer() {
     if (Status s = enter("createTimer", true, false); !s) return s;
     return inner_.createTimer();
 }
 
-Status FaultInjectingDevice::renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) {
+Status FaultInjectingDevice::doRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) {
     if (Status s = enter("renderPass", false, false); !s) return s;
     return inner_.renderPass(pass, draws);
 }
 
-Status FaultInjectingDevice::dispatch(const DispatchDesc& dispatch) {
+Status FaultInjectingDevice::doDispatch(const DispatchDesc& dispatch) {
     if (Status s = enter("dispatch", false, false); !s) return s;
     return inner_.dispatch(dispatch);
 }
 
-Status FaultInjectingDevice::beginTimer(TimerHandle timer) {
+Status FaultInjectingDevice::doBeginTimer(TimerHandle timer) {
     if (Status s = enter("beginTimer", false, false); !s) return s;
     return inner_.beginTimer(timer);
 }
 
-Status FaultInjectingDevice::endTimer(TimerHandle timer) {
+Status FaultInjectingDevice::doEndTimer(TimerHandle timer) {
     if (Status s = enter("endTimer", false, false); !s) return s;
     return inner_.endTimer(timer);
 }
 
-Status FaultInjectingDevice::flush() {
+Status FaultInjectingDevice::doFlush() {
     if (Status s = enter("flush", false, true); !s) {
         (void)inner_.flush();
         return s;
@@ -142,7 +142,7 @@ Status FaultInjectingDevice::flush() {
     return inner_.flush();
 }
 
-Result<TimerReading> FaultInjectingDevice::readTimer(TimerHandle timer) {
+Result<TimerReading> FaultInjectingDevice::doReadTimer(TimerHandle timer) {
     if (Status s = enter("readTimer", false, false); !s) return s;
     return inner_.readTimer(timer);
 }

@@ -3,6 +3,8 @@
 // which flushes first), or device loss from the k-th call on (every call after it fails, as
 // on a GPU reset). Everything else is forwarded to the wrapped device, whose handles pass
 // through unchanged, so the wrapped device's stats() tell whether a failed attempt leaked.
+// Its own front end checks every call against the wrapped device's objects first, so a fault
+// hits only calls that pass the checks, as a real device's failure would.
 //
 // Destroys are always forwarded, even after a simulated loss: releasing objects of a lost
 // device is legal on every API (Vulkan requires it), and an effect that cleans up after an
@@ -12,6 +14,7 @@
 #include <cstdint>
 
 #include "sfx/hal.hpp"
+#include "sfx/hal_validation.hpp"
 
 namespace sfx::test {
 
@@ -38,37 +41,6 @@ public:
 
     const DeviceCaps& caps() const override { return inner_.caps(); }
 
-    Result<TextureHandle> createTexture(const TextureDesc& desc) override;
-    Status destroyTexture(TextureHandle texture) override { return inner_.destroyTexture(texture); }
-    Result<TextureDesc> textureDesc(TextureHandle texture) const override { return inner_.textureDesc(texture); }
-    Status writeTexture(TextureHandle texture, uint32_t mip, const void* data, size_t bytes) override;
-    Status readTexture(TextureHandle texture, uint32_t mip, void* out, size_t bytes) override;
-
-    Result<BufferHandle> createBuffer(const BufferDesc& desc) override;
-    Status destroyBuffer(BufferHandle buffer) override { return inner_.destroyBuffer(buffer); }
-    Status writeBuffer(BufferHandle buffer, uint64_t offset, const void* data, size_t bytes) override;
-    Status readBuffer(BufferHandle buffer, uint64_t offset, void* out, size_t bytes) override;
-
-    Result<SamplerHandle> createSampler(const SamplerDesc& desc) override;
-    Status destroySampler(SamplerHandle sampler) override { return inner_.destroySampler(sampler); }
-
-    Result<ProgramHandle> createProgram(const CompiledProgram& program) override;
-    Status destroyProgram(ProgramHandle program) override { return inner_.destroyProgram(program); }
-
-    Result<PipelineHandle> createGraphicsPipeline(const GraphicsPipelineDesc& desc) override;
-    Result<PipelineHandle> createComputePipeline(const ComputePipelineDesc& desc) override;
-    Status destroyPipeline(PipelineHandle pipeline) override { return inner_.destroyPipeline(pipeline); }
-
-    Result<TimerHandle> createTimer() override;
-    Status destroyTimer(TimerHandle timer) override { return inner_.destroyTimer(timer); }
-
-    Status renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) override;
-    Status dispatch(const DispatchDesc& dispatch) override;
-    Status beginTimer(TimerHandle timer) override;
-    Status endTimer(TimerHandle timer) override;
-    Status flush() override;
-    Result<TimerReading> readTimer(TimerHandle timer) override;
-
     // Beginning one can fail like any call; ending and destroying one are always forwarded (as
     // destroys are), so that the wrapped device is never left with a recording or replay open.
     Status beginRecording() override;
@@ -81,6 +53,40 @@ public:
     std::vector<std::string> takeValidationMessages() override { return inner_.takeValidationMessages(); }
 
 private:
+    // Device's front end checks each call against the wrapped device's objects; a hook then
+    // injects its fault or forwards the call to the wrapped device's public call.
+    const validation::ObjectLookup& objects() const override { return objectsOf(inner_); }
+
+    Result<TextureHandle> doCreateTexture(const TextureDesc& desc) override;
+    Status doDestroyTexture(TextureHandle texture) override { return inner_.destroyTexture(texture); }
+    Status doWriteTexture(TextureHandle texture, uint32_t mip, const void* data, size_t bytes) override;
+    Status doReadTexture(TextureHandle texture, uint32_t mip, void* out, size_t bytes) override;
+
+    Result<BufferHandle> doCreateBuffer(const BufferDesc& desc) override;
+    Status doDestroyBuffer(BufferHandle buffer) override { return inner_.destroyBuffer(buffer); }
+    Status doWriteBuffer(BufferHandle buffer, uint64_t offset, const void* data, size_t bytes) override;
+    Status doReadBuffer(BufferHandle buffer, uint64_t offset, void* out, size_t bytes) override;
+
+    Result<SamplerHandle> doCreateSampler(const SamplerDesc& desc) override;
+    Status doDestroySampler(SamplerHandle sampler) override { return inner_.destroySampler(sampler); }
+
+    Result<ProgramHandle> doCreateProgram(const CompiledProgram& program) override;
+    Status doDestroyProgram(ProgramHandle program) override { return inner_.destroyProgram(program); }
+
+    Result<PipelineHandle> doCreateGraphicsPipeline(const GraphicsPipelineDesc& desc, validation::PipelineInfo) override;
+    Result<PipelineHandle> doCreateComputePipeline(const ComputePipelineDesc& desc, validation::PipelineInfo) override;
+    Status doDestroyPipeline(PipelineHandle pipeline) override { return inner_.destroyPipeline(pipeline); }
+
+    Result<TimerHandle> doCreateTimer() override;
+    Status doDestroyTimer(TimerHandle timer) override { return inner_.destroyTimer(timer); }
+    Status doBeginTimer(TimerHandle timer) override;
+    Status doEndTimer(TimerHandle timer) override;
+    Result<TimerReading> doReadTimer(TimerHandle timer) override;
+
+    Status doRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) override;
+    Status doDispatch(const DispatchDesc& dispatch) override;
+    Status doFlush() override;
+
     enum class Fault { None, Creation, Submit, Loss };
     // Counts a call and says why it fails (Ok: forward it). `what` names the call.
     Status enter(const char* what, bool creation, bool submit);

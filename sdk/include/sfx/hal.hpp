@@ -371,6 +371,16 @@ DeviceStats halObjectStats(const Textures& textures, const Buffers& buffers, con
     return s;
 }
 
+namespace validation {
+class ObjectLookup;
+struct PipelineInfo;
+}  // namespace validation
+
+// The one front end over every backend. Its public calls are defined once (hal_device.cpp): each
+// runs the shared checks (sfx/hal_validation.hpp) in one fixed order (handles, then descriptions
+// against the caps and limits, then what the handles' records say) and only then calls the
+// backend's hook below, so a backend cannot skip or reorder a check and bad input gets the same
+// code and message everywhere. Backends implement the private do* hooks and objects().
 class Device {
 public:
     virtual ~Device() = default;
@@ -381,44 +391,44 @@ public:
     virtual const DeviceCaps& caps() const = 0;
 
     // Resources. Every create validates its description and names the bad field.
-    virtual Result<TextureHandle> createTexture(const TextureDesc& desc) = 0;
-    virtual Status destroyTexture(TextureHandle texture) = 0;
-    virtual Result<TextureDesc> textureDesc(TextureHandle texture) const = 0;
+    Result<TextureHandle> createTexture(const TextureDesc& desc);
+    Status destroyTexture(TextureHandle texture);
+    Result<TextureDesc> textureDesc(TextureHandle texture) const;
     // Whole mip level, tightly packed rows, row 0 first. bytes must equal the level's size.
     // Depth formats in the layout their Format comment gives (D24S8: depth in the high 24 bits).
-    virtual Status writeTexture(TextureHandle texture, uint32_t mip, const void* data, size_t bytes) = 0;
-    virtual Status readTexture(TextureHandle texture, uint32_t mip, void* out, size_t bytes) = 0;
+    Status writeTexture(TextureHandle texture, uint32_t mip, const void* data, size_t bytes);
+    Status readTexture(TextureHandle texture, uint32_t mip, void* out, size_t bytes);
 
-    virtual Result<BufferHandle> createBuffer(const BufferDesc& desc) = 0;
-    virtual Status destroyBuffer(BufferHandle buffer) = 0;
+    Result<BufferHandle> createBuffer(const BufferDesc& desc);
+    Status destroyBuffer(BufferHandle buffer);
     // Ordered with recorded commands: a pass recorded before sees the old contents.
-    virtual Status writeBuffer(BufferHandle buffer, uint64_t offset, const void* data, size_t bytes) = 0;
-    virtual Status readBuffer(BufferHandle buffer, uint64_t offset, void* out, size_t bytes) = 0;
+    Status writeBuffer(BufferHandle buffer, uint64_t offset, const void* data, size_t bytes);
+    Status readBuffer(BufferHandle buffer, uint64_t offset, void* out, size_t bytes);
 
-    virtual Result<SamplerHandle> createSampler(const SamplerDesc& desc) = 0;
-    virtual Status destroySampler(SamplerHandle sampler) = 0;
+    Result<SamplerHandle> createSampler(const SamplerDesc& desc);
+    Status destroySampler(SamplerHandle sampler);
 
     // Takes the stage code for caps().dialect from the program; ShaderError when it fails
     // to compile or link, UnsupportedFeature for compute or storage under the ceiling.
-    virtual Result<ProgramHandle> createProgram(const CompiledProgram& program) = 0;
-    virtual Status destroyProgram(ProgramHandle program) = 0;
+    Result<ProgramHandle> createProgram(const CompiledProgram& program);
+    Status destroyProgram(ProgramHandle program);
 
-    virtual Result<PipelineHandle> createGraphicsPipeline(const GraphicsPipelineDesc& desc) = 0;
-    virtual Result<PipelineHandle> createComputePipeline(const ComputePipelineDesc& desc) = 0;
-    virtual Status destroyPipeline(PipelineHandle pipeline) = 0;
+    Result<PipelineHandle> createGraphicsPipeline(const GraphicsPipelineDesc& desc);
+    Result<PipelineHandle> createComputePipeline(const ComputePipelineDesc& desc);
+    Status destroyPipeline(PipelineHandle pipeline);
 
-    virtual Result<TimerHandle> createTimer() = 0;
-    virtual Status destroyTimer(TimerHandle timer) = 0;
+    Result<TimerHandle> createTimer();
+    Status destroyTimer(TimerHandle timer);
 
     // Commands, recorded in call order.
-    virtual Status renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) = 0;
-    virtual Status dispatch(const DispatchDesc& dispatch) = 0;
-    virtual Status beginTimer(TimerHandle timer) = 0;
-    virtual Status endTimer(TimerHandle timer) = 0;
+    Status renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws);
+    Status dispatch(const DispatchDesc& dispatch);
+    Status beginTimer(TimerHandle timer);
+    Status endTimer(TimerHandle timer);
     // Runs what was recorded and waits for it (own device).
-    virtual Status flush() = 0;
+    Status flush();
     // The time between the timer's begin and end of the last flushed use.
-    virtual Result<TimerReading> readTimer(TimerHandle timer) = 0;
+    Result<TimerReading> readTimer(TimerHandle timer);
 
     // Reusable recordings (caps().reusableRecordings; elsewhere all five report UnsupportedFeature).
     // The commands between beginRecording and endRecording run where they were called, as
@@ -437,6 +447,8 @@ public:
     // calls again inside beginRecording ... endRecording. Resources it only reads may be in any
     // state: endReplay records the barrier and layout transition their reads need.
     // Between begin and end: flush, reads, and another begin are refused (InvalidArgument).
+    // These stay with the backend that keeps recordings: whether a call is allowed depends on
+    // its open recording or replay, which only it knows.
     virtual Status beginRecording() { return noRecordings("beginRecording"); }
     virtual Result<RecordingHandle> endRecording() { return noRecordings("endRecording"); }
     virtual Status beginReplay(RecordingHandle) { return noRecordings("beginReplay"); }
@@ -450,11 +462,64 @@ public:
     // messages, GL errors caught by the per-call checks and GL debug output. Tests fail on any.
     virtual std::vector<std::string> takeValidationMessages() { return {}; }
 
+protected:
+    // Another device's objects, for a device that forwards to it (the tests' fault injection).
+    static const validation::ObjectLookup& objectsOf(const Device& device) { return device.objects(); }
+
 private:
     Status noRecordings(const char* call) const {
         return {StatusCode::UnsupportedFeature, std::string(call) + ": the " + toString(caps().backend) +
                                                     " device keeps no reusable recordings (caps().reusableRecordings is false)"};
     }
+
+    // ---- The backend's side ----------------------------------------------------------------
+    // The backend's objects as the checks read them: each handle checked (null, foreign,
+    // unknown, destroyed) and the description or reflection it was made with.
+    virtual const validation::ObjectLookup& objects() const = 0;
+
+    // Called only with arguments the front end checked: handles name live objects of this
+    // device, descriptions are within the caps and limits, byte ranges and mips lie inside their
+    // resource, pointers are not null. What a hook may still refuse is what only its API or its
+    // own state can tell (a shader that does not compile, a read inside a recording).
+    virtual Result<TextureHandle> doCreateTexture(const TextureDesc& desc) = 0;
+    virtual Status doDestroyTexture(TextureHandle texture) = 0;
+    virtual Status doWriteTexture(TextureHandle texture, uint32_t mip, const void* data, size_t bytes) = 0;
+    virtual Status doReadTexture(TextureHandle texture, uint32_t mip, void* out, size_t bytes) = 0;
+
+    virtual Result<BufferHandle> doCreateBuffer(const BufferDesc& desc) = 0;
+    virtual Status doDestroyBuffer(BufferHandle buffer) = 0;
+    virtual Status doWriteBuffer(BufferHandle buffer, uint64_t offset, const void* data, size_t bytes) = 0;
+    virtual Status doReadBuffer(BufferHandle buffer, uint64_t offset, void* out, size_t bytes) = 0;
+
+    virtual Result<SamplerHandle> doCreateSampler(const SamplerDesc& desc) = 0;
+    virtual Status doDestroySampler(SamplerHandle sampler) = 0;
+
+    virtual Result<ProgramHandle> doCreateProgram(const CompiledProgram& program) = 0;
+    virtual Status doDestroyProgram(ProgramHandle program) = 0;
+
+    // `info` is what the shared checks made of the desc and its program: the backend keeps it
+    // for objects() to hand to the checks of later draws and dispatches.
+    virtual Result<PipelineHandle> doCreateGraphicsPipeline(const GraphicsPipelineDesc& desc,
+                                                            validation::PipelineInfo info) = 0;
+    virtual Result<PipelineHandle> doCreateComputePipeline(const ComputePipelineDesc& desc,
+                                                           validation::PipelineInfo info) = 0;
+    virtual Status doDestroyPipeline(PipelineHandle pipeline) = 0;
+
+    virtual Result<TimerHandle> doCreateTimer() = 0;
+    virtual Status doDestroyTimer(TimerHandle timer) = 0;
+    virtual Status doBeginTimer(TimerHandle timer) = 0;
+    virtual Status doEndTimer(TimerHandle timer) = 0;
+    virtual Result<TimerReading> doReadTimer(TimerHandle timer) = 0;
+
+    // A renderPass or dispatch inside a replay is only compared with the recorded call (which
+    // was checked when it was recorded); true: the backend took it so, and nothing else happens.
+    virtual bool doReplayCall(const RenderPassDesc* pass, std::span<const DrawDesc> draws, const DispatchDesc* dispatch) {
+        (void)pass, (void)draws, (void)dispatch;
+        return false;
+    }
+    virtual Status doRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) = 0;
+    virtual Status doDispatch(const DispatchDesc& dispatch) = 0;
+    virtual Status doFlush() = 0;
 };
 
 // Byte size of one mip level of a texture.

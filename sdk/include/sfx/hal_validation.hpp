@@ -1,7 +1,7 @@
 // The checks of every HAL call, shared by every backend, so a bad argument gets the same code and
-// message on Vulkan, GL and the null device. A backend gathers the descriptions it keeps (the
-// program's reflection, the pipeline's formats, the bound textures' and buffers' descriptions)
-// and calls these before touching its API. Codes and messages come from the one table of
+// message on Vulkan, GL and the null device. Device's front end (hal_device.cpp) calls them, in
+// one order, with the descriptions the backend keeps (the program's reflection, the pipeline's
+// formats, the bound textures' and buffers' descriptions: ObjectLookup), before any backend work. Codes and messages come from the one table of
 // sfx/validation_errors.hpp. Descriptions and reads/writes: hal_validation.cpp; render passes,
 // draws, dispatches and bindings: hal_validation_commands.cpp.
 #pragma once
@@ -74,24 +74,28 @@ Status pointer(const void* p, std::string_view argument, std::string_view what);
 // The range a buffer binding covers: its size, or the rest of the buffer when size is 0.
 uint64_t boundSize(const BufferBinding& binding, const BufferDesc& buffer);
 
-// The backend's objects as the command checks read them: each call checks the handle (null,
-// foreign, unknown, destroyed) and gives the description the object was made with.
+// The backend's objects as the front end's checks read them (Device::objects()): each call
+// checks the handle (null, foreign, unknown, destroyed) and gives the description the object was
+// made with.
 class ObjectLookup {
 public:
     virtual ~ObjectLookup() = default;
     virtual Result<const TextureDesc*> texture(TextureHandle h, const std::string& argument) const = 0;
     virtual Result<const BufferDesc*> buffer(BufferHandle h, const std::string& argument) const = 0;
     virtual Status sampler(SamplerHandle h, const std::string& argument) const = 0;
+    virtual Result<const ProgramInfo*> program(ProgramHandle h, const std::string& argument) const = 0;
     virtual Result<const PipelineInfo*> pipeline(PipelineHandle h, const std::string& argument) const = 0;
+    virtual Status timer(TimerHandle h, const std::string& argument) const = 0;
 };
 
 // An ObjectLookup over a backend's HandlePools, whose records hold `desc` (textures, buffers)
-// and `info` (pipelines).
-template <class Textures, class Buffers, class Samplers, class Pipelines>
+// and `info` (programs, pipelines). A backend keeps one next to its pools.
+template <class Textures, class Buffers, class Samplers, class Programs, class Pipelines, class Timers>
 class PoolLookup final : public ObjectLookup {
 public:
-    PoolLookup(const Textures& t, const Buffers& b, const Samplers& s, const Pipelines& p)
-        : textures_(t), buffers_(b), samplers_(s), pipelines_(p) {}
+    PoolLookup(const Textures& t, const Buffers& b, const Samplers& s, const Programs& pr, const Pipelines& p,
+               const Timers& ti)
+        : textures_(t), buffers_(b), samplers_(s), programs_(pr), pipelines_(p), timers_(ti) {}
     Result<const TextureDesc*> texture(TextureHandle h, const std::string& argument) const override {
         SFX_TRY(textures_.check(h, argument));
         return &textures_.get(h).desc;
@@ -101,17 +105,31 @@ public:
         return &buffers_.get(h).desc;
     }
     Status sampler(SamplerHandle h, const std::string& argument) const override { return samplers_.check(h, argument); }
+    Result<const ProgramInfo*> program(ProgramHandle h, const std::string& argument) const override {
+        SFX_TRY(programs_.check(h, argument));
+        return &programs_.get(h).info;
+    }
     Result<const PipelineInfo*> pipeline(PipelineHandle h, const std::string& argument) const override {
         SFX_TRY(pipelines_.check(h, argument));
         return &pipelines_.get(h).info;
     }
+    Status timer(TimerHandle h, const std::string& argument) const override { return timers_.check(h, argument); }
 
 private:
     const Textures& textures_;
     const Buffers& buffers_;
     const Samplers& samplers_;
+    const Programs& programs_;
     const Pipelines& pipelines_;
+    const Timers& timers_;
 };
+// The PoolLookup of a backend's six pools.
+template <class Textures, class Buffers, class Samplers, class Programs, class Pipelines, class Timers>
+PoolLookup<Textures, Buffers, Samplers, Programs, Pipelines, Timers> poolLookup(const Textures& t, const Buffers& b,
+                                                                                const Samplers& s, const Programs& pr,
+                                                                                const Pipelines& p, const Timers& ti) {
+    return {t, b, s, pr, p, ti};
+}
 
 // Every check of a render pass and its draws, before anything is recorded: the attachments (at
 // least one, within maxColorAttachments, render targets of the right kind, known load ops, one
