@@ -116,6 +116,8 @@ private:
     Status doEndTimer(TimerHandle timer) override;
     Result<TimerReading> doReadTimer(TimerHandle timer) override;
 
+    // Replaying: the call was checked when it was recorded (the same arguments on the same
+    // objects pass again, and endReplay refuses the recording if objects changed since).
     bool doReplayCall(const RenderPassDesc* pass, std::span<const DrawDesc> draws, const DispatchDesc* dispatch) override {
         return noteCall(pass, draws, dispatch);
     }
