@@ -5,7 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "scene.hpp"  // samples/common: the bunny scene's meshes and camera
+#include "scene.hpp"  // tools/scenes: the bunny scene's meshes and camera
 #include "sfx/gl_device.hpp"
 
 namespace engine_gl {

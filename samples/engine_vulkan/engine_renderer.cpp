@@ -57,7 +57,7 @@ Status EngineRenderer::init(const EngineOptions& options) {
     return writeDescriptorSets();
 }
 
-// The bunny scene of samples/common (glmark2's bunny on a floor), copied into one vertex and
+// The bunny scene of tools/scenes (glmark2's bunny on a floor), copied into one vertex and
 // one index buffer of the host's; its camera orbits the bunny, which turns on the spot.
 Status EngineRenderer::loadScene() {
     Result<tools::Scene> scene = tools::makeScene("bunny");

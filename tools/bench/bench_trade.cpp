@@ -1,4 +1,4 @@
-// bench_trade: the AO techniques' error against ray-traced ground truth (issue 10, items 1-2).
+// bench_trade: the AO techniques' error against ray-traced ground truth.
 // For each sample scene, the truth (tools/truth: Embree, docs/trade.md gives the definition) is
 // traced once per size, radius and sample count and cached under --cache-dir; then for every
 // backend x tier x technique x blur on/off the SDK renders AO of the scene's G-buffer with the

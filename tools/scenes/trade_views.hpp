@@ -1,4 +1,4 @@
-// The views the trade's fit and report score AO on (issue 10): the sample scenes from their own
+// The views the trade's fit and report score AO on: the sample scenes from their own
 // cameras and from cameras moved about their targets, and the analytic scenes. The fit of the
 // techniques' defaults sees only the training views; the report scores held-out views the fit
 // never saw (other cameras of the training scenes, whole scenes it never saw, analytic scenes).

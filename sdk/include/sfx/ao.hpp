@@ -90,7 +90,7 @@ struct AoSettings {
     uint32_t depthLayers = 1;
 };
 
-// The papers' nominal values (the look before the calibration of issue 10).
+// The papers' nominal values (the look before the calibration against ray-traced truth).
 inline constexpr float kAoAlchemyDefaultBias = 1e-4f;
 inline constexpr float kAoScalableDefaultBias = 0.02f;
 inline constexpr float kAoScalableCourseSumExponent = 2.0f;
