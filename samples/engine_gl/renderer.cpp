@@ -109,7 +109,7 @@ sfx::Status Renderer::createGlObjects() {
 }
 
 sfx::Status Renderer::createMeshes() {
-    sfx::Result<sfx::tools::Scene> scene = sfx::tools::makeScene("bunny");
+    sfx::Result<sfx::tools::RasterScene> scene = sfx::tools::makeScene("bunny");
     if (!scene) return scene.status();
     eye_ = scene->eye;
     target_ = scene->target;

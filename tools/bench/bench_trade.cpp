@@ -102,7 +102,7 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
     if (!out) return out.status();
     Status status = Status::ok();
     for (const std::string& name : o.scenes) {
-        Result<tools::Scene> scene = tools::makeScene(name);
+        Result<tools::RasterScene> scene = tools::makeScene(name);
         if (!scene) return scene.status();
         SFX_TRY(renderer.value()->load(scene.value()));
         Result<tools::GBuffer> g = renderer.value()->render(scene.value(), o.width, o.height);

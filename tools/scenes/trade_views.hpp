@@ -27,7 +27,7 @@ std::vector<TradeView> trainingViews();
 std::vector<TradeView> heldOutViews();
 
 // The sample scene with its eye moved as the view says. InvalidArgument for an analytic view.
-Result<Scene> viewScene(const TradeView& view);
+Result<RasterScene> viewScene(const TradeView& view);
 // The geometry and camera the truth traces for the view (its name is view.name()).
 Result<TruthScene> viewTruthScene(const TradeView& view, uint32_t width, uint32_t height);
 

@@ -174,7 +174,7 @@ public:
     const AoDesc& desc() const { return desc_; }
     const AoConfig& config() const { return config_; }
     const LinearDepth& linearDepth() const { return *depth_; }
-    Plan plan() const;
+    EffectPlan plan() const;
 
 private:
     AmbientObscurance(Device& device, const AoDesc& desc);
