@@ -1,7 +1,7 @@
 # cmake --install: headers, the runtime's static libraries, the CMake package
 # (ScalableFXConfig.cmake, its version file, the exported targets), scalablefx.pc and the
 # sfx/sfxc tools. The libraries carry compiled shaders; nothing of glslang, SPIRV-Tools or
-# SPIRV-Cross is installed or needed by a host (tests/check_installed_package.sh proves it).
+# SPIRV-Cross is installed or needed by a host (tests/consumer/run_consumer.sh checks it).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -60,7 +60,7 @@ if(TARGET sfx_backend_gl)
 endif()
 list(TRANSFORM CMAKE_DL_LIBS PREPEND "-l" OUTPUT_VARIABLE SFX_PC_DL)
 list(JOIN SFX_PC_DL " " SFX_PC_DL)
-string(APPEND SFX_PC_LIBS " -lsfx_backend_null -lsfx_tiers -lsfx -lsfx_shaders -lsfx_core ${SFX_PC_DL}")
+string(APPEND SFX_PC_LIBS " -lsfx_backend_null -lsfx_tiers -lsfx_budget -lsfx -lsfx_shaders -lsfx_core ${SFX_PC_DL}")
 # Relocatable: the prefix is found from the .pc file's own folder, so `cmake --install --prefix`
 # anywhere gives a working file.
 file(RELATIVE_PATH SFX_PC_TO_PREFIX /${CMAKE_INSTALL_LIBDIR}/pkgconfig /)

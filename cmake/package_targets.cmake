@@ -1,22 +1,25 @@
 # The names a host links, the same through find_package(ScalableFX CONFIG) and through
 # add_subdirectory(): ScalableFX::sfx (core, effects, tiers), ScalableFX::backends (the
-# composition root with every backend of the build), ScalableFX::vulkan, ScalableFX::gl,
-# ScalableFX::null. The internal target names stay as they are; EXPORT_NAME maps them.
+# composition root with every backend of the build), ScalableFX::budget (settings chosen by a
+# cost budget, sfx/budget.hpp), ScalableFX::vulkan, ScalableFX::gl, ScalableFX::null. The
+# internal target names stay as they are; EXPORT_NAME maps them.
 add_library(sfx_package INTERFACE)
 target_link_libraries(sfx_package INTERFACE sfx sfx_tiers)
 
-set(SFX_PACKAGE_TARGETS sfx_package sfx sfx_core sfx_shaders sfx_tiers sfx_backend_null sfx_backends)
+set(SFX_PACKAGE_TARGETS sfx_package sfx sfx_core sfx_shaders sfx_tiers sfx_budget sfx_backend_null sfx_backends)
 set_target_properties(sfx_package PROPERTIES EXPORT_NAME sfx)
 set_target_properties(sfx PROPERTIES EXPORT_NAME effects)
 set_target_properties(sfx_core PROPERTIES EXPORT_NAME core)
 set_target_properties(sfx_shaders PROPERTIES EXPORT_NAME shaders)
 set_target_properties(sfx_tiers PROPERTIES EXPORT_NAME tiers)
+set_target_properties(sfx_budget PROPERTIES EXPORT_NAME budget)
 set_target_properties(sfx_backend_null PROPERTIES EXPORT_NAME null)
 set_target_properties(sfx_backends PROPERTIES EXPORT_NAME backends)
 add_library(ScalableFX::sfx ALIAS sfx_package)
 add_library(ScalableFX::effects ALIAS sfx)
 add_library(ScalableFX::core ALIAS sfx_core)
 add_library(ScalableFX::tiers ALIAS sfx_tiers)
+add_library(ScalableFX::budget ALIAS sfx_budget)
 add_library(ScalableFX::null ALIAS sfx_backend_null)
 add_library(ScalableFX::backends ALIAS sfx_backends)
 if(TARGET sfx_backend_vulkan)

@@ -162,7 +162,7 @@ int main(int argc, char** argv) {
     //    what it needs: the depth MIP pyramid exists only for the high tier's scalable AO.
     const AoTechnique techniques[] = {AoTechnique::Scalable, AoTechnique::Alchemy, AoTechnique::Crease};
     std::vector<std::unique_ptr<AmbientObscurance>> contexts;
-    Plan plan;
+    EffectPlan plan;
     for (AoTechnique technique : techniques) {
         AoDesc desc;
         desc.width = width;
@@ -187,7 +187,7 @@ int main(int argc, char** argv) {
     if (!aoTarget) return fail(aoTarget.status());
 
     for (const std::string& name : scenes) {
-        Result<tools::Scene> scene = tools::makeScene(name);
+        Result<tools::RasterScene> scene = tools::makeScene(name);
         if (!scene) return fail(scene.status());
         if (Status s = renderer.value()->load(scene.value()); !s) return fail(s);
         std::cout << "[" << name << "] rendering " << width << "x" << height << "\n";
@@ -244,7 +244,7 @@ int main(int argc, char** argv) {
         device->createTexture({width, height, 1, Format::RGBA8, kTextureSampled, "demo-motion-colour"});
     if (!colour) return fail(colour.status());
     for (const MotionCase& mc : motionCases) {
-        Result<tools::Scene> scene = tools::makeScene(mc.scene);
+        Result<tools::RasterScene> scene = tools::makeScene(mc.scene);
         if (!scene) return fail(scene.status());
         if (mc.cameraOnly) {
             scene->eyeVelocity = {0.25, 0.0, 0.0};  // world units per shutter interval

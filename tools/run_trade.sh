@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the trade page (docs/trade.md, issue 10) from a checkout: builds the three programs,
+# Regenerates the trade page (docs/trade.md) from a checkout: builds the three programs,
 # then
 #   1. fit_ao        - refits each technique's look per tier on the training views, starting from
 #                      the tier table's look, and scores the held-out ones (docs/ao_fit.csv, the

@@ -5,7 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "scene.hpp"  // samples/common: the bunny scene's meshes and camera
+#include "scene.hpp"  // tools/scenes: the bunny scene's meshes and camera
 #include "sfx/gl_device.hpp"
 
 namespace engine_gl {
@@ -109,7 +109,7 @@ sfx::Status Renderer::createGlObjects() {
 }
 
 sfx::Status Renderer::createMeshes() {
-    sfx::Result<sfx::tools::Scene> scene = sfx::tools::makeScene("bunny");
+    sfx::Result<sfx::tools::RasterScene> scene = sfx::tools::makeScene("bunny");
     if (!scene) return scene.status();
     eye_ = scene->eye;
     target_ = scene->target;

@@ -57,10 +57,10 @@ Status EngineRenderer::init(const EngineOptions& options) {
     return writeDescriptorSets();
 }
 
-// The bunny scene of samples/common (glmark2's bunny on a floor), copied into one vertex and
+// The bunny scene of tools/scenes (glmark2's bunny on a floor), copied into one vertex and
 // one index buffer of the host's; its camera orbits the bunny, which turns on the spot.
 Status EngineRenderer::loadScene() {
-    Result<tools::Scene> scene = tools::makeScene("bunny");
+    Result<tools::RasterScene> scene = tools::makeScene("bunny");
     if (!scene) return scene.status();
     Result<CameraProjection> camera = scene->projection(options_.width, options_.height, ClipDepthRange::ZeroToOne);
     if (!camera) return camera.status();

@@ -324,7 +324,7 @@ TEST_CASE("ao: plan holds a depth MIP only for high-tier Scalable, blur targets 
             s.blur = blur;
             auto ao = AmbientObscurance::create(dev, {64, 32, test::tierProfile(), s});
             REQUIRE(ao.isOk());
-            const Plan plan = ao.value()->plan();
+            const EffectPlan plan = ao.value()->plan();
             bool mip = false, blurPass = false;
             for (const PlannedPass& p : plan.passes) {
                 mip |= p.name.rfind("depth_mip", 0) == 0;
@@ -348,7 +348,7 @@ TEST_CASE("ao: at half resolution the plan holds half-size passes and textures a
             s.resolution = AoResolution::Half;
             auto ao = AmbientObscurance::create(dev, {65, 33, profile, s});
             REQUIRE(ao.isOk());
-            const Plan plan = ao.value()->plan();
+            const EffectPlan plan = ao.value()->plan();
             // Depth MIP level 1 is the half-size depth only where the pyramid exists anyway.
             const bool mipHalf = t == AoTechnique::Scalable && profile.aoUsesDepthMip;
             size_t halfPasses = 0, upsample = 0, halfDepthPass = 0;
@@ -457,7 +457,7 @@ TEST_CASE("ao: profiling times exactly the planned passes and leaves the output 
             Result<std::vector<PassTiming>> timings = ao.passTimings();
             INFO(timings.status().toString());
             REQUIRE(timings.isOk());
-            const Plan plan = ao.plan();
+            const EffectPlan plan = ao.plan();
             REQUIRE(timings->size() == plan.passes.size());
             for (size_t i = 0; i < plan.passes.size(); ++i) {
                 CHECK(timings.value()[i].effect == plan.passes[i].effect);

@@ -181,7 +181,7 @@ TEST_CASE("rasterised hardware depth linearises to the scene's distances", "[dep
     auto renderer = tools::SceneRenderer::create(device, test::tier());
     INFO(renderer.status().toString());
     REQUIRE(renderer.isOk());
-    tools::Scene scene = tools::makeScene("contact").value();
+    tools::RasterScene scene = tools::makeScene("contact").value();
     SFX_REQUIRE_OK(renderer.value()->load(scene));
     auto g = renderer.value()->render(scene, W, H);
     INFO(g.status().toString());
@@ -255,13 +255,13 @@ TEST_CASE("LinearDepth plan holds only what the tier needs", "[depth][plan]") {
     Device& device = test::device();
     auto flat = LinearDepth::create(device, {64, 64, test::tier(), 1});
     REQUIRE(flat.isOk());
-    Plan p = flat.value()->plan();
+    EffectPlan p = flat.value()->plan();
     CHECK(p.passes.size() == 1);
     CHECK(p.bytesOf("depth") == 64 * 64 * 4 + 32);
     if (test::tier() == Tier::High) {
         auto mip = LinearDepth::create(device, {64, 64, Tier::High, 3});
         REQUIRE(mip.isOk());
-        Plan pm = mip.value()->plan();
+        EffectPlan pm = mip.value()->plan();
         CHECK(pm.passes.size() == 3);
         CHECK(pm.bytesOf("depth") == (64 * 64 + 32 * 32 + 16 * 16) * 4 + 32);
     }
@@ -274,7 +274,7 @@ TEST_CASE("LinearDepth: linear input without a pyramid runs no pass and holds no
     REQUIRE(through.isOk());
     CHECK(through.value()->passThrough());
     // Known before any dispatch: no pass, no texture, no uniform buffer.
-    const Plan p = through.value()->plan();
+    const EffectPlan p = through.value()->plan();
     CHECK(p.passes.empty());
     CHECK(p.bytesOf("depth") == 0);
     CHECK(through.value()->texture().isNull());
@@ -324,7 +324,7 @@ TEST_CASE("LinearDepth: readers that linearize get the host's depth and the cons
     auto readers = LinearDepth::create(device, desc);
     REQUIRE(readers.isOk());
     CHECK(readers.value()->passThrough());
-    const Plan p = readers.value()->plan();
+    const EffectPlan p = readers.value()->plan();
     CHECK(p.passes.empty());
     REQUIRE(p.resources.size() == 1);  // the constants the readers use, nothing else
     CHECK(p.resources[0].name.find("linearize params") != std::string::npos);

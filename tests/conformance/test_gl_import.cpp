@@ -240,7 +240,7 @@ TEST_CASE("gl import: motion blur writes a host texture, bit for bit as output()
     HostGl& hostGl = played.gl;
     Device& d = *played.sdk;
 
-    const reference::Scene scene = test::movingAndStillLayersScene();
+    const reference::MotionScene scene = test::movingAndStillLayersScene();
     const reference::SceneFrame f = scene.render(0);
     const uint32_t w = scene.width, h = scene.height;
     const uint32_t outName = hostGl.texture(0x881A /* GL_RGBA16F */, w, h);

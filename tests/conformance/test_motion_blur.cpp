@@ -91,7 +91,7 @@ TEST_CASE("motion blur: zero velocity returns the input exactly", "[motion_blur]
 }
 
 TEST_CASE("motion blur: matches the reference on a scene with moving and still layers", "[motion_blur][conformance]") {
-    const Scene scene = test::movingAndStillLayersScene();
+    const MotionScene scene = test::movingAndStillLayersScene();
     const SceneFrame f = scene.render(0);
     const ColorGrid c = toHalfGrid(f.color);
     for (float radius : {0.0f, 7.0f}) {
@@ -153,7 +153,7 @@ TEST_CASE("motion blur: moving object blurs past its silhouette, still ones stay
     box.velocityPx = {16, 0}, box.colorA = {1, 0.9, 0.1, 1};
     const MotionBlurSettings s = pixelSettings(10);
 
-    Scene moving{64, 32, {bg, box}};
+    MotionScene moving{64, 32, {bg, box}};
     SceneFrame f = moving.render(0);
     f.color = toHalfGrid(f.color);
     ColorGrid out = runGpu(f.color, f.depth, &f.velocity, s);
@@ -166,7 +166,7 @@ TEST_CASE("motion blur: moving object blurs past its silhouette, still ones stay
     mbg.velocityPx = {16, 0};
     SceneLayer still = box;
     still.velocityPx = {0, 0}, still.cell = 2;
-    Scene s2{64, 32, {mbg, still}};
+    MotionScene s2{64, 32, {mbg, still}};
     f = s2.render(0);
     f.color = toHalfGrid(f.color);
     out = runGpu(f.color, f.depth, &f.velocity, s);
@@ -179,7 +179,7 @@ TEST_CASE("motion blur: moving object blurs past its silhouette, still ones stay
     occluder.halfSize = {4, 12};
     SceneLayer behind = box;
     behind.depth = 10, behind.centre = {24, 16};
-    Scene s3{64, 32, {bg, behind, occluder}};
+    MotionScene s3{64, 32, {bg, behind, occluder}};
     f = s3.render(0);
     f.color = toHalfGrid(f.color);
     out = runGpu(f.color, f.depth, &f.velocity, s);
@@ -257,7 +257,7 @@ TEST_CASE("motion blur: bad inputs are named errors", "[motion_blur][conformance
     st = mb.value()->dispatch(inputs, {});  // colour still 32x16
     CHECK(st.code() == StatusCode::InvalidArgument);
     CHECK(st.message().find("color size") != std::string::npos);
-    const Plan plan = mb.value()->plan();
+    const EffectPlan plan = mb.value()->plan();
     CHECK(plan.passes.size() == 5);  // linearize + 4 motion blur passes
     CHECK(plan.bytesOf("motion_blur") > 0);
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
@@ -269,7 +269,7 @@ TEST_CASE("motion blur: bad inputs are named errors", "[motion_blur][conformance
 // leaves the host's texture alone.
 TEST_CASE("motion blur: a host output texture gets the bits of output()", "[motion_blur][conformance]") {
     Device& d = test::device();
-    const Scene scene = test::movingAndStillLayersScene();
+    const MotionScene scene = test::movingAndStillLayersScene();
     const SceneFrame f = scene.render(0);
     const uint32_t w = scene.width, h = scene.height;
     Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {w, h, test::tierProfile(), Format::RGBA16F, DepthKind::Linear});
@@ -322,7 +322,7 @@ TEST_CASE("motion blur: linear depth read in place gives the same output as the 
     for (DepthKind input : {DepthKind::Hardware, DepthKind::Linear}) {
         Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {32, 16, test::tierProfile(), Format::RGBA16F, input});
         REQUIRE(mb.isOk());
-        const Plan plan = mb.value()->plan();
+        const EffectPlan plan = mb.value()->plan();
         CHECK(plan.passes.size() == (input == DepthKind::Linear ? 4u : 5u));
         CHECK((plan.bytesOf("depth") > 0) == (input == DepthKind::Hardware));
     }

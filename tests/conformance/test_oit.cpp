@@ -48,7 +48,7 @@ glm::mat4 projection() {
 }
 double windowDepth(double viewDepth) { return (viewDepth - kNear) / (kFar - kNear); }
 
-struct Scene {
+struct OitScene {
     std::vector<Layer> layers;
     // Opaque: left half sky (depth 1, the background colour), right half a surface at view depth 6.
     glm::dvec3 background{0.2, 0.4, 0.6};
@@ -68,7 +68,7 @@ struct Gpu {
 // Renders `frames` frames of the scene (draws in the given order) and reads the last one back.
 // Two by default: the first frame's pool is a guess (4 nodes per pixel), the second is sized
 // from the first's count, as a host's steady scene is.
-Gpu render(const Scene& scene, const std::vector<size_t>& order, uint64_t initialPoolNodes = 0, int frames = 2,
+Gpu render(const OitScene& scene, const std::vector<size_t>& order, uint64_t initialPoolNodes = 0, int frames = 2,
            std::vector<TransparencyStats>* perFrame = nullptr, uint32_t maxLayers = 0) {
     Device& dev = test::device();
     TransparencyDesc desc;
@@ -159,7 +159,7 @@ std::vector<size_t> identity(size_t n) {
 }
 
 // The pixel's fragments and opaque surface for the references (colours as the GPU holds them).
-std::vector<OitFragment> fragmentsAt(const Scene& scene) {
+std::vector<OitFragment> fragmentsAt(const OitScene& scene) {
     std::vector<OitFragment> f;
     for (const Layer& l : scene.layers) {
         OitFragment fr;
@@ -171,7 +171,7 @@ std::vector<OitFragment> fragmentsAt(const Scene& scene) {
     }
     return f;
 }
-OpaqueSurface opaqueAt(const Scene& scene, uint32_t x) {
+OpaqueSurface opaqueAt(const OitScene& scene, uint32_t x) {
     OpaqueSurface o;
     o.color = scene.surfaceAt(x) ? scene.surface : scene.background;
     for (int c = 0; c < 3; ++c) o.color[c] = roundHalf(o.color[c]);
@@ -181,7 +181,7 @@ OpaqueSurface opaqueAt(const Scene& scene, uint32_t x) {
 
 // The worst channel difference against a per-pixel reference.
 template <class Ref>
-double worstError(const Gpu& g, const Scene& scene, Ref reference) {
+double worstError(const Gpu& g, const OitScene& scene, Ref reference) {
     double worst = 0;
     for (uint32_t y = 0; y < kH; ++y)
         for (uint32_t x = 0; x < kW; ++x) {
@@ -191,10 +191,10 @@ double worstError(const Gpu& g, const Scene& scene, Ref reference) {
     return worst;
 }
 
-Scene layeredScene(uint32_t n, uint32_t seed, double maxOpacity = 0.8) {
+OitScene layeredScene(uint32_t n, uint32_t seed, double maxOpacity = 0.8) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(0.0, 1.0);
-    Scene s;
+    OitScene s;
     for (uint32_t i = 0; i < n; ++i)
         s.layers.push_back({1.0 + 8.0 * double(i) / double(n), {u(rng), u(rng), u(rng)}, 0.1 + (maxOpacity - 0.1) * u(rng), 10 + i});
     std::shuffle(s.layers.begin(), s.layers.end(), rng);
@@ -204,7 +204,7 @@ Scene layeredScene(uint32_t n, uint32_t seed, double maxOpacity = 0.8) {
 }  // namespace
 
 TEST_CASE("oit: N translucent layers composite to the exact sorted result", "[oit]") {
-    const Scene scene = layeredScene(5, 1);
+    const OitScene scene = layeredScene(5, 1);
     const Gpu g = render(scene, identity(scene.layers.size()));
     const double exact = worstError(g, scene, compositeExact);
     const double weighted = worstError(g, scene, compositeWeightedBlended);
@@ -223,7 +223,7 @@ TEST_CASE("oit: N translucent layers composite to the exact sorted result", "[oi
 
 TEST_CASE("oit: more layers than K keep the nearest K exact and fold the rest (high tier)", "[oit]") {
     if (test::tier() != Tier::High) return;  // the fallback has no K
-    const Scene scene = layeredScene(22, 2, 0.3);
+    const OitScene scene = layeredScene(22, 2, 0.3);
     // The quality's K (16), and K = 4 through TransparencyDesc::maxLayers.
     for (uint32_t maxLayers : {0u, 4u}) {
         const Gpu g = render(scene, identity(scene.layers.size()), 0, 2, nullptr, maxLayers);
@@ -235,7 +235,7 @@ TEST_CASE("oit: more layers than K keep the nearest K exact and fold the rest (h
 }
 
 TEST_CASE("oit: shuffled draw order gives the same output", "[oit]") {
-    const Scene scene = layeredScene(20, 3, 0.5);
+    const OitScene scene = layeredScene(20, 3, 0.5);
     const Gpu a = render(scene, identity(scene.layers.size()));
     std::vector<size_t> order = identity(scene.layers.size());
     std::mt19937 rng(7);
@@ -253,7 +253,7 @@ TEST_CASE("oit: shuffled draw order gives the same output", "[oit]") {
 }
 
 TEST_CASE("oit: equal depths are ordered by draw id, not by draw order", "[oit]") {
-    Scene scene;
+    OitScene scene;
     scene.layers = {{3.0, {1, 0, 0}, 0.5, 1}, {3.0, {0, 1, 0}, 0.5, 2}, {3.0, {0, 0, 1}, 0.5, 3}};
     const Gpu a = render(scene, {0, 1, 2});
     const Gpu b = render(scene, {2, 0, 1});
@@ -264,14 +264,14 @@ TEST_CASE("oit: equal depths are ordered by draw id, not by draw order", "[oit]"
 }
 
 TEST_CASE("oit: opacity 0 changes nothing; opacity 1 matches the opaque path", "[oit]") {
-    Scene base = layeredScene(3, 4, 0.6);
+    OitScene base = layeredScene(3, 4, 0.6);
     const Gpu without = render(base, identity(base.layers.size()));
-    Scene withClear = base;
+    OitScene withClear = base;
     withClear.layers.push_back({2.5, {1, 1, 1}, 0.0, 99});
     const Gpu with = render(withClear, identity(withClear.layers.size()));
     CHECK(with.raw == without.raw);
 
-    Scene solid;
+    OitScene solid;
     solid.layers = {{2.0, {0.25, 0.5, 0.75}, 1.0, 1}};
     const Gpu g = render(solid, {0});
     double worst = 0;
@@ -289,7 +289,7 @@ TEST_CASE("oit: opacity 0 changes nothing; opacity 1 matches the opaque path", "
 
 TEST_CASE("oit: a pool smaller than the scene counts what it drops and grows the next frame (high tier)", "[oit]") {
     if (test::tier() != Tier::High) return;
-    const Scene scene = layeredScene(6, 5);
+    const OitScene scene = layeredScene(6, 5);
     const uint64_t inFront = uint64_t(std::count_if(scene.layers.begin(), scene.layers.end(),
                                                     [&](const Layer& l) { return l.depth < scene.surfaceDepth; }));
     const uint64_t fragments = uint64_t(kH) * (kW / 2) * (6 + inFront);
@@ -309,7 +309,7 @@ TEST_CASE("oit: a pool smaller than the scene counts what it drops and grows the
 
 TEST_CASE("oit: an overflowing frame stays in range and keeps each pixel's stored layers in order (high tier)", "[oit]") {
     if (test::tier() != Tier::High) return;
-    const Scene scene = layeredScene(6, 6);
+    const OitScene scene = layeredScene(6, 6);
     const Gpu g = render(scene, identity(scene.layers.size()), 150, 1);
     CHECK(g.stats.dropped > 0);
     // Every pixel is the exact composite of some subset of its layers: within the convex hull
@@ -325,10 +325,10 @@ TEST_CASE("oit: an overflowing frame stays in range and keeps each pixel's store
 TEST_CASE("oit: weighted blended error against the exact sorted result is bounded (current tier)", "[oit]") {
     if (test::tier() != Tier::Current) return;
     // Low opacities in the weight's depth range: the case weighted blending is made for.
-    const Scene gentle = layeredScene(4, 8, 0.3);
+    const OitScene gentle = layeredScene(4, 8, 0.3);
     const double gentleError = worstError(render(gentle, identity(4)), gentle, compositeExact);
     // High opacities: its known failure (docs/oit.md).
-    const Scene hard = layeredScene(4, 9, 0.95);
+    const OitScene hard = layeredScene(4, 9, 0.95);
     const double hardError = worstError(render(hard, identity(4)), hard, compositeExact);
     WARN("weighted blended vs exact, worst channel: opacity <= 0.3: " << gentleError << ", <= 0.95: " << hardError);
     // Measured 0.18 and 0.11 on every backend (docs/oit.md); the bound is the measurement

@@ -525,7 +525,7 @@ TEST_CASE("oit layers: settings out of range are refused by name; the plan names
     d.ao.occluders = TransparencyAoOccluders::Compressed;
     r = Transparency::create(dev, d);
     REQUIRE(r.isOk());
-    const Plan p = r.value()->plan(true);
+    const EffectPlan p = r.value()->plan(true);
     std::string names;
     for (const PlannedPass& pass : p.passes) names += pass.name + "\n";
     INFO(names);

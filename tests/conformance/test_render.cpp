@@ -41,7 +41,7 @@ tiers::TierChoice testTier() {
     return t.value();
 }
 
-render::RenderResult renderWith(const scene::Scene& scene, const render::RenderOptions& options, render::RenderPlan* plan = nullptr) {
+render::RenderResult renderWith(const scene::Scene& scene, const render::RenderOptions& options, render::FramePlan* plan = nullptr) {
     auto r = render::SceneRender::create(test::device(), testTier(), scene, options);
     INFO(r.status().toString());
     REQUIRE(r.isOk());
@@ -52,7 +52,7 @@ render::RenderResult renderWith(const scene::Scene& scene, const render::RenderO
     return std::move(out.value());
 }
 
-bool hasPass(const render::RenderPlan& plan, const std::string& effect) {
+bool hasPass(const render::FramePlan& plan, const std::string& effect) {
     return std::any_of(plan.lines.begin(), plan.lines.end(), [&](const render::PlanLine& l) {
         return l.kind != render::PlanLine::Kind::Omitted && l.effect == effect;
     });
@@ -67,7 +67,7 @@ TEST_CASE("scene renderer: unlit and background exact, AO only darkens lambert s
     render::RenderOptions on;
     on.ao = AoTechnique::Alchemy;
     on.aoRadius = 0.4f;
-    render::RenderPlan offPlan, onPlan;
+    render::FramePlan offPlan, onPlan;
     const render::RenderResult a = renderWith(scene, off, &offPlan);
     const render::RenderResult b = renderWith(scene, on, &onPlan);
     REQUIRE(a.color.width == 64);
@@ -113,7 +113,7 @@ TEST_CASE("scene renderer: translucent objects through sfx::Transparency, or not
     text.replace(text.find(unlitKey), unlitKey.size(), unlitKey + ", \"opacity\": 0.5");
     const scene::Scene scene = loadScene(text);
     render::RenderOptions options;
-    render::RenderPlan plan;
+    render::FramePlan plan;
     const render::RenderResult r = renderWith(scene, options, &plan);
     CHECK(r.warnings.empty());
     CHECK(hasPass(plan, "transparency"));
@@ -125,7 +125,7 @@ TEST_CASE("scene renderer: translucent objects through sfx::Transparency, or not
 
     render::RenderOptions off;
     off.oit = false;
-    render::RenderPlan offPlan;
+    render::FramePlan offPlan;
     const render::RenderResult o = renderWith(scene, off, &offPlan);
     REQUIRE(o.warnings.size() == 1);
     CHECK(o.warnings[0].find("--oit off: 1 transparent") != std::string::npos);
@@ -175,7 +175,7 @@ TEST_CASE("scene renderer: --ao-layers 2 peels a layer on the high tier, a named
         CHECK(r.status().message().find("current tier") != std::string::npos);
         return;
     }
-    render::RenderPlan plan;
+    render::FramePlan plan;
     const render::RenderResult multi = renderWith(scene, o, &plan);
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
     size_t peels = 0, layerBytes = 0;

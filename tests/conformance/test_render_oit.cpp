@@ -57,7 +57,7 @@ scene::Scene loadScene(const char* name) {
     return s.value();
 }
 
-render::RenderResult renderScene(const scene::Scene& scene, std::vector<uint32_t> order = {}, render::RenderPlan* plan = nullptr) {
+render::RenderResult renderScene(const scene::Scene& scene, std::vector<uint32_t> order = {}, render::FramePlan* plan = nullptr) {
     Result<tiers::TierChoice> tier = tiers::choose(test::device().caps(), test::tier());
     REQUIRE(tier.isOk());
     render::RenderOptions o;
@@ -229,7 +229,7 @@ Errors compare(const scene::Scene& scene, const render::RenderResult& r) {
 
 void checkScene(const char* name, size_t minCovered) {
     const scene::Scene scene = loadScene(name);
-    render::RenderPlan plan;
+    render::FramePlan plan;
     const render::RenderResult r = renderScene(scene, {}, &plan);
     const Errors e = compare(scene, r);
     INFO(name << " on " << test::label() << ": worst " << e.worst << " (vs exact sort " << e.worstExact << "), " << e.covered
@@ -308,7 +308,7 @@ TEST_CASE("scene renderer OIT: a scene without translucent objects plans no OIT 
     scene::Scene scene = loadScene("panes.json");
     scene.objects.erase(std::remove_if(scene.objects.begin(), scene.objects.end(), [](const scene::SceneObject& o) { return o.translucent(); }),
                         scene.objects.end());
-    render::RenderPlan plan;
+    render::FramePlan plan;
     const render::RenderResult r = renderScene(scene, {}, &plan);
     for (const render::PlanLine& l : plan.lines)
         if (l.effect == "transparency") CHECK(l.kind == render::PlanLine::Kind::Omitted);

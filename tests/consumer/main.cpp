@@ -3,6 +3,7 @@
 // README.md's "Using it from an engine" code character for character
 // (tests/check_readme_snippet.sh compares them); main() below runs it on a GL ES device and
 // checks the AO it computes, so the README's code cannot rot.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "sfx/backends.hpp"
+#include "sfx/budget.hpp"
 
 // sfx-readme-begin
 #include "sfx/ao.hpp"
@@ -81,9 +83,40 @@ int fail(const std::string& what) {
     return 1;
 }
 
+// The budget library links from the package: candidates from each tier's presets, and a choice
+// on a hand-made cost table (no device timing, so it runs without a GPU).
+int checkBudget() {
+    for (const sfx::tiers::TierRow& row : sfx::tiers::table()) {
+        std::vector<sfx::budget::Candidate> candidates =
+            sfx::budget::candidates(sfx::budget::Effect::AmbientObscurance, sfx::tiers::row(row.tier).presets);
+        if (candidates.empty()) return fail(std::string("no AO budget candidates for tier ") + sfx::toString(row.tier));
+        sfx::budget::CostTable table;
+        table.device = "consumer";
+        table.tier = row.tier;
+        table.width = kWidth;
+        table.height = kHeight;
+        for (size_t i = 0; i < candidates.size(); ++i)  // dearer the later, so the budget decides
+            table.entries.push_back({candidates[i], 1.0 + double(i)});
+        sfx::Result<sfx::budget::Choice> cheapest = sfx::budget::choose(table, 1.0);
+        if (!cheapest) return fail("budget::choose: " + cheapest.status().toString());
+        if (cheapest->chosen.candidate.name() != candidates.front().name())
+            return fail("a 1 ms budget chose " + cheapest->chosen.candidate.name());
+        double bestPsnr = 0;
+        for (const sfx::budget::Candidate& c : candidates) bestPsnr = std::max(bestPsnr, c.psnrDb);
+        sfx::Result<sfx::budget::Choice> any = sfx::budget::choose(table, 1000.0);
+        if (!any || any->chosen.candidate.psnrDb != bestPsnr) return fail("a budget every entry fits did not choose the most accurate");
+        sfx::Result<sfx::budget::Choice> none = sfx::budget::choose(table, 0.5);
+        if (none || none.status().code() != sfx::StatusCode::OverBudget)
+            return fail("a budget under every cost is not OverBudget: " + none.status().toString());
+    }
+    return 0;
+}
+
 }  // namespace
 
 int main() {
+    if (int failed = checkBudget()) return failed;
+
     // wrapHostDevice links and runs: without host objects it is a named error, not a crash.
     sfx::Result<std::unique_ptr<sfx::Device>> none = engine::wrapHostDevice({});
     if (none || none.status().code() != sfx::StatusCode::InvalidArgument)

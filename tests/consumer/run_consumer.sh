@@ -3,8 +3,9 @@
 #   run_consumer.sh package|subdirectory <SDK build dir> <SDK source dir> <work dir> [compiler launcher]
 # package: cmake --install into <work dir>/prefix; checks what is there (headers, libraries,
 # CMake package with version file, scalablefx.pc, sfx and sfxc) and that no installed library
-# needs glslang, SPIRV-Tools or SPIRV-Cross; builds and runs this folder's project through
-# find_package(ScalableFX CONFIG) and through pkg-config.
+# needs glslang, SPIRV-Tools or SPIRV-Cross; compiles every installed header alone against the
+# exported targets; builds and runs this folder's project through find_package(ScalableFX
+# CONFIG) and through pkg-config.
 # subdirectory: builds and runs the same project with add_subdirectory(<SDK source dir>),
 # compiling the shaders with the installed sfxc (SFX_SFXC_EXECUTABLE, as a cross build does).
 set -eu
@@ -26,13 +27,13 @@ if [ "$mode" = package ]; then
     mkdir -p "$work"
     cmake --install "$build" --prefix "$prefix" >"$work/install.log" || { cat "$work/install.log"; fail "cmake --install"; }
     libdir=$(dirname "$(find "$prefix" -name ScalableFXConfig.cmake)")/../..
-    for f in include/sfx/ao.hpp include/sfx/motion_blur.hpp include/sfx/tiers.hpp include/sfx/backends.hpp \
+    for f in include/sfx/ao.hpp include/sfx/motion_blur.hpp include/sfx/tiers.hpp include/sfx/budget.hpp include/sfx/backends.hpp \
              include/sfx/vulkan_device.hpp include/sfx/gl_device.hpp include/sfx_shaders.hpp \
              include/sfx/shader_include/sfx_shared.h bin/sfx bin/sfxc; do
         [ -e "$prefix/$f" ] || fail "$f is not installed"
     done
     for f in cmake/ScalableFX/ScalableFXConfig.cmake cmake/ScalableFX/ScalableFXConfigVersion.cmake \
-             pkgconfig/scalablefx.pc libsfx.a libsfx_core.a libsfx_backends.a; do
+             pkgconfig/scalablefx.pc libsfx.a libsfx_core.a libsfx_backends.a libsfx_budget.a; do
         [ -e "$libdir/$f" ] || fail "lib/$f is not installed"
     done
     [ ! -e "$prefix/include/sfx/reference" ] || fail "the CPU references (test code) are installed"
@@ -48,9 +49,14 @@ if [ "$mode" = package ]; then
     done
     if ldd "$prefix/bin/sfx" | grep -i 'glslang\|SPIRV'; then fail "bin/sfx loads a shader compiler"; fi
 
-    cmake -S "$here" -B "$work/package" -DCMAKE_PREFIX_PATH="$prefix" $launch >"$work/configure.log" ||
-        { cat "$work/configure.log"; fail "configure with find_package(ScalableFX CONFIG)"; }
-    cmake --build "$work/package" >"$work/build.log" || { cat "$work/build.log"; fail "build against the package"; }
+    # With the prefix's include folder named, the project also compiles every installed header
+    # on its own against the exported targets (sfx_header_check).
+    cmake -S "$here" -B "$work/package" -DCMAKE_PREFIX_PATH="$prefix" -DSFX_CONSUMER_INCLUDE_DIR="$prefix/include" \
+          $launch >"$work/configure.log" || { cat "$work/configure.log"; fail "configure with find_package(ScalableFX CONFIG)"; }
+    grep 'sfx_header_check:' "$work/configure.log"
+    cmake --build "$work/package" --parallel 2 >"$work/build.log" ||
+        { cat "$work/build.log"; fail "build against the package (sfx_header_check: every installed header alone)"; }
+    "$work/package/sfx_header_check" || fail "sfx_header_check"
     run "$work/package/sfx_consumer"
 
     # pkg-config, as a build without CMake would use it.

@@ -137,7 +137,7 @@ void compareAo(Tier tier) {
 void compareMotionBlur(Tier tier) {
     SFX_OPEN_AT_LEAST_TWO(devices, tier);
     using namespace reference;
-    const Scene scene = test::movingAndStillLayersScene();
+    const MotionScene scene = test::movingAndStillLayersScene();
     const SceneFrame f = scene.render(0);
     for (float radius : {0.0f, 7.0f}) {
         MotionBlurSettings s;

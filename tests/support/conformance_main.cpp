@@ -36,7 +36,7 @@ std::vector<std::string> takeValidationMessages() {
 
 std::string outputDir() {
     const char* env = std::getenv("SFX_TEST_OUTPUT");
-    std::string dir = env && *env ? env : "test-output";
+    std::string dir = env && *env ? env : SFX_TEST_OUTPUT_DEFAULT;
     std::filesystem::create_directories(dir);
     return dir;
 }

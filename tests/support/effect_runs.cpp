@@ -91,8 +91,8 @@ AoSettings aoTestSettings(AoTechnique t, double scale) {
     return s;
 }
 
-Scene movingAndStillLayersScene() {
-    Scene scene{96, 54, {}};
+MotionScene movingAndStillLayersScene() {
+    MotionScene scene{96, 54, {}};
     SceneLayer bg;
     bg.depth = 30, bg.cell = 6, bg.colorA = {0.25, 0.3, 0.35, 1}, bg.colorB = {0.6, 0.55, 0.5, 1}, bg.velocityPx = {-6, 2};
     SceneLayer disc;

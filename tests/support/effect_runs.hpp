@@ -16,7 +16,7 @@ namespace sfx::test {
 struct GpuAo {
     reference::Grid visibility;
     AoConfig config;
-    Plan plan;
+    EffectPlan plan;
 };
 
 // The AO tests' settings for technique `t` at world scale `scale`: radius 0.5, Scalable at
@@ -25,7 +25,7 @@ AoSettings aoTestSettings(AoTechnique t, double scale = 1.0);
 
 // A 96x54 motion blur scene: a checkered background moving (-6, 2) px, a disc moving (22, 6)
 // px, and a still post in front of both.
-reference::Scene movingAndStillLayersScene();
+reference::MotionScene movingAndStillLayersScene();
 
 // The first of `wanted` the device renders to (or samples), else RGBA8.
 Format pickFormat(Device& device, std::initializer_list<Format> wanted, bool renderable);

@@ -23,7 +23,8 @@ std::string label();               // "vulkan/high" for messages and file names
 // Validation messages (Vulkan layers, GL errors) seen so far; also fails the run at exit.
 std::vector<std::string> takeValidationMessages();
 
-// Where tests write diff images and other artifacts: $SFX_TEST_OUTPUT or build/test-output.
+// Where tests write diff images and other artifacts: $SFX_TEST_OUTPUT or the build tree's
+// test-output (whatever the working directory, so nothing lands in the source tree).
 std::string outputDir();
 
 // A window position (pixels) snapped to the device's sub-pixel grid (to nearest), as its

@@ -99,7 +99,7 @@ TEST_CASE("motion blur reference: uniform horizontal motion blurs only along row
 TEST_CASE("motion blur reference: moving object blurs past its silhouette; still objects stay sharp", "[motion_blur]") {
     for (Tier tier : kTiers) {
         const MotionBlurParams p = params(tier, 10);
-        Scene scene{64, 32, {}};
+        MotionScene scene{64, 32, {}};
         SceneLayer bg;  // still checker background, far
         bg.depth = 20, bg.cell = 4, bg.colorA = {0.2, 0.2, 0.2, 1}, bg.colorB = {0.4, 0.4, 0.4, 1};
         SceneLayer box;  // a bright box in front, moving right 16 px across the shutter
@@ -118,7 +118,7 @@ TEST_CASE("motion blur reference: moving object blurs past its silhouette; still
             for (int ch = 0; ch < 4; ++ch) CHECK(r.color.at(x, 8)[ch] == Approx(f.color.at(x, 8)[ch]).margin(1e-12));
 
         // Still object in front of a moving background: the object stays exactly sharp.
-        Scene s2{64, 32, {}};
+        MotionScene s2{64, 32, {}};
         SceneLayer mbg = bg;
         mbg.velocityPx = {16, 0};
         SceneLayer still = box;
@@ -134,7 +134,7 @@ TEST_CASE("motion blur reference: moving object blurs past its silhouette; still
         CHECK(maxAbsDiff(r2.color, f2.color) > 0.05);
 
         // Depth sign: a moving object *behind* a still occluder does not bleed over it.
-        Scene s3{64, 32, {}};
+        MotionScene s3{64, 32, {}};
         SceneLayer occluder = still;
         occluder.depth = 5, occluder.halfSize = {4, 12};
         SceneLayer behind = box;

@@ -69,9 +69,9 @@ TEST_CASE("tier table: a row per tier, in order, each with its default preset fi
 
 TEST_CASE("tier table: the default presets hold the parameters the tiers always had", "[tiers]") {
     // Written out here, apart from the table, so that moving the values into it changed none.
-    // Scalable's clamp and crease's spacing are output pixels at 720 rows since 2026-12-04: the
-    // clamp the 20 half-size texels it was at 320x180, where the looks were fitted; the spacing
-    // 2 half-size pixels there (it was 1), which scored better held out (docs/trade.md).
+    // Scalable's clamp and crease's spacing are output pixels at 720 rows: the clamp is 20
+    // half-size texels at 320x180, where the looks were fitted; the spacing 2 half-size pixels
+    // there, which scored better held out than 1 (docs/trade.md).
     TierProfile expected[kTierCount];
     expected[0] = {.tier = Tier::Current, .aoScalableTaps = 4, .aoScalableMirrored = true, .aoScalableMaxRadiusPx = 160.0f,
                    .aoUsesDepthMip = false, .aoDepthMipLevels = 1, .aoAlchemySamples = 6, .aoBlurRadiusPx = 2, .aoCreaseTaps = 12,

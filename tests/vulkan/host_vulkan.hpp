@@ -16,7 +16,7 @@
 
 namespace sfx::hostvk {
 
-// A host engine: the engine sample's raw Vulkan layer (samples/engine_vulkan/vk_host.hpp: an
+// A host engine: the engine sample's raw Vulkan layer (tools/vk_host/vk_host.hpp: an
 // instance with the validation layer and synchronization validation, a 1.3 device with dynamic
 // rendering, one queue), plus a command buffer. It leaves synchronization2 off (the engine
 // sample turns it on), so these tests keep the SDK's barriers without it, one

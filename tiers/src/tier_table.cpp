@@ -70,7 +70,7 @@ TierProfile currentDefault() {
     p.aoAlchemySamples = 6;
     p.aoBlurRadiusPx = 2;  // 5-tap separable bilateral
     // Crease's diamond halved by checkerboard (the blur completes it): its 24 fetches made the
-    // current tier's crease the one default over issue 10's 12 copy passes (docs/trade.md).
+    // current tier's crease the one default over the 12-copy-pass cost goal (docs/trade.md).
     p.aoCreaseTaps = 12;
     // The diamond's tap spacing: 12 output pixels at 720 rows, so 2 half-size pixels at 320x180
     // and 6 at 1280x720. The look was fitted at 1 pixel (320x180); held out, 12 beat 8 (1 pixel
@@ -79,15 +79,14 @@ TierProfile currentDefault() {
     // The look fitted against ray-traced truth (tools/bench/fit_ao, docs/trade.md); before the
     // calibration every tier had the papers' 1, 1, 1e-4 / 0.02, range 1, bias 0.25.
     p.aoLook[0] = {.intensity = 0.472871f, .contrast = 1.38237f, .bias = 1.59371e-7f};                             // alchemy
-    // Scalable refitted at half resolution with the 20 px clamp in half-size texels, its sum
+    // Scalable fitted at half resolution with the 20 px clamp in half-size texels, its sum
     // exponent fitted too (tools/bench/fit_ao --start tier): below 1 where the course squares.
     p.aoLook[1] = {.intensity = 0.0654423f, .contrast = 7.23394f, .bias = 0.0f, .sumExponent = 0.569394f};  // scalable
-    // Crease refitted at half resolution, the default (tools/bench/fit_ao --start tier), then again
-    // with its 12 px tap spacing (2026-12-04: held out 24.29 -> 24.69 dB at 320x180 and
-    // 24.44 -> 24.65 dB at 1280x720; the high tier's refit found nothing better).
+    // Crease fitted at half resolution, the default, with its 12 px tap spacing
+    // (tools/bench/fit_ao --start tier; docs/trade.md has the held-out scores).
     p.aoLook[2] = {.intensity = 2.16482f, .contrast = 6.85391f, .bias = 0, .creaseRange = 0.834435f, .creaseBias = 0.165467f};  // crease
     p.aoPackedDepthTarget = true;  // ao_blur.frag reads the key packed in the RGBA8 AO target
-    // Obscurance and blur at half size, a depth-aware upsample last: the cost goal of issue 10
+    // Obscurance and blur at half size, a depth-aware upsample last, for the cost goal
     // (docs/trade.md); the blur's 2 px become 1 half-size tap each side.
     p.aoHalfResolution = true;
     p.aoMaxDepthLayers = 1;  // multilayer AO is a high-tier feature
@@ -113,7 +112,7 @@ TierProfile highDefault() {
     p.aoLook[0] = {.intensity = 0.392128f, .contrast = 1.77828f, .bias = 1e-7f};                               // alchemy
     // Scalable with its sum exponent fitted (tools/bench/fit_ao --start tier, at half resolution).
     p.aoLook[1] = {.intensity = 0.187609f, .contrast = 7.36525f, .bias = 0.0468752f, .sumExponent = 0.707107f};  // scalable
-    // Crease refitted at half resolution, the default (tools/bench/fit_ao --start tier).
+    // Crease fitted at half resolution, the default (tools/bench/fit_ao --start tier).
     p.aoLook[2] = {.intensity = 13.7531f, .contrast = 1.2864f, .bias = 0, .creaseRange = 0.73699f, .creaseBias = 0.126689f};  // crease
     p.aoPackedDepthTarget = false;  // float AO target carrying the linear depth (RG32F; RGBA32F crease)
     p.aoHalfResolution = true;      // as the current tier; the blur's 6 px become 3 half-size taps each side

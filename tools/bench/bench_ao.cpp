@@ -291,9 +291,9 @@ int main(int argc, char** argv) {
     const auto started = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
     std::filesystem::create_directories(o.outDir + "/images");
-    std::vector<tools::Scene> scenes;
+    std::vector<tools::RasterScene> scenes;
     for (const std::string& name : o.scenes) {
-        Result<tools::Scene> scene = tools::makeScene(name);
+        Result<tools::RasterScene> scene = tools::makeScene(name);
         if (!scene) {
             std::cerr << "bench_ao: scene " << name << ": " << scene.status().toString() << "\n";
             return 1;
@@ -347,7 +347,7 @@ int main(int argc, char** argv) {
                 continue;
             }
 
-            for (const tools::Scene& scene : scenes) {
+            for (const tools::RasterScene& scene : scenes) {
                 Status loaded = renderer.value()->load(scene);
                 Result<tools::GBuffer> g = loaded ? renderer.value()->render(scene, o.width, o.height) : Result<tools::GBuffer>(loaded);
                 if (!g) {

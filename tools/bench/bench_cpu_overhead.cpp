@@ -266,7 +266,7 @@ Status runBackend(const std::string& backend, const Options& o, bool reuseRecord
                                                                    : backend;
     std::cout << "bench_cpu_overhead: " << label << ": " << dev.caps().summary() << ", tier " << toString(choice->tier) << std::endl;
 
-    Result<tools::Scene> scene = tools::makeScene("columns");
+    Result<tools::RasterScene> scene = tools::makeScene("columns");
     if (!scene) return scene.status();
     Result<std::unique_ptr<tools::SceneRenderer>> renderer = tools::SceneRenderer::create(dev, choice->tier);
     if (!renderer) return renderer.status();

@@ -1,6 +1,6 @@
 // bench_motionblur: the cost and the error of motion blur reconstruction per backend x tier.
 // Not a test. Two kinds of scene, each with a ground truth by temporal supersampling:
-// - procedural 2.5D scenes (sfx::reference::Scene: textured layers with analytic motion): the
+// - procedural 2.5D scenes (sfx::reference::MotionScene: textured layers with analytic motion): the
 //   average of --instants exact instants; the effect gets the mid-shutter frame with its exact
 //   linear depth and velocity;
 // - the 3D sample scenes (tools/scenes/scene.hpp) given motion: "contact" with moving spheres,
@@ -68,8 +68,8 @@ std::vector<MovingSceneCase> movingSceneCases() {
 // Motion in world units per shutter interval, chosen so that at 180 rows the displacements
 // are about 6-16 px, the range of the 2.5D scenes: some within the high tier's radius, the
 // near floor of the pan well beyond both tiers'.
-Result<tools::Scene> makeMovingScene(const std::string& name) {
-    Result<tools::Scene> s = tools::makeScene(name);
+Result<tools::RasterScene> makeMovingScene(const std::string& name) {
+    Result<tools::RasterScene> s = tools::makeScene(name);
     if (!s) return s;
     if (name == "contact") {
         // Objects moving over a still floor, seen by a still camera. makeScene's order: floor,
@@ -130,7 +130,7 @@ Result<ShadedFrame> readFrame(Device& device, const tools::GBuffer& g) {
 }
 
 // The average of the shaded colour at `instants` times spread evenly over [-0.5, 0.5].
-Result<ColorGrid> sceneGroundTruth(Device& device, tools::SceneRenderer& renderer, const tools::Scene& scene, uint32_t w,
+Result<ColorGrid> sceneGroundTruth(Device& device, tools::SceneRenderer& renderer, const tools::RasterScene& scene, uint32_t w,
                                    uint32_t h, uint32_t instants) {
     ColorGrid sum(w, h);
     for (uint32_t i = 0; i < instants; ++i) {
@@ -218,7 +218,7 @@ Status runSceneCases(Device& device, const std::string& backend, Tier tier, cons
         std::cout << "    (image mb_" << name << ".png from " << backend << ")\n";
     };
     for (const std::string sceneName : {"contact", "columns"}) {
-        Result<tools::Scene> scene = makeMovingScene(sceneName);
+        Result<tools::RasterScene> scene = makeMovingScene(sceneName);
         if (!scene) return scene.status();
         // Meshes are per scene: load replaces the previous scene's buffers.
         SFX_TRY(renderer.value()->load(scene.value()));
@@ -290,7 +290,7 @@ Status runSceneCases(Device& device, const std::string& backend, Tier tier, cons
 }
 
 Status writeInputs(const std::string& dir, uint32_t w, uint32_t h) {
-    const Scene scene = tools::makeMotionScenes(w, h)[0].scene;
+    const MotionScene scene = tools::makeMotionScenes(w, h)[0].scene;
     const SceneFrame f = scene.render(0);
     io::Image color(w, h, 3), depth(w, h, 1), vel(w, h, 2), vel3(w, h, 3);
     for (uint32_t y = 0; y < h; ++y)

@@ -258,7 +258,7 @@ Status benchBackend(Device& dev, const std::string& backend, const Options& o, s
     for (const std::string& name : o.scenes) {
         Result<scene::Scene> file = loadScene(name, o.heavyLayers);
         if (!file) return file.status();
-        const tools::Scene opaque = tools::opaqueScene(file.value());
+        const tools::RasterScene opaque = tools::opaqueScene(file.value());
         SFX_TRY(raster.value()->load(opaque));
         Result<tools::GBuffer> g = raster.value()->render(opaque, o.width, o.height);
         if (!g) return g.status();

@@ -1,4 +1,4 @@
-// bench_trade: the AO techniques' error against ray-traced ground truth (issue 10, items 1-2).
+// bench_trade: the AO techniques' error against ray-traced ground truth.
 // For each sample scene, the truth (tools/truth: Embree, docs/trade.md gives the definition) is
 // traced once per size, radius and sample count and cached under --cache-dir; then for every
 // backend x tier x technique x blur on/off the SDK renders AO of the scene's G-buffer with the
@@ -102,7 +102,7 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
     if (!out) return out.status();
     Status status = Status::ok();
     for (const std::string& name : o.scenes) {
-        Result<tools::Scene> scene = tools::makeScene(name);
+        Result<tools::RasterScene> scene = tools::makeScene(name);
         if (!scene) return scene.status();
         SFX_TRY(renderer.value()->load(scene.value()));
         Result<tools::GBuffer> g = renderer.value()->render(scene.value(), o.width, o.height);

@@ -1,5 +1,5 @@
-// fit_ao: calibrates the AO techniques' default settings against ray-traced ground truth (issue 10,
-// item 3). For each tier x technique it searches intensity and contrast (and Alchemy's and
+// fit_ao: calibrates the AO techniques' default settings against ray-traced ground truth.
+// For each tier x technique it searches intensity and contrast (and Alchemy's and
 // Scalable's bias and sum exponent, crease's range and bias) coarse to fine, maximising the mean PSNR over the
 // frame plus the mean PSNR where the truth is below 0.95, on the TRAINING views
 // (tools/scenes/trade_views.*) at radii 0.25-2 with the blur on (the default); then it scores
@@ -174,7 +174,7 @@ Result<AoSettings> fit(tools::AoEvaluator& ev, const AoSettings& start, const st
 // taps: the noise left; full resolution: what half resolution costs; no screen-radius clamp).
 Status diagnose(tools::AoEvaluator& ev, Tier tier, AoTechnique technique, const std::vector<tools::AoCase>& heldOut) {
     const TierProfile base = tiers::choose(ev.device().caps(), tier)->profile;
-    const tools::AoScore none = tools::noAoScore(heldOut);  // the baseline of issue 10's 4 dB goal
+    const tools::AoScore none = tools::noAoScore(heldOut);  // the baseline of the 4 dB accuracy goal
     struct Variant {
         const char* name;
         std::function<void(AoSettings&, TierProfile&)> apply;

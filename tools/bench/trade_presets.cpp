@@ -1,10 +1,10 @@
-// trade_presets: the measured Pareto front of the quality presets (issue 10, items 4 and 6). For
+// trade_presets: the measured Pareto front of the quality presets. For
 // every backend x tier x preset of the tier table (x technique for AO):
 //   - cost at --cost-size (median of HAL-timed runs, as ms and as copy passes of that size on
 //     the same device): AO on the G-buffer of one sample view, motion blur on the "pan" scene;
 //   - accuracy: AO's PSNR against the ray-traced truth on the held-out views of fit_ao (radii
 //     0.25-2, 320x180; computed on the first backend, the backends agree) and on their analytic
-//     scenes alone at --anchor-size (1280x720, the size of the issue's XeGTAO figures), motion
+//     scenes alone at --anchor-size (1280x720, the size of the quoted XeGTAO figures), motion
 //     blur's PSNR against its temporally supersampled truth on the 2.5D scenes.
 // Writes <out-dir>/trade_presets.csv, one SVG Pareto plot per backend and effect under
 // <out-dir>/images/ and the tables into <out-dir>/trade.md between its markers. A program, not a test.
@@ -54,11 +54,11 @@ struct Row {
     double psnrAnalytic = 0;  // AO: over the held-out analytic scenes only (the anchors' kind), at the anchors' size
 };
 
-// Intel's XeGTAO as issue 10 quotes it (item 7): on this machine's llvmpipe at 1280x720 against
+// Intel's XeGTAO as the project's cost goal quotes it: on this machine's llvmpipe at 1280x720 against
 // ray-traced truth, its Medium preset about 26 dB for about 13 copy passes, its High preset about
-// 29 dB for 23-29 copy passes. Figures from the issue, not run here (no XeGTAO code is in the
+// 29 dB for 23-29 copy passes. Quoted figures, not run here (no XeGTAO code is in the
 // project); High is placed at the low end of its cost range, the stricter test of dominance.
-const char* const kXeGtaoSeries = "XeGTAO Medium/High (issue's figures, not run here)";
+const char* const kXeGtaoSeries = "XeGTAO Medium/High (quoted figures, not run here)";
 std::vector<tools::PlotPoint> xeGtaoAnchors() {
     return {{13.0, 26.0, "XeGTAO Medium", kXeGtaoSeries}, {23.0, 29.0, "XeGTAO High", kXeGtaoSeries}};
 }
@@ -76,8 +76,8 @@ std::vector<tools::PlotPoint> highTierAoPoints(const std::vector<Row>& rows, con
 }
 
 // One line per backend, accuracy measure and anchor: which high-tier presets dominate it (at
-// least as accurate for no more cost), or that none does and what falls short. The issue scored
-// XeGTAO on analytic scenes, so the analytic-scene PSNR is the like-for-like comparison; the
+// least as accurate for no more cost), or that none does and what falls short. The quoted figures
+// score XeGTAO on analytic scenes, so the analytic-scene PSNR is the like-for-like comparison; the
 // held-out views (rasterised scenes too) are the stricter one.
 std::vector<std::string> xeGtaoDominance(const Options& o, const std::vector<Row>& rows) {
     std::vector<std::string> lines;
@@ -255,9 +255,9 @@ std::string markdown(const Options& o, const std::vector<Row>& rows, const std::
         md << "![Pareto plot, AO, " << backend << "](images/pareto_ao_" << backend << ".svg)\n\n";
         md << "![Pareto plot, motion blur, " << backend << "](images/pareto_mb_" << backend << ".svg)\n\n";
     }
-    md << "XeGTAO anchors (issue 10, item 7: the issue's figures for Intel's XeGTAO on this machine's llvmpipe at 1280x720, not run here; "
+    md << "XeGTAO anchors (the quoted figures for Intel's XeGTAO on this machine's llvmpipe at 1280x720, not run here; "
           "High at the low end of its 23-29 copy passes) against the high tier's presets of this run, with the presets' PSNR over the held-out "
-          "analytic scenes (the kind the issue scored XeGTAO on), rendered and traced at "
+          "analytic scenes (the kind the quoted figures score XeGTAO on), rendered and traced at "
        << o.anchorWidth << "x" << o.anchorHeight << ", and over all held-out views at " << o.truth.width << "x" << o.truth.height
        << ". The costs are this run's:\n\n";
     for (const std::string& line : xeGtaoDominance(o, rows)) md << "- " << line << "\n";

@@ -18,7 +18,7 @@ void storeMatrix(float (&dst)[16], const glm::dmat4& m) {
 
 }  // namespace
 
-Result<std::unique_ptr<DepthPeel>> DepthPeel::create(Device& device, Tier tier, const tools::Scene& scene, uint32_t layers,
+Result<std::unique_ptr<DepthPeel>> DepthPeel::create(Device& device, Tier tier, const tools::RasterScene& scene, uint32_t layers,
                                                      uint32_t width, uint32_t height) {
     std::unique_ptr<DepthPeel> p(new DepthPeel(device, width, height));
     Result<std::unique_ptr<LinearDepth>> linear = LinearDepth::create(device, {width, height, tier, 1, DepthKind::Hardware});
@@ -81,7 +81,7 @@ DepthPeel::~DepthPeel() {
     if (!program_.isNull()) (void)device_.destroyProgram(program_);
 }
 
-Status DepthPeel::render(const tools::Scene& scene, const DepthSource& hardwareDepth) {
+Status DepthPeel::render(const tools::RasterScene& scene, const DepthSource& hardwareDepth) {
     SFX_TRY(linear_->dispatch(hardwareDepth));
     const glm::dmat4 view = scene.view();
     const glm::dmat4& projection = hardwareDepth.camera.projection;

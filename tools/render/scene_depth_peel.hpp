@@ -18,14 +18,14 @@ class DepthPeel {
 public:
     // layers: [2, SFX_AO_MAX_DEPTH_LAYERS] (validated by the caller); the tier's programs must
     // have the peel (the high tier's).
-    static Result<std::unique_ptr<DepthPeel>> create(Device& device, Tier tier, const tools::Scene& scene, uint32_t layers,
+    static Result<std::unique_ptr<DepthPeel>> create(Device& device, Tier tier, const tools::RasterScene& scene, uint32_t layers,
                                                      uint32_t width, uint32_t height);
     ~DepthPeel();
     DepthPeel(const DepthPeel&) = delete;
     DepthPeel& operator=(const DepthPeel&) = delete;
 
     // Linearises the raster pass's depth (layer 0) and records the peel passes.
-    Status render(const tools::Scene& scene, const DepthSource& hardwareDepth);
+    Status render(const tools::RasterScene& scene, const DepthSource& hardwareDepth);
     // After render(): layer 0 (R32F linear depth) and layers 1 .. N-1.
     TextureHandle layer0() const { return linear_->texture(); }
     const std::vector<TextureHandle>& peeled() const { return layers_; }

@@ -55,13 +55,13 @@ Status validateOptions(const RenderOptions& o) {
     return Status::ok();
 }
 
-uint64_t RenderPlan::totalBytes() const {
+uint64_t FramePlan::totalBytes() const {
     uint64_t total = 0;
     for (const PlanLine& l : lines) total += l.bytes;
     return total;
 }
 
-std::string RenderPlan::describe() const {
+std::string FramePlan::describe() const {
     std::ostringstream s;
     const struct {
         PlanLine::Kind kind;
@@ -109,7 +109,7 @@ struct SceneRender::Impl {
     tiers::TierChoice tier;
     scene::Scene file;  // a copy: the caller's scene may go away after create()
     RenderOptions options;
-    tools::Scene scene;
+    tools::RasterScene scene;
     std::vector<size_t> transparent;
     std::unique_ptr<tools::SceneRenderer> raster;
     std::unique_ptr<AmbientObscurance> ao;
@@ -189,10 +189,10 @@ Result<std::unique_ptr<SceneRender>> SceneRender::create(Device& device, const t
     return std::unique_ptr<SceneRender>(new SceneRender(std::move(impl)));
 }
 
-RenderPlan SceneRender::plan() const {
+FramePlan SceneRender::plan() const {
     const Impl& m = *impl_;
     const uint32_t w = m.width, h = m.height;
-    RenderPlan p;
+    FramePlan p;
     using K = PlanLine::Kind;
     p.lines.push_back({K::Pass, "scene", "raster", w, h, 0,
                        std::to_string(m.scene.meshes.size()) + " opaque objects, " + std::to_string(m.triangles) +
@@ -214,7 +214,7 @@ RenderPlan SceneRender::plan() const {
         p.lines.insert(p.lines.end(), peel.begin(), peel.end());
     }
     if (m.ao) {
-        const Plan aoPlan = m.ao->plan();
+        const EffectPlan aoPlan = m.ao->plan();
         const std::string tech = toString(*m.options.ao);
         for (const PlannedPass& pass : aoPlan.passes) p.lines.push_back({K::Pass, pass.effect, pass.name, pass.width, pass.height, 0, aoPassWhy(pass)});
         for (const PlannedResource& r : aoPlan.resources)

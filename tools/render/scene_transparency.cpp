@@ -110,7 +110,7 @@ std::vector<PlanLine> SceneTransparency::plan() const {
     const std::string n = std::to_string(objects_.size());
     const std::string path = effect_->usesAbuffer() ? "A-buffer (high tier: fragment stores and atomics)"
                                                     : "weighted blended OIT (current tier: one blend state, no storage)";
-    const Plan p = effect_->plan(true);
+    const EffectPlan p = effect_->plan(true);
     for (const PlannedPass& pass : p.passes)
         lines.push_back({K::Pass, "transparency", pass.name, pass.width, pass.height, 0,
                          n + " translucent objects through sfx::Transparency, " + path});

@@ -19,7 +19,7 @@ std::vector<NamedMotionScene> makeMotionScenes(uint32_t w, uint32_t h) {
     std::vector<NamedMotionScene> out;
     {
         // A ball flying across a still textured wall.
-        Scene sc{w, h, {}};
+        MotionScene sc{w, h, {}};
         SceneLayer wall;
         wall.depth = 20, wall.cell = 10 * s, wall.colorA = {0.55, 0.5, 0.45, 1}, wall.colorB = {0.25, 0.3, 0.35, 1};
         SceneLayer ball;
@@ -31,7 +31,7 @@ std::vector<NamedMotionScene> makeMotionScenes(uint32_t w, uint32_t h) {
     {
         // A camera pan: the background slides, a post tracked by the camera stays still in front,
         // and a box moves against the pan behind the post.
-        Scene sc{w, h, {}};
+        MotionScene sc{w, h, {}};
         SceneLayer bg;
         bg.depth = 40, bg.cell = 12 * s, bg.colorA = {0.2, 0.45, 0.7, 1}, bg.colorB = {0.8, 0.85, 0.9, 1}, bg.velocityPx = {-8 * s, 0};
         SceneLayer box;
@@ -45,7 +45,7 @@ std::vector<NamedMotionScene> makeMotionScenes(uint32_t w, uint32_t h) {
     }
     {
         // Two discs crossing at different depths, both moving, over a still floor.
-        Scene sc{w, h, {}};
+        MotionScene sc{w, h, {}};
         SceneLayer floor;
         floor.depth = 25, floor.cell = 8 * s, floor.colorA = {0.4, 0.4, 0.4, 1}, floor.colorB = {0.6, 0.6, 0.6, 1};
         SceneLayer a;

@@ -13,7 +13,7 @@ namespace sfx::tools {
 
 struct NamedMotionScene {
     std::string name;
-    reference::Scene scene;
+    reference::MotionScene scene;
 };
 // "ball", "pan", "crossing", laid out in fractions of a w x h picture.
 std::vector<NamedMotionScene> makeMotionScenes(uint32_t w, uint32_t h);

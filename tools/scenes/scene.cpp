@@ -49,12 +49,12 @@ Result<Mesh> loadObj(const std::string& path) {
 
 }  // namespace
 
-glm::dmat4 Scene::view(double time) const {
+glm::dmat4 RasterScene::view(double time) const {
     const glm::dvec3 shift = eyeVelocity * time;
     return glm::lookAt(eye + shift, target + shift, up);
 }
 
-Result<CameraProjection> Scene::projection(uint32_t width, uint32_t height, ClipDepthRange clipDepth) const {
+Result<CameraProjection> RasterScene::projection(uint32_t width, uint32_t height, ClipDepthRange clipDepth) const {
     PerspectiveDesc pd;
     pd.fovYRadians = fovYDegrees * kPi / 180.0;
     pd.aspect = double(width) / double(height);
@@ -67,8 +67,8 @@ Result<CameraProjection> Scene::projection(uint32_t width, uint32_t height, Clip
 
 std::vector<std::string> sceneNames() { return {"corner", "steps", "columns", "contact", "bunny"}; }
 
-Scene opaqueScene(const scene::Scene& in) {
-    Scene out;
+RasterScene opaqueScene(const scene::Scene& in) {
+    RasterScene out;
     out.name = in.path;
     out.eye = in.camera.position;
     out.target = in.camera.target;
@@ -87,8 +87,8 @@ Scene opaqueScene(const scene::Scene& in) {
     return out;
 }
 
-Result<Scene> makeScene(const std::string& name) {
-    Scene s;
+Result<RasterScene> makeScene(const std::string& name) {
+    RasterScene s;
     s.name = name;
     if (name == "corner") {
         // Inside a room corner: floor and two walls meet at 90 degrees, a box in the crease.
@@ -191,7 +191,7 @@ void SceneRenderer::releaseMeshes() {
     meshes_.clear();
 }
 
-Status SceneRenderer::load(const Scene& scene) {
+Status SceneRenderer::load(const RasterScene& scene) {
     releaseMeshes();
     // Each buffer joins meshes_ as soon as it exists, so a failure part-way releases it too.
     auto upload = [&]() -> Status {
@@ -218,7 +218,7 @@ Status SceneRenderer::load(const Scene& scene) {
     return s;
 }
 
-Result<GBuffer> SceneRenderer::render(const Scene& scene, uint32_t width, uint32_t height, double time) {
+Result<GBuffer> SceneRenderer::render(const RasterScene& scene, uint32_t width, uint32_t height, double time) {
     if (meshes_.size() != scene.meshes.size())
         return Status{StatusCode::InvalidArgument, "SceneRenderer::render: scene '" + scene.name + "' is not the loaded one"};
     GBuffer g;

@@ -28,7 +28,7 @@ struct Mesh : scene::TriangleMesh {
     glm::dvec4 surface{0.0};
 };
 
-struct Scene {
+struct RasterScene {
     std::string name;
     std::vector<Mesh> meshes;
     glm::dvec3 eye{0, 1.5, 5};
@@ -45,12 +45,12 @@ struct Scene {
 
 // "corner", "steps", "columns", "contact", "bunny". FileError when the bunny's OBJ is missing
 // (package glmark2-data), InvalidArgument naming the known scenes for anything else.
-Result<Scene> makeScene(const std::string& name);
+Result<RasterScene> makeScene(const std::string& name);
 std::vector<std::string> sceneNames();
 // The opaque objects of a scene file as the raster pass draws them (what `sfx render`, its
 // depth peel and the truth see): one mesh per object, placed by its world matrix, with its
 // colour and shading code; the file's camera.
-Scene opaqueScene(const scene::Scene& file);
+RasterScene opaqueScene(const scene::Scene& file);
 
 // A G-buffer rendered by the device at mid-shutter, row 0 = top of the picture.
 struct GBuffer {
@@ -80,10 +80,10 @@ public:
     static Result<std::unique_ptr<SceneRenderer>> create(Device& device, Tier tier, Format albedoFormat = Format::RGBA8);
     ~SceneRenderer();
     // Uploads the scene's meshes (replacing the previous scene's); render() draws them.
-    Status load(const Scene& scene);
+    Status load(const RasterScene& scene);
     // Renders the loaded scene with its objects moved by `time` * velocity (time in shutter
     // intervals); `scene` supplies the camera and must be the one loaded.
-    Result<GBuffer> render(const Scene& scene, uint32_t width, uint32_t height, double time = 0.0);
+    Result<GBuffer> render(const RasterScene& scene, uint32_t width, uint32_t height, double time = 0.0);
     void destroy(GBuffer& gbuffer);
 
 private:

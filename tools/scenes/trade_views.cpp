@@ -37,9 +37,9 @@ std::vector<TradeView> heldOutViews() {
     return v;
 }
 
-Result<Scene> viewScene(const TradeView& view) {
+Result<RasterScene> viewScene(const TradeView& view) {
     if (view.analytic) return invalidArgument("view", "'" + view.name() + "'", "a rasterised sample scene's view");
-    Result<Scene> scene = makeScene(view.scene);
+    Result<RasterScene> scene = makeScene(view.scene);
     if (!scene) return scene.status();
     const double a = view.turnDegrees * 3.14159265358979323846 / 180.0;
     const glm::dvec3 d = scene->eye - scene->target;
@@ -51,7 +51,7 @@ Result<Scene> viewScene(const TradeView& view) {
 
 Result<TruthScene> viewTruthScene(const TradeView& view, uint32_t width, uint32_t height) {
     if (view.analytic) return makeTruthScene(view.name(), width, height);
-    Result<Scene> scene = viewScene(view);
+    Result<RasterScene> scene = viewScene(view);
     if (!scene) return scene.status();
     return makeTruthScene(scene.value(), width, height);
 }
@@ -59,7 +59,7 @@ Result<TruthScene> viewTruthScene(const TradeView& view, uint32_t width, uint32_
 Result<std::unique_ptr<ViewInputs>> ViewInputs::create(Device& device, Tier tier, const TradeView& view, uint32_t width, uint32_t height) {
     std::unique_ptr<ViewInputs> in(new ViewInputs(device));
     if (!view.analytic) {
-        Result<Scene> scene = viewScene(view);
+        Result<RasterScene> scene = viewScene(view);
         if (!scene) return scene.status();
         Result<std::unique_ptr<SceneRenderer>> renderer = SceneRenderer::create(device, tier);
         if (!renderer) return renderer.status();

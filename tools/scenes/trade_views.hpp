@@ -1,4 +1,4 @@
-// The views the trade's fit and report score AO on (issue 10): the sample scenes from their own
+// The views the trade's fit and report score AO on: the sample scenes from their own
 // cameras and from cameras moved about their targets, and the analytic scenes. The fit of the
 // techniques' defaults sees only the training views; the report scores held-out views the fit
 // never saw (other cameras of the training scenes, whole scenes it never saw, analytic scenes).
@@ -27,7 +27,7 @@ std::vector<TradeView> trainingViews();
 std::vector<TradeView> heldOutViews();
 
 // The sample scene with its eye moved as the view says. InvalidArgument for an analytic view.
-Result<Scene> viewScene(const TradeView& view);
+Result<RasterScene> viewScene(const TradeView& view);
 // The geometry and camera the truth traces for the view (its name is view.name()).
 Result<TruthScene> viewTruthScene(const TradeView& view, uint32_t width, uint32_t height);
 

@@ -8,7 +8,7 @@ std::vector<std::string> truthSceneNames() {
     return names;
 }
 
-truth::Geometry worldGeometry(const Scene& scene) {
+truth::Geometry worldGeometry(const RasterScene& scene) {
     truth::Geometry g;
     for (const Mesh& mesh : scene.meshes) {
         const uint32_t base = uint32_t(g.vertices.size());
@@ -39,7 +39,7 @@ truth::Geometry worldGeometry(const AnalyticSceneDesc& scene) {
     return g;
 }
 
-Result<TruthScene> makeTruthScene(const Scene& scene, uint32_t width, uint32_t height) {
+Result<TruthScene> makeTruthScene(const RasterScene& scene, uint32_t width, uint32_t height) {
     if (width == 0 || height == 0) return invalidArgument("width/height", std::to_string(width) + "x" + std::to_string(height), "at least 1x1");
     TruthScene t;
     t.name = scene.name;
@@ -67,7 +67,7 @@ Result<TruthScene> makeTruthScene(const std::string& name, uint32_t width, uint3
             t.camera.projection = desc->camera.projection(width, height);  // at the origin: view = identity
             return t;
         }
-    } else if (Result<Scene> scene = makeScene(name); scene) {
+    } else if (Result<RasterScene> scene = makeScene(name); scene) {
         return makeTruthScene(scene.value(), width, height);
     } else if (scene.status().code() != StatusCode::InvalidArgument) {
         return scene.status();  // the bunny's file

@@ -23,10 +23,10 @@ std::vector<std::string> truthSceneNames();
 // InvalidArgument naming the known scenes; FileError from the bunny's loader.
 Result<TruthScene> makeTruthScene(const std::string& name, uint32_t width, uint32_t height);
 // A rasterised scene as given (e.g. with its camera moved); the truth scene takes its name.
-Result<TruthScene> makeTruthScene(const Scene& scene, uint32_t width, uint32_t height);
+Result<TruthScene> makeTruthScene(const RasterScene& scene, uint32_t width, uint32_t height);
 
 // Every mesh's triangles moved by its model matrix (t = 0, as the benchmarks render).
-truth::Geometry worldGeometry(const Scene& scene);
+truth::Geometry worldGeometry(const RasterScene& scene);
 // Planes become squares of half-size kAnalyticPlaneHalfSize around the point nearest the eye
 // (beyond any radius or view distance the scenes use); spheres stay exact.
 truth::Geometry worldGeometry(const AnalyticSceneDesc& scene);

@@ -90,7 +90,7 @@ struct AoSettings {
     uint32_t depthLayers = 1;
 };
 
-// The papers' nominal values (the look before the calibration of issue 10).
+// The papers' nominal values (the look before the calibration against ray-traced truth).
 inline constexpr float kAoAlchemyDefaultBias = 1e-4f;
 inline constexpr float kAoScalableDefaultBias = 0.02f;
 inline constexpr float kAoScalableCourseSumExponent = 2.0f;
@@ -174,7 +174,7 @@ public:
     const AoDesc& desc() const { return desc_; }
     const AoConfig& config() const { return config_; }
     const LinearDepth& linearDepth() const { return *depth_; }
-    Plan plan() const;
+    EffectPlan plan() const;
 
 private:
     AmbientObscurance(Device& device, const AoDesc& desc);

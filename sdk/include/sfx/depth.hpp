@@ -89,7 +89,7 @@ public:
     const LinearDepthDesc& desc() const { return desc_; }
     // Reconstruction constants of the last dispatched camera (valid after dispatch).
     const DepthReconstruction& reconstruction() const { return reconstruction_; }
-    Plan plan() const;
+    EffectPlan plan() const;
 
 private:
     LinearDepth(Device& device, const LinearDepthDesc& desc);

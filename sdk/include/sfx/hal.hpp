@@ -5,7 +5,7 @@
 // - Texel (x, y) of a texture is its y-th row in memory, on every API. In both Vulkan and GL,
 //   normalised device y = -1 rasterises to row 0, so a projection matrix means the same
 //   memory picture on every backend. Images the SDK writes to files put row 0 at the top.
-// - Shaders address textures with texelFetch at integer texel coordinates; a TextureBinding
+// - Shaders address textures at integer texel coordinates (sfxTexel); a TextureBinding
 //   selects the mip range a shader sees, and lod 0 in the shader is the binding's baseMip.
 // - Commands are recorded in call order and run at flush(); reads of textures and buffers
 //   flush first. With a host-provided Vulkan command buffer, flush() only ends recording.

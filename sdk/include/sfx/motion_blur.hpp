@@ -139,7 +139,7 @@ public:
     TextureHandle neighborMax() const { return neighborMax_; }
     const MotionBlurDesc& desc() const { return desc_; }
     // Passes and bytes for the given settings (the tile textures depend on the radius).
-    Plan plan(const MotionBlurSettings& settings = {}) const;
+    EffectPlan plan(const MotionBlurSettings& settings = {}) const;
 
 private:
     MotionBlur(Device& device, const MotionBlurDesc& desc);

@@ -172,7 +172,7 @@ public:
     bool usesAbuffer() const { return abuffer_; }
     const TransparencyDesc& desc() const { return desc_; }
     // Passes and resources of a frame with `hasTransparentDraws`, each saying why it exists.
-    Plan plan(bool hasTransparentDraws = true) const;
+    EffectPlan plan(bool hasTransparentDraws = true) const;
     // Per-pass device timers (off by default, as AmbientObscurance::setProfiling): with profiling
     // on, each render() with a draw times its passes; passTimings() reads them after a flush, in
     // plan(true) order. InvalidArgument when profiling is off or no frame with a draw was timed.
@@ -194,7 +194,7 @@ private:
     Status ensureLayerTargets();
     Status renderLayerAo(const TransparencyInputs& inputs, const DepthReconstruction& rec);
     Status filterLayerAo();
-    void planLayerAo(Plan& plan) const;
+    void planLayerAo(EffectPlan& plan) const;
     Result<uint32_t> readCounter();
     // Records `record` inside pass `index`'s timer when profiling (plan(true) order).
     Status timed(size_t index, const std::function<Status()>& record);

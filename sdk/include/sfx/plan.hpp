@@ -33,13 +33,13 @@ struct PlannedResource {
     uint64_t bytes = 0;
 };
 
-struct Plan {
+struct EffectPlan {
     std::vector<PlannedPass> passes;
     std::vector<PlannedResource> resources;
 
     uint64_t totalBytes() const;
     uint64_t bytesOf(const std::string& effect) const;
-    void append(const Plan& other);
+    void append(const EffectPlan& other);
     std::string describe() const;  // a table: passes, then resources with bytes, per effect
 };
 

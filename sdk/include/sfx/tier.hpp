@@ -49,8 +49,8 @@ struct TierProfile {
     uint32_t aoScalableTaps = 0;       // 4 (mirrored) or 9 (spiral)
     bool aoScalableMirrored = false;   // current tier: each offset also used negated
     // Scalable's screen-space clamp of the AO radius (0 = none), in output pixels at
-    // SFX_AO_REFERENCE_ROWS (720) rows and scaled with the output's rows, like crease's tap
-    // spacing below: a clamp fixed in pixels made the look depend on the resolution.
+    // SFX_AO_REFERENCE_ROWS (720) rows, scaled with the output's rows so the look does not
+    // depend on the resolution.
     float aoScalableMaxRadiusPx = 0;
     bool aoUsesDepthMip = false;       // Scalable AO reads the depth MIP pyramid (SFX_AO_DEPTH_MIP)
     uint32_t aoDepthMipLevels = 0;     // levels of that pyramid (level 0 included)
@@ -64,11 +64,9 @@ struct TierProfile {
     // size (AoConfig::creaseStride is it in the pass's pixels, at least 1).
     float aoCreaseSpacingPx = 12;
     AoLook aoLook[3];                  // per technique, indexed by AoTechnique (alchemy, scalable, crease)
-    // With blur, where the blur finds each pixel's depth. true (current tier): the raw AO goes to
-    // an RGBA8 target with a 16-bit depth key packed in b, a (one fetch per tap, 8-bit targets
-    // only). false (high): a float target carrying the linear depth itself (RG32F; RGBA32F for
-    // crease), so the blur and, at half resolution, the upsample also read one texel per tap. The
-    // table turns it into SFX_AO_PACKED_DEPTH_TARGET, which decides ao_blur.frag's depth source.
+    // Where the blur finds each pixel's depth: true (current tier), a 16-bit key packed in an
+    // RGBA8 AO target; false (high), the linear depth in a float target (RG32F; RGBA32F for
+    // crease). Either way one fetch per tap. Becomes SFX_AO_PACKED_DEPTH_TARGET.
     bool aoPackedDepthTarget = false;
     // AO at half resolution with a depth-aware upsample (AoResolution::Tier resolves to it).
     bool aoHalfResolution = false;
@@ -83,8 +81,7 @@ struct TierProfile {
     bool abufferOit = false;
 };
 
-// A quality preset: a named set of a tier's parameters. Every tier has kDefaultPreset, the
-// parameters it has always had. Presets of one tier may differ only in what reaches the shaders
+// A quality preset: a named set of a tier's parameters; every tier has kDefaultPreset. Presets of one tier may differ only in what reaches the shaders
 // through uniforms (tap counts, radii, blur width); the structural parameters that become
 // shader defines (shaderDefines) are the default preset's for every preset of the tier.
 // What a preset buys, measured offline against ground truth by tools/bench/trade_presets

@@ -164,7 +164,7 @@ Status AmbientObscurance::setProfiling(bool enabled) {
 Result<std::vector<PassTiming>> AmbientObscurance::passTimings() {
     if (!profiling_ || passTimers_.empty())
         return Status{StatusCode::InvalidArgument, "AmbientObscurance::passTimings: profiling is off (call setProfiling(true) before dispatch)"};
-    const Plan p = plan();
+    const EffectPlan p = plan();
     std::vector<PassTiming> out;
     out.reserve(passTimers_.size());
     for (size_t i = 0; i < passTimers_.size(); ++i) {
@@ -382,8 +382,8 @@ Status AmbientObscurance::recordPasses(const AoInputs& in, const TextureDesc& ou
     return Status::ok();
 }
 
-Plan AmbientObscurance::plan() const {
-    Plan plan;
+EffectPlan AmbientObscurance::plan() const {
+    EffectPlan plan;
     if (depth_) plan = depth_->plan();
     const bool half = config_.halfResolution, blur = config_.blurRadius > 0;
     const uint32_t w = passWidth(), h = passHeight();

@@ -197,8 +197,8 @@ Status LinearDepth::dispatch(const DepthSource& source, std::span<const TimerHan
     return Status::ok();
 }
 
-Plan LinearDepth::plan() const {
-    Plan plan;
+EffectPlan LinearDepth::plan() const {
+    EffectPlan plan;
     if (passThrough()) {
         // The host's depth is read where it lies, linearized by its readers where it is hardware depth.
         if (desc_.readersLinearize && desc_.input == DepthKind::Hardware)

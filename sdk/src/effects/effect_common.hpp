@@ -70,14 +70,6 @@ public:
         entries_.push_back({program, format, pd.constants, pipeline.value()});
         return pipeline.value();
     }
-    // Destroys the pipelines of `program` (before the program itself is destroyed).
-    void forget(ProgramHandle program) {
-        for (size_t i = entries_.size(); i-- > 0;)
-            if (entries_[i].program == program) {
-                (void)device_.destroyPipeline(entries_[i].pipeline);
-                entries_.erase(entries_.begin() + std::ptrdiff_t(i));
-            }
-    }
     void clear() {
         for (const Entry& e : entries_) (void)device_.destroyPipeline(e.pipeline);
         entries_.clear();

@@ -357,8 +357,8 @@ Status MotionBlur::recordPasses(const MotionBlurInputs& in, const MotionBlurPara
     return run(target, "sfx-mb-reconstruct", reconstructPipeline.value(), recBind);
 }
 
-Plan MotionBlur::plan(const MotionBlurSettings& settings) const {
-    Plan plan;
+EffectPlan MotionBlur::plan(const MotionBlurSettings& settings) const {
+    EffectPlan plan;
     if (depth_) plan.append(depth_->plan());
     Result<MotionBlurParams> resolved = resolveMotionBlur(desc_.profile, settings, std::max(desc_.height, 1u));
     const uint32_t radius = resolved ? resolved->radiusPx : 1;

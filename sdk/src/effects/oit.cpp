@@ -103,7 +103,7 @@ Result<std::vector<PassTiming>> Transparency::passTimings() {
     if (!profiling_ || timedPasses_ == 0)
         return Status{StatusCode::InvalidArgument,
                       "Transparency::passTimings: nothing timed (call setProfiling(true), then render() a frame with a draw and flush)"};
-    const Plan p = plan(true);
+    const EffectPlan p = plan(true);
     std::vector<PassTiming> out;
     for (size_t i = 0; i < timedPasses_ && i < p.passes.size(); ++i) {
         Result<TimerReading> reading = device_.readTimer(passTimers_[i]);
@@ -312,8 +312,8 @@ Result<TransparencyStats> Transparency::stats() {
     return s;
 }
 
-Plan Transparency::plan(bool hasTransparentDraws) const {
-    Plan plan;
+EffectPlan Transparency::plan(bool hasTransparentDraws) const {
+    EffectPlan plan;
     if (!hasTransparentDraws) return plan;  // no pass, no memory: output() is the opaque colour
     const uint32_t w = desc_.width, h = desc_.height;
     const uint32_t rt = kTextureSampled | kTextureRenderTarget;

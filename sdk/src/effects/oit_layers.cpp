@@ -153,7 +153,7 @@ Status Transparency::filterLayerAo() {
     return Status::ok();
 }
 
-void Transparency::planLayerAo(Plan& plan) const {
+void Transparency::planLayerAo(EffectPlan& plan) const {
     const uint32_t w = desc_.width, h = desc_.height;
     if (!abuffer_) {
         // The current tier keeps no layers: AO there is the host's, over the opaque layer only.

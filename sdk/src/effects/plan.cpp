@@ -5,25 +5,25 @@
 
 namespace sfx {
 
-uint64_t Plan::totalBytes() const {
+uint64_t EffectPlan::totalBytes() const {
     uint64_t total = 0;
     for (const auto& r : resources) total += r.bytes;
     return total;
 }
 
-uint64_t Plan::bytesOf(const std::string& effect) const {
+uint64_t EffectPlan::bytesOf(const std::string& effect) const {
     uint64_t total = 0;
     for (const auto& r : resources)
         if (r.effect == effect) total += r.bytes;
     return total;
 }
 
-void Plan::append(const Plan& other) {
+void EffectPlan::append(const EffectPlan& other) {
     passes.insert(passes.end(), other.passes.begin(), other.passes.end());
     resources.insert(resources.end(), other.resources.begin(), other.resources.end());
 }
 
-std::string Plan::describe() const {
+std::string EffectPlan::describe() const {
     std::string s;
     char line[256];
     std::snprintf(line, sizeof line, "%zu passes, %zu resources, %.2f MiB\n", passes.size(), resources.size(),

@@ -162,7 +162,7 @@ VelocityGrid cameraVelocity(const Grid& linearDepth, const glm::dmat4& projectio
     return out;
 }
 
-SceneFrame Scene::render(double t) const {
+SceneFrame MotionScene::render(double t) const {
     SceneFrame f;
     f.color = ColorGrid(width, height, {0, 0, 0, 1});
     f.depth = Grid(width, height, double(shared::SFX_SKY_DEPTH));
@@ -195,7 +195,7 @@ SceneFrame Scene::render(double t) const {
     return f;
 }
 
-ColorGrid Scene::groundTruth(uint32_t instants) const {
+ColorGrid MotionScene::groundTruth(uint32_t instants) const {
     ColorGrid sum(width, height);
     for (uint32_t i = 0; i < instants; ++i) {
         const SceneFrame f = render((i + 0.5) / instants - 0.5);
@@ -205,7 +205,7 @@ ColorGrid Scene::groundTruth(uint32_t instants) const {
     return sum;
 }
 
-std::vector<bool> movingSilhouetteMask(const SceneFrame& frame, const Scene& scene, uint32_t radius) {
+std::vector<bool> movingSilhouetteMask(const SceneFrame& frame, const MotionScene& scene, uint32_t radius) {
     const uint32_t w = scene.width, h = scene.height;
     auto moving = [&](int layer) {
         return layer >= 0 && (scene.layers[size_t(layer)].velocityPx[0] != 0 || scene.layers[size_t(layer)].velocityPx[1] != 0);

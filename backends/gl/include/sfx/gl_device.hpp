@@ -31,8 +31,7 @@ using GetProcAddressFn = void* (*)(const char* name);
 Result<std::unique_ptr<Device>> wrapCurrentContext(GetProcAddressFn getProcAddress, Api api,
                                                    const DeviceOptions& options);
 
-// ---- Host textures in, SDK textures out (gl_external_textures.cpp; docs/integration.md, "Host
-// images and the state contract") --------------------------------------------------------------
+// ---- Host textures in, SDK textures out (docs/integration.md, "Host images and the state contract")
 
 // A host GL texture the SDK may read or write as a texture: depth, normals, colour, velocity or
 // an effect's output. It must be a complete GL_TEXTURE_2D of the device's context (or one

@@ -45,11 +45,9 @@ struct ExternalVulkan {
     // Set when the host enabled VK_EXT_debug_utils on `instance`: then options.validation adds
     // a messenger whose warnings and errors takeValidationMessages() returns.
     bool debugUtilsEnabled = false;
-    // Set when the host created `device` with the synchronization2 feature (Vulkan 1.3's
-    // VkPhysicalDeviceVulkan13Features::synchronization2, or VK_KHR_synchronization2): the SDK
-    // then records each command's barriers in one vkCmdPipelineBarrier2, every barrier with its
-    // own stage masks, instead of one vkCmdPipelineBarrier per pair of stage masks. Fewer
-    // commands cost the recording thread less (docs/integration.md, "CPU overhead").
+    // Set when the host created `device` with synchronization2 (Vulkan 1.3 feature or
+    // VK_KHR_synchronization2): the SDK then records one vkCmdPipelineBarrier2 per command
+    // instead of one vkCmdPipelineBarrier per pair of stage masks, which costs less CPU.
     bool synchronization2Enabled = false;
 };
 Result<std::unique_ptr<Device>> wrapDevice(const ExternalVulkan& external, const DeviceOptions& options = {});
@@ -65,8 +63,7 @@ Result<std::unique_ptr<Device>> wrapDevice(const ExternalVulkan& external, const
 // call with true. InvalidArgument when `device` is not Vulkan.
 Status setCommandBuffer(Device& device, VkCommandBuffer commandBuffer, bool previousFinished = true);
 
-// ---- Host images in, SDK images out (vulkan_external_images.cpp; docs/integration.md, "Host
-// images and the state contract") ---------------------------------------------------------------
+// ---- Host images in, SDK images out (docs/integration.md, "Host images and the state contract")
 
 // A host VkImage the SDK may read or write as a texture: depth, normals, colour, velocity or an
 // effect's output. The SDK's mip i is the host's mip baseMip + i of array layer `layer`.

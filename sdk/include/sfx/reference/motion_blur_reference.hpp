@@ -84,7 +84,7 @@ struct SceneFrame {
     std::vector<int> layer;  // index of the visible layer per pixel, -1 = none (black, far)
 };
 
-struct Scene {
+struct MotionScene {
     uint32_t width = 0, height = 0;
     std::vector<SceneLayer> layers;
     // The picture at shutter time t in [-0.5, 0.5] (0 = mid-shutter), one sample per pixel centre.
@@ -94,6 +94,6 @@ struct Scene {
 };
 
 // Pixels within `radius` of a boundary between layers where at least one of them moves.
-std::vector<bool> movingSilhouetteMask(const SceneFrame& frame, const Scene& scene, uint32_t radius);
+std::vector<bool> movingSilhouetteMask(const SceneFrame& frame, const MotionScene& scene, uint32_t radius);
 
 }  // namespace sfx::reference

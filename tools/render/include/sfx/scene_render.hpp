@@ -55,7 +55,7 @@ struct PlanLine {
     uint64_t bytes = 0;  // resources
     std::string why;
 };
-struct RenderPlan {
+struct FramePlan {
     std::vector<PlanLine> lines;
     uint64_t totalBytes() const;
     std::string describe() const;
@@ -76,7 +76,7 @@ struct RenderStats {
 struct RenderResult {
     io::Image color;               // linear RGB, row 0 = top
     std::optional<io::Image> ao;   // visibility in [0, 1], 1 channel, when AO ran
-    RenderPlan plan;
+    FramePlan plan;
     RenderStats stats;
     std::vector<std::string> warnings;  // printable: what was asked but not drawn
     // With RenderOptions::keepOpaqueInputs and a transparency step: its inputs, row 0 = top.
@@ -101,7 +101,7 @@ public:
     uint32_t width() const { return width_; }
     uint32_t height() const { return height_; }
     // Known before render(): the passes, resources and bytes, and why each is there.
-    RenderPlan plan() const;
+    FramePlan plan() const;
     Result<RenderResult> render();
 
 private:
