@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "effect_common.hpp"
+#include "sfx/settings_ranges.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared_oit.h"
 #include "sfx_shared_oit_params.h"
@@ -48,9 +49,7 @@ Result<std::unique_ptr<Transparency>> Transparency::create(Device& device, const
         return invalidArgument("TransparencyDesc.depthFormat", toString(desc.depthFormat), "D16, D24S8 or D32F");
     if (uint32_t(desc.quality) > uint32_t(TransparencyQuality::High))
         return invalidArgument("TransparencyDesc.quality", std::to_string(uint32_t(desc.quality)), "Standard or High");
-    if (desc.maxLayers > uint32_t(shared::SFX_OIT_MAX_KEPT_LAYERS))
-        return invalidArgument("TransparencyDesc.maxLayers", std::to_string(desc.maxLayers),
-                               "[1, " + std::to_string(shared::SFX_OIT_MAX_KEPT_LAYERS) + "], or 0 for the quality's K");
+    if (desc.maxLayers != 0) SFX_TRY(checkSetting(Setting::OitMaxLayers, desc.maxLayers, {}, ", or 0 for the quality's K"));
     const DeviceCaps& caps = device.caps();
     if (!caps.renderableFormat[size_t(desc.colorFormat)])
         return Status{StatusCode::UnsupportedFormat, std::string("TransparencyDesc.colorFormat ") + toString(desc.colorFormat) +
