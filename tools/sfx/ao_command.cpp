@@ -18,8 +18,9 @@ struct AoFlags {
     std::string resolution = "tier";
     std::string normalsPath;
     std::string outPath;
-    float radius = 0.5f, intensity = -1.0f, contrast = -1.0f, bias = -1.0f, sumExponent = -1.0f;
-    uint32_t samples = 0, blurRadius = 0;
+    float radius = 0.5f;
+    std::optional<float> intensity, contrast, bias, sumExponent;  // unset: the tier's calibrated look
+    std::optional<uint32_t> samples, blurRadius;                  // unset: the tier's
     bool noBlur = false;
     bool showPlan = false;
 };
@@ -27,12 +28,11 @@ struct AoFlags {
 // The flags' ranges (the settings table's rows), named as flags, before any file is read.
 Status checkFlags(const AoFlags& f) {
     SFX_TRY(checkSetting(Setting::AoRadius, f.radius, "--radius"));
-    const char* tier = ", or -1 for the tier's";
-    if (f.intensity != -1.0f) SFX_TRY(checkSetting(Setting::AoIntensity, f.intensity, "--intensity", tier));
-    if (f.contrast != -1.0f) SFX_TRY(checkSetting(Setting::AoContrast, f.contrast, "--contrast", tier));
-    if (f.bias != -1.0f) SFX_TRY(checkSetting(Setting::AoBias, f.bias, "--bias", tier));
-    if (f.sumExponent != -1.0f) SFX_TRY(checkSetting(Setting::AoSumExponent, f.sumExponent, "--sum-exponent", tier));
-    if (f.blurRadius != 0) SFX_TRY(checkSetting(Setting::AoBlurRadius, f.blurRadius, "--blur-radius", ", or 0 for the tier's"));
+    if (f.intensity) SFX_TRY(checkSetting(Setting::AoIntensity, *f.intensity, "--intensity"));
+    if (f.contrast) SFX_TRY(checkSetting(Setting::AoContrast, *f.contrast, "--contrast"));
+    if (f.bias) SFX_TRY(checkSetting(Setting::AoBias, *f.bias, "--bias"));
+    if (f.sumExponent) SFX_TRY(checkSetting(Setting::AoSumExponent, *f.sumExponent, "--sum-exponent"));
+    if (f.blurRadius) SFX_TRY(checkSetting(Setting::AoBlurRadius, *f.blurRadius, "--blur-radius"));
     return Status::ok();
 }
 
@@ -136,14 +136,14 @@ Command addAoCommand(CLI::App& app) {
         ->capture_default_str();
     c.app->add_option("--normals", flags->normalsPath,
                       "view-space normals file (x right, y up, camera looking down -z; signed float xyz in PFM/EXR)");
-    const std::string tier = "; -1 = the tier's calibrated value";
+    const std::string tier = "; not given: the tier's calibrated value";
     c.app->add_option("--radius", flags->radius, settingHelp(Setting::AoRadius))->capture_default_str();
-    c.app->add_option("--intensity", flags->intensity, settingHelp(Setting::AoIntensity) + tier)->capture_default_str();
-    c.app->add_option("--contrast", flags->contrast, settingHelp(Setting::AoContrast) + tier)->capture_default_str();
-    c.app->add_option("--bias", flags->bias, settingHelp(Setting::AoBias) + tier)->capture_default_str();
-    c.app->add_option("--sum-exponent", flags->sumExponent, settingHelp(Setting::AoSumExponent) + tier)->capture_default_str();
-    c.app->add_option("--samples", flags->samples, settingHelp(Setting::AoSamples) + "; 0 = the tier's")->capture_default_str();
-    c.app->add_option("--blur-radius", flags->blurRadius, settingHelp(Setting::AoBlurRadius) + "; 0 = the tier's")->capture_default_str();
+    c.app->add_option("--intensity", flags->intensity, settingHelp(Setting::AoIntensity) + tier);
+    c.app->add_option("--contrast", flags->contrast, settingHelp(Setting::AoContrast) + tier);
+    c.app->add_option("--bias", flags->bias, settingHelp(Setting::AoBias) + tier);
+    c.app->add_option("--sum-exponent", flags->sumExponent, settingHelp(Setting::AoSumExponent) + tier);
+    c.app->add_option("--samples", flags->samples, settingHelp(Setting::AoSamples) + "; not given: the tier's");
+    c.app->add_option("--blur-radius", flags->blurRadius, settingHelp(Setting::AoBlurRadius) + "; not given: the tier's");
     c.app->add_flag("--no-blur", flags->noBlur, "skip the bilateral blur");
     c.app->add_flag("--plan", flags->showPlan, "print the passes and memory");
     c.app->add_option("--out", flags->outPath, "output visibility, .pfm or .exr (a .png is written beside it)")->required();

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 #include <iostream>
+#include <optional>
 
 #include "cli_common.hpp"
 #include "commands.hpp"
@@ -24,9 +25,9 @@ struct MotionBlurFlags {
     DeviceFlags device;
     CameraFlags camera;
     std::string colorPath, velocityPath, outPath;
-    float maxRadius = 0.0f;
+    std::optional<float> maxRadius;  // unset: the tier's
     uint32_t referenceRows = 720;
-    uint32_t samples = 0;
+    std::optional<uint32_t> samples;  // unset: the tier's
     float softDepth = 0.1f;
     float centreWeight = 1.0f;
     float exposure = 1.0f;
@@ -47,9 +48,9 @@ std::string perTier(std::string (*value)(const TierProfile&)) {
 
 // The flags' ranges (the settings table's rows), named as flags, before any file is read.
 Status checkFlags(const MotionBlurFlags& f) {
-    if (f.maxRadius != 0.0f) SFX_TRY(checkSetting(Setting::MbMaxRadiusPx, f.maxRadius, "--max-radius", ", or 0 for the tier's"));
+    if (f.maxRadius) SFX_TRY(checkSetting(Setting::MbMaxRadiusPx, *f.maxRadius, "--max-radius"));
     SFX_TRY(checkSetting(Setting::MbReferenceRows, f.referenceRows, "--reference-rows"));
-    if (f.samples != 0) SFX_TRY(checkSetting(Setting::MbSamples, f.samples, "--samples", ", or 0 for the tier's"));
+    if (f.samples) SFX_TRY(checkSetting(Setting::MbSamples, *f.samples, "--samples"));
     SFX_TRY(checkSetting(Setting::MbSoftDepthExtent, f.softDepth, "--soft-depth"));
     SFX_TRY(checkSetting(Setting::MbCentreWeight, f.centreWeight, "--centre-weight"));
     return checkSetting(Setting::MbExposure, f.exposure, "--exposure");
@@ -182,13 +183,11 @@ Command addMotionBlurCommand(CLI::App& app) {
     sub->add_option("--out", flags->outPath, "output file (.png, .pfm or .exr), the colour's channel layout")->required();
     flags->device.add(*sub);
     sub->add_option("--max-radius", flags->maxRadius,
-                    settingHelp(Setting::MbMaxRadiusPx) + "; 0 = the tier's (" +
-                        perTier([](const TierProfile& p) { return std::to_string(int(p.mbMaxRadiusPx)); }) + ")")
-        ->capture_default_str();
+                    settingHelp(Setting::MbMaxRadiusPx) + "; not given: the tier's (" +
+                        perTier([](const TierProfile& p) { return std::to_string(int(p.mbMaxRadiusPx)); }) + ")");
     sub->add_option("--reference-rows", flags->referenceRows, settingHelp(Setting::MbReferenceRows))->capture_default_str();
     sub->add_option("--samples", flags->samples,
-                    settingHelp(Setting::MbSamples) + "; 0 = the tier's (" + perTier([](const TierProfile& p) { return std::to_string(p.mbTaps); }) + ")")
-        ->capture_default_str();
+                    settingHelp(Setting::MbSamples) + "; not given: the tier's (" + perTier([](const TierProfile& p) { return std::to_string(p.mbTaps); }) + ")");
     sub->add_option("--soft-depth", flags->softDepth, settingHelp(Setting::MbSoftDepthExtent))->capture_default_str();
     sub->add_option("--centre-weight", flags->centreWeight, settingHelp(Setting::MbCentreWeight))->capture_default_str();
     sub->add_option("--exposure", flags->exposure, settingHelp(Setting::MbExposure))->capture_default_str();

@@ -29,7 +29,7 @@ bool parseTier(const std::string& text, Tier* out);
 // The tier names for a message's allowed values: "current or high".
 std::string tierNameList();
 
-// The default look of one AO technique on a tier: the values AoSettings' -1 ("the tier's") fields
+// The default look of one AO technique on a tier: the values AoSettings' unset look fields
 // resolve to, calibrated against ray-traced ground truth by tools/bench/fit_ao (docs/trade.md).
 struct AoLook {
     float intensity = 1.0f;    // sigma

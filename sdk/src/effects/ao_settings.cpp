@@ -17,19 +17,16 @@ std::string num(double v) {
 }
 
 // NaN fails every comparison, so each check is written as "inside the range" negated.
-// The value of an AoSettings look field that means "the tier preset's AoLook".
-constexpr float kTierValue = -1.0f;
-float orTier(float value, float tierValue) { return value == kTierValue ? tierValue : value; }
 // Crease's other tap count: the checkerboard half of its diamond (shared::aoCreaseTapIndex).
 constexpr uint32_t kCreaseHalfTaps = uint32_t(shared::SFX_AO_CREASE_TAPS) / 2;
 // A hand-filled profile's crease spacing beyond this (output pixels at the reference rows) would
 // spread the 11x11 diamond over more than the image's height.
 constexpr float kMaxCreaseSpacingPx = 64.0f;
 
-// A look field's range (the table's row), for the value set or, at -1, for the tier's look that -1
+// A look field's range (the table's row), for the value set or, unset, for the tier's look it
 // resolves to (a hand-filled profile may hold any value there).
-Status checkLookField(Setting id, float value, const char* lookField, float lookValue) {
-    if (value != kTierValue) return checkSetting(id, value, {}, ", or -1 for the tier's");
+Status checkLookField(Setting id, const std::optional<float>& value, const char* lookField, float lookValue) {
+    if (value) return checkSetting(id, *value);
     return checkSetting(id, lookValue, lookField);
 }
 
@@ -95,17 +92,17 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
     SFX_TRY(checkLookField(Setting::AoBias, s.bias, "AoDesc.profile.aoLook.bias", look.bias));
     SFX_TRY(checkLookField(Setting::AoSumExponent, s.sumExponent, "AoDesc.profile.aoLook.sumExponent", look.sumExponent));
     SFX_TRY(checkSetting(Setting::AoEpsilon, s.epsilon));
-    if (s.technique == AoTechnique::Crease) {
-        if (s.samples != 0 && s.samples != kCreaseHalfTaps && s.samples != uint32_t(shared::SFX_AO_CREASE_TAPS))
-            return invalidArgument("AoSettings.samples", std::to_string(s.samples),
-                                   "0 (the tier's), 12 (half the diamond per pixel) or 24 (the whole 11x11 stippled diamond) for Crease");
-    } else if (s.samples != 0) {
-        SFX_TRY(checkSetting(Setting::AoSamples, s.samples, {}, ", or 0 for the tier's"));
-        if (s.technique == AoTechnique::Scalable && profile.aoScalableMirrored && s.samples % 2 != 0)
-            return invalidArgument("AoSettings.samples", std::to_string(s.samples),
-                                   std::string("an even count on the ") + toString(profile.tier) + " tier (its Scalable taps come in mirrored pairs), or 0");
+    if (s.samples && s.technique == AoTechnique::Crease) {
+        if (*s.samples != kCreaseHalfTaps && *s.samples != uint32_t(shared::SFX_AO_CREASE_TAPS))
+            return invalidArgument("AoSettings.samples", std::to_string(*s.samples),
+                                   "12 (half the diamond per pixel) or 24 (the whole 11x11 stippled diamond) for Crease");
+    } else if (s.samples) {
+        SFX_TRY(checkSetting(Setting::AoSamples, *s.samples));
+        if (s.technique == AoTechnique::Scalable && profile.aoScalableMirrored && *s.samples % 2 != 0)
+            return invalidArgument("AoSettings.samples", std::to_string(*s.samples),
+                                   std::string("an even count on the ") + toString(profile.tier) + " tier (its Scalable taps come in mirrored pairs)");
     }
-    if (s.blurRadius != 0) SFX_TRY(checkSetting(Setting::AoBlurRadius, s.blurRadius, {}, ", or 0 for the tier's"));
+    if (s.blurRadius) SFX_TRY(checkSetting(Setting::AoBlurRadius, *s.blurRadius));
     if (uint32_t(s.resolution) > 2)
         return invalidArgument("AoSettings.resolution", std::to_string(uint32_t(s.resolution)), "Tier, Full or Half");
     if (uint32_t(s.normals) > 1) return invalidArgument("AoSettings.normals", std::to_string(uint32_t(s.normals)), "FromDepth or FromTexture");
@@ -118,8 +115,8 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
         return invalidArgument("AoSettings.resolution", "Half with depthLayers " + std::to_string(s.depthLayers),
                                "Full or Tier (multilayer AO runs at full resolution: the layers are full size)");
     const AoCreaseSettings& c = s.crease;
-    if (c.range != kTierValue) SFX_TRY(checkSetting(Setting::AoCreaseRange, c.range, {}, ", or -1 for the tier's"));
-    if (c.bias != kTierValue) SFX_TRY(checkSetting(Setting::AoCreaseBias, c.bias, {}, ", or -1 for the tier's"));
+    if (c.range) SFX_TRY(checkSetting(Setting::AoCreaseRange, *c.range));
+    if (c.bias) SFX_TRY(checkSetting(Setting::AoCreaseBias, *c.bias));
     SFX_TRY(checkSetting(Setting::AoCreaseAverager, c.averager));
     SFX_TRY(checkSetting(Setting::AoCreaseMinimumCrease, c.minimumCrease));
     if (!(c.fadeStart >= 0) || std::isinf(c.fadeStart)) return invalidArgument("AoSettings.crease.fadeStart", num(c.fadeStart), "[0, inf)");
@@ -134,13 +131,12 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
     c.technique = s.technique;
     c.radius = s.radius;
     const AoLook& look = profile.aoLook[uint32_t(s.technique)];
-    c.intensity = orTier(s.intensity, look.intensity);
-    c.contrast = orTier(s.contrast, look.contrast);
+    c.intensity = s.intensity.value_or(look.intensity);
+    c.contrast = s.contrast.value_or(look.contrast);
     c.epsilon = s.epsilon;
     c.normals = s.normals;
-    c.crease = s.crease;
-    c.crease.range = orTier(s.crease.range, look.creaseRange);
-    c.crease.bias = orTier(s.crease.bias, look.creaseBias);
+    const AoCreaseSettings& cs = s.crease;
+    c.crease = {cs.range.value_or(look.creaseRange), cs.bias.value_or(look.creaseBias), cs.averager, cs.minimumCrease, cs.fadeStart, cs.fadeEnd};
     c.depthLayers = s.depthLayers;
     // Multilayer AO is full size (its layers are): the tier's half resolution does not apply.
     c.halfResolution = s.resolution == AoResolution::Half || (s.resolution == AoResolution::Tier && profile.aoHalfResolution && s.depthLayers == 1);
@@ -149,17 +145,17 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
     // clamp, crease's spacing) scale with the output's rows, then halve at half size: the look
     // the fit calibrated (docs/trade.md) then holds at every resolution.
     const double passPxPerReferencePx = double(outputRows) / double(shared::SFX_AO_REFERENCE_ROWS) * (c.halfResolution ? 0.5 : 1.0);
-    const uint32_t blurPx = s.blurRadius ? s.blurRadius : profile.aoBlurRadiusPx;
+    const uint32_t blurPx = s.blurRadius.value_or(profile.aoBlurRadiusPx);
     c.blurRadius = s.blur ? (c.halfResolution ? std::max(1u, (blurPx + 1) / 2) : blurPx) : 0;
     switch (s.technique) {
         case AoTechnique::Alchemy:
-            c.bias = orTier(s.bias, look.bias);
-            c.samples = s.samples ? s.samples : profile.aoAlchemySamples;
+            c.bias = s.bias.value_or(look.bias);
+            c.samples = s.samples.value_or(profile.aoAlchemySamples);
             break;
         case AoTechnique::Scalable:
-            c.bias = orTier(s.bias, look.bias);
-            c.sumExponent = orTier(s.sumExponent, look.sumExponent);
-            c.samples = s.samples ? s.samples : profile.aoScalableTaps;
+            c.bias = s.bias.value_or(look.bias);
+            c.sumExponent = s.sumExponent.value_or(look.sumExponent);
+            c.samples = s.samples.value_or(profile.aoScalableTaps);
             c.mirrored = profile.aoScalableMirrored;
             c.spiralTurns = c.mirrored ? shared::SFX_AO_SPIRAL_TURNS_MIRRORED : shared::SFX_AO_SPIRAL_TURNS_SPIRAL;
             // The clamp keeps the taps near the centre (the texture cache, the paper's reason). A
@@ -176,7 +172,7 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
             break;
         case AoTechnique::Crease:
             c.bias = 0;
-            c.samples = s.samples ? s.samples : profile.aoCreaseTaps;
+            c.samples = s.samples.value_or(profile.aoCreaseTaps);
             c.creaseStride = uint32_t(std::max(1.0, std::round(double(profile.aoCreaseSpacingPx) * passPxPerReferencePx)));
             break;
     }

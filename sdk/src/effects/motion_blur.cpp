@@ -52,12 +52,12 @@ uint32_t tilesFor(uint32_t size, uint32_t radius) { return (size + radius - 1) /
 Result<MotionBlurParams> resolveMotionBlur(const TierProfile& profile, const MotionBlurSettings& s, uint32_t height) {
     SFX_TRY(checkProfile(profile));
     const double limit = double(shared::SFX_MB_MAX_RADIUS_LIMIT_PX);
-    if (s.maxRadiusPx != 0.0f) SFX_TRY(checkSetting(Setting::MbMaxRadiusPx, s.maxRadiusPx, {}, ", or 0 for the tier's"));
+    if (s.maxRadiusPx) SFX_TRY(checkSetting(Setting::MbMaxRadiusPx, *s.maxRadiusPx));
     SFX_TRY(checkSetting(Setting::MbReferenceRows, s.referenceRows));
-    if (s.samples != 0) {
-        SFX_TRY(checkSetting(Setting::MbSamples, s.samples, {}, ", or 0 for the tier's"));
-        if (s.samples % 2 == 0)
-            return invalidArgument("MotionBlurSettings.samples", std::to_string(s.samples), "odd (centre + mirrored pairs), or 0 for the tier's");
+    if (s.samples) {
+        SFX_TRY(checkSetting(Setting::MbSamples, *s.samples));
+        if (*s.samples % 2 == 0)
+            return invalidArgument("MotionBlurSettings.samples", std::to_string(*s.samples), "an odd count (centre + mirrored pairs)");
     }
     SFX_TRY(checkSetting(Setting::MbSoftDepthExtent, s.softDepthExtent));
     SFX_TRY(checkSetting(Setting::MbCentreWeight, s.centreWeight));
@@ -65,22 +65,22 @@ Result<MotionBlurParams> resolveMotionBlur(const TierProfile& profile, const Mot
     if (height == 0) return invalidArgument("height", "0", "[1, maxTextureSize]");
 
     MotionBlurParams p;
-    p.taps = s.samples != 0 ? s.samples : profile.mbTaps;
+    p.taps = s.samples.value_or(profile.mbTaps);
     p.pairs = (p.taps - 1) / 2;
     p.jitterSize = profile.mbJitterSize;
-    const double base = s.maxRadiusPx != 0.0f ? double(s.maxRadiusPx) : double(profile.mbMaxRadiusPx);
+    const double base = double(s.maxRadiusPx.value_or(profile.mbMaxRadiusPx));
     const double scaled = s.referenceRows == 0 ? base : base * double(height) / double(s.referenceRows);
     double radius = std::max(1.0, std::round(scaled));
     // The tier's default is a look defined at referenceRows; at very tall outputs it is held
     // at the shaders' limit rather than refused (the plan names the cap). A radius the
     // caller chose is refused instead, since capping it would change what was asked for.
-    if (radius > limit && s.maxRadiusPx == 0.0f) {
+    if (radius > limit && !s.maxRadiusPx) {
         p.radiusCapped = true;
         p.scaledRadiusPx = radius;
         radius = limit;
     }
     if (radius > limit)
-        return invalidArgument("MotionBlurSettings.maxRadiusPx", std::to_string(s.maxRadiusPx) + " (" + std::to_string(radius) +
+        return invalidArgument("MotionBlurSettings.maxRadiusPx", std::to_string(*s.maxRadiusPx) + " (" + std::to_string(radius) +
                                    " px at " + std::to_string(height) + " rows)",
                                "a scaled radius <= 64 px");
     p.radiusPx = uint32_t(radius);
