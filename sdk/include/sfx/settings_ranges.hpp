@@ -1,5 +1,5 @@
 // The allowed range of every numeric public setting, written once: the effects' validation, the
-// sfx CLI's help and checks, the scene renderer and docs/settings.md (`sfx info --settings`)
+// sfx CLI's help and checks, the scene renderer and scene-file reader and docs/settings.md (`sfx info --settings`)
 // all read this table.
 #pragma once
 
@@ -33,6 +33,7 @@ enum class Setting : uint32_t {
     OitMaxLayers,
     OitCompressedNodes,
     OitAoFilterRadius,
+    OitDrawOpacity,
     Count,
 };
 

@@ -49,6 +49,7 @@ const SettingRange kRows[] = {
      "M: nodes per compressed list (high tier); 0 = no compression"},
     {S::OitAoFilterRadius, "TransparencyDesc.ao.filterRadius", 0, shared::SFX_AO_MAX_BLUR_RADIUS, kClosed, kClosed, "px",
      "bilateral filter taps each side of the AO through the layers; 0 = the raw AO"},
+    {S::OitDrawOpacity, "TransparentDraw.opacity", 0, 1, kClosed, kClosed, "", "opacity of a transparent draw (and a scene file object's)"},
 };
 static_assert(std::size(kRows) == size_t(Setting::Count), "one row per Setting");
 
