@@ -175,7 +175,7 @@ int main(int argc, char** argv) {
         // shading (a sum over 10) faint on these scenes; the demo turns them up so the effect shows.
         desc.settings.intensity = technique == AoTechnique::Scalable ? 3.0f : technique == AoTechnique::Crease ? 3.0f : 1.0f;
         std::cout << "ao " << toString(technique) << ": radius " << desc.settings.radius << ", intensity "
-                  << desc.settings.intensity << "\n";
+                  << *desc.settings.intensity << "\n";
         Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(*device, desc);
         if (!ao) return fail(ao.status());
         plan.append(ao.value()->plan());

@@ -19,6 +19,7 @@ SFX_BLOCK(OitDrawParams, 0)
     SFX_M_MAT4(normalMatrix)  // inverse transpose of modelView (upper 3x3 used)
     SFX_M_VEC4(color)         // straight linear rgb, opacity in a
     SFX_M_INT(drawId)         // [0, 2^31)
+    SFX_M_INT(pad0) SFX_M_INT(pad1) SFX_M_INT(pad2)  // to 16 bytes, so the block is sizeof's 224
 SFX_BLOCK_END(draw)
 #endif
 

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <optional>
 #include <cstring>
 #include <random>
 
@@ -37,7 +38,7 @@ ColorGrid runGpu(const ColorGrid& color, const Grid& depth, const VelocityGrid* 
     return test::runMotionBlur(test::device(), test::tierProfile(), color, depth, velocity, s, camera, descInput);
 }
 
-MotionBlurSettings pixelSettings(float radius) {
+MotionBlurSettings pixelSettings(std::optional<float> radius) {
     MotionBlurSettings s;
     s.maxRadiusPx = radius;
     s.referenceRows = 0;
@@ -94,11 +95,11 @@ TEST_CASE("motion blur: matches the reference on a scene with moving and still l
     const MotionScene scene = test::movingAndStillLayersScene();
     const SceneFrame f = scene.render(0);
     const ColorGrid c = toHalfGrid(f.color);
-    for (float radius : {0.0f, 7.0f}) {
+    for (std::optional<float> radius : {std::optional<float>{}, std::optional<float>{7.0f}}) {
         const MotionBlurSettings s = pixelSettings(radius);
         const ColorGrid gpu = runGpu(c, f.depth, &f.velocity, s);
         const ColorGrid ref = motionBlur(c, f.depth, f.velocity, resolved(s, scene.height)).color;
-        compareWithReference(gpu, ref, radius == 0 ? "tier radius" : "radius 7");
+        compareWithReference(gpu, ref, radius ? "radius 7" : "tier radius");
     }
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <cstring>
 #include <random>
 
@@ -68,8 +69,8 @@ struct Gpu {
 // Renders `frames` frames of the scene (draws in the given order) and reads the last one back.
 // Two by default: the first frame's pool is a guess (4 nodes per pixel), the second is sized
 // from the first's count, as a host's steady scene is.
-Gpu render(const OitScene& scene, const std::vector<size_t>& order, uint64_t initialPoolNodes = 0, int frames = 2,
-           std::vector<TransparencyStats>* perFrame = nullptr, uint32_t maxLayers = 0) {
+Gpu render(const OitScene& scene, const std::vector<size_t>& order, std::optional<uint64_t> initialPoolNodes = {}, int frames = 2,
+           std::vector<TransparencyStats>* perFrame = nullptr, std::optional<uint32_t> maxLayers = {}) {
     Device& dev = test::device();
     TransparencyDesc desc;
     desc.width = kW;
@@ -225,9 +226,9 @@ TEST_CASE("oit: more layers than K keep the nearest K exact and fold the rest (h
     if (test::tier() != Tier::High) return;  // the fallback has no K
     const OitScene scene = layeredScene(22, 2, 0.3);
     // The quality's K (16), and K = 4 through TransparencyDesc::maxLayers.
-    for (uint32_t maxLayers : {0u, 4u}) {
-        const Gpu g = render(scene, identity(scene.layers.size()), 0, 2, nullptr, maxLayers);
-        const uint32_t k = maxLayers != 0 ? maxLayers : keptLayers(TransparencyQuality::Standard);
+    for (std::optional<uint32_t> maxLayers : {std::optional<uint32_t>{}, std::optional<uint32_t>{4u}}) {
+        const Gpu g = render(scene, identity(scene.layers.size()), {}, 2, nullptr, maxLayers);
+        const uint32_t k = maxLayers.value_or(keptLayers(TransparencyQuality::Standard));
         const double kept = worstError(g, scene, [&](const auto& f, const auto& o) { return compositeKept(f, o, k); });
         INFO("worst error vs kept-" << k << " reference " << kept);
         CHECK(kept <= kEightBit);

@@ -494,7 +494,11 @@ TEST_CASE("oit layers: settings out of range are refused by name; the plan names
     auto r = Transparency::create(dev, d);
     REQUIRE(!r.isOk());
     CHECK(r.status().message().find("TransparencyDesc.maxLayers") != std::string::npos);
-    d.maxLayers = 0;
+    d.maxLayers = 0;  // unset is the quality's K; 0 is out of range
+    r = Transparency::create(dev, d);
+    REQUIRE(!r.isOk());
+    CHECK(r.status().message().find("TransparencyDesc.maxLayers is 0") != std::string::npos);
+    d.maxLayers.reset();
     d.compressedNodes = 5;
     r = Transparency::create(dev, d);
     REQUIRE(!r.isOk());

@@ -52,8 +52,9 @@ sfx::Result<std::unique_ptr<sfx::AmbientObscurance>> createAo(sfx::Device& devic
     if (!tier) return tier.status();                              // names the unmet requirement
     std::cout << tier->reason << "\n";                            // why this tier
 
-    sfx::AoSettings settings;                                     // documented ranges; bad values
-    settings.radius = 0.5f;                                       // are named errors, not clamps
+    sfx::AoSettings settings;                                     // ranges: docs/settings.md; bad
+    settings.radius = 0.5f;                                       // values are named errors, not clamps
+    settings.intensity = std::nullopt;                            // unset: the tier's calibrated value
     auto ao = sfx::AmbientObscurance::create(device, {width, height, tier->profile, settings, depthKind});
     if (ao) std::cout << ao.value()->plan().describe();           // passes and bytes it holds
     return ao;

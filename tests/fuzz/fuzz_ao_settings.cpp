@@ -14,23 +14,23 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     AoSettings s;
     s.technique = AoTechnique(in.ConsumeIntegralInRange<uint32_t>(0, 4));
     s.radius = fuzz::hostileFloat(in);
-    s.intensity = fuzz::hostileFloat(in);
-    s.contrast = fuzz::hostileFloat(in);
-    s.bias = in.ConsumeBool() ? -1.0f : fuzz::hostileFloat(in);
+    s.intensity = fuzz::hostileOptionalFloat(in);
+    s.contrast = fuzz::hostileOptionalFloat(in);
+    s.bias = fuzz::hostileOptionalFloat(in);
     s.epsilon = fuzz::hostileFloat(in);
-    s.samples = fuzz::hostileCount(in);
+    s.samples = fuzz::hostileOptionalCount(in);
     s.blur = in.ConsumeBool();
-    s.blurRadius = fuzz::hostileCount(in);
+    s.blurRadius = fuzz::hostileOptionalCount(in);
     s.normals = AoNormals(in.ConsumeIntegralInRange<uint32_t>(0, 3));
-    s.crease.range = fuzz::hostileFloat(in);
-    s.crease.bias = fuzz::hostileFloat(in);
+    s.crease.range = fuzz::hostileOptionalFloat(in);
+    s.crease.bias = fuzz::hostileOptionalFloat(in);
     s.crease.averager = fuzz::hostileFloat(in);
     s.crease.minimumCrease = fuzz::hostileFloat(in);
     s.crease.fadeStart = fuzz::hostileFloat(in);
     s.crease.fadeEnd = fuzz::hostileFloat(in);
     const uint32_t mipLevelsAllowed = in.ConsumeIntegralInRange<uint32_t>(1, 16);
     const uint32_t outputRows = in.ConsumeIntegralInRange<uint32_t>(1, 16384);  // a context's height
-    s.sumExponent = in.ConsumeBool() ? -1.0f : fuzz::hostileFloat(in);
+    s.sumExponent = fuzz::hostileOptionalFloat(in);
 
     const Status valid = validateAoSettings(s, profile);
     Result<AoConfig> config = resolveAoConfig(s, profile, mipLevelsAllowed, outputRows);

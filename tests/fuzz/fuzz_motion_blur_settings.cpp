@@ -12,9 +12,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     FuzzedDataProvider in(data, size);
     const TierProfile profile = fuzz::hostileProfile(in);
     MotionBlurSettings s;
-    s.maxRadiusPx = in.ConsumeBool() ? 0.0f : fuzz::hostileFloat(in);
+    s.maxRadiusPx = fuzz::hostileOptionalFloat(in);
     s.referenceRows = fuzz::hostileCount(in);
-    s.samples = fuzz::hostileCount(in);
+    s.samples = fuzz::hostileOptionalCount(in);
     s.softDepthExtent = fuzz::hostileFloat(in);
     s.centreWeight = fuzz::hostileFloat(in);
     s.exposure = fuzz::hostileFloat(in);

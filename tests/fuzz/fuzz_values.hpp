@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "sfx/status.hpp"
@@ -39,6 +40,16 @@ inline float hostileFloat(FuzzedDataProvider& in) {
 // Small counts most of the time (where the ranges' edges are), any 32-bit value otherwise.
 inline uint32_t hostileCount(FuzzedDataProvider& in) {
     return in.ConsumeBool() ? in.ConsumeIntegralInRange<uint32_t>(0, 70) : in.ConsumeIntegral<uint32_t>();
+}
+
+// Unset (the tier's value) or a hostile value.
+inline std::optional<float> hostileOptionalFloat(FuzzedDataProvider& in) {
+    if (in.ConsumeBool()) return std::nullopt;
+    return hostileFloat(in);
+}
+inline std::optional<uint32_t> hostileOptionalCount(FuzzedDataProvider& in) {
+    if (in.ConsumeBool()) return std::nullopt;
+    return hostileCount(in);
 }
 
 inline TierProfile hostileProfile(FuzzedDataProvider& in) {

@@ -37,7 +37,7 @@ AoConfig configFor(AoTechnique t, Tier tier, double scale = 1.0, bool blur = tru
     // The papers' look (the tier's calibrated one would move the analytic expectations).
     s.intensity = t == AoTechnique::Scalable ? 2.0f : 1.0f;
     s.contrast = 1.0f;
-    s.bias = t == AoTechnique::Alchemy ? kAoAlchemyDefaultBias : t == AoTechnique::Scalable ? kAoScalableDefaultBias : -1.0f;
+    if (t != AoTechnique::Crease) s.bias = t == AoTechnique::Alchemy ? kAoAlchemyDefaultBias : kAoScalableDefaultBias;
     s.sumExponent = kAoScalableCourseSumExponent;
     s.crease.bias = 0.25f;
     s.crease.range = float(1.0 * scale);
@@ -137,6 +137,12 @@ TEST_CASE("ao settings: out-of-range values are named errors", "[ao][bad-input]"
     s = {};
     s.blurRadius = 9;
     CHECK(validateAoSettings(s, high).message().find("AoSettings.blurRadius") != std::string::npos);
+    // Counts are unset for the tier's: 0 is no longer a way to say so, it is out of range.
+    s.blurRadius = 0;
+    CHECK(validateAoSettings(s, high).message() == "AoSettings.blurRadius is 0; allowed [1, 8]");
+    s = {};
+    s.samples = 0;
+    CHECK(validateAoSettings(s, high).message() == "AoSettings.samples is 0; allowed [1, 64]");
     s = {};
     s.contrast = 0;
     CHECK(validateAoSettings(s, high).message().find("AoSettings.contrast") != std::string::npos);
@@ -152,7 +158,7 @@ TEST_CASE("ao settings resolve to the tier table", "[ao]") {
     // The blur's depth source is a profile field, matching ao_blur.frag's tier variants.
     CHECK(tiers::profile(Tier::Current).aoPackedDepthTarget);
     CHECK_FALSE(tiers::profile(Tier::High).aoPackedDepthTarget);
-    // The look fields default to -1: the tier preset's calibrated AoLook; a value set wins.
+    // Unset look fields take the tier preset's calibrated AoLook; a value set wins.
     for (Tier tier : kTiers)
         for (AoTechnique t : kTechniques) {
             const AoLook& look = tiers::profile(tier).aoLook[uint32_t(t)];

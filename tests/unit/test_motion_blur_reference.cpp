@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <optional>
 #include <random>
 
 #include "sfx/motion_blur.hpp"
@@ -16,7 +17,7 @@ using namespace sfx::reference;
 
 namespace {
 
-MotionBlurParams params(Tier tier, float radiusPx) {
+MotionBlurParams params(Tier tier, std::optional<float> radiusPx) {
     MotionBlurSettings s;
     s.maxRadiusPx = radiusPx;
     s.referenceRows = 0;  // radius in output pixels
@@ -49,7 +50,7 @@ TEST_CASE("motion blur reference: zero velocity returns the input exactly", "[mo
     for (Tier tier : kTiers) {
         ColorGrid c = noise(40, 30, 1);
         Grid z(40, 30, 5.0);
-        MotionBlurReferenceResult r = motionBlur(c, z, VelocityGrid(40, 30), params(tier, 0));
+        MotionBlurReferenceResult r = motionBlur(c, z, VelocityGrid(40, 30), params(tier, {}));
         CHECK(r.stillPixels == 40u * 30u);
         CHECK(maxAbsDiff(r.color, c) == 0.0);
     }
@@ -191,7 +192,7 @@ TEST_CASE("motion blur reference: no output is NaN, even for NaN or infinite vel
         Grid z(w, h);
         for (auto& d : z.values) d = 0.1 + std::fabs(u(rng));
         z.at(5, 5) = 1e8;  // sky
-        const MotionBlurReferenceResult r = motionBlur(noise(w, h, 4), z, v, params(tier, 0));
+        const MotionBlurReferenceResult r = motionBlur(noise(w, h, 4), z, v, params(tier, {}));
         for (const auto& px : r.color.values)
             for (double ch : px) REQUIRE(std::isfinite(ch));
     }
@@ -247,6 +248,8 @@ TEST_CASE("motion blur: settings out of range are named errors; tiers and scalin
     t.samples = 8;
     bad(t, "samples");
     t.samples = 33;
+    bad(t, "samples");
+    t.samples = 0;  // unset is the tier's; 0 is out of range
     bad(t, "samples");
     t = {};
     t.softDepthExtent = 0;

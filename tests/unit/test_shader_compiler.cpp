@@ -48,6 +48,30 @@ TEST_CASE("shader compiler reflects bindings and emits every GL dialect", "[shad
     CHECK(s.glsl[size_t(ShaderDialect::Glsl450)].find("#version 450") == 0);
 }
 
+TEST_CASE("sfxc's generated header lists each program's reflected uniform blocks", "[shaders]") {
+    auto program = [](const char* block, Tier tier) {
+        shaderc::StageSource src{ShaderStage::Fragment, "blocks.frag",
+                                 std::string("#version 450\nlayout(set=0, binding=2, std140) uniform Params { ") + block +
+                                     " } params;\nlayout(location=0) out vec4 o;\nvoid main() { o = params.a; }\n"};
+        shaderc::CompileOptions opts;
+        opts.tier = tier;
+        return shaderc::compileProgram("blocks", {src}, opts);
+    };
+    Result<CompiledProgram> current = program("vec4 a;", Tier::Current), high = program("vec4 a;", Tier::High);
+    REQUIRE(current.isOk());
+    REQUIRE(high.isOk());
+    auto embedded = shaderc::generateEmbedding({current.value(), high.value()}, {"blocks.hpp"});
+    REQUIRE(embedded.isOk());
+    CHECK(embedded->first.find(R"(kUniformBlocks{{{"Params", 16u, 2u}, }};)") != std::string::npos);
+    CHECK(embedded->first.find("{gen::blocks::kName, gen::blocks::kUniformBlocks},") != std::string::npos);
+    // One block, one size across tiers.
+    Result<CompiledProgram> larger = program("vec4 a; vec4 b;", Tier::High);
+    REQUIRE(larger.isOk());
+    auto mismatched = shaderc::generateEmbedding({current.value(), larger.value()}, {"blocks.hpp"});
+    REQUIRE_FALSE(mismatched.isOk());
+    CHECK(mismatched.status().message().find("uniform block 'Params' is 16 bytes on one tier and 32 on another") != std::string::npos);
+}
+
 TEST_CASE("shader compiler rejects resources outside set 0", "[shaders][bad-input]") {
     shaderc::StageSource src{ShaderStage::Fragment, "set1.frag",
                              "#version 450\nlayout(set=1, binding=0) uniform sampler2D uTex;\n"

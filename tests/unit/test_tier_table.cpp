@@ -1,6 +1,5 @@
-// The tier table and what is generated from it (shader defines, dialects, names), and the
-// uniform blocks declared once in shader_src/include/sfx_shared*.h against the blocks the
-// compiled shaders really have.
+// The tier table and what is generated from it (shader defines, dialects, names). The uniform
+// blocks are checked in test_uniform_blocks.cpp.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -8,7 +7,6 @@
 #include <tuple>
 
 #include "sfx/tiers.hpp"
-#include "sfx_scene_shaders.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared.h"
 #include "sfx_shared_ao.h"
@@ -123,38 +121,4 @@ TEST_CASE("tier table: names, shader defines and dialects are generated from it"
                 CHECK(s.glsl[d].empty() == !listed);
             }
     }
-}
-
-TEST_CASE("shared uniform blocks: the C++ structs have the compiled blocks' size and binding", "[shaders]") {
-    struct Expected {
-        const char* program;
-        const char* block;
-        uint32_t size;
-        uint32_t binding;
-    };
-    const Expected expected[] = {
-        {"ao_alchemy", "AoParams", sizeof(shared::AoParams), shared::AoParams::kBinding},
-        {"ao_scalable", "AoParams", sizeof(shared::AoParams), shared::AoParams::kBinding},
-        {"ao_crease", "AoParams", sizeof(shared::AoParams), shared::AoParams::kBinding},
-        {"ao_blur", "BlurParams", sizeof(shared::BlurParams), shared::BlurParams::kBinding},
-        {"linearize_depth", "LinearizeParams", sizeof(shared::LinearizeParams), shared::LinearizeParams::kBinding},
-        {"mb_pack", "MbPackParams", sizeof(shared::MbPackParams), shared::MbPackParams::kBinding},
-        {"mb_reconstruct", "MbReconstructParams", sizeof(shared::MbReconstructParams), shared::MbReconstructParams::kBinding},
-        {"raster_gbuffer", "RasterParams", sizeof(shared::RasterParams), shared::RasterParams::kBinding},
-    };
-    for (const Expected& e : expected)
-        for (uint32_t t = 0; t < kTierCount; ++t) {
-            // The G-buffer raster program belongs to the scenes' shader library, not the runtime's.
-            const bool sceneProgram = std::string_view(e.program) == gen::raster_gbuffer::kName;
-            Result<const CompiledProgram*> p = sceneProgram ? scene_shaders::find(e.program, Tier(t)) : shaders::find(e.program, Tier(t));
-            REQUIRE(p.isOk());
-            INFO(e.program << " " << toString(Tier(t)) << " " << e.block);
-            const auto& res = p.value()->resources;
-            auto it = std::find_if(res.begin(), res.end(), [&](const ShaderResource& r) {
-                return r.kind == ResourceKind::UniformBuffer && r.name == e.block;
-            });
-            REQUIRE(it != res.end());
-            CHECK(it->blockSize == e.size);
-            CHECK(it->binding == e.binding);
-        }
 }

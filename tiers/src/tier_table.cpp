@@ -12,7 +12,7 @@ bool apiAtLeast(const DeviceCaps& c, uint32_t major, uint32_t minor) {
     return c.apiMajor > major || (c.apiMajor == major && c.apiMinor >= minor);
 }
 
-// GL ES 3.0-class: fragment passes with float render targets for linear depth.
+// The current tier's requirements (what the tier is for is its row's summary, makeTable).
 std::vector<Requirement> currentRules() {
     return {
         {"a rasterising device (not the null backend)", [](const DeviceCaps& c) { return c.backend != BackendKind::Null; }},
@@ -39,7 +39,7 @@ std::vector<Requirement> currentRules() {
     };
 }
 
-// Vulkan / D3D11-class: everything above, plus compute, storage buffers and atomics.
+// The high tier's requirements: the current tier's, plus compute, storage buffers and atomics.
 std::vector<Requirement> highRules() {
     std::vector<Requirement> rules = currentRules();
     rules.push_back({"API at least GL ES 3.1, GL 4.3 or Vulkan 1.1", [](const DeviceCaps& c) {

@@ -17,6 +17,7 @@
 #include <functional>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "bench_device.hpp"
@@ -49,12 +50,13 @@ struct Options {
 // A searched parameter: a field of AoSettings, its range and whether the search steps in log space.
 struct Parameter {
     const char* name;
-    float AoSettings::*field = nullptr;           // a top-level field, or
-    float AoCreaseSettings::*creaseField = nullptr;  // one of crease's
+    std::optional<float> AoSettings::*field = nullptr;           // a top-level field, or
+    std::optional<float> AoCreaseSettings::*creaseField = nullptr;  // one of crease's
     double lo, hi;
     bool logScale;
-    float& of(AoSettings& s) const { return field ? s.*field : s.crease.*creaseField; }
-    float of(const AoSettings& s) const { return field ? s.*field : s.crease.*creaseField; }
+    std::optional<float>& of(AoSettings& s) const { return field ? s.*field : s.crease.*creaseField; }
+    // The searched settings are always set (startingSettings, tierSettings).
+    float of(const AoSettings& s) const { return (field ? s.*field : s.crease.*creaseField).value(); }
     double toUnit(double v) const { return logScale ? std::log(v / lo) / std::log(hi / lo) : (v - lo) / (hi - lo); }
     double fromUnit(double u) const {
         u = std::clamp(u, 0.0, 1.0);
@@ -338,12 +340,14 @@ int main(int argc, char** argv) {
     csv << "tier,technique,intensity,contrast,bias,sum_exponent,crease_range,crease_bias,training_psnr_db,training_psnr_occluded_db,heldout_psnr_db,"
            "heldout_psnr_occluded_db,heldout_signed_error_occluded,before_heldout_psnr_db,before_heldout_psnr_occluded_db,none_heldout_psnr_db,"
            "none_heldout_psnr_occluded_db\n";
-    for (const FitRow& r : rows)
-        csv << r.tier << "," << r.technique << "," << r.settings.intensity << "," << r.settings.contrast << "," << r.settings.bias << ","
-            << (r.settings.technique == AoTechnique::Scalable ? r.settings.sumExponent : -1.0f) << "," << r.settings.crease.range << "," << r.settings.crease.bias << "," << fixed(r.trainingScore.psnr, 3) << ","
+    for (const FitRow& r : rows) {
+        const AoSettings& rs = r.settings;
+        csv << r.tier << "," << r.technique << "," << rs.intensity.value() << "," << rs.contrast.value() << "," << rs.bias.value() << ","
+            << (rs.technique == AoTechnique::Scalable ? rs.sumExponent.value() : -1.0f) << "," << rs.crease.range.value() << "," << rs.crease.bias.value() << "," << fixed(r.trainingScore.psnr, 3) << ","
             << fixed(r.trainingScore.psnrOccluded, 3) << "," << fixed(r.heldOut.psnr, 3) << "," << fixed(r.heldOut.psnrOccluded, 3) << ","
             << fixed(r.heldOut.signedOccluded, 4) << "," << fixed(r.before.psnr, 3) << "," << fixed(r.before.psnrOccluded, 3) << ","
             << fixed(none["held-out"].psnr, 3) << "," << fixed(none["held-out"].psnrOccluded, 3) << "\n";
+    }
     if (Status st = tools::replaceMarkdownSection(o.outDir + "/trade.md", "fit_ao",
                                                     markdown(o, rows, none, trainingViews, heldOutViews, machine.empty() ? "no device" : machine));
         !st) {

@@ -10,6 +10,7 @@
 #include "scene_depth_peel.hpp"
 #include "scene_transparency.hpp"
 #include "sfx/half.hpp"
+#include "sfx/settings_ranges.hpp"
 #include "sfx_shared_ao.h"
 #include "sfx_shared_raster.h"
 
@@ -41,8 +42,7 @@ Status validateOptions(const RenderOptions& o) {
         return invalidArgument("--width", std::to_string(o.width), "0 (the scene's) or [1, " + std::to_string(scene::kMaxSceneSize) + "]");
     if (o.height > scene::kMaxSceneSize)
         return invalidArgument("--height", std::to_string(o.height), "0 (the scene's) or [1, " + std::to_string(scene::kMaxSceneSize) + "]");
-    if (!(o.aoRadius >= kAoMinRadius && o.aoRadius <= 1000.0f))
-        return invalidArgument("--ao-radius", std::to_string(o.aoRadius), "[1e-4, 1000]");
+    SFX_TRY(checkSetting(Setting::AoRadius, o.aoRadius, "--ao-radius"));
     if (o.aoLayers < 1 || o.aoLayers > kMaxAoLayers)
         return invalidArgument("--ao-layers", std::to_string(o.aoLayers),
                                "[1, " + std::to_string(kMaxAoLayers) + "] (1: the first visible layer; more: depth peeling, high tier)");

@@ -13,6 +13,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "sfx/settings_ranges.hpp"
+
 namespace sfx::scene {
 namespace {
 
@@ -169,7 +171,10 @@ public:
             else o.scale = r_.vec3(*s, path + ".scale", 0.0, kMaxCoordinate, "(0, 1e6]", true);
         }
         if (const json* c = Reader::optional(v, "color")) o.color = r_.vec3(*c, path + ".color", 0.0, kMaxColor, "[0, 65504] (linear RGB)");
-        if (const json* a = Reader::optional(v, "opacity")) o.opacity = r_.number(*a, path + ".opacity", 0.0, 1.0, "[0, 1]");
+        if (const json* a = Reader::optional(v, "opacity")) {
+            const SettingRange& opacity = settingRange(Setting::OitDrawOpacity);  // what the transparency draw takes
+            o.opacity = r_.number(*a, path + ".opacity", opacity.min, opacity.max, rangeText(opacity));
+        }
         if (const json* s = Reader::optional(v, "shading")) {
             const std::string name = s->is_string() ? s->get<std::string>() : std::string();
             if (name == "lambert") o.shading = Shading::Lambert;

@@ -6,6 +6,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "sfx/ao.hpp"
+#include "sfx/settings_ranges.hpp"
 
 namespace sfx::cli {
 namespace {
@@ -17,16 +18,29 @@ struct AoFlags {
     std::string resolution = "tier";
     std::string normalsPath;
     std::string outPath;
-    float radius = 0.5f, intensity = -1.0f, contrast = -1.0f, bias = -1.0f, sumExponent = -1.0f;
-    uint32_t samples = 0, blurRadius = 0;
+    float radius = 0.5f;
+    std::optional<float> intensity, contrast, bias, sumExponent;  // unset: the tier's calibrated look
+    std::optional<uint32_t> samples, blurRadius;                  // unset: the tier's
     bool noBlur = false;
     bool showPlan = false;
 };
+
+// The flags' ranges (the settings table's rows), named as flags, before any file is read.
+Status checkFlags(const AoFlags& f) {
+    SFX_TRY(checkSetting(Setting::AoRadius, f.radius, "--radius"));
+    if (f.intensity) SFX_TRY(checkSetting(Setting::AoIntensity, *f.intensity, "--intensity"));
+    if (f.contrast) SFX_TRY(checkSetting(Setting::AoContrast, *f.contrast, "--contrast"));
+    if (f.bias) SFX_TRY(checkSetting(Setting::AoBias, *f.bias, "--bias"));
+    if (f.sumExponent) SFX_TRY(checkSetting(Setting::AoSumExponent, *f.sumExponent, "--sum-exponent"));
+    if (f.blurRadius) SFX_TRY(checkSetting(Setting::AoBlurRadius, *f.blurRadius, "--blur-radius"));
+    return Status::ok();
+}
 
 int runAo(const AoFlags& f) {
     const std::string cmd = "ao";
     const std::string ext = io::extensionOf(f.outPath);
     if (ext != ".pfm" && ext != ".exr") return fail(cmd, invalidArgument("--out", "'" + f.outPath + "'", "a .pfm or .exr file"));
+    if (Status st = checkFlags(f); !st) return fail(cmd, st);
     AoSettings s;
     if (!parseAoTechnique(f.technique, &s.technique))
         return fail(cmd, invalidArgument("--technique", "'" + f.technique + "'", "alchemy, scalable or crease"));
@@ -122,14 +136,14 @@ Command addAoCommand(CLI::App& app) {
         ->capture_default_str();
     c.app->add_option("--normals", flags->normalsPath,
                       "view-space normals file (x right, y up, camera looking down -z; signed float xyz in PFM/EXR)");
-    c.app->add_option("--radius", flags->radius, "world-space radius, [1e-4, 1000]")->capture_default_str();
-    c.app->add_option("--intensity", flags->intensity, "occlusion scale, [0, 100]; -1 = the tier's calibrated value")->capture_default_str();
-    c.app->add_option("--contrast", flags->contrast, "visibility exponent, [0.1, 10]; -1 = the tier's calibrated value")->capture_default_str();
-    c.app->add_option("--bias", flags->bias, "[0, 1]; -1 = the tier's calibrated value")->capture_default_str();
-    c.app->add_option("--sum-exponent", flags->sumExponent, "Scalable: exponent of the normalised tap sum, [0.5, 4] (the course's 2); -1 = the tier's")
-        ->capture_default_str();
-    c.app->add_option("--samples", flags->samples, "taps per pixel; 0 = tier default")->capture_default_str();
-    c.app->add_option("--blur-radius", flags->blurRadius, "bilateral half-width in px; 0 = tier default")->capture_default_str();
+    const std::string tier = "; not given: the tier's calibrated value";
+    c.app->add_option("--radius", flags->radius, settingHelp(Setting::AoRadius))->capture_default_str();
+    c.app->add_option("--intensity", flags->intensity, settingHelp(Setting::AoIntensity) + tier);
+    c.app->add_option("--contrast", flags->contrast, settingHelp(Setting::AoContrast) + tier);
+    c.app->add_option("--bias", flags->bias, settingHelp(Setting::AoBias) + tier);
+    c.app->add_option("--sum-exponent", flags->sumExponent, settingHelp(Setting::AoSumExponent) + tier);
+    c.app->add_option("--samples", flags->samples, settingHelp(Setting::AoSamples) + "; not given: the tier's");
+    c.app->add_option("--blur-radius", flags->blurRadius, settingHelp(Setting::AoBlurRadius) + "; not given: the tier's");
     c.app->add_flag("--no-blur", flags->noBlur, "skip the bilateral blur");
     c.app->add_flag("--plan", flags->showPlan, "print the passes and memory");
     c.app->add_option("--out", flags->outPath, "output visibility, .pfm or .exr (a .png is written beside it)")->required();

@@ -7,6 +7,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "sfx/budget.hpp"
+#include "sfx/settings_ranges.hpp"
 
 namespace sfx::cli {
 namespace {
@@ -180,6 +181,8 @@ Command addInfoCommand(CLI::App& app) {
     c.app = app.add_subcommand("info", "List the backends of this build, what each device can do, and the tier it gets");
     static bool rules = false;
     c.app->add_flag("--rules", rules, "print the tier rules and per-tier parameters as a Markdown table and exit");
+    static bool settings = false;
+    c.app->add_flag("--settings", settings, "print every numeric setting's allowed range as a Markdown table and exit");
     static BudgetFlags budgetFlags;
     c.app->add_option("--budget", budgetFlags.budgetMs, "a cost budget in ms: print the most accurate preset that fits on the best device, and the table");
     c.app->add_option("--size", budgetFlags.size, "with --budget: the frame size, WIDTHxHEIGHT")->capture_default_str();
@@ -189,6 +192,10 @@ Command addInfoCommand(CLI::App& app) {
     c.run = [] {
         if (rules) {
             printRules(std::cout);
+            return 0;
+        }
+        if (settings) {
+            std::cout << settingsMarkdown();
             return 0;
         }
         if (budgetFlags.budgetMs != 0) return printBudgetChoice(budgetFlags);

@@ -3,11 +3,13 @@
 #include <cmath>
 #include <cstring>
 #include <iostream>
+#include <optional>
 
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "sfx/half.hpp"
 #include "sfx/motion_blur.hpp"
+#include "sfx/settings_ranges.hpp"
 
 namespace sfx::cli {
 namespace {
@@ -23,9 +25,9 @@ struct MotionBlurFlags {
     DeviceFlags device;
     CameraFlags camera;
     std::string colorPath, velocityPath, outPath;
-    float maxRadius = 0.0f;
+    std::optional<float> maxRadius;  // unset: the tier's
     uint32_t referenceRows = 720;
-    uint32_t samples = 0;
+    std::optional<uint32_t> samples;  // unset: the tier's
     float softDepth = 0.1f;
     float centreWeight = 1.0f;
     float exposure = 1.0f;
@@ -44,7 +46,18 @@ std::string perTier(std::string (*value)(const TierProfile&)) {
     return s;
 }
 
+// The flags' ranges (the settings table's rows), named as flags, before any file is read.
+Status checkFlags(const MotionBlurFlags& f) {
+    if (f.maxRadius) SFX_TRY(checkSetting(Setting::MbMaxRadiusPx, *f.maxRadius, "--max-radius"));
+    SFX_TRY(checkSetting(Setting::MbReferenceRows, f.referenceRows, "--reference-rows"));
+    if (f.samples) SFX_TRY(checkSetting(Setting::MbSamples, *f.samples, "--samples"));
+    SFX_TRY(checkSetting(Setting::MbSoftDepthExtent, f.softDepth, "--soft-depth"));
+    SFX_TRY(checkSetting(Setting::MbCentreWeight, f.centreWeight, "--centre-weight"));
+    return checkSetting(Setting::MbExposure, f.exposure, "--exposure");
+}
+
 Status run(const MotionBlurFlags& f) {
+    SFX_TRY(checkFlags(f));
     const std::string outExt = io::extensionOf(f.outPath);
     if (outExt != ".png" && outExt != ".pfm" && outExt != ".exr")
         return invalidArgument("--out", "'" + f.outPath + "'", "a .png, .pfm or .exr file name");
@@ -170,21 +183,14 @@ Command addMotionBlurCommand(CLI::App& app) {
     sub->add_option("--out", flags->outPath, "output file (.png, .pfm or .exr), the colour's channel layout")->required();
     flags->device.add(*sub);
     sub->add_option("--max-radius", flags->maxRadius,
-                    "maximum blur radius in pixels at --reference-rows rows (scaled to the picture's height); 0 = the "
-                    "tier's (" + perTier([](const TierProfile& p) { return std::to_string(int(p.mbMaxRadiusPx)); }) + "); (0, 64]")
-        ->capture_default_str();
-    sub->add_option("--reference-rows", flags->referenceRows, "rows --max-radius is defined at; 0 = no scaling")
-        ->capture_default_str();
-    sub->add_option("--samples", flags->samples, "taps including the centre; 0 = the tier's (" +
-                                                  perTier([](const TierProfile& p) { return std::to_string(p.mbTaps); }) +
-                                                  "); odd in [3, 31]")
-        ->capture_default_str();
-    sub->add_option("--soft-depth", flags->softDepth, "soft depth comparison extent, in linear depth units; [1e-6, 1e6]")
-        ->capture_default_str();
-    sub->add_option("--centre-weight", flags->centreWeight, "weight of the pixel's own colour; larger = thinner blur; (0, 100]")
-        ->capture_default_str();
-    sub->add_option("--exposure", flags->exposure, "fraction of the velocity's time span the shutter is open; [0, 4]")
-        ->capture_default_str();
+                    settingHelp(Setting::MbMaxRadiusPx) + "; not given: the tier's (" +
+                        perTier([](const TierProfile& p) { return std::to_string(int(p.mbMaxRadiusPx)); }) + ")");
+    sub->add_option("--reference-rows", flags->referenceRows, settingHelp(Setting::MbReferenceRows))->capture_default_str();
+    sub->add_option("--samples", flags->samples,
+                    settingHelp(Setting::MbSamples) + "; not given: the tier's (" + perTier([](const TierProfile& p) { return std::to_string(p.mbTaps); }) + ")");
+    sub->add_option("--soft-depth", flags->softDepth, settingHelp(Setting::MbSoftDepthExtent))->capture_default_str();
+    sub->add_option("--centre-weight", flags->centreWeight, settingHelp(Setting::MbCentreWeight))->capture_default_str();
+    sub->add_option("--exposure", flags->exposure, settingHelp(Setting::MbExposure))->capture_default_str();
     c.run = [flags] {
         Status s = run(*flags);
         return s.isOk() ? 0 : fail("motionblur", s);

@@ -7,6 +7,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "sfx/scene_render.hpp"
+#include "sfx/settings_ranges.hpp"
 
 namespace sfx::cli {
 namespace {
@@ -91,7 +92,7 @@ Command addRenderCommand(CLI::App& app) {
     c.app->add_option("--width", flags->width, "width in pixels; 0 = the scene's")->capture_default_str();
     c.app->add_option("--height", flags->height, "height in pixels; 0 = the scene's")->capture_default_str();
     c.app->add_option("--ao", flags->ao, "off | alchemy | scalable | crease")->capture_default_str();
-    c.app->add_option("--ao-radius", flags->aoRadius, "AO world-space radius, [1e-4, 1000]")->capture_default_str();
+    c.app->add_option("--ao-radius", flags->aoRadius, "AO " + settingHelp(Setting::AoRadius))->capture_default_str();
     c.app->add_option("--ao-out", flags->aoOutPath, "also write the AO visibility buffer (.pfm, .exr or .png; values as they are, no sRGB)");
     c.app->add_option("--ao-layers", flags->aoLayers, "opaque depth layers AO tests, [1, 4]; 1 = the visible layer, more = depth peeling (high tier)")
         ->capture_default_str();

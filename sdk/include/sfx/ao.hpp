@@ -42,58 +42,59 @@ enum class AoResolution : uint32_t {
 const char* toString(AoResolution resolution);  // "tier", "full", "half"
 bool parseAoResolution(const std::string& text, AoResolution* out);
 
-// Smallest AoSettings.radius and crease.range (world units). Below it epsilon * r^2 (the
-// centre-tap guard) is no longer a normal float: GPUs flush it to 0 and a tap on the centre
-// pixel would compute 0 / 0. 1e-4 keeps it >= 1e-16 for the smallest epsilon (1e-8).
+// Smallest AoSettings.radius and crease.range: below it epsilon * r^2 (the centre-tap guard) is
+// no longer a normal float, GPUs flush it to 0 and a centre tap would compute 0 / 0.
 inline constexpr float kAoMinRadius = 1e-4f;
 
+// Ranges: docs/settings.md (sfx/settings_ranges.hpp); out of range is InvalidArgument naming the
+// field. An unset (nullopt) look field takes the tier preset's calibrated AoLook (docs/trade.md);
+// an unset count takes the tier's.
 struct AoCreaseSettings {
-    float range = -1.0f;          // [1e-4, 1000] world distance at which a tap's influence reaches 0; -1 = the tier's (AoLook)
-    float bias = -1.0f;           // (0, 100]  scales (cos - minimumCrease) before saturating; -1 = the tier's (AoLook)
-    float averager = 10.0f;       // (0, 1000] divisor of the tap sum (scaled to 24 taps when 12 are taken)
-    float minimumCrease = 0.3f;   // [-1, 1)   cosine below which a tap adds nothing (stops radial banding)
-    float fadeStart = 50.0f;      // [0, inf)  linear depth where the distance fade begins
-    float fadeEnd = 100.0f;       // (fadeStart, inf] linear depth where crease shading is gone
+    std::optional<float> range;  // world distance at which a tap's influence reaches 0
+    std::optional<float> bias;   // scales (cos - minimumCrease) before saturating
+    float averager = 10.0f;      // divisor of the tap sum (scaled to 24 taps when 12 are taken)
+    float minimumCrease = 0.3f;  // cosine below which a tap adds nothing (stops radial banding)
+    float fadeStart = 50.0f;     // [0, inf) linear depth where the distance fade begins
+    float fadeEnd = 100.0f;      // (fadeStart, inf] linear depth where crease shading is gone
 };
 
-// Every knob of the effect. The look (intensity, contrast, bias, crease range and bias) defaults
-// to -1: the tier preset's calibrated AoLook (fitted against ray-traced truth, docs/trade.md);
-// the rest default to the papers' nominal values (docs/algorithms.md). Ranges are enforced:
-// a value outside its range is InvalidArgument naming the field ("AoSettings.radius").
 struct AoSettings {
     AoTechnique technique = AoTechnique::Scalable;
-    float radius = 0.5f;     // [1e-4, 1000] world-space sampling radius (Alchemy, Scalable)
-    float intensity = -1.0f; // [0, 100], or -1 for the tier's: sigma, scales occlusion (all techniques)
-    float contrast = -1.0f;  // [0.1, 10], or -1 for the tier's: k, visibility = max(0, 1 - occlusion)^k
-    // [0, 1], or -1 for the tier's. Alchemy: beta, a distance per unit of depth (the term
-    // v.n + z_C beta; the paper's 1e-4 is kAoAlchemyDefaultBias). Scalable: subtracted from the
-    // cosine of each tap (the paper's 0.02 is kAoScalableDefaultBias).
-    float bias = -1.0f;
-    // [0.5, 4], or -1 for the tier's: Scalable only, the exponent of its normalised tap sum
-    // (occlusion = (2 sigma / N * sum)^e; the course's 2 is kAoScalableCourseSumExponent).
-    float sumExponent = -1.0f;
-    float epsilon = 1e-4f;   // [1e-8, 1] guards divisions; in units of radius^2 (scale-invariant)
-    uint32_t samples = 0;    // 0 = tier default; Alchemy [1, 64]; Scalable [1, 64] (even on the
-                             // current tier: mirrored pairs); Crease 0, 12 (the diamond's checkerboard
-                             // half per pixel) or 24 (the whole diamond)
-    bool blur = true;        // the separable depth-aware bilateral blur (and crease's two-blur look)
-    uint32_t blurRadius = 0; // 0 = tier default (TierProfile::aoBlurRadiusPx); else [1, SFX_AO_MAX_BLUR_RADIUS] px
-                             // of the output; at half resolution the blur takes (r + 1) / 2 half-size taps each side
+    float radius = 0.5f;                  // world-space sampling radius (Alchemy, Scalable)
+    std::optional<float> intensity;       // sigma, scales occlusion (all techniques)
+    std::optional<float> contrast;        // k: visibility = max(0, 1 - occlusion)^k
+    // Alchemy: beta, a distance per unit of depth (the paper's kAoAlchemyDefaultBias).
+    // Scalable: subtracted from each tap's cosine (the paper's kAoScalableDefaultBias).
+    std::optional<float> bias;
+    // Scalable: occlusion = (2 sigma / N * sum)^e (the course's kAoScalableCourseSumExponent).
+    std::optional<float> sumExponent;
+    float epsilon = 1e-4f;                // guards divisions; in units of radius^2
+    // Taps per pixel. Scalable on a mirrored tier: even. Crease: 12 (the diamond's checkerboard
+    // half per pixel) or 24 (the whole diamond).
+    std::optional<uint32_t> samples;
+    bool blur = true;                     // the separable depth-aware bilateral blur
+    // Blur half-width in output pixels (TierProfile::aoBlurRadiusPx when unset); at half
+    // resolution the blur takes (r + 1) / 2 half-size taps each side.
+    std::optional<uint32_t> blurRadius;
     AoResolution resolution = AoResolution::Tier;
     AoNormals normals = AoNormals::FromDepth;
     AoCreaseSettings crease;
-    // Multilayer AO: opaque depth layers each tap tests, layer 0 (AoInputs.depth) included;
-    // [1, TierProfile::aoMaxDepthLayers] (1 on the current tier, up to 4 on high). Above 1 each
-    // tap keeps the largest term over AoInputs.depthLayers at its pixel, so surfaces hidden behind
-    // the first visible one still occlude; it runs at full resolution without a depth MIP
-    // (resolution Tier resolves to Full; Half is an error). Off (1) by default.
+    // Multilayer AO: opaque depth layers each tap tests, AoInputs.depth included; [1,
+    // TierProfile::aoMaxDepthLayers]. Above 1 a tap keeps its largest term over the layers, so
+    // surfaces behind the first visible one still occlude; runs at full resolution without a
+    // depth MIP (resolution Tier resolves to Full; Half is an error).
     uint32_t depthLayers = 1;
 };
 
-// The papers' nominal values (the look before the calibration against ray-traced truth).
+// The papers' nominal values.
 inline constexpr float kAoAlchemyDefaultBias = 1e-4f;
 inline constexpr float kAoScalableDefaultBias = 0.02f;
 inline constexpr float kAoScalableCourseSumExponent = 2.0f;
+
+// Crease's resolved settings (AoCreaseSettings with the tier's look filled in).
+struct AoCreaseConfig {
+    float range = 1.0f, bias = 0.25f, averager = 10.0f, minimumCrease = 0.3f, fadeStart = 50.0f, fadeEnd = 100.0f;
+};
 
 // What a dispatch computes once settings and tier are resolved: the numbers the shaders get
 // and the CPU reference (sfx/reference/ao_reference.hpp) consumes. Benchmarks may edit a
@@ -113,7 +114,7 @@ struct AoConfig {
     uint32_t depthLayers = 1;     // multilayer AO: layers each tap tests (AoSettings.depthLayers)
     uint32_t blurRadius = 0;      // 0 = no blur
     AoNormals normals = AoNormals::FromDepth;
-    AoCreaseSettings crease;
+    AoCreaseConfig crease;
 };
 
 // InvalidArgument naming the first field out of range.

@@ -23,6 +23,7 @@
 #include <glm/glm.hpp>
 
 #include <memory>
+#include <optional>
 
 #include "sfx/camera.hpp"
 #include "sfx/depth.hpp"
@@ -35,32 +36,24 @@ namespace sfx {
 // Smallest MotionBlurSettings.softDepthExtent: well above FLT_MIN, so no GPU flushes it to 0.
 inline constexpr float kMbMinSoftDepthExtent = 1e-6f;
 
+// Ranges: docs/settings.md (sfx/settings_ranges.hpp); out of range is InvalidArgument naming the
+// field, never a silent clamp. Unset (nullopt) fields take the tier's value.
 struct MotionBlurSettings {
-    // Maximum blur radius in pixels at referenceRows rows of output; the radius used is
-    // round(maxRadiusPx * height / referenceRows), at least 1, so the look holds at any size.
-    // 0 = the tier's (TierProfile::mbMaxRadiusPx: 10 px current, 18 px high), whose scaled
-    // radius is capped at 64 px (SFX_MB_MAX_RADIUS_LIMIT_PX, the shaders' limit; from 2560 rows
-    // at 18 px, 4608 at 10 px) and MotionBlurParams::radiusCapped says so; else (0, 64] pixels,
-    // and this explicit radius scaled must stay <= 64 (InvalidArgument otherwise: a radius the
-    // caller chose is never changed silently).
-    float maxRadiusPx = 0.0f;
-    // Rows at which maxRadiusPx is defined; 0 = no scaling (maxRadiusPx is in output pixels).
-    // [0, 16384]; default 720.
-    uint32_t referenceRows = 720;
-    // Reconstruction taps, centre included. 0 = the tier's (TierProfile::mbTaps: 7 current,
-    // 9 high); else odd in
-    // [3, 31]: samples come in mirrored pairs around the centre.
-    uint32_t samples = 0;
-    // Depth difference (scene units, as linear depth) over which a sample turns from "level
-    // with the centre" to "in front of / behind it". [1e-6, 1e6] (kMbMinSoftDepthExtent: a
-    // normal float, which GPUs do not flush to 0 before dividing by it); default 0.1.
+    // Maximum blur radius in pixels at referenceRows rows; the radius used is
+    // round(maxRadiusPx * height / referenceRows), at least 1. Unset: the tier's
+    // (TierProfile::mbMaxRadiusPx), capped at the shaders' 64 px (MotionBlurParams::radiusCapped
+    // says so); a radius set here whose scaled value exceeds 64 px is InvalidArgument.
+    std::optional<float> maxRadiusPx;
+    uint32_t referenceRows = 720;  // rows maxRadiusPx is defined at; 0 = no scaling
+    // Reconstruction taps, centre included, odd (mirrored pairs); unset: TierProfile::mbTaps.
+    std::optional<uint32_t> samples;
+    // Depth difference (linear depth units) over which a sample turns from "level with the
+    // centre" to "in front of / behind it".
     float softDepthExtent = 0.1f;
-    // The centre's weight against one averaged sample, divided by max(|v_C|, 1 px): larger
-    // keeps more of the pixel's own colour (thinner blur). (0, 100]; default 1.
+    // The centre's weight against one averaged sample, divided by max(|v_C|, 1 px): larger keeps
+    // more of the pixel's own colour.
     float centreWeight = 1.0f;
-    // Scales the velocity's time span: the fraction of it the shutter is open. [0, 4];
-    // 0 turns the blur off (the output is the input colour). Default 1.
-    float exposure = 1.0f;
+    float exposure = 1.0f;  // scales the velocity's time span; 0 = no blur
 };
 
 // The parameters one dispatch runs with, after tier defaults and resolution scaling.

@@ -1,48 +1,28 @@
 // Order-independent transparency (docs/oit.md): translucent draws composited over the host's
 // opaque colour, whatever order they are drawn in.
 //
-// High tier (TierProfile::abufferOit and caps.fragmentStoresAndAtomics): an A-buffer after Bauer
-// et al. 2013. Passes: clear (compute: heads to end-of-list, counter to 0), fill (one geometry
-// pass, depth-tested against the opaque depth without writing it, early depth tests; each
-// fragment takes a node of the pool with one atomicAdd and swaps itself in as its pixel's list
-// head with one imageAtomicExchange; no locks, no waits), resolve (per pixel: the nearest K
-// fragments by (depth, draw id, primitive id) exact, those behind folded into one tail layer in
-// sorted order, over the opaque colour). The output never depends on the draw order.
+// High tier (TierProfile::abufferOit and caps.fragmentStoresAndAtomics): an A-buffer (Bauer et
+// al. 2013): clear, fill (one depth-tested geometry pass; each fragment takes a pool node with one
+// atomic, no locks or waits), resolve (per pixel the nearest K fragments by (depth, draw id,
+// primitive id) exact, the rest folded into one tail layer, over the opaque colour). The output
+// never depends on draw order. Optional: list compression to M <= 4 nodes per pixel, and
+// opacity-based AO through the layers into aoOutput().
 //
-// Current tier: weighted blended OIT (McGuire and Bavoil 2013) into two RGBA16F targets through
-// one blend state, then a resolve; an approximation whose weight assumes view depths of about
-// 0.1 to 500 units (sfx_shared_oit.h) and that errs most for high opacities and layers far apart
-// (docs/oit.md gives the measured error).
+// Current tier: weighted blended OIT (McGuire and Bavoil 2013), an approximation for view depths
+// of about 0.1 to 500 units (docs/oit.md gives the measured error); no AO through the layers.
 //
-// The pool (high tier) follows the scene: each render() reads the previous frame's counter (the
-// fragments that passed the depth test) and, if the pool was too small or is far too large,
-// resizes it to that count times kOitPoolHeadroom. A frame whose fragments exceed the pool:
-//   - stores exactly `capacity` of them and counts the rest (TransparencyStats::dropped);
-//   - never writes or reads outside the pool, never waits;
-//   - a pixel that lost none of its fragments is exact; a pixel that lost some composites the
-//     ones it kept in the right order, so its front layers are right when they were among the
-//     stored (which of the frame's fragments are stored is decided by the rasteriser's order
-//     and is not guaranteed);
-//   - the next render() grows the pool so the same scene is exact again.
-// Nothing is allocated until a render() has a transparent draw; render() with no draw copies
-// nothing and output() is then the opaque colour itself.
-//
-// High tier, optional (docs/oit.md):
-//   - list compression (the paper's section III-B): the resolve also compresses each pixel's list
-//     into M <= 4 (normalised depth, opacity) nodes, the opaque surface entering at opacity 1,
-//     dropping argmin alpha * (1 - z') (only from the back half if asked); 12 bytes per pixel
-//     (16-bit depth, 8-bit opacity per node) in a pixel-indexed storage buffer;
-//   - opacity-based AO through the layers (the paper's eq. 1-4, Algorithm 1), Alchemy or
-//     Scalable per-tap terms, every tap keeping the largest opacity-weighted occlusion over the
-//     fragments at its pixel (brute force: walking the list; compressed: reading the M nodes),
-//     the receivers' visibilities blended by opacity after the sort into aoOutput(), separately
-//     from colour. The current tier has neither: its AO is the host's opaque AO (plan() says so).
+// The pool follows the scene: each render() resizes it from the previous frame's fragment count
+// times kOitPoolHeadroom. A frame that overflows it stores `capacity` fragments, counts the rest
+// (TransparencyStats::dropped), never reads or writes outside it, and the next render() grows it.
+// Nothing is allocated until a render() has a transparent draw; with none, output() is the
+// opaque colour itself.
 #pragma once
 
 #include <glm/glm.hpp>
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 
 #include "sfx/ao.hpp"
@@ -120,13 +100,13 @@ struct TransparencyDesc {
     Format colorFormat = Format::RGBA16F;  // RGBA8, RGBA16F or RGBA32F: opaque colour and output
     Format depthFormat = Format::D32F;     // D16, D24S8 or D32F: the opaque depth
     TransparencyQuality quality = TransparencyQuality::Standard;
-    // K itself, overriding quality's: [1, 32], 0 = quality's K. Fewer kept layers cost less in
-    // the resolve and fold more of a deep pixel into its tail (tools/bench/bench_oit measures it).
-    uint32_t maxLayers = 0;
-    // Nodes of the first frame's pool, before any count is known; 0 = kOitInitialNodesPerPixel
-    // per pixel. Later frames size it from the scene.
-    uint64_t initialPoolNodes = 0;
-    // M: nodes per compressed list, [0, 4] (high tier); 0 = no compression.
+    // K itself, overriding quality's (unset: quality's K). Fewer kept layers cost less in the
+    // resolve and fold more of a deep pixel into its tail.
+    std::optional<uint32_t> maxLayers;
+    // Nodes of the first frame's pool, before any count is known (unset:
+    // kOitInitialNodesPerPixel per pixel); later frames size it from the scene.
+    std::optional<uint64_t> initialPoolNodes;
+    // M: nodes per compressed list (high tier); 0 = no compression.
     uint32_t compressedNodes = 0;
     bool compressBackHalfOnly = true;  // drop only from the back half: the front half is kept
     TransparencyAoDesc ao;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,17 @@ struct ShaderResource {
     uint32_t binding = 0; // descriptor binding (set 0) in Vulkan; texture unit / block binding in GL
     uint32_t stages = 0;  // stageBit mask
     uint32_t blockSize = 0;  // bytes, for uniform and storage blocks (storage: fixed part)
+};
+
+// One uniform block of a program as sfxc reflected it (the generated headers' kUniformBlocks).
+struct UniformBlockInfo {
+    const char* name;  // the block type, as SFX_BLOCK(Name, binding) declares it
+    uint32_t size;     // bytes (std140)
+    uint32_t binding;
+};
+struct ProgramUniformBlocks {
+    const char* program;
+    std::span<const UniformBlockInfo> blocks;
 };
 
 struct StageCode {

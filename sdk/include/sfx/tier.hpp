@@ -8,10 +8,11 @@
 namespace sfx {
 
 // Every tier, lowest first: X(enumerator, name). Adding a tier is a line here plus its row in
-// the tier table (tiers/src/tier_table.cpp), which also generates its shader defines.
-#define SFX_TIER_LIST(X)                                                                          \
-    X(Current, "current") /* GL ES 3.0-class: fragment passes only, no storage buffers or atomics */ \
-    X(High, "high")       /* Vulkan / GL ES 3.1+ / GL 4.3+: storage buffers, atomics, compute */
+// the tier table (tiers/src/tier_table.cpp), which holds what the tier is for (its summary,
+// `sfx info --rules`, docs/tiers.md) and generates its shader defines.
+#define SFX_TIER_LIST(X) \
+    X(Current, "current") \
+    X(High, "high")
 
 enum class Tier : uint32_t {
 #define SFX_TIER_ENUMERATOR(e, name) e,
@@ -29,7 +30,7 @@ bool parseTier(const std::string& text, Tier* out);
 // The tier names for a message's allowed values: "current or high".
 std::string tierNameList();
 
-// The default look of one AO technique on a tier: the values AoSettings' -1 ("the tier's") fields
+// The default look of one AO technique on a tier: the values AoSettings' unset look fields
 // resolve to, calibrated against ray-traced ground truth by tools/bench/fit_ao (docs/trade.md).
 struct AoLook {
     float intensity = 1.0f;    // sigma

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "sfx/ao.hpp"
+#include "sfx/settings_ranges.hpp"
 #include "sfx_shared_ao.h"
 
 namespace sfx {
@@ -16,27 +17,17 @@ std::string num(double v) {
 }
 
 // NaN fails every comparison, so each check is written as "inside the range" negated.
-// The value of an AoSettings look field that means "the tier preset's AoLook".
-constexpr float kTierValue = -1.0f;
-float orTier(float value, float tierValue) { return value == kTierValue ? tierValue : value; }
 // Crease's other tap count: the checkerboard half of its diamond (shared::aoCreaseTapIndex).
 constexpr uint32_t kCreaseHalfTaps = uint32_t(shared::SFX_AO_CREASE_TAPS) / 2;
 // A hand-filled profile's crease spacing beyond this (output pixels at the reference rows) would
 // spread the 11x11 diamond over more than the image's height.
 constexpr float kMaxCreaseSpacingPx = 64.0f;
 
-Status checkRange(const char* field, double v, double lo, bool loOpen, double hi, bool hiOpen, const char* allowed) {
-    const bool aboveLo = loOpen ? v > lo : v >= lo;
-    const bool belowHi = hiOpen ? v < hi : v <= hi;
-    if (!(aboveLo && belowHi)) return invalidArgument(field, num(v), allowed);
-    return Status::ok();
-}
-
-// A look field's one closed range, for the value set or, at -1, for the tier's look that -1
+// A look field's range (the table's row), for the value set or, unset, for the tier's look it
 // resolves to (a hand-filled profile may hold any value there).
-Status checkLookField(const char* field, float value, const char* lookField, float lookValue, double lo, double hi, const std::string& range) {
-    if (value != kTierValue) return checkRange(field, value, lo, false, hi, false, (range + ", or -1 for the tier's").c_str());
-    return checkRange(lookField, lookValue, lo, false, hi, false, range.c_str());
+Status checkLookField(Setting id, const std::optional<float>& value, const char* lookField, float lookValue) {
+    if (value) return checkSetting(id, *value);
+    return checkSetting(id, lookValue, lookField);
 }
 
 }  // namespace
@@ -94,30 +85,24 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
         return invalidArgument("AoDesc.profile", "a tier profile with counts outside the shaders' limits",
                                "tiers::profile(tier) or tiers::choose(caps)->profile");
     if (uint32_t(s.technique) > 2) return invalidArgument("AoSettings.technique", std::to_string(uint32_t(s.technique)), "Alchemy, Scalable or Crease");
-    // The lower bound keeps epsilon * r^2 a normal float (>= 1e-16 with epsilon >= 1e-8): smaller
-    // radii underflow it to 0 on the GPU and a tap on the centre pixel would divide 0 by 0.
-    SFX_TRY(checkRange("AoSettings.radius", s.radius, kAoMinRadius, false, 1000, false, "[1e-4, 1000]"));
+    SFX_TRY(checkSetting(Setting::AoRadius, s.radius));
     const AoLook& look = profile.aoLook[uint32_t(s.technique)];
-    SFX_TRY(checkLookField("AoSettings.intensity", s.intensity, "AoDesc.profile.aoLook.intensity", look.intensity, 0, 100, "[0, 100]"));
-    SFX_TRY(checkLookField("AoSettings.contrast", s.contrast, "AoDesc.profile.aoLook.contrast", look.contrast, 0.1, 10, "[0.1, 10]"));
-    SFX_TRY(checkLookField("AoSettings.bias", s.bias, "AoDesc.profile.aoLook.bias", look.bias, 0, 1, "[0, 1]"));
-    SFX_TRY(checkLookField("AoSettings.sumExponent", s.sumExponent, "AoDesc.profile.aoLook.sumExponent", look.sumExponent, 0.5, 4, "[0.5, 4]"));
-    // The bound is the float nearest 1e-8 (just below it): the documented minimum must be settable.
-    SFX_TRY(checkRange("AoSettings.epsilon", s.epsilon, double(1e-8f), false, 1, false, "[1e-8, 1]"));
-    const uint32_t maxSamples = uint32_t(shared::SFX_AO_MAX_SAMPLES);
-    if (s.technique == AoTechnique::Crease) {
-        if (s.samples != 0 && s.samples != kCreaseHalfTaps && s.samples != uint32_t(shared::SFX_AO_CREASE_TAPS))
-            return invalidArgument("AoSettings.samples", std::to_string(s.samples),
-                                   "0 (the tier's), 12 (half the diamond per pixel) or 24 (the whole 11x11 stippled diamond) for Crease");
-    } else if (s.samples > maxSamples) {
-        return invalidArgument("AoSettings.samples", std::to_string(s.samples), "[0, " + std::to_string(maxSamples) + "] (0 = tier default)");
-    } else if (s.technique == AoTechnique::Scalable && profile.aoScalableMirrored && s.samples % 2 != 0) {
-        return invalidArgument("AoSettings.samples", std::to_string(s.samples),
-                               std::string("an even count on the ") + toString(profile.tier) + " tier (its Scalable taps come in mirrored pairs), or 0");
+    SFX_TRY(checkLookField(Setting::AoIntensity, s.intensity, "AoDesc.profile.aoLook.intensity", look.intensity));
+    SFX_TRY(checkLookField(Setting::AoContrast, s.contrast, "AoDesc.profile.aoLook.contrast", look.contrast));
+    SFX_TRY(checkLookField(Setting::AoBias, s.bias, "AoDesc.profile.aoLook.bias", look.bias));
+    SFX_TRY(checkLookField(Setting::AoSumExponent, s.sumExponent, "AoDesc.profile.aoLook.sumExponent", look.sumExponent));
+    SFX_TRY(checkSetting(Setting::AoEpsilon, s.epsilon));
+    if (s.samples && s.technique == AoTechnique::Crease) {
+        if (*s.samples != kCreaseHalfTaps && *s.samples != uint32_t(shared::SFX_AO_CREASE_TAPS))
+            return invalidArgument("AoSettings.samples", std::to_string(*s.samples),
+                                   "12 (half the diamond per pixel) or 24 (the whole 11x11 stippled diamond) for Crease");
+    } else if (s.samples) {
+        SFX_TRY(checkSetting(Setting::AoSamples, *s.samples));
+        if (s.technique == AoTechnique::Scalable && profile.aoScalableMirrored && *s.samples % 2 != 0)
+            return invalidArgument("AoSettings.samples", std::to_string(*s.samples),
+                                   std::string("an even count on the ") + toString(profile.tier) + " tier (its Scalable taps come in mirrored pairs)");
     }
-    if (s.blurRadius > uint32_t(shared::SFX_AO_MAX_BLUR_RADIUS))
-        return invalidArgument("AoSettings.blurRadius", std::to_string(s.blurRadius),
-                               "[0, " + std::to_string(shared::SFX_AO_MAX_BLUR_RADIUS) + "] (0 = tier default)");
+    if (s.blurRadius) SFX_TRY(checkSetting(Setting::AoBlurRadius, *s.blurRadius));
     if (uint32_t(s.resolution) > 2)
         return invalidArgument("AoSettings.resolution", std::to_string(uint32_t(s.resolution)), "Tier, Full or Half");
     if (uint32_t(s.normals) > 1) return invalidArgument("AoSettings.normals", std::to_string(uint32_t(s.normals)), "FromDepth or FromTexture");
@@ -130,10 +115,10 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
         return invalidArgument("AoSettings.resolution", "Half with depthLayers " + std::to_string(s.depthLayers),
                                "Full or Tier (multilayer AO runs at full resolution: the layers are full size)");
     const AoCreaseSettings& c = s.crease;
-    if (c.range != kTierValue) SFX_TRY(checkRange("AoSettings.crease.range", c.range, kAoMinRadius, false, 1000, false, "[1e-4, 1000], or -1 for the tier's"));
-    if (c.bias != kTierValue) SFX_TRY(checkRange("AoSettings.crease.bias", c.bias, 0, true, 100, false, "(0, 100], or -1 for the tier's"));
-    SFX_TRY(checkRange("AoSettings.crease.averager", c.averager, 0, true, 1000, false, "(0, 1000]"));
-    SFX_TRY(checkRange("AoSettings.crease.minimumCrease", c.minimumCrease, -1, false, 1, true, "[-1, 1)"));
+    if (c.range) SFX_TRY(checkSetting(Setting::AoCreaseRange, *c.range));
+    if (c.bias) SFX_TRY(checkSetting(Setting::AoCreaseBias, *c.bias));
+    SFX_TRY(checkSetting(Setting::AoCreaseAverager, c.averager));
+    SFX_TRY(checkSetting(Setting::AoCreaseMinimumCrease, c.minimumCrease));
     if (!(c.fadeStart >= 0) || std::isinf(c.fadeStart)) return invalidArgument("AoSettings.crease.fadeStart", num(c.fadeStart), "[0, inf)");
     if (!(c.fadeEnd > c.fadeStart)) return invalidArgument("AoSettings.crease.fadeEnd", num(c.fadeEnd), "(fadeStart, inf]");
     return Status::ok();
@@ -146,13 +131,12 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
     c.technique = s.technique;
     c.radius = s.radius;
     const AoLook& look = profile.aoLook[uint32_t(s.technique)];
-    c.intensity = orTier(s.intensity, look.intensity);
-    c.contrast = orTier(s.contrast, look.contrast);
+    c.intensity = s.intensity.value_or(look.intensity);
+    c.contrast = s.contrast.value_or(look.contrast);
     c.epsilon = s.epsilon;
     c.normals = s.normals;
-    c.crease = s.crease;
-    c.crease.range = orTier(s.crease.range, look.creaseRange);
-    c.crease.bias = orTier(s.crease.bias, look.creaseBias);
+    const AoCreaseSettings& cs = s.crease;
+    c.crease = {cs.range.value_or(look.creaseRange), cs.bias.value_or(look.creaseBias), cs.averager, cs.minimumCrease, cs.fadeStart, cs.fadeEnd};
     c.depthLayers = s.depthLayers;
     // Multilayer AO is full size (its layers are): the tier's half resolution does not apply.
     c.halfResolution = s.resolution == AoResolution::Half || (s.resolution == AoResolution::Tier && profile.aoHalfResolution && s.depthLayers == 1);
@@ -161,17 +145,17 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
     // clamp, crease's spacing) scale with the output's rows, then halve at half size: the look
     // the fit calibrated (docs/trade.md) then holds at every resolution.
     const double passPxPerReferencePx = double(outputRows) / double(shared::SFX_AO_REFERENCE_ROWS) * (c.halfResolution ? 0.5 : 1.0);
-    const uint32_t blurPx = s.blurRadius ? s.blurRadius : profile.aoBlurRadiusPx;
+    const uint32_t blurPx = s.blurRadius.value_or(profile.aoBlurRadiusPx);
     c.blurRadius = s.blur ? (c.halfResolution ? std::max(1u, (blurPx + 1) / 2) : blurPx) : 0;
     switch (s.technique) {
         case AoTechnique::Alchemy:
-            c.bias = orTier(s.bias, look.bias);
-            c.samples = s.samples ? s.samples : profile.aoAlchemySamples;
+            c.bias = s.bias.value_or(look.bias);
+            c.samples = s.samples.value_or(profile.aoAlchemySamples);
             break;
         case AoTechnique::Scalable:
-            c.bias = orTier(s.bias, look.bias);
-            c.sumExponent = orTier(s.sumExponent, look.sumExponent);
-            c.samples = s.samples ? s.samples : profile.aoScalableTaps;
+            c.bias = s.bias.value_or(look.bias);
+            c.sumExponent = s.sumExponent.value_or(look.sumExponent);
+            c.samples = s.samples.value_or(profile.aoScalableTaps);
             c.mirrored = profile.aoScalableMirrored;
             c.spiralTurns = c.mirrored ? shared::SFX_AO_SPIRAL_TURNS_MIRRORED : shared::SFX_AO_SPIRAL_TURNS_SPIRAL;
             // The clamp keeps the taps near the centre (the texture cache, the paper's reason). A
@@ -188,7 +172,7 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
             break;
         case AoTechnique::Crease:
             c.bias = 0;
-            c.samples = s.samples ? s.samples : profile.aoCreaseTaps;
+            c.samples = s.samples.value_or(profile.aoCreaseTaps);
             c.creaseStride = uint32_t(std::max(1.0, std::round(double(profile.aoCreaseSpacingPx) * passPxPerReferencePx)));
             break;
     }

@@ -8,6 +8,7 @@
 
 #include "effect_common.hpp"
 #include "recorded_passes.hpp"
+#include "sfx/settings_ranges.hpp"
 #include "sfx/validation_errors.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared.h"
@@ -46,50 +47,40 @@ Status checkProfile(const TierProfile& p) {
 
 uint32_t tilesFor(uint32_t size, uint32_t radius) { return (size + radius - 1) / radius; }
 
-std::string rangeText(double lo, double hi, bool openLow) {
-    return std::string(openLow ? "(" : "[") + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-}
-
 }  // namespace
 
 Result<MotionBlurParams> resolveMotionBlur(const TierProfile& profile, const MotionBlurSettings& s, uint32_t height) {
     SFX_TRY(checkProfile(profile));
     const double limit = double(shared::SFX_MB_MAX_RADIUS_LIMIT_PX);
-    // Written as !(in range) so NaN is rejected too.
-    if (!(s.maxRadiusPx == 0.0f || (s.maxRadiusPx > 0.0f && s.maxRadiusPx <= limit)))
-        return invalidArgument("MotionBlurSettings.maxRadiusPx", std::to_string(s.maxRadiusPx), "0 (tier default) or (0, 64]");
-    if (s.referenceRows > 16384)
-        return invalidArgument("MotionBlurSettings.referenceRows", std::to_string(s.referenceRows), "[0, 16384]");
-    if (s.samples != 0 && (s.samples < 3 || s.samples > uint32_t(shared::SFX_MB_MAX_TAPS) || s.samples % 2 == 0))
-        return invalidArgument("MotionBlurSettings.samples", std::to_string(s.samples),
-                               "0 (tier default) or odd in [3, 31] (centre + mirrored pairs)");
-    // The lower bound is a normal float: GPUs flush denormals to 0, and the soft depth test
-    // divides by the extent (0 / 0 for a sample level with the centre).
-    if (!(s.softDepthExtent >= kMbMinSoftDepthExtent && s.softDepthExtent <= 1.0e6f))
-        return invalidArgument("MotionBlurSettings.softDepthExtent", num(s.softDepthExtent), "[1e-6, 1e6]");
-    if (!(s.centreWeight > 0.0f && s.centreWeight <= 100.0f))
-        return invalidArgument("MotionBlurSettings.centreWeight", std::to_string(s.centreWeight), rangeText(0, 100, true));
-    if (!(s.exposure >= 0.0f && s.exposure <= 4.0f))
-        return invalidArgument("MotionBlurSettings.exposure", std::to_string(s.exposure), rangeText(0, 4, false));
+    if (s.maxRadiusPx) SFX_TRY(checkSetting(Setting::MbMaxRadiusPx, *s.maxRadiusPx));
+    SFX_TRY(checkSetting(Setting::MbReferenceRows, s.referenceRows));
+    if (s.samples) {
+        SFX_TRY(checkSetting(Setting::MbSamples, *s.samples));
+        if (*s.samples % 2 == 0)
+            return invalidArgument("MotionBlurSettings.samples", std::to_string(*s.samples), "an odd count (centre + mirrored pairs)");
+    }
+    SFX_TRY(checkSetting(Setting::MbSoftDepthExtent, s.softDepthExtent));
+    SFX_TRY(checkSetting(Setting::MbCentreWeight, s.centreWeight));
+    SFX_TRY(checkSetting(Setting::MbExposure, s.exposure));
     if (height == 0) return invalidArgument("height", "0", "[1, maxTextureSize]");
 
     MotionBlurParams p;
-    p.taps = s.samples != 0 ? s.samples : profile.mbTaps;
+    p.taps = s.samples.value_or(profile.mbTaps);
     p.pairs = (p.taps - 1) / 2;
     p.jitterSize = profile.mbJitterSize;
-    const double base = s.maxRadiusPx != 0.0f ? double(s.maxRadiusPx) : double(profile.mbMaxRadiusPx);
+    const double base = double(s.maxRadiusPx.value_or(profile.mbMaxRadiusPx));
     const double scaled = s.referenceRows == 0 ? base : base * double(height) / double(s.referenceRows);
     double radius = std::max(1.0, std::round(scaled));
     // The tier's default is a look defined at referenceRows; at very tall outputs it is held
     // at the shaders' limit rather than refused (the plan names the cap). A radius the
     // caller chose is refused instead, since capping it would change what was asked for.
-    if (radius > limit && s.maxRadiusPx == 0.0f) {
+    if (radius > limit && !s.maxRadiusPx) {
         p.radiusCapped = true;
         p.scaledRadiusPx = radius;
         radius = limit;
     }
     if (radius > limit)
-        return invalidArgument("MotionBlurSettings.maxRadiusPx", std::to_string(s.maxRadiusPx) + " (" + std::to_string(radius) +
+        return invalidArgument("MotionBlurSettings.maxRadiusPx", std::to_string(*s.maxRadiusPx) + " (" + std::to_string(radius) +
                                    " px at " + std::to_string(height) + " rows)",
                                "a scaled radius <= 64 px");
     p.radiusPx = uint32_t(radius);

@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "effect_common.hpp"
+#include "sfx/settings_ranges.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared_oit.h"
 #include "sfx_shared_oit_params.h"
@@ -33,7 +34,7 @@ Status checkProfile(const TierProfile& p) {
 }  // namespace
 
 uint32_t keptLayers(TransparencyQuality quality) { return quality == TransparencyQuality::High ? 32u : 16u; }
-uint32_t keptLayers(const TransparencyDesc& desc) { return desc.maxLayers != 0 ? desc.maxLayers : keptLayers(desc.quality); }
+uint32_t keptLayers(const TransparencyDesc& desc) { return desc.maxLayers.value_or(keptLayers(desc.quality)); }
 
 Transparency::Transparency(Device& device, const TransparencyDesc& desc) : device_(device), desc_(desc) {}
 
@@ -48,9 +49,8 @@ Result<std::unique_ptr<Transparency>> Transparency::create(Device& device, const
         return invalidArgument("TransparencyDesc.depthFormat", toString(desc.depthFormat), "D16, D24S8 or D32F");
     if (uint32_t(desc.quality) > uint32_t(TransparencyQuality::High))
         return invalidArgument("TransparencyDesc.quality", std::to_string(uint32_t(desc.quality)), "Standard or High");
-    if (desc.maxLayers > uint32_t(shared::SFX_OIT_MAX_KEPT_LAYERS))
-        return invalidArgument("TransparencyDesc.maxLayers", std::to_string(desc.maxLayers),
-                               "[1, " + std::to_string(shared::SFX_OIT_MAX_KEPT_LAYERS) + "], or 0 for the quality's K");
+    if (desc.maxLayers) SFX_TRY(checkSetting(Setting::OitMaxLayers, *desc.maxLayers));
+    if (desc.initialPoolNodes == uint64_t(0)) return invalidArgument("TransparencyDesc.initialPoolNodes", "0", "at least 1 node, or unset");
     const DeviceCaps& caps = device.caps();
     if (!caps.renderableFormat[size_t(desc.colorFormat)])
         return Status{StatusCode::UnsupportedFormat, std::string("TransparencyDesc.colorFormat ") + toString(desc.colorFormat) +
@@ -244,8 +244,7 @@ Status Transparency::ensureTargets() {
         }
         SFX_TRY(ensureLayerTargets());
         if (pool_.isNull())
-            SFX_TRY(ensurePool(desc_.initialPoolNodes != 0 ? desc_.initialPoolNodes
-                                                            : uint64_t(kOitInitialNodesPerPixel) * desc_.width * desc_.height));
+            SFX_TRY(ensurePool(desc_.initialPoolNodes.value_or(uint64_t(kOitInitialNodesPerPixel) * desc_.width * desc_.height)));
     } else {
         SFX_TRY(make(&accum_, Format::RGBA16F, rt, "sfx-oit-wboit-accum"));
         SFX_TRY(make(&weight_, Format::RGBA16F, rt, "sfx-oit-wboit-weight"));
@@ -323,9 +322,7 @@ EffectPlan Transparency::plan(bool hasTransparentDraws) const {
         plan.passes.push_back({"oit", "fill lists (one geometry pass, depth-tested, atomics)", w, h});
         plan.passes.push_back({"oit", "resolve (sort, nearest " + k + " exact + tail, over opaque)", w, h});
         plan.resources.push_back(plannedTexture("oit", "list heads (one node index per pixel)", {w, h, 1, Format::R32UI, kTextureStorage}));
-        const uint64_t nodes = poolNodes_ != 0 ? poolNodes_
-                               : desc_.initialPoolNodes != 0 ? desc_.initialPoolNodes
-                                                             : uint64_t(kOitInitialNodesPerPixel) * w * h;
+        const uint64_t nodes = poolNodes_ != 0 ? poolNodes_ : desc_.initialPoolNodes.value_or(uint64_t(kOitInitialNodesPerPixel) * w * h);
         plan.resources.push_back({"oit", "node pool (" + std::to_string(nodes) + " nodes: last count x " +
                                              std::to_string(kOitPoolHeadroom).substr(0, 3) + ")",
                                   Format::Undefined, 0, 0, 1, uint64_t(shared::SFX_OIT_POOL_HEADER_BYTES) + nodes * kOitNodeBytes});

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "sfx/oit.hpp"
+#include "sfx/settings_ranges.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared_oit.h"
 #include "sfx_shared_oit_params.h"
@@ -28,9 +29,7 @@ Status inRange(const char* field, double v, double lo, double hi, bool openLow =
 }  // namespace
 
 Status checkLayerSettings(const TransparencyDesc& desc) {
-    if (desc.compressedNodes > uint32_t(shared::SFX_OIT_COMPRESSED_NODES))
-        return invalidArgument("TransparencyDesc.compressedNodes", std::to_string(desc.compressedNodes),
-                               "[0, " + std::to_string(shared::SFX_OIT_COMPRESSED_NODES) + "] (0 = no compression)");
+    SFX_TRY(checkSetting(Setting::OitCompressedNodes, desc.compressedNodes));
     const TransparencyAoDesc& ao = desc.ao;
     if (!ao.enabled) return Status::ok();
     const AoConfig& c = ao.config;
@@ -52,9 +51,7 @@ Status checkLayerSettings(const TransparencyDesc& desc) {
     SFX_TRY(inRange("epsilon", c.epsilon, 0.0, 1.0, true));
     SFX_TRY(inRange("spiralTurns", c.spiralTurns, 0.0, 1.0e3));
     SFX_TRY(inRange("maxRadiusPx", c.maxRadiusPx, 0.0, 1.0e5));
-    if (ao.filterRadius > uint32_t(shared::SFX_AO_MAX_BLUR_RADIUS))
-        return invalidArgument("TransparencyDesc.ao.filterRadius", std::to_string(ao.filterRadius),
-                               "[0, " + std::to_string(shared::SFX_AO_MAX_BLUR_RADIUS) + "] (0 = the raw AO)");
+    SFX_TRY(checkSetting(Setting::OitAoFilterRadius, ao.filterRadius));
     return Status::ok();
 }
 

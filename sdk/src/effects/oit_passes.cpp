@@ -8,6 +8,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "sfx/oit.hpp"
+#include "sfx/settings_ranges.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared_oit.h"
 #include "sfx_shared_oit_params.h"
@@ -25,7 +26,7 @@ Status checkDraw(const TransparentDraw& d, size_t i) {
     if (d.vertices.isNull()) return invalidArgument(at + "vertices", "null", "a vertex buffer of TransparentVertex");
     if (d.vertexCount == 0 || d.vertexCount % 3 != 0)
         return invalidArgument(at + "vertexCount", std::to_string(d.vertexCount), "a positive multiple of 3");
-    if (!(d.opacity >= 0.0f && d.opacity <= 1.0f)) return invalidArgument(at + "opacity", std::to_string(d.opacity), "[0, 1]");
+    SFX_TRY(checkSetting(Setting::OitDrawOpacity, d.opacity, at + "opacity"));
     for (int c = 0; c < 3; ++c)
         if (!(d.color[c] >= 0.0f && d.color[c] <= 1.0e4f))
             return invalidArgument(at + "color", std::to_string(d.color[c]), "each channel in [0, 1e4]");

@@ -89,7 +89,7 @@ double aoTapTerm(const AoConfig& c, double vv, double vn, double z) {
         case AoTechnique::Alchemy: return sh::aoAlchemyTerm(vv, vn, z, c.radius, c.bias, c.epsilon);
         case AoTechnique::Scalable: return sh::aoScalableTerm(vv, vn, c.radius, c.bias, c.epsilon);
         case AoTechnique::Crease: {
-            const AoCreaseSettings& k = c.crease;
+            const AoCreaseConfig& k = c.crease;
             return sh::aoCreaseTerm(vv, vn, double(k.range), double(k.minimumCrease), double(k.bias), c.epsilon);
         }
     }
@@ -103,7 +103,7 @@ double aoOcclusionFromSum(const AoConfig& c, double sum, double z) {
         case AoTechnique::Alchemy: return 2.0 * c.intensity * c.radius / double(c.samples) * sum;
         case AoTechnique::Scalable: return sh::aoScalableOcclusion(sum, c.intensity, int(c.samples), c.sumExponent);
         case AoTechnique::Crease: {
-            const AoCreaseSettings& k = c.crease;
+            const AoCreaseConfig& k = c.crease;
             const double invFade = std::isinf(k.fadeEnd) ? 0.0 : 1.0 / (double(k.fadeEnd) - double(k.fadeStart));
             const double fade = 1.0 - saturate((z - double(k.fadeStart)) * invFade);
             return sh::aoCreaseOcclusion(sum, int(c.samples), c.intensity, double(k.averager), fade);
