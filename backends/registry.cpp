@@ -16,12 +16,18 @@ std::string toString(const BackendConfig& c) {
 }
 
 bool parseBackendConfig(const std::string& text, BackendConfig* out) {
-    if (text == "vulkan") *out = {BackendKind::Vulkan, ""};
-    else if (text == "gles") *out = {BackendKind::GLES, "egl"};
-    else if (text == "gl" || text == "gl-osmesa") *out = {BackendKind::GL, "osmesa"};
-    else if (text == "gl-egl") *out = {BackendKind::GL, "egl"};
-    else if (text == "null") *out = {BackendKind::Null, ""};
-    else return false;
+    if (text == "vulkan")
+        *out = {BackendKind::Vulkan, ""};
+    else if (text == "gles")
+        *out = {BackendKind::GLES, "egl"};
+    else if (text == "gl" || text == "gl-osmesa")
+        *out = {BackendKind::GL, "osmesa"};
+    else if (text == "gl-egl")
+        *out = {BackendKind::GL, "egl"};
+    else if (text == "null")
+        *out = {BackendKind::Null, ""};
+    else
+        return false;
     return true;
 }
 
@@ -40,26 +46,27 @@ std::vector<BackendConfig> compiledBackends() {
 
 Result<std::unique_ptr<Device>> openDevice(const BackendConfig& config, const DeviceOptions& options) {
     if (!options.physicalDevice.empty() && config.backend != BackendKind::Vulkan)
-        return Status{StatusCode::InvalidArgument, "DeviceOptions.physicalDevice is '" + options.physicalDevice + "'; backend '" +
-                                                       toString(config) + "' has no choice of device: allowed only empty"};
+        return Status{StatusCode::InvalidArgument,
+                      "DeviceOptions.physicalDevice is '" + options.physicalDevice + "'; backend '" + toString(config) +
+                          "' has no choice of device: allowed only empty"};
     switch (config.backend) {
-    case BackendKind::Null: return null::createDevice(options);
-    case BackendKind::Vulkan:
+        case BackendKind::Null: return null::createDevice(options);
+        case BackendKind::Vulkan:
 #ifdef SFX_HAS_VULKAN
-        return vulkan::createDevice(options);
+            return vulkan::createDevice(options);
 #else
-        break;
+            break;
 #endif
-    case BackendKind::GLES:
-    case BackendKind::GL: {
+        case BackendKind::GLES:
+        case BackendKind::GL: {
 #ifdef SFX_HAS_GL
-        const gl::Platform platform = config.platform == "osmesa" ? gl::Platform::OSMesa : gl::Platform::EGL;
-        const gl::Api api = config.backend == BackendKind::GLES ? gl::Api::GLES : gl::Api::DesktopGL;
-        return gl::createDevice(platform, api, options);
+            const gl::Platform platform = config.platform == "osmesa" ? gl::Platform::OSMesa : gl::Platform::EGL;
+            const gl::Api api = config.backend == BackendKind::GLES ? gl::Api::GLES : gl::Api::DesktopGL;
+            return gl::createDevice(platform, api, options);
 #else
-        break;
+            break;
 #endif
-    }
+        }
     }
     return Status{StatusCode::InvalidArgument, "backend '" + toString(config) + "' is not compiled into this build"};
 }
@@ -93,12 +100,10 @@ Result<DeviceSelection> openBestDevice(const DeviceOptions& options) {
             continue;
         }
         if (best.device && uint32_t(tier->tier) <= uint32_t(best.tier.tier)) {
-            rejected.push_back(toString(config) + ": reaches tier '" + toString(tier->tier) + "', no better than " +
-                               toString(best.config));
+            rejected.push_back(toString(config) + ": reaches tier '" + toString(tier->tier) + "', no better than " + toString(best.config));
             continue;
         }
-        if (best.device)
-            rejected.push_back(toString(best.config) + ": reaches only tier '" + toString(best.tier.tier) + "'");
+        if (best.device) rejected.push_back(toString(best.config) + ": reaches only tier '" + toString(best.tier.tier) + "'");
         best.device = std::move(device.value());
         best.config = config;
         best.tier = tier.value();

@@ -10,14 +10,14 @@
 #include <iostream>
 
 #include "scene.hpp"
-#include "sfx/backends.hpp"
 #include "sfx/ao.hpp"
+#include "sfx/backends.hpp"
 #include "sfx/budget.hpp"
 #include "sfx/depth.hpp"
-#include "sfx/motion_blur.hpp"
-#include "sfx/tiers.hpp"
 #include "sfx/image_io.hpp"
+#include "sfx/motion_blur.hpp"
 #include "sfx/scene_render.hpp"
+#include "sfx/tiers.hpp"
 #include "sfx_shared.h"
 
 using namespace sfx;
@@ -32,7 +32,6 @@ Result<io::Image> readR32F(Device& device, TextureHandle texture, uint32_t mip) 
     SFX_TRY(device.readTexture(texture, mip, image.pixels.data(), image.pixels.size() * sizeof(float)));
     return image;
 }
-
 
 // View-space normals as a picture: n * 0.5 + 0.5.
 io::Image normalsPicture(const tools::GBufferContents& g) {
@@ -118,8 +117,7 @@ int main(int argc, char** argv) {
     app.add_option("--height", height, "height in pixels")->capture_default_str();
     app.add_option("--scenes", scenes, "scenes to render")->capture_default_str();
     std::string sceneFile = SFX_SCENE_FILES_DIR "/panes.json";
-    app.add_option("--scene-file", sceneFile, "a scene file drawn through the scene renderer (sfx render); '' = none")
-        ->capture_default_str();
+    app.add_option("--scene-file", sceneFile, "a scene file drawn through the scene renderer (sfx render); '' = none")->capture_default_str();
     CLI11_PARSE(app, argc, argv);
 
     std::optional<Tier> forcedTier;
@@ -174,16 +172,14 @@ int main(int argc, char** argv) {
         // The papers' nominal intensity (sigma = 1) makes scalable AO (a squared sum) and crease
         // shading (a sum over 10) faint on these scenes; the demo turns them up so the effect shows.
         desc.settings.intensity = technique == AoTechnique::Scalable ? 3.0f : technique == AoTechnique::Crease ? 3.0f : 1.0f;
-        std::cout << "ao " << toString(technique) << ": radius " << desc.settings.radius << ", intensity "
-                  << *desc.settings.intensity << "\n";
+        std::cout << "ao " << toString(technique) << ": radius " << desc.settings.radius << ", intensity " << *desc.settings.intensity << "\n";
         Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(*device, desc);
         if (!ao) return fail(ao.status());
         plan.append(ao.value()->plan());
         contexts.push_back(std::move(ao.value()));
     }
     std::cout << "plan (three AO contexts, each with its own linear depth):\n" << plan.describe();
-    Result<TextureHandle> aoTarget =
-        device->createTexture({width, height, 1, Format::RGBA8, kTextureSampled | kTextureRenderTarget, "demo-ao"});
+    Result<TextureHandle> aoTarget = device->createTexture({width, height, 1, Format::RGBA8, kTextureSampled | kTextureRenderTarget, "demo-ao"});
     if (!aoTarget) return fail(aoTarget.status());
 
     for (const std::string& name : scenes) {
@@ -211,18 +207,16 @@ int main(int argc, char** argv) {
             io::Image aoImage(width, height, 1);
             for (size_t i = 0; i < aoImage.pixels.size(); ++i) aoImage.pixels[i] = visibility.value()[i * 4] / 255.0f;
             if (Status s = io::writePng(base + "_ao_" + technique + ".png", aoImage); !s) return fail(s);
-            if (Status s = io::writePng(base + "_lit_" + technique + ".png", composite(contents.value(), &visibility.value())); !s)
-                return fail(s);
-            std::cout << "[" << name << "] ao " << technique << ": " << cost->milliseconds << " ms ("
-                      << toString(cost->source) << ", median of " << kTimedRuns << " after a warm-up), " << ao.plan().passes.size() << " passes\n";
+            if (Status s = io::writePng(base + "_lit_" + technique + ".png", composite(contents.value(), &visibility.value())); !s) return fail(s);
+            std::cout << "[" << name << "] ao " << technique << ": " << cost->milliseconds << " ms (" << toString(cost->source) << ", median of "
+                      << kTimedRuns << " after a warm-up), " << ao.plan().passes.size() << " passes\n";
         }
         // The linear depth the scalable context computed, and its pyramid where the tier has one.
         const LinearDepth& linear = contexts[0]->linearDepth();
         for (uint32_t level = 0; level < linear.desc().mipLevels; ++level) {
             Result<io::Image> depth = readR32F(*device, linear.texture(), level);
             if (!depth) return fail(depth.status());
-            if (Status s = io::writePng(base + "_linear_depth_mip" + std::to_string(level) + ".png", depthPicture(depth.value())); !s)
-                return fail(s);
+            if (Status s = io::writePng(base + "_linear_depth_mip" + std::to_string(level) + ".png", depthPicture(depth.value())); !s) return fail(s);
         }
         std::cout << "[" << name << "] wrote " << base << "_{normals,ao_*,lit_*,linear_depth_mip*}.png\n";
         renderer.value()->destroy(g.value());
@@ -240,8 +234,7 @@ int main(int argc, char** argv) {
     Result<std::unique_ptr<MotionBlur>> blur = MotionBlur::create(*device, {width, height, tier->profile, Format::RGBA8});
     if (!blur) return fail(blur.status());
     std::cout << "motion blur plan:\n" << blur.value()->plan().describe();
-    Result<TextureHandle> colour =
-        device->createTexture({width, height, 1, Format::RGBA8, kTextureSampled, "demo-motion-colour"});
+    Result<TextureHandle> colour = device->createTexture({width, height, 1, Format::RGBA8, kTextureSampled, "demo-motion-colour"});
     if (!colour) return fail(colour.status());
     for (const MotionCase& mc : motionCases) {
         Result<tools::RasterScene> scene = tools::makeScene(mc.scene);

@@ -19,7 +19,8 @@ PACKAGES=(
   nlohmann-json3-dev              # scene files (sfx render)
   clang-14 libclang-rt-14-dev     # sanitizer builds and libFuzzer targets
   ccache                          # faster rebuilds; used when present
-  python3                         # tests only: the layering check
+  python3                         # tests only: the layering and documentation checks
+  clang-format-14                 # tests only: the layout check (tests/check_format.sh)
   chromium-common                 # tests only: Google's SwiftShader, a second, independent Vulkan driver
 )
 

@@ -10,33 +10,32 @@ namespace sfx::gl {
 
 Status GlDevice::init(CapabilityCeiling ceiling) {
     if (!makeCurrent()) return {StatusCode::BackendUnavailable, "GL: the context cannot be made current"};
+// clang-format off
 #define SFX_GL_LOAD(type, fn)                                                                            \
     gl_.fn = reinterpret_cast<type>(platform_->getProcAddress(#fn));                                     \
     if (!gl_.fn) return {StatusCode::BackendUnavailable, std::string("GL: entry point ") + #fn + " is missing"};
+    // clang-format on
     SFX_GL_REQUIRED(SFX_GL_LOAD)
 #undef SFX_GL_LOAD
     loaded_ = true;
-    while (gl_.glGetError() != GL_NO_ERROR) {
-    }
+    while (gl_.glGetError() != GL_NO_ERROR) {}
     const char* version = reinterpret_cast<const char*>(gl_.glGetString(GL_VERSION));
     const char* renderer = reinterpret_cast<const char*>(gl_.glGetString(GL_RENDERER));
     if (!version) return {StatusCode::BackendUnavailable, "GL: glGetString(GL_VERSION) returned NULL"};
     const bool es = std::strncmp(version, "OpenGL ES", 9) == 0;
     if (es != (api_ == Api::GLES))
-        return {StatusCode::BackendUnavailable, std::string("GL: asked for ") + (api_ == Api::GLES ? "GL ES" : "desktop GL") +
-                                                    ", the context is '" + version + "'"};
+        return {StatusCode::BackendUnavailable,
+                std::string("GL: asked for ") + (api_ == Api::GLES ? "GL ES" : "desktop GL") + ", the context is '" + version + "'"};
     GLint major = 0, minor = 0;
     gl_.glGetIntegerv(GL_MAJOR_VERSION, &major);
     gl_.glGetIntegerv(GL_MINOR_VERSION, &minor);
     const int v = major * 10 + minor;
     if (es ? v < 30 : v < 33)
-        return {StatusCode::BackendUnavailable, std::string("GL: '") + version + "' is older than " +
-                                                    (es ? "GL ES 3.0" : "desktop GL 3.3")};
+        return {StatusCode::BackendUnavailable, std::string("GL: '") + version + "' is older than " + (es ? "GL ES 3.0" : "desktop GL 3.3")};
     GLint extensionCount = 0;
     gl_.glGetIntegerv(GL_NUM_EXTENSIONS, &extensionCount);
     for (GLint i = 0; i < extensionCount; ++i)
-        if (const GLubyte* e = gl_.glGetStringi(GL_EXTENSIONS, GLuint(i)))
-            extensions_.insert(reinterpret_cast<const char*>(e));
+        if (const GLubyte* e = gl_.glGetStringi(GL_EXTENSIONS, GLuint(i))) extensions_.insert(reinterpret_cast<const char*>(e));
 
     const bool modern = es ? v >= 31 : v >= 43;  // compute, storage buffers and images, atomics
     if (modern || extensions_.count("GL_KHR_debug")) {
@@ -47,13 +46,10 @@ Status GlDevice::init(CapabilityCeiling ceiling) {
     // GL ES 3.0/3.1 name KHR_debug's entry points with a suffix.
     const bool coreDebug = es ? v >= 32 : v >= 43;
     if (!coreDebug && es && extensions_.count("GL_KHR_debug")) {
-        gl_.glDebugMessageCallback =
-            reinterpret_cast<PFNGLDEBUGMESSAGECALLBACKPROC>(platform_->getProcAddress("glDebugMessageCallbackKHR"));
-        gl_.glDebugMessageControl =
-            reinterpret_cast<PFNGLDEBUGMESSAGECONTROLPROC>(platform_->getProcAddress("glDebugMessageControlKHR"));
+        gl_.glDebugMessageCallback = reinterpret_cast<PFNGLDEBUGMESSAGECALLBACKPROC>(platform_->getProcAddress("glDebugMessageCallbackKHR"));
+        gl_.glDebugMessageControl = reinterpret_cast<PFNGLDEBUGMESSAGECONTROLPROC>(platform_->getProcAddress("glDebugMessageControlKHR"));
     }
-    const bool haveDebug = (coreDebug || extensions_.count("GL_KHR_debug")) && gl_.glDebugMessageCallback &&
-                           gl_.glDebugMessageControl;
+    const bool haveDebug = (coreDebug || extensions_.count("GL_KHR_debug")) && gl_.glDebugMessageCallback && gl_.glDebugMessageControl;
 
     DeviceCaps& c = caps_;
     c.backend = es ? BackendKind::GLES : BackendKind::GL;
@@ -65,8 +61,7 @@ Status GlDevice::init(CapabilityCeiling ceiling) {
     c.deviceName = renderer ? renderer : "unknown";
     c.ceiling = ceiling;
     const bool full = modern && ceiling == CapabilityCeiling::None;
-    c.dialect = es ? (full ? ShaderDialect::Essl310 : ShaderDialect::Essl300)
-                   : (full ? ShaderDialect::Glsl450 : ShaderDialect::Glsl330);
+    c.dialect = es ? (full ? ShaderDialect::Essl310 : ShaderDialect::Essl300) : (full ? ShaderDialect::Glsl450 : ShaderDialect::Glsl330);
     c.computeShaders = full;
     c.storageBuffers = full;
     c.atomics = full;
@@ -110,19 +105,16 @@ Status GlDevice::init(CapabilityCeiling ceiling) {
 
     // Float colour targets are core in desktop GL and GL ES 3.2; GL ES 3.0/3.1 (and a
     // device under the ES 3.0 ceiling) have them only through EXT_color_buffer_float.
-    const bool colorBufferFloat = !es || extensions_.count("GL_EXT_color_buffer_float") ||
-                                  (v >= 32 && ceiling == CapabilityCeiling::None);
+    const bool colorBufferFloat = !es || extensions_.count("GL_EXT_color_buffer_float") || (v >= 32 && ceiling == CapabilityCeiling::None);
     const bool colorBufferHalf = colorBufferFloat || extensions_.count("GL_EXT_color_buffer_half_float");
     float32Filterable_ = !es || extensions_.count("GL_OES_texture_float_linear");
     for (size_t f = 1; f < size_t(Format::Count); ++f) {
         const Format format = Format(f);
         c.sampledFormat[f] = true;
-        c.renderableFormat[f] = isHalfFormat(format) ? colorBufferHalf
-                                : isFloat32Format(format) ? colorBufferFloat
-                                                          : true;
+        c.renderableFormat[f] = isHalfFormat(format) ? colorBufferHalf : isFloat32Format(format) ? colorBufferFloat : true;
     }
     c.floatRenderTargets = c.renderableFormat[size_t(Format::R32F)] && c.renderableFormat[size_t(Format::RG16F)] &&
-                           c.renderableFormat[size_t(Format::RGBA16F)];
+        c.renderableFormat[size_t(Format::RGBA16F)];
     c.float32Filterable = float32Filterable_;
 
     // Not on a host's context, which keeps its own callback (see enableDebugOutput).

@@ -29,15 +29,13 @@ void GlDevice::bindResources(const BindingSet& b) {
     GL(glActiveTexture, GL_TEXTURE0);
     auto bindRange = [&](GLenum target, const BufferBinding& bb) {
         const GlBuffer& buf = buffers_.get(bb.buffer);
-        GL(glBindBufferRange, target, bb.binding, buf.name, GLintptr(bb.offset),
-           GLsizeiptr(validation::boundSize(bb, buf.desc)));
+        GL(glBindBufferRange, target, bb.binding, buf.name, GLintptr(bb.offset), GLsizeiptr(validation::boundSize(bb, buf.desc)));
     };
     for (const BufferBinding& bb : b.uniformBuffers) bindRange(GL_UNIFORM_BUFFER, bb);
     for (const BufferBinding& bb : b.storageBuffers) bindRange(GL_SHADER_STORAGE_BUFFER, bb);
     for (const StorageImageBinding& ib : b.storageImages) {
         const GlTexture& t = textures_.get(ib.texture);
-        GL(glBindImageTexture, ib.binding, t.name, GLint(ib.mip), GL_FALSE, 0, GL_READ_WRITE,
-           glFormat(t.desc.format).internalFormat);
+        GL(glBindImageTexture, ib.binding, t.name, GLint(ib.mip), GL_FALSE, 0, GL_READ_WRITE, glFormat(t.desc.format).internalFormat);
     }
 }
 
@@ -101,9 +99,8 @@ Status GlDevice::encodeRenderPass(const RenderPassDesc& pass, std::span<const Dr
     }
     // Draws with storage side effects (fragment stores and atomics): earlier writes visible to
     // them, and theirs to every later pass or dispatch, as Vulkan's barrier between commands does.
-    const bool storage = std::any_of(draws.begin(), draws.end(), [](const DrawDesc& d) {
-        return !d.bindings.storageBuffers.empty() || !d.bindings.storageImages.empty();
-    });
+    const bool storage = std::any_of(draws.begin(), draws.end(),
+                                     [](const DrawDesc& d) { return !d.bindings.storageBuffers.empty() || !d.bindings.storageImages.empty(); });
     if (storage) GL(glMemoryBarrier, GL_ALL_BARRIER_BITS);
     for (const DrawDesc& d : draws) encodeDraw(d);
     if (storage) GL(glMemoryBarrier, GL_ALL_BARRIER_BITS);
@@ -112,7 +109,6 @@ Status GlDevice::encodeRenderPass(const RenderPassDesc& pass, std::span<const Dr
     GL(glBindFramebuffer, GL_FRAMEBUFFER, 0);
     return Status::ok();
 }
-
 
 void GlDevice::encodeDraw(const DrawDesc& d) {
     const GlPipeline& p = pipelines_.get(d.pipeline);

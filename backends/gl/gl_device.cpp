@@ -67,14 +67,12 @@ bool GlDevice::makeCurrent() {
 }
 
 Status GlDevice::enter() {
-    if (!makeCurrent())
-        return {StatusCode::DeviceError, std::string("GL: cannot make the ") + platform_->name() + " context current"};
+    if (!makeCurrent()) return {StatusCode::DeviceError, std::string("GL: cannot make the ") + platform_->name() + " context current"};
     pendingError_.clear();
     // Errors the host's own calls left pending are not this call's failure: clear them so
     // the per-call checks see only what the SDK did.
     if (options_.validation && hostContext())
-        while (gl_.glGetError() != GL_NO_ERROR) {
-        }
+        while (gl_.glGetError() != GL_NO_ERROR) {}
     // The host may have changed the pixel-store alignment since the last call: the SDK's uploads
     // and readbacks are tightly packed, and the state contract leaves both at 1.
     if (hostContext()) {
@@ -147,8 +145,7 @@ Status GlDevice::doFlush() {
 
 namespace {
 
-Result<std::unique_ptr<Device>> finishDevice(Result<std::unique_ptr<GlPlatform>> platform, Api api,
-                                             const DeviceOptions& options) {
+Result<std::unique_ptr<Device>> finishDevice(Result<std::unique_ptr<GlPlatform>> platform, Api api, const DeviceOptions& options) {
     if (!platform) return platform.status();
     gCurrentPlatform = platform.value().get();  // opening made it current
     auto device = std::make_unique<GlDevice>(std::move(platform.value()), api, options);
@@ -170,9 +167,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<GlPlatform> hostPlatform(GetProcAddressFn getProcAddress) {
-    return std::make_unique<HostPlatform>(getProcAddress);
-}
+std::unique_ptr<GlPlatform> hostPlatform(GetProcAddressFn getProcAddress) { return std::make_unique<HostPlatform>(getProcAddress); }
 
 Result<std::unique_ptr<Device>> createDevice(Platform platform, Api api, const DeviceOptions& options) {
     // Whatever context the SDK left current goes first: opening makes the new one current.

@@ -58,9 +58,9 @@ struct GlProgram {
 struct GlPipeline {
     validation::PipelineInfo info;  // what the shared validation checks draws and dispatches against
     GLuint program = 0;             // the program's GL object, kept until its last pipeline goes
-    GraphicsPipelineDesc desc;  // graphics state; program field unused
+    GraphicsPipelineDesc desc;      // graphics state; program field unused
     GLuint vao = 0;
-    GLuint specialized = 0;         // the program compiled with the pipeline's constants; 0: none
+    GLuint specialized = 0;  // the program compiled with the pipeline's constants; 0: none
 };
 struct GlTimer {
     bool begun = false, ended = false;
@@ -151,8 +151,7 @@ private:
         }
     }
     void enableDebugOutput();
-    static void APIENTRY debugCallback(GLenum source, GLenum type, GLuint, GLenum, GLsizei, const GLchar* message,
-                                         const void* user);
+    static void APIENTRY debugCallback(GLenum source, GLenum type, GLuint, GLenum, GLsizei, const GLchar* message, const void* user);
 
     // ---- Resources (gl_resources.cpp) -----------------------------------------------------
     void setSamplerState(GLuint s, const SamplerDesc& d);
@@ -166,13 +165,10 @@ private:
     // Compiles and links `program`'s text for the device's dialect and binds its resources by name.
     Result<GLuint> linkProgram(const CompiledProgram& program);
     static GlSources sourcesOf(const CompiledProgram& program, ShaderDialect dialect);
-    Result<GLuint> linkSources(const std::string& programName, const GlSources& sources,
-                               const std::vector<ShaderResource>& resources);
+    Result<GLuint> linkSources(const std::string& programName, const GlSources& sources, const std::vector<ShaderResource>& resources);
     // The program of `pipeline` specialised with its constants (0 when it has none).
     Result<GLuint> specialize(const GlProgram& program, const std::vector<SpecializationConstant>& constants);
-    GLuint programOf(const GlPipeline& pipeline) const {
-        return pipeline.specialized ? pipeline.specialized : pipeline.program;
-    }
+    GLuint programOf(const GlPipeline& pipeline) const { return pipeline.specialized ? pipeline.specialized : pipeline.program; }
     Result<GLuint> compileShader(const std::string& programName, GLenum type, const std::string& source);
     Result<GLuint> buildProgram(const std::string& programName, const std::vector<std::pair<GLenum, std::string>>& sources);
     void bindResourcesByName(GLuint program, const std::vector<ShaderResource>& resources);
@@ -219,14 +215,14 @@ private:
     HandlePool<ProgramTag, GlProgram> programs_;
     HandlePool<PipelineTag, GlPipeline> pipelines_;
     HandlePool<TimerTag, GlTimer> timers_;
-    const decltype(validation::poolLookup(textures_, buffers_, samplers_, programs_, pipelines_, timers_)) lookup_ =
-        validation::poolLookup(textures_, buffers_, samplers_, programs_, pipelines_, timers_);
+    const decltype(validation::poolLookup(textures_, buffers_, samplers_, programs_, pipelines_, timers_)) lookup_ = validation::poolLookup(
+        textures_, buffers_, samplers_, programs_, pipelines_, timers_);
 
     std::map<GLuint, uint32_t> programUsers_;  // pipelines per GL program object
     std::set<GLuint> destroyedPrograms_;       // destroyed programs whose pipelines still draw
     std::map<FboKey, GLuint> fbos_;
-    FboKey fboKey_;             // reused to build the key of each lookup
-    PassTargets passTargets_;   // reused by every render pass
+    FboKey fboKey_;            // reused to build the key of each lookup
+    PassTargets passTargets_;  // reused by every render pass
     // For stats(): texture and buffer storage (the textures readTexture copies depth through
     // included, and counted again as readback copies), framebuffer objects, and the bytes of
     // the HAL's textures and buffers alive.

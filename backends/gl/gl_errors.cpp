@@ -10,12 +10,12 @@ namespace {
 
 const char* glErrorName(GLenum e) {
     switch (e) {
-    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
-    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
-    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
-    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
-    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
-    default: return "GL error";
+        case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+        case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+        case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+        case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+        case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+        default: return "GL error";
     }
 }
 
@@ -53,8 +53,7 @@ void GlDevice::enableDebugOutput() {
     debugOutput_ = true;
 }
 
-void APIENTRY GlDevice::debugCallback(GLenum source, GLenum type, GLuint, GLenum, GLsizei,
-                                      const GLchar* message, const void* user) {
+void APIENTRY GlDevice::debugCallback(GLenum source, GLenum type, GLuint, GLenum, GLsizei, const GLchar* message, const void* user) {
     // Compile and link failures reach the caller as ShaderError with the info log.
     if (type != GL_DEBUG_TYPE_ERROR || source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
     auto* self = static_cast<GlDevice*>(const_cast<void*>(user));

@@ -46,8 +46,7 @@ Status notGl(const char* call, const Device& device) {
 
 Result<TextureHandle> GlDevice::importExternal(const ExternalTexture& e) {
     if (e.name == 0) return invalidArgument("ExternalTexture.name", "0", "the host's GL texture name");
-    if (e.target != kTexture2D)
-        return invalidArgument("ExternalTexture.target", "GLenum " + std::to_string(e.target), "GL_TEXTURE_2D (0x0DE1)");
+    if (e.target != kTexture2D) return invalidArgument("ExternalTexture.target", "GLenum " + std::to_string(e.target), "GL_TEXTURE_2D (0x0DE1)");
     Result<Format> format = resolveFormat(e);
     if (!format) return format.status();
     TextureDesc desc{e.width, e.height, e.mipLevels, format.value(), e.usage, e.debugName ? e.debugName : ""};

@@ -7,9 +7,7 @@
 
 namespace sfx::gl {
 
-GLenum GlDevice::depthAttachmentPoint(Format f) const {
-    return f == Format::D24S8 ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT;
-}
+GLenum GlDevice::depthAttachmentPoint(Format f) const { return f == Format::D24S8 ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT; }
 
 // A framebuffer object per attachment set, made once and kept until a texture goes.
 Result<GLuint> GlDevice::framebuffer(const ColorTargets& colors, const GlTexture* depth, uint32_t depthMip) {
@@ -27,13 +25,10 @@ Result<GLuint> GlDevice::framebuffer(const ColorTargets& colors, const GlTexture
     GL(glBindFramebuffer, GL_FRAMEBUFFER, fbo);
     std::vector<GLenum> drawBuffers;
     for (size_t i = 0; i < colors.size(); ++i) {
-        GL(glFramebufferTexture2D, GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + i), GL_TEXTURE_2D, colors[i].first->name,
-           GLint(colors[i].second));
+        GL(glFramebufferTexture2D, GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + i), GL_TEXTURE_2D, colors[i].first->name, GLint(colors[i].second));
         drawBuffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
     }
-    if (depth)
-        GL(glFramebufferTexture2D, GL_FRAMEBUFFER, depthAttachmentPoint(depth->desc.format), GL_TEXTURE_2D, depth->name,
-           GLint(depthMip));
+    if (depth) GL(glFramebufferTexture2D, GL_FRAMEBUFFER, depthAttachmentPoint(depth->desc.format), GL_TEXTURE_2D, depth->name, GLint(depthMip));
     if (drawBuffers.empty()) {
         const GLenum none = GL_NONE;
         GL(glDrawBuffers, 1, &none);
@@ -48,8 +43,7 @@ Result<GLuint> GlDevice::framebuffer(const ColorTargets& colors, const GlTexture
         GL(glDeleteFramebuffers, 1, &fbo);
         char hex[16];
         std::snprintf(hex, sizeof(hex), "0x%04x", unsigned(status));
-        return Status{StatusCode::UnsupportedFormat,
-                      std::string("the attachments make an incomplete framebuffer (status ") + hex + ")"};
+        return Status{StatusCode::UnsupportedFormat, std::string("the attachments make an incomplete framebuffer (status ") + hex + ")"};
     }
     fbos_[key] = fbo;
     framebufferCount_.add();
@@ -58,9 +52,8 @@ Result<GLuint> GlDevice::framebuffer(const ColorTargets& colors, const GlTexture
 
 void GlDevice::forgetFbosOf(GLuint texture) {
     for (auto it = fbos_.begin(); it != fbos_.end();) {
-        const bool uses = std::any_of(it->first.begin(), it->first.end(), [&](uint64_t k) {
-            return k != ~uint64_t(0) && GLuint(k >> 32) == texture;
-        });
+        const bool uses = std::any_of(it->first.begin(), it->first.end(),
+                                      [&](uint64_t k) { return k != ~uint64_t(0) && GLuint(k >> 32) == texture; });
         if (uses) {
             GL(glDeleteFramebuffers, 1, &it->second);
             framebufferCount_.remove();

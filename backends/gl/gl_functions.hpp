@@ -8,6 +8,7 @@
 namespace sfx::gl {
 
 // Present in GL ES 3.0 and desktop GL 3.3 core: a device is refused without any of them.
+// clang-format off
 #define SFX_GL_REQUIRED(X)                                              \
     X(PFNGLGETERRORPROC, glGetError)                                    \
     X(PFNGLGETSTRINGPROC, glGetString)                                  \
@@ -82,9 +83,11 @@ namespace sfx::gl {
     X(PFNGLVERTEXATTRIBPOINTERPROC, glVertexAttribPointer)              \
     X(PFNGLDRAWARRAYSINSTANCEDPROC, glDrawArraysInstanced)              \
     X(PFNGLDRAWELEMENTSINSTANCEDPROC, glDrawElementsInstanced)
+// clang-format on
 
 // GL ES 3.1 / desktop GL 4.3 (compute, storage) and KHR_debug: used only when the version or
 // extension says so, since glvnd's eglGetProcAddress returns a stub for any name.
+// clang-format off
 #define SFX_GL_OPTIONAL(X)                                              \
     X(PFNGLDISPATCHCOMPUTEPROC, glDispatchCompute)                      \
     X(PFNGLMEMORYBARRIERPROC, glMemoryBarrier)                          \
@@ -93,6 +96,7 @@ namespace sfx::gl {
     X(PFNGLSHADERSTORAGEBLOCKBINDINGPROC, glShaderStorageBlockBinding)  \
     X(PFNGLDEBUGMESSAGECALLBACKPROC, glDebugMessageCallback)            \
     X(PFNGLDEBUGMESSAGECONTROLPROC, glDebugMessageControl)
+// clang-format on
 
 struct GlFunctions {
 #define SFX_GL_MEMBER(type, name) type name = nullptr;

@@ -39,8 +39,7 @@ void releaseDisplay(EGLDisplay display) {
 
 class EglPlatform final : public GlPlatform {
 public:
-    EglPlatform(EGLDisplay display, EGLContext context, EGLenum api)
-        : display_(display), context_(context), api_(api) {}
+    EglPlatform(EGLDisplay display, EGLContext context, EGLenum api) : display_(display), context_(context), api_(api) {}
     ~EglPlatform() override {
         eglBindAPI(api_);
         if (eglGetCurrentContext() == context_) eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
@@ -74,17 +73,14 @@ Result<std::unique_ptr<GlPlatform>> openEglPlatform(Api api, bool debugContext) 
     const char* clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     if (!hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless"))
         return Status{StatusCode::BackendUnavailable, "EGL: the client has no EGL_MESA_platform_surfaceless"};
-    auto getPlatformDisplay =
-        reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
     if (!getPlatformDisplay) return Status{StatusCode::BackendUnavailable, "EGL: no eglGetPlatformDisplayEXT"};
     EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-    if (display == EGL_NO_DISPLAY)
-        return Status{StatusCode::BackendUnavailable, "EGL: " + eglErrorText("eglGetPlatformDisplayEXT(surfaceless)")};
+    if (display == EGL_NO_DISPLAY) return Status{StatusCode::BackendUnavailable, "EGL: " + eglErrorText("eglGetPlatformDisplayEXT(surfaceless)")};
     {
         std::lock_guard<std::mutex> lock(gDisplayMutex);
         EGLint major = 0, minor = 0;
-        if (!eglInitialize(display, &major, &minor))
-            return Status{StatusCode::BackendUnavailable, "EGL: " + eglErrorText("eglInitialize")};
+        if (!eglInitialize(display, &major, &minor)) return Status{StatusCode::BackendUnavailable, "EGL: " + eglErrorText("eglInitialize")};
         ++gDisplayUsers;
     }
     auto fail = [&](const std::string& why) -> Result<std::unique_ptr<GlPlatform>> {
@@ -92,8 +88,7 @@ Result<std::unique_ptr<GlPlatform>> openEglPlatform(Api api, bool debugContext) 
         return Status{StatusCode::BackendUnavailable, "EGL: " + why};
     };
     const char* displayExtensions = eglQueryString(display, EGL_EXTENSIONS);
-    if (!hasExtension(displayExtensions, "EGL_KHR_surfaceless_context"))
-        return fail("the display has no EGL_KHR_surfaceless_context");
+    if (!hasExtension(displayExtensions, "EGL_KHR_surfaceless_context")) return fail("the display has no EGL_KHR_surfaceless_context");
 
     const bool es = api == Api::GLES;
     const EGLenum eglApi = es ? EGL_OPENGL_ES_API : EGL_OPENGL_API;
@@ -143,8 +138,7 @@ Result<std::unique_ptr<GlPlatform>> openEglPlatform(Api api, bool debugContext) 
         attribs[n++] = EGL_NONE;
         context = eglCreateContext(display, config, EGL_NO_CONTEXT, attribs);
     }
-    if (context == EGL_NO_CONTEXT)
-        return fail(eglErrorText(es ? "eglCreateContext(GL ES 3.x)" : "eglCreateContext(desktop GL core 3.3+)"));
+    if (context == EGL_NO_CONTEXT) return fail(eglErrorText(es ? "eglCreateContext(GL ES 3.x)" : "eglCreateContext(desktop GL core 3.3+)"));
     if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
         std::string why = eglErrorText("eglMakeCurrent(surfaceless)");
         eglDestroyContext(display, context);

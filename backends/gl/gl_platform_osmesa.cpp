@@ -32,14 +32,25 @@ private:
 }  // namespace
 
 Result<std::unique_ptr<GlPlatform>> openOsmesaPlatform(Api api) {
-    if (api != Api::DesktopGL)
-        return Status{StatusCode::BackendUnavailable, "OSMesa offers desktop GL only, not GL ES"};
+    if (api != Api::DesktopGL) return Status{StatusCode::BackendUnavailable, "OSMesa offers desktop GL only, not GL ES"};
     const int versions[][2] = {{4, 5}, {4, 3}, {3, 3}};
     OSMesaContext context = nullptr;
     for (const auto& v : versions) {
-        const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_STENCIL_BITS, 0,
-                               OSMESA_ACCUM_BITS, 0, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                               OSMESA_CONTEXT_MAJOR_VERSION, v[0], OSMESA_CONTEXT_MINOR_VERSION, v[1], 0};
+        const int attribs[] = {OSMESA_FORMAT,
+                               OSMESA_RGBA,
+                               OSMESA_DEPTH_BITS,
+                               0,
+                               OSMESA_STENCIL_BITS,
+                               0,
+                               OSMESA_ACCUM_BITS,
+                               0,
+                               OSMESA_PROFILE,
+                               OSMESA_CORE_PROFILE,
+                               OSMESA_CONTEXT_MAJOR_VERSION,
+                               v[0],
+                               OSMESA_CONTEXT_MINOR_VERSION,
+                               v[1],
+                               0};
         context = OSMesaCreateContextAttribs(attribs, nullptr);
         if (context) break;
     }

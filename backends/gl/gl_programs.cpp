@@ -40,9 +40,9 @@ void GlDevice::releaseProgramObject(GLuint program, bool programDestroyed) {
 GlSources GlDevice::sourcesOf(const CompiledProgram& program, ShaderDialect dialect) {
     GlSources sources;
     for (const StageCode& s : program.stages) {
-        const GLenum type = s.stage == ShaderStage::Vertex     ? GL_VERTEX_SHADER
-                            : s.stage == ShaderStage::Fragment ? GL_FRAGMENT_SHADER
-                                                               : GL_COMPUTE_SHADER;
+        const GLenum type = s.stage == ShaderStage::Vertex ? GL_VERTEX_SHADER
+            : s.stage == ShaderStage::Fragment             ? GL_FRAGMENT_SHADER
+                                                           : GL_COMPUTE_SHADER;
         sources.push_back({type, s.glsl[size_t(dialect)]});
     }
     return sources;
@@ -52,8 +52,7 @@ Result<GLuint> GlDevice::linkProgram(const CompiledProgram& program) {
     return linkSources(program.name, sourcesOf(program, caps_.dialect), program.resources);
 }
 
-Result<GLuint> GlDevice::linkSources(const std::string& programName, const GlSources& sources,
-                                     const std::vector<ShaderResource>& resources) {
+Result<GLuint> GlDevice::linkSources(const std::string& programName, const GlSources& sources, const std::vector<ShaderResource>& resources) {
     Result<GLuint> linked = buildProgram(programName, sources);
     if (!linked) return linked.status();
     bindResourcesByName(linked.value(), resources);
@@ -93,8 +92,7 @@ Result<GLuint> GlDevice::compileShader(const std::string& programName, GLenum ty
     return validation::fail(validation::Error::ShaderCompile, {programName, stage, toString(caps_.dialect), log.c_str()});
 }
 
-Result<GLuint> GlDevice::buildProgram(const std::string& programName,
-                                      const std::vector<std::pair<GLenum, std::string>>& sources) {
+Result<GLuint> GlDevice::buildProgram(const std::string& programName, const std::vector<std::pair<GLenum, std::string>>& sources) {
     std::vector<GLuint> shaders;
     auto deleteShaders = [&] {
         for (GLuint s : shaders) GL(glDeleteShader, s);
@@ -129,30 +127,30 @@ void GlDevice::bindResourcesByName(GLuint program, const std::vector<ShaderResou
     GL(glUseProgram, program);
     for (const ShaderResource& r : resources) {
         switch (r.kind) {
-        case ResourceKind::SampledTexture: {
-            const GLint loc = GL(glGetUniformLocation, program, r.glName.c_str());
-            if (loc >= 0) GL(glUniform1i, loc, GLint(r.binding));
-            break;
-        }
-        case ResourceKind::UniformBuffer: {
-            const GLuint index = GL(glGetUniformBlockIndex, program, r.glName.c_str());
-            if (index != GL_INVALID_INDEX) GL(glUniformBlockBinding, program, index, r.binding);
-            break;
-        }
-        case ResourceKind::StorageBuffer:
-            // GL ES has no glShaderStorageBlockBinding; ESSL 310 keeps binding= instead.
-            if (api_ == Api::DesktopGL && gl_.glShaderStorageBlockBinding && gl_.glGetProgramResourceIndex) {
-                const GLuint index = GL(glGetProgramResourceIndex, program, GL_SHADER_STORAGE_BLOCK, r.glName.c_str());
-                if (index != GL_INVALID_INDEX) GL(glShaderStorageBlockBinding, program, index, r.binding);
-            }
-            break;
-        case ResourceKind::StorageImage:
-            // Image units cannot be reassigned on GL ES; high-tier dialects keep binding=.
-            if (api_ == Api::DesktopGL) {
+            case ResourceKind::SampledTexture: {
                 const GLint loc = GL(glGetUniformLocation, program, r.glName.c_str());
                 if (loc >= 0) GL(glUniform1i, loc, GLint(r.binding));
+                break;
             }
-            break;
+            case ResourceKind::UniformBuffer: {
+                const GLuint index = GL(glGetUniformBlockIndex, program, r.glName.c_str());
+                if (index != GL_INVALID_INDEX) GL(glUniformBlockBinding, program, index, r.binding);
+                break;
+            }
+            case ResourceKind::StorageBuffer:
+                // GL ES has no glShaderStorageBlockBinding; ESSL 310 keeps binding= instead.
+                if (api_ == Api::DesktopGL && gl_.glShaderStorageBlockBinding && gl_.glGetProgramResourceIndex) {
+                    const GLuint index = GL(glGetProgramResourceIndex, program, GL_SHADER_STORAGE_BLOCK, r.glName.c_str());
+                    if (index != GL_INVALID_INDEX) GL(glShaderStorageBlockBinding, program, index, r.binding);
+                }
+                break;
+            case ResourceKind::StorageImage:
+                // Image units cannot be reassigned on GL ES; high-tier dialects keep binding=.
+                if (api_ == Api::DesktopGL) {
+                    const GLint loc = GL(glGetUniformLocation, program, r.glName.c_str());
+                    if (loc >= 0) GL(glUniform1i, loc, GLint(r.binding));
+                }
+                break;
         }
     }
     GL(glUseProgram, 0);

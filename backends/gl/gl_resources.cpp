@@ -13,8 +13,7 @@ Result<TextureHandle> GlDevice::doCreateTexture(const TextureDesc& desc) {
     GlTexture t{desc, 0};
     GL(glGenTextures, 1, &t.name);
     GL(glBindTexture, GL_TEXTURE_2D, t.name);
-    GL(glTexStorage2D, GL_TEXTURE_2D, GLsizei(desc.mipLevels), f.internalFormat, GLsizei(desc.width),
-       GLsizei(desc.height));
+    GL(glTexStorage2D, GL_TEXTURE_2D, GLsizei(desc.mipLevels), f.internalFormat, GLsizei(desc.width), GLsizei(desc.height));
     // Depth is read as a value in shaders (texelFetch), never compared.
     if (isDepthFormat(desc.format)) GL(glTexParameteri, GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_NONE);
     GL(glTexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
@@ -48,8 +47,8 @@ Status GlDevice::doWriteTexture(TextureHandle h, uint32_t mip, const void* data,
     GL(glBindBuffer, GL_PIXEL_UNPACK_BUFFER, 0);
     GL(glActiveTexture, GL_TEXTURE0);
     GL(glBindTexture, GL_TEXTURE_2D, t.name);
-    GL(glTexSubImage2D, GL_TEXTURE_2D, GLint(mip), 0, 0, GLsizei(mipExtent(t.desc.width, mip)),
-       GLsizei(mipExtent(t.desc.height, mip)), f.format, f.type, data);
+    GL(glTexSubImage2D, GL_TEXTURE_2D, GLint(mip), 0, 0, GLsizei(mipExtent(t.desc.width, mip)), GLsizei(mipExtent(t.desc.height, mip)), f.format,
+       f.type, data);
     GL(glBindTexture, GL_TEXTURE_2D, 0);
     return takeDeviceError(Status::ok());
 }
@@ -64,8 +63,7 @@ Result<BufferHandle> GlDevice::doCreateBuffer(const BufferDesc& desc) {
     GL(glBufferData, GL_COPY_WRITE_BUFFER, GLsizeiptr(desc.size), nullptr, GL_DYNAMIC_DRAW);
     static const std::vector<uint8_t> kZeros(64 * 1024, 0);
     for (uint64_t offset = 0; offset < desc.size; offset += kZeros.size())
-        GL(glBufferSubData, GL_COPY_WRITE_BUFFER, GLintptr(offset),
-           GLsizeiptr(std::min<uint64_t>(kZeros.size(), desc.size - offset)), kZeros.data());
+        GL(glBufferSubData, GL_COPY_WRITE_BUFFER, GLintptr(offset), GLsizeiptr(std::min<uint64_t>(kZeros.size(), desc.size - offset)), kZeros.data());
     GL(glBindBuffer, GL_COPY_WRITE_BUFFER, 0);
     Status s = takeDeviceError(Status::ok());
     if (!s) {

@@ -148,8 +148,8 @@ private:
     HandlePool<ProgramTag, NullProgram> programs_;
     HandlePool<PipelineTag, NullPipeline> pipelines_;
     HandlePool<TimerTag, NullTimer> timers_;
-    const decltype(validation::poolLookup(textures_, buffers_, samplers_, programs_, pipelines_, timers_)) lookup_ =
-        validation::poolLookup(textures_, buffers_, samplers_, programs_, pipelines_, timers_);
+    const decltype(validation::poolLookup(textures_, buffers_, samplers_, programs_, pipelines_, timers_)) lookup_ = validation::poolLookup(
+        textures_, buffers_, samplers_, programs_, pipelines_, timers_);
     uint64_t bytesHeld_ = 0;  // texture and buffer bytes
 };
 
@@ -194,9 +194,7 @@ DeviceCaps defaultCaps(CapabilityCeiling ceiling) {
     return c;
 }
 
-std::unique_ptr<Device> createDevice(const DeviceOptions& options) {
-    return std::make_unique<NullDevice>(defaultCaps(options.ceiling));
-}
+std::unique_ptr<Device> createDevice(const DeviceOptions& options) { return std::make_unique<NullDevice>(defaultCaps(options.ceiling)); }
 std::unique_ptr<Device> createDevice(const DeviceCaps& caps) { return std::make_unique<NullDevice>(caps); }
 
 }  // namespace sfx::null

@@ -30,8 +30,7 @@ bool madeVisible(const AccessState& s, VkPipelineStageFlags stages, VkAccessFlag
 }
 
 // Updates `s` for a use and says what barrier the use needs. `image`: the layout counts.
-Hazard track(AccessState& s, bool image, VkImageLayout layout, VkPipelineStageFlags stages, VkAccessFlags access,
-             bool write) {
+Hazard track(AccessState& s, bool image, VkImageLayout layout, VkPipelineStageFlags stages, VkAccessFlags access, bool write) {
     Hazard h;
     h.oldLayout = s.layout;
     const bool transition = image && s.layout != layout;
@@ -103,9 +102,7 @@ VkPipelineStageFlags shaderStages(uint32_t stageMask, bool compute) {
     if (stageMask & stageBit(ShaderStage::Vertex)) s |= VK_PIPELINE_STAGE_VERTEX_SHADER_BIT;
     if (stageMask & stageBit(ShaderStage::Fragment)) s |= VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
     if (stageMask & stageBit(ShaderStage::Compute)) s |= VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
-    if (!s)
-        s = compute ? VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT
-                    : VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+    if (!s) s = compute ? VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT : VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
     return s;
 }
 
@@ -148,8 +145,7 @@ void VulkanDevice::barriers(VkCommandBuffer cb, std::span<const ImageUse> images
     // Commands going into an open recording note the states its resources start from.
     const bool intoRecording = mode_ == CallMode::Recording && cb == open_.commandBuffer;
     for (const MipBarrierUse& e : mips) {
-        if (intoRecording)
-            noteRecordedUse(e.texture, e.mip, nullptr, e.use.layout, e.use.stages, e.use.access, e.use.write);
+        if (intoRecording) noteRecordedUse(e.texture, e.mip, nullptr, e.use.layout, e.use.stages, e.use.access, e.use.write);
         const Hazard h = track(e.texture->mips[e.mip], true, e.use.layout, e.use.stages, e.use.access, e.use.write);
         if (!h.needed) continue;
         VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
@@ -195,8 +191,8 @@ void VulkanDevice::barriers(VkCommandBuffer cb, std::span<const ImageUse> images
     }
     for (size_t i = 0; i < batchCount; ++i) {
         const BarrierBatch& b = batches[i];
-        vk_.vkCmdPipelineBarrier(cb, b.src, b.dst, 0, 0, nullptr, uint32_t(b.buffers.size()), b.buffers.data(),
-                                 uint32_t(b.images.size()), b.images.data());
+        vk_.vkCmdPipelineBarrier(cb, b.src, b.dst, 0, 0, nullptr, uint32_t(b.buffers.size()), b.buffers.data(), uint32_t(b.images.size()),
+                                 b.images.data());
     }
 }
 

@@ -53,14 +53,12 @@ void VulkanDevice::fillCaps(const DeviceOptions& options) {
         const VkFormatFeatureFlags feats = fp.optimalTilingFeatures;
         const bool transfers = (feats & VK_FORMAT_FEATURE_TRANSFER_SRC_BIT) && (feats & VK_FORMAT_FEATURE_TRANSFER_DST_BIT);
         c.sampledFormat[i] = transfers && (feats & VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT);
-        c.renderableFormat[i] =
-            transfers && (feats & (isDepthFormat(f) ? VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT
-                                                    : VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT));
-        if (f == Format::R32F)
-            c.float32Filterable = (feats & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0;
+        c.renderableFormat[i] = transfers &&
+            (feats & (isDepthFormat(f) ? VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT : VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT));
+        if (f == Format::R32F) c.float32Filterable = (feats & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0;
     }
     c.floatRenderTargets = c.renderableFormat[size_t(Format::R32F)] && c.renderableFormat[size_t(Format::RG16F)] &&
-                           c.renderableFormat[size_t(Format::RGBA16F)];
+        c.renderableFormat[size_t(Format::RGBA16F)];
 }
 
 }  // namespace sfx::vulkan

@@ -50,8 +50,7 @@ Status VulkanDevice::submitAndWait() {
     si.pCommandBuffers = &commandBuffer_;
     SFX_VK(vk_.vkQueueSubmit(queue_, 1, &si, fence_));
     SFX_VK(vk_.vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX));
-    const double wallMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - recordStart_).count();
+    const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - recordStart_).count();
     SFX_VK(vk_.vkResetFences(device_, 1, &fence_));
     SFX_VK(vk_.vkResetCommandBuffer(commandBuffer_, 0));
     recycleStaging(stagingOwn_);
@@ -97,8 +96,7 @@ void VulkanDevice::passTargets(const RenderPassDesc& pass, PassTargets& out) {
             out.height = mipExtent(t.desc.height, c.mip);
         }
         out.colorFormats.push_back(t.desc.format);
-        out.uses.images.push_back({&t, c.mip, 1, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+        out.uses.images.push_back({&t, c.mip, 1, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                                    VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, true});
     }
     if (!pass.depth.texture.isNull()) {
@@ -111,13 +109,12 @@ void VulkanDevice::passTargets(const RenderPassDesc& pass, PassTargets& out) {
         out.depthFormat = depth.desc.format;
         out.uses.images.push_back({&depth, 0, 1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
                                    VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
-                                   VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-                                   true});
+                                   VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, true});
     }
 }
 
-Status VulkanDevice::recordRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws,
-                                      const PassTargets& targets, std::span<ResolvedBindings> resolved) {
+Status VulkanDevice::recordRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, const PassTargets& targets,
+                                      std::span<ResolvedBindings> resolved) {
     // Views before recording, so that a failure leaves the command buffer untouched.
     std::vector<VkImageView>& colorViews = scratch_.colorViews;
     colorViews.clear();
@@ -146,9 +143,7 @@ Status VulkanDevice::recordRenderPass(const RenderPassDesc& pass, std::span<cons
     barriers(cb, targets.uses);
 
     auto loadOp = [](LoadOp op) {
-        return op == LoadOp::Clear ? VK_ATTACHMENT_LOAD_OP_CLEAR
-               : op == LoadOp::Load ? VK_ATTACHMENT_LOAD_OP_LOAD
-                                    : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+        return op == LoadOp::Clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : op == LoadOp::Load ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
     };
     std::vector<VkRenderingAttachmentInfo>& colorInfos = scratch_.colorInfos;
     colorInfos.clear();
@@ -206,8 +201,7 @@ Status VulkanDevice::recordRenderPass(const RenderPassDesc& pass, std::span<cons
     return Status::ok();
 }
 
-Status VulkanDevice::recordDispatch(const DispatchDesc& d, const VulkanPipeline& pl, const Uses& uses,
-                                    ResolvedBindings& resolved) {
+Status VulkanDevice::recordDispatch(const DispatchDesc& d, const VulkanPipeline& pl, const Uses& uses, ResolvedBindings& resolved) {
     Result<VkDescriptorSet> s = writeSet(pl, resolved);
     if (!s) return s.status();
     const VkDescriptorSet set = s.value();

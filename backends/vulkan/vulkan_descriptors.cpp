@@ -66,10 +66,10 @@ Status VulkanDevice::resolveBindings(const BindingSet& set, const VulkanPipeline
             out.buffers.push_back({b.buffer, bb.offset, validation::boundSize(bb, b.desc)});
             write(bb.binding, toVkDescriptor(kind))->pBufferInfo = &out.buffers.back();
             const bool storage = kind == ResourceKind::StorageBuffer;
-            uses.buffers.push_back({&b, bindingStages(pl, bb.binding, kind),
-                                    storage ? VkAccessFlags(VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT)
-                                            : VkAccessFlags(VK_ACCESS_UNIFORM_READ_BIT),
-                                    storage});
+            uses.buffers.push_back(
+                {&b, bindingStages(pl, bb.binding, kind),
+                 storage ? VkAccessFlags(VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT) : VkAccessFlags(VK_ACCESS_UNIFORM_READ_BIT),
+                 storage});
         }
     };
     buffers(set.uniformBuffers, ResourceKind::UniformBuffer);
@@ -107,8 +107,7 @@ Result<VkDescriptorSet> VulkanDevice::allocateSet(VkDescriptorSetLayout layout) 
             return set;
         }
         // A new pool that cannot hold one set never will: stop rather than loop.
-        if (fresh || (r != VK_ERROR_OUT_OF_POOL_MEMORY && r != VK_ERROR_FRAGMENTED_POOL))
-            return vkError("vkAllocateDescriptorSets", r);
+        if (fresh || (r != VK_ERROR_OUT_OF_POOL_MEMORY && r != VK_ERROR_FRAGMENTED_POOL)) return vkError("vkAllocateDescriptorSets", r);
         ++currentPool_;  // full: move on to the next (or a new) pool
     }
 }

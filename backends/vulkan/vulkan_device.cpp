@@ -18,7 +18,7 @@ Result<TextureHandle> VulkanDevice::doCreateTexture(const TextureDesc& desc) {
 Status VulkanDevice::doDestroyTexture(TextureHandle h) {
     VulkanTexture t = textures_.remove(h);
     if (t.external) SFX_TRY(forgetExternal(h, t));  // back in the host's layout first
-    clearSetCache();  // sets may name its views
+    clearSetCache();                                // sets may name its views
     retire(t);
     releaseIdleGarbage();
     return Status::ok();
@@ -34,9 +34,7 @@ Status VulkanDevice::doReadTexture(TextureHandle h, uint32_t mip, void* out, siz
     return downloadTexture(textures_.get(h), mip, out, bytes);
 }
 
-Result<SamplerHandle> VulkanDevice::doCreateSampler(const SamplerDesc& desc) {
-    return makeSampler(desc);
-}
+Result<SamplerHandle> VulkanDevice::doCreateSampler(const SamplerDesc& desc) { return makeSampler(desc); }
 
 Status VulkanDevice::doDestroySampler(SamplerHandle h) {
     clearSetCache();
@@ -86,13 +84,11 @@ Status VulkanDevice::doDestroyProgram(ProgramHandle h) {
     return Status::ok();
 }
 
-Result<PipelineHandle> VulkanDevice::doCreateGraphicsPipeline(const GraphicsPipelineDesc& desc,
-                                                              validation::PipelineInfo info) {
+Result<PipelineHandle> VulkanDevice::doCreateGraphicsPipeline(const GraphicsPipelineDesc& desc, validation::PipelineInfo info) {
     return makeGraphicsPipeline(desc, programs_.get(desc.program), std::move(info));
 }
 
-Result<PipelineHandle> VulkanDevice::doCreateComputePipeline(const ComputePipelineDesc& desc,
-                                                             validation::PipelineInfo info) {
+Result<PipelineHandle> VulkanDevice::doCreateComputePipeline(const ComputePipelineDesc& desc, validation::PipelineInfo info) {
     return makeComputePipeline(desc, programs_.get(desc.program), std::move(info));
 }
 
@@ -118,11 +114,10 @@ Status VulkanDevice::doRenderPass(const RenderPassDesc& pass, std::span<const Dr
         SFX_TRY(resolveBindings(d.bindings, pl, targets.uses, resolved[i]));
         // Vertex and index reads, for the barriers after what last wrote the buffers.
         if (!d.vertexBuffer.isNull())
-            targets.uses.buffers.push_back({&buffers_.get(d.vertexBuffer), VK_PIPELINE_STAGE_VERTEX_INPUT_BIT,
-                                            VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT, false});
+            targets.uses.buffers.push_back(
+                {&buffers_.get(d.vertexBuffer), VK_PIPELINE_STAGE_VERTEX_INPUT_BIT, VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT, false});
         if (!d.indexBuffer.isNull())
-            targets.uses.buffers.push_back({&buffers_.get(d.indexBuffer), VK_PIPELINE_STAGE_VERTEX_INPUT_BIT,
-                                            VK_ACCESS_INDEX_READ_BIT, false});
+            targets.uses.buffers.push_back({&buffers_.get(d.indexBuffer), VK_PIPELINE_STAGE_VERTEX_INPUT_BIT, VK_ACCESS_INDEX_READ_BIT, false});
     }
     return recordRenderPass(pass, draws, targets, resolved);
 }

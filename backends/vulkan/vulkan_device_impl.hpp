@@ -14,8 +14,8 @@
 #pragma once
 
 #include <chrono>
-#include <map>
 #include <cstdio>
+#include <map>
 #include <mutex>
 #include <span>
 #include <string>
@@ -42,9 +42,15 @@ Status validateSpirv(const CompiledProgram& program, const StageCode& stage);
 
 class VulkanDevice final : public Device {
 public:
-    VulkanDevice() : serial_(nextDeviceSerial()), textures_(serial_, "texture"), buffers_(serial_, "buffer"),
-                     samplers_(serial_, "sampler"), programs_(serial_, "program"), pipelines_(serial_, "pipeline"),
-                     timers_(serial_, "timer"), recordings_(serial_, "recording") {}
+    VulkanDevice()
+        : serial_(nextDeviceSerial()),
+          textures_(serial_, "texture"),
+          buffers_(serial_, "buffer"),
+          samplers_(serial_, "sampler"),
+          programs_(serial_, "program"),
+          pipelines_(serial_, "pipeline"),
+          timers_(serial_, "timer"),
+          recordings_(serial_, "recording") {}
     ~VulkanDevice() override {
         shutdown();
         // Messages nobody took (teardown ones included) go to the host's log callback.
@@ -179,10 +185,8 @@ private:
 
     // vulkan_pipelines.cpp
     Result<ProgramHandle> makeProgram(const CompiledProgram& program);
-    Result<PipelineHandle> makeGraphicsPipeline(const GraphicsPipelineDesc& desc, const VulkanProgram& prog,
-                                                validation::PipelineInfo info);
-    Result<PipelineHandle> makeComputePipeline(const ComputePipelineDesc& desc, const VulkanProgram& prog,
-                                               validation::PipelineInfo info);
+    Result<PipelineHandle> makeGraphicsPipeline(const GraphicsPipelineDesc& desc, const VulkanProgram& prog, validation::PipelineInfo info);
+    Result<PipelineHandle> makeComputePipeline(const ComputePipelineDesc& desc, const VulkanProgram& prog, validation::PipelineInfo info);
     // The pipeline's checked description and the layouts made from its reflection; on failure
     // `p` is retired.
     Status startPipeline(validation::PipelineInfo info, VulkanPipeline& p);
@@ -192,7 +196,7 @@ private:
     // vulkan_commands.cpp: recording, submission and the host's command buffer.
     // The command buffer a command goes to: the open recording's, or primaryRecording().
     Result<VkCommandBuffer> recording();
-    Result<VkCommandBuffer> primaryRecording();  // the host's, or the device's own (begun here)
+    Result<VkCommandBuffer> primaryRecording();                                 // the host's, or the device's own (begun here)
     Result<VkCommandBuffer> allocateCommandBuffer(VkCommandBufferLevel level);  // from the device's pool
     Status submitAndWait();
     Status noHostCommandBuffer(const char* call) const;
@@ -212,8 +216,8 @@ private:
     bool noteTimer();
     // Recording: notes a use of a resource (the barriers of the recording's command buffer).
     // `texture` and `mip`, or `buffer`, name it; called before the use is tracked.
-    void noteRecordedUse(VulkanTexture* texture, uint32_t mip, VulkanBuffer* buffer, VkImageLayout layout,
-                         VkPipelineStageFlags stages, VkAccessFlags access, bool write);
+    void noteRecordedUse(VulkanTexture* texture, uint32_t mip, VulkanBuffer* buffer, VkImageLayout layout, VkPipelineStageFlags stages,
+                         VkAccessFlags access, bool write);
     // The command buffer a host write (a staged copy) goes to: the primary one, unless the open
     // recording has used the resource already (the copy must follow that use: it goes into the
     // recording, which is then not reusable).
@@ -248,8 +252,8 @@ private:
     HandlePool<PipelineTag, VulkanPipeline> pipelines_;
     HandlePool<TimerTag, VulkanTimer> timers_;
     HandlePool<RecordingTag, VulkanRecording> recordings_;
-    const decltype(validation::poolLookup(textures_, buffers_, samplers_, programs_, pipelines_, timers_)) lookup_ =
-        validation::poolLookup(textures_, buffers_, samplers_, programs_, pipelines_, timers_);
+    const decltype(validation::poolLookup(textures_, buffers_, samplers_, programs_, pipelines_, timers_)) lookup_ = validation::poolLookup(
+        textures_, buffers_, samplers_, programs_, pipelines_, timers_);
     std::vector<TextureHandle> externals_;  // imported images, handed back at every flush
 
 public:  // set up by the factory functions
@@ -268,14 +272,14 @@ private:
     VkPhysicalDeviceProperties props_{};
     VkPhysicalDeviceMemoryProperties memProps_{};
     uint32_t timestampValidBits_ = 0;
-    bool fullFeatures_ = true;  // no ceiling
+    bool fullFeatures_ = true;               // no ceiling
     bool fragmentStoresAndAtomics_ = false;  // the device feature, enabled when present
-    bool synchronization2_ = false;  // barriers() records one vkCmdPipelineBarrier2 per command
+    bool synchronization2_ = false;          // barriers() records one vkCmdPipelineBarrier2 per command
 
     VkCommandPool commandPool_ = VK_NULL_HANDLE;
     VkCommandBuffer commandBuffer_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
-    bool recording_ = false;               // own command buffer begun and holds commands
+    bool recording_ = false;  // own command buffer begun and holds commands
     VkCommandBuffer hostCommandBuffer_ = VK_NULL_HANDLE;
     VkSampler defaultSampler_ = VK_NULL_HANDLE;
     VkQueryPool queryPool_ = VK_NULL_HANDLE;
@@ -290,18 +294,18 @@ private:
     // For stats().
     ObjectCount memoryCount_, stagingCount_, descriptorSetCount_, descriptorPoolCount_, imageViewCount_;
     uint64_t memoryBytes_ = 0;
-    Garbage pending_;       // released after the next flush
-    Garbage hostPending_;   // used by a host command buffer: released at the next setCommandBuffer
+    Garbage pending_;      // released after the next flush
+    Garbage hostPending_;  // used by a host command buffer: released at the next setCommandBuffer
     std::chrono::steady_clock::time_point recordStart_{};
 
     // Reusable recordings (vulkan_recordings.cpp).
     CallMode mode_ = CallMode::Direct;
-    VulkanRecording open_;             // Recording: being recorded
-    RecordingHandle replaying_;        // Replaying: the recording compared with
-    size_t replayCursor_ = 0;          // Replaying: how much of its calls the calls so far matched
+    VulkanRecording open_;       // Recording: being recorded
+    RecordingHandle replaying_;  // Replaying: the recording compared with
+    size_t replayCursor_ = 0;    // Replaying: how much of its calls the calls so far matched
     bool replayMatches_ = true;
-    uint64_t recordingSerial_ = 0;     // of the open recording (marks AccessState::recordingSerial)
-    uint64_t objectEpoch_ = 1;         // bumped by changeObjects()
+    uint64_t recordingSerial_ = 0;       // of the open recording (marks AccessState::recordingSerial)
+    uint64_t objectEpoch_ = 1;           // bumped by changeObjects()
     std::vector<uint64_t> callScratch_;  // one call's arguments, flattened
     std::vector<VkCommandBuffer> freeSecondaries_;
     std::vector<ImageUse> replayImages_;

@@ -27,14 +27,14 @@ Format fromVkFormat(VkFormat f) {
 Result<Format> resolveFormat(const ExternalImage& e) {
     if (e.vkFormat == VK_FORMAT_UNDEFINED) {
         if (e.format == Format::Undefined || uint32_t(e.format) >= uint32_t(Format::Count))
-            return invalidArgument("ExternalImage.format", e.format == Format::Undefined ? "Undefined (and vkFormat VK_FORMAT_UNDEFINED)"
-                                                                                          : std::to_string(uint32_t(e.format)),
-                                   std::string("an sfx::Format other than Undefined, or vkFormat one of ") + kVkFormatList);
+            return invalidArgument(
+                "ExternalImage.format",
+                e.format == Format::Undefined ? "Undefined (and vkFormat VK_FORMAT_UNDEFINED)" : std::to_string(uint32_t(e.format)),
+                std::string("an sfx::Format other than Undefined, or vkFormat one of ") + kVkFormatList);
         return e.format;
     }
     const Format mapped = fromVkFormat(e.vkFormat);
-    if (mapped == Format::Undefined)
-        return invalidArgument("ExternalImage.vkFormat", "VkFormat " + std::to_string(int(e.vkFormat)), kVkFormatList);
+    if (mapped == Format::Undefined) return invalidArgument("ExternalImage.vkFormat", "VkFormat " + std::to_string(int(e.vkFormat)), kVkFormatList);
     if (e.format != Format::Undefined && e.format != mapped)
         return invalidArgument("ExternalImage.format", toString(e.format),
                                std::string("Undefined or the format of vkFormat (") + toString(mapped) + ")");
@@ -44,18 +44,18 @@ Result<Format> resolveFormat(const ExternalImage& e) {
 // Layouts a texture of `format` may be left in by the host (and is handed back in).
 bool layoutFits(VkImageLayout l, Format format) {
     switch (l) {
-    case VK_IMAGE_LAYOUT_GENERAL:
-    case VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL:
-    case VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL:
-    case VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL:
-    case VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL:
-    case VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL: return true;
-    case VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL: return !isDepthFormat(format);
-    case VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL:
-    case VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL:
-    case VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL:
-    case VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL: return isDepthFormat(format);
-    default: return false;
+        case VK_IMAGE_LAYOUT_GENERAL:
+        case VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL:
+        case VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL:
+        case VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL:
+        case VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL:
+        case VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL: return true;
+        case VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL: return !isDepthFormat(format);
+        case VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL:
+        case VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL:
+        case VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL:
+        case VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL: return isDepthFormat(format);
+        default: return false;
     }
 }
 
@@ -71,7 +71,7 @@ AccessState hostState(VkImageLayout layout) {
 
 bool usedSinceHandBack(const AccessState& s, VkImageLayout hostLayout) {
     return s.layout != hostLayout || s.readStages != 0 || s.writeStages != VK_PIPELINE_STAGE_ALL_COMMANDS_BIT ||
-           s.writeAccess != VK_ACCESS_MEMORY_WRITE_BIT || s.visibleCount != 0;
+        s.writeAccess != VK_ACCESS_MEMORY_WRITE_BIT || s.visibleCount != 0;
 }
 
 VulkanDevice* vulkanDevice(Device& device) { return dynamic_cast<VulkanDevice*>(&device); }
@@ -87,10 +87,8 @@ Result<TextureHandle> VulkanDevice::importExternal(const ExternalImage& e) {
     Result<Format> format = resolveFormat(e);
     if (!format) return format.status();
     TextureDesc desc{e.width, e.height, e.mipLevels, format.value(), e.usage, e.debugName ? e.debugName : ""};
-    if (Status s = validation::textureDesc(desc, caps_); !s)
-        return Status{s.code(), "importImage (ExternalImage as a TextureDesc): " + s.message()};
-    if (e.vkUsage == 0)
-        return invalidArgument("ExternalImage.vkUsage", "0", "the VkImageUsageFlags the image was created with");
+    if (Status s = validation::textureDesc(desc, caps_); !s) return Status{s.code(), "importImage (ExternalImage as a TextureDesc): " + s.message()};
+    if (e.vkUsage == 0) return invalidArgument("ExternalImage.vkUsage", "0", "the VkImageUsageFlags the image was created with");
     const VkImageUsageFlags attachment = isDepthFormat(desc.format) ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT
                                                                     : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
     const std::pair<uint32_t, std::pair<VkImageUsageFlags, const char*>> needs[] = {
@@ -102,7 +100,9 @@ Result<TextureHandle> VulkanDevice::importExternal(const ExternalImage& e) {
     for (const auto& [bit, vk] : needs)
         if ((e.usage & bit) && !(e.vkUsage & vk.first))
             return invalidArgument("ExternalImage.usage",
-                                   std::string(bit == kTextureSampled ? "kTextureSampled" : bit == kTextureStorage ? "kTextureStorage" : "kTextureRenderTarget") +
+                                   std::string(bit == kTextureSampled       ? "kTextureSampled"
+                                                   : bit == kTextureStorage ? "kTextureStorage"
+                                                                            : "kTextureRenderTarget") +
                                        " on an image without " + vk.second,
                                    "only what ExternalImage.vkUsage allows");
     if (!layoutFits(e.layout, desc.format))
@@ -159,8 +159,7 @@ void VulkanDevice::handBack(VkCommandBuffer cb, VulkanTexture& t) {
     }
     if (barriers.empty()) return;
     // The host's next access may be of any stage: it waits for all of the SDK's.
-    vk_.vkCmdPipelineBarrier(cb, src, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0, nullptr,
-                             uint32_t(barriers.size()), barriers.data());
+    vk_.vkCmdPipelineBarrier(cb, src, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0, nullptr, uint32_t(barriers.size()), barriers.data());
 }
 
 void VulkanDevice::handBackExternal(VkCommandBuffer cb) {

@@ -68,8 +68,10 @@ void VulkanDevice::shutdown() {
             vk_.vkEndCommandBuffer(commandBuffer_);
             recording_ = false;
         }
-        if (ownsDevice_) vk_.vkDeviceWaitIdle(device_);
-        else vk_.vkQueueWaitIdle(queue_);
+        if (ownsDevice_)
+            vk_.vkDeviceWaitIdle(device_);
+        else
+            vk_.vkQueueWaitIdle(queue_);
         releaseGarbage(pending_);
         releaseGarbage(hostPending_);
         destroyStaging();
@@ -89,8 +91,7 @@ void VulkanDevice::shutdown() {
         if (ownsDevice_) vk_.vkDestroyDevice(device_, nullptr);
         device_ = VK_NULL_HANDLE;
     }
-    if (messenger_ && vk_.vkDestroyDebugUtilsMessengerEXT)
-        vk_.vkDestroyDebugUtilsMessengerEXT(setup_.instance, messenger_, nullptr);
+    if (messenger_ && vk_.vkDestroyDebugUtilsMessengerEXT) vk_.vkDestroyDebugUtilsMessengerEXT(setup_.instance, messenger_, nullptr);
     messenger_ = VK_NULL_HANDLE;
     if (setup_.ownsInstance && setup_.instance) vk_.vkDestroyInstance(setup_.instance, nullptr);
     setup_.instance = VK_NULL_HANDLE;

@@ -11,6 +11,7 @@
 
 namespace sfx::vulkan {
 
+// clang-format off
 #define SFX_VK_INSTANCE_FUNCTIONS(X)            \
     X(vkDestroyInstance)                        \
     X(vkEnumeratePhysicalDevices)               \
@@ -23,7 +24,9 @@ namespace sfx::vulkan {
     X(vkEnumerateDeviceExtensionProperties)     \
     X(vkCreateDevice)                           \
     X(vkGetDeviceProcAddr)
+// clang-format on
 
+// clang-format off
 #define SFX_VK_DEVICE_FUNCTIONS(X)      \
     X(vkDestroyDevice)                  \
     X(vkGetDeviceQueue)                 \
@@ -89,6 +92,7 @@ namespace sfx::vulkan {
     X(vkCmdExecuteCommands)             \
     X(vkCmdDrawIndexed)                 \
     X(vkCmdDispatch)
+// clang-format on
 
 struct Functions {
     PFN_vkGetInstanceProcAddr vkGetInstanceProcAddr = nullptr;
@@ -142,10 +146,12 @@ Status instanceCreationFailed(VkResult r);
 Status vkError(const char* call, VkResult r);
 
 // Returns vkError from the enclosing function when `call` does not return VK_SUCCESS.
+// clang-format off
 #define SFX_VK(call)                                           \
     do {                                                       \
         VkResult sfx_vk_result_ = (call);                      \
         if (sfx_vk_result_ != VK_SUCCESS) return vkError(#call, sfx_vk_result_); \
     } while (0)
+// clang-format on
 
 }  // namespace sfx::vulkan

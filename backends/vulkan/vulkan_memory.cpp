@@ -11,8 +11,7 @@ Result<Allocation> VulkanDevice::allocate(const VkMemoryRequirements& req, VkMem
     int type = -1;
     for (uint32_t i = 0; i < memProps_.memoryTypeCount && type < 0; ++i)
         if ((req.memoryTypeBits & (1u << i)) && (memProps_.memoryTypes[i].propertyFlags & want) == want) type = int(i);
-    if (type < 0)
-        return Status{StatusCode::DeviceError, "no Vulkan memory type has the properties " + std::to_string(want)};
+    if (type < 0) return Status{StatusCode::DeviceError, "no Vulkan memory type has the properties " + std::to_string(want)};
     VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     ai.allocationSize = req.size;
     ai.memoryTypeIndex = uint32_t(type);

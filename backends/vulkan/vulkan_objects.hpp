@@ -29,7 +29,7 @@ struct AccessState {
     VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;  // images only
     // The last write (or layout transition) and the stages chained after it by barriers since.
     VkPipelineStageFlags writeStages = 0;
-    VkAccessFlags writeAccess = 0;      // 0 after a layout transition, which the barrier made available
+    VkAccessFlags writeAccess = 0;        // 0 after a layout transition, which the barrier made available
     VkPipelineStageFlags readStages = 0;  // reads since the last write: what a write must wait for
     // Stage and access pairs the last write has been made visible to (a small set; a full one
     // only costs an extra barrier).
@@ -72,9 +72,7 @@ struct VulkanTexture {
     VkImageLayout hostLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     VkImageUsageFlags vkUsage = 0;
     VkImageView hostView = VK_NULL_HANDLE;  // the host's sampled view of all mips, or none
-    VkImageSubresourceRange range(VkImageAspectFlags aspect, uint32_t mip, uint32_t count) const {
-        return {aspect, baseMip + mip, count, layer, 1};
-    }
+    VkImageSubresourceRange range(VkImageAspectFlags aspect, uint32_t mip, uint32_t count) const { return {aspect, baseMip + mip, count, layer, 1}; }
 };
 
 struct VulkanProgram {
@@ -134,9 +132,9 @@ struct RecordedResource {
 // arguments of its HAL calls (to compare a replay's calls with), and what it needs of resources.
 struct VulkanRecording {
     VkCommandBuffer commandBuffer = VK_NULL_HANDLE;
-    uint64_t epoch = 0;    // the device's object epoch when recorded
-    bool reusable = true;  // false: wrote a resource it had used, or held a timer
-    const char* why = "";  // when not reusable
+    uint64_t epoch = 0;           // the device's object epoch when recorded
+    bool reusable = true;         // false: wrote a resource it had used, or held a timer
+    const char* why = "";         // when not reusable
     std::vector<uint64_t> calls;  // the HAL calls' arguments, flattened
     std::vector<RecordedResource> resources;
 };
@@ -219,10 +217,10 @@ struct BarrierBatch {
 // What recording a command needs for a moment, kept by the device and reused (cleared, with
 // its capacity) by every command, so that a steady frame records without heap allocations.
 struct CommandScratch {
-    PassTargets targets;                         // renderPass
-    std::vector<ResolvedBindings> resolved;      // per draw (renderPass) or [0] (dispatch)
-    Uses dispatchUses;                           // dispatch
-    std::vector<VkImageView> colorViews;         // recordRenderPass
+    PassTargets targets;                     // renderPass
+    std::vector<ResolvedBindings> resolved;  // per draw (renderPass) or [0] (dispatch)
+    Uses dispatchUses;                       // dispatch
+    std::vector<VkImageView> colorViews;     // recordRenderPass
     std::vector<VkDescriptorSet> sets;
     std::vector<VkRenderingAttachmentInfo> colorInfos;
     // barriers(): merged uses, and the batches (the first batchCount in use this command).

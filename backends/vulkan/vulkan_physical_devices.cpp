@@ -8,20 +8,20 @@ namespace {
 
 int typeRank(VkPhysicalDeviceType type) {
     switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 4;
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 3;
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-    default: return 1;
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 4;
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 3;
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
+        default: return 1;
     }
 }
 
 std::string typeName(VkPhysicalDeviceType type) {
     switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "CPU";
-    default: return "other";
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete GPU";
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated GPU";
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual GPU";
+        case VK_PHYSICAL_DEVICE_TYPE_CPU: return "CPU";
+        default: return "other";
     }
 }
 
@@ -29,7 +29,7 @@ std::string listing(const std::vector<PhysicalDeviceCandidate>& candidates) {
     std::string text;
     for (const PhysicalDeviceCandidate& c : candidates)
         text += (text.empty() ? "" : ", ") + std::to_string(c.info.index) + " '" + c.info.name + "'" +
-                (c.info.usable ? "" : " (unusable: " + c.info.unusableReason + ")");
+            (c.info.usable ? "" : " (unusable: " + c.info.unusableReason + ")");
     return text.empty() ? "none" : text;
 }
 
@@ -88,8 +88,7 @@ std::vector<PhysicalDeviceCandidate> describePhysicalDevices(const Functions& vk
     return out;
 }
 
-Result<size_t> choosePhysicalDevice(const std::vector<PhysicalDeviceCandidate>& candidates, const std::string& wanted,
-                                    std::string& reason) {
+Result<size_t> choosePhysicalDevice(const std::vector<PhysicalDeviceCandidate>& candidates, const std::string& wanted, std::string& reason) {
     if (candidates.empty()) return Status{StatusCode::BackendUnavailable, "Vulkan reports no physical device (no ICD installed?)"};
     if (!wanted.empty()) {
         size_t match = candidates.size();
@@ -101,11 +100,12 @@ Result<size_t> choosePhysicalDevice(const std::vector<PhysicalDeviceCandidate>& 
                 if (candidates[i].info.name.find(wanted) != std::string::npos) match = i;
         }
         if (match == candidates.size())
-            return Status{StatusCode::InvalidArgument, "DeviceOptions.physicalDevice is '" + wanted +
-                                                           "'; allowed an index or part of the name of one of: " + listing(candidates)};
+            return Status{StatusCode::InvalidArgument,
+                          "DeviceOptions.physicalDevice is '" + wanted + "'; allowed an index or part of the name of one of: " + listing(candidates)};
         if (!candidates[match].info.usable)
-            return Status{StatusCode::InvalidArgument, "DeviceOptions.physicalDevice '" + wanted + "' names '" + candidates[match].info.name +
-                                                           "', which the SDK cannot use: " + candidates[match].info.unusableReason};
+            return Status{StatusCode::InvalidArgument,
+                          "DeviceOptions.physicalDevice '" + wanted + "' names '" + candidates[match].info.name +
+                              "', which the SDK cannot use: " + candidates[match].info.unusableReason};
         reason = "asked for by DeviceOptions.physicalDevice '" + wanted + "'";
         return match;
     }
@@ -117,7 +117,7 @@ Result<size_t> choosePhysicalDevice(const std::vector<PhysicalDeviceCandidate>& 
     for (const PhysicalDeviceCandidate& c : candidates) usable += c.info.usable ? 1 : 0;
     reason = usable == 1 ? "the only usable device of " + std::to_string(candidates.size())
                          : "the first of the best type (" + candidates[best].info.type + ") among " + std::to_string(usable) +
-                               " usable devices (discrete before integrated, virtual, CPU)";
+            " usable devices (discrete before integrated, virtual, CPU)";
     return best;
 }
 

@@ -25,7 +25,6 @@ std::vector<PhysicalDeviceCandidate> describePhysicalDevices(const Functions& vk
 // otherwise a decimal index in the loader's order or text contained in the device's name.
 // InvalidArgument names DeviceOptions.physicalDevice and lists the devices when nothing
 // matches or the match cannot be used; BackendUnavailable when no device is usable.
-Result<size_t> choosePhysicalDevice(const std::vector<PhysicalDeviceCandidate>& candidates, const std::string& wanted,
-                                    std::string& reason);
+Result<size_t> choosePhysicalDevice(const std::vector<PhysicalDeviceCandidate>& candidates, const std::string& wanted, std::string& reason);
 
 }  // namespace sfx::vulkan

@@ -22,8 +22,8 @@ Status validateSpirv(const CompiledProgram& program, const StageCode& stage) {
     for (size_t i = kHeaderWords; i < words.size();) {
         const uint32_t count = words[i] >> 16;
         if (count == 0 || count > words.size() - i)
-            return refuse("instruction at word " + std::to_string(i) + " has word count " + std::to_string(count) +
-                          "; allowed 1.." + std::to_string(words.size() - i));
+            return refuse("instruction at word " + std::to_string(i) + " has word count " + std::to_string(count) + "; allowed 1.." +
+                          std::to_string(words.size() - i));
         i += count;
     }
     return Status::ok();
@@ -50,7 +50,6 @@ Result<ProgramHandle> VulkanDevice::makeProgram(const CompiledProgram& program) 
     return programs_.insert(std::move(p));
 }
 
-
 Status VulkanDevice::startPipeline(validation::PipelineInfo info, VulkanPipeline& p) {
     p.info = std::move(info);
     Status s = createLayouts(p.info.resources, p.info.compute, p);
@@ -76,8 +75,8 @@ struct Specialization {
     VkSpecializationInfo info{};
     explicit Specialization(const std::vector<SpecializationConstant>& constants) {
         for (size_t i = 0; i < constants.size(); ++i)
-            entries.push_back({constants[i].id, uint32_t(i * sizeof(SpecializationConstant) + offsetof(SpecializationConstant, value)),
-                               sizeof(int32_t)});
+            entries.push_back(
+                {constants[i].id, uint32_t(i * sizeof(SpecializationConstant) + offsetof(SpecializationConstant, value)), sizeof(int32_t)});
         info.mapEntryCount = uint32_t(entries.size());
         info.pMapEntries = entries.data();
         info.dataSize = constants.size() * sizeof(SpecializationConstant);
@@ -106,9 +105,9 @@ Result<PipelineHandle> VulkanDevice::makeGraphicsPipeline(const GraphicsPipeline
     VkVertexInputBindingDescription vb{0, desc.vertexLayout.stride, VK_VERTEX_INPUT_RATE_VERTEX};
     std::vector<VkVertexInputAttributeDescription> attributes;
     for (const VertexAttribute& a : desc.vertexLayout.attributes) {
-        const VkFormat f = a.format == VertexFormat::Float2   ? VK_FORMAT_R32G32_SFLOAT
-                           : a.format == VertexFormat::Float3 ? VK_FORMAT_R32G32B32_SFLOAT
-                                                              : VK_FORMAT_R32G32B32A32_SFLOAT;
+        const VkFormat f = a.format == VertexFormat::Float2 ? VK_FORMAT_R32G32_SFLOAT
+            : a.format == VertexFormat::Float3              ? VK_FORMAT_R32G32B32_SFLOAT
+                                                            : VK_FORMAT_R32G32B32A32_SFLOAT;
         attributes.push_back({a.location, 0, f, a.offset});
     }
     VkPipelineVertexInputStateCreateInfo vi{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
@@ -125,9 +124,7 @@ Result<PipelineHandle> VulkanDevice::makeGraphicsPipeline(const GraphicsPipeline
     vp.scissorCount = 1;
     VkPipelineRasterizationStateCreateInfo rs{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
     rs.polygonMode = VK_POLYGON_MODE_FILL;
-    rs.cullMode = desc.cull == CullMode::Back    ? VK_CULL_MODE_BACK_BIT
-                  : desc.cull == CullMode::Front ? VK_CULL_MODE_FRONT_BIT
-                                                 : VK_CULL_MODE_NONE;
+    rs.cullMode = desc.cull == CullMode::Back ? VK_CULL_MODE_BACK_BIT : desc.cull == CullMode::Front ? VK_CULL_MODE_FRONT_BIT : VK_CULL_MODE_NONE;
     // The HAL's front faces wind counter-clockwise with rows counted upwards (GL's window
     // convention). Vulkan measures winding with framebuffer y pointing down the rows, so the same
     // memory picture winds clockwise here.
@@ -182,8 +179,7 @@ Result<PipelineHandle> VulkanDevice::makeGraphicsPipeline(const GraphicsPipeline
     return finishPipeline(p, r, "vkCreateGraphicsPipelines", desc.debugName);
 }
 
-Result<PipelineHandle> VulkanDevice::makeComputePipeline(const ComputePipelineDesc& desc, const VulkanProgram& prog,
-                                                         validation::PipelineInfo info) {
+Result<PipelineHandle> VulkanDevice::makeComputePipeline(const ComputePipelineDesc& desc, const VulkanProgram& prog, validation::PipelineInfo info) {
     VulkanPipeline p;
     SFX_TRY(startPipeline(std::move(info), p));
     VkComputePipelineCreateInfo pci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};

@@ -14,8 +14,7 @@
 namespace sfx::vulkan {
 namespace {
 
-VKAPI_ATTR VkBool32 VKAPI_CALL debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                             VkDebugUtilsMessageTypeFlagsEXT,
+VKAPI_ATTR VkBool32 VKAPI_CALL debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT,
                                              const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
     auto* device = static_cast<VulkanDevice*>(user);
     const char* level = (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) ? "error" : "warning";
@@ -28,7 +27,7 @@ VkDebugUtilsMessengerCreateInfoEXT messengerInfo(void* user) {
     VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
     info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
     info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                       VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+        VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
     info.pfnUserCallback = debugCallback;
     info.pUserData = user;
     return info;
@@ -91,8 +90,7 @@ Status VulkanDevice::createInstance(const DeviceOptions& options, uint32_t& apiV
     features.pNext = &dbg;
     if (options.validation) ci.pNext = &features;
     VkResult r = vk_.vkCreateInstance(&ci, nullptr, &setup_.instance);
-    if (r != VK_SUCCESS)
-        return instanceCreationFailed(r);
+    if (r != VK_SUCCESS) return instanceCreationFailed(r);
     setup_.ownsInstance = true;
     setup_.debugUtils = options.validation;
     SFX_TRY(loadInstanceFunctions(vk_, setup_.instance));
@@ -159,7 +157,8 @@ Status VulkanDevice::createLogicalDevice(bool needsKhrDynamicRendering) {
 
 Status VulkanDevice::initWrapped(const ExternalVulkan& ext, const DeviceOptions& options) {
     using validation::Error;
-    if (!ext.getInstanceProcAddr) return validation::fail(Error::ExternalObjectNull, {"ExternalVulkan.getInstanceProcAddr", "the host's vkGetInstanceProcAddr"});
+    if (!ext.getInstanceProcAddr)
+        return validation::fail(Error::ExternalObjectNull, {"ExternalVulkan.getInstanceProcAddr", "the host's vkGetInstanceProcAddr"});
     if (!ext.instance) return validation::fail(Error::ExternalObjectNull, {"ExternalVulkan.instance", "the host's VkInstance"});
     if (!ext.physicalDevice) return validation::fail(Error::ExternalObjectNull, {"ExternalVulkan.physicalDevice", "the host's VkPhysicalDevice"});
     if (!ext.device) return validation::fail(Error::ExternalObjectNull, {"ExternalVulkan.device", "the host's VkDevice"});
@@ -174,19 +173,20 @@ Status VulkanDevice::initWrapped(const ExternalVulkan& ext, const DeviceOptions&
     VkPhysicalDeviceProperties props{};
     vk_.vkGetPhysicalDeviceProperties(physical_, &props);
     if (props.apiVersion < VK_API_VERSION_1_1)
-        return validation::fail(Error::ExternalApiVersion, {std::to_string(VK_API_VERSION_MAJOR(props.apiVersion)),
-                                                            std::to_string(VK_API_VERSION_MINOR(props.apiVersion))});
+        return validation::fail(Error::ExternalApiVersion,
+                                {std::to_string(VK_API_VERSION_MAJOR(props.apiVersion)), std::to_string(VK_API_VERSION_MINOR(props.apiVersion))});
     uint32_t qCount = 0;
     vk_.vkGetPhysicalDeviceQueueFamilyProperties(physical_, &qCount, nullptr);
-    if (queueFamily_ >= qCount)
-        return validation::fail(Error::ExternalQueueFamily, {std::to_string(queueFamily_), std::to_string(qCount - 1)});
+    if (queueFamily_ >= qCount) return validation::fail(Error::ExternalQueueFamily, {std::to_string(queueFamily_), std::to_string(qCount - 1)});
     std::vector<VkQueueFamilyProperties> families(qCount);
     vk_.vkGetPhysicalDeviceQueueFamilyProperties(physical_, &qCount, families.data());
     const VkQueueFlags needed = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
     if ((families[queueFamily_].queueFlags & needed) != needed) {
         std::string flags;
-        for (const auto& [bit, name] : {std::pair{VK_QUEUE_GRAPHICS_BIT, "graphics"}, {VK_QUEUE_COMPUTE_BIT, "compute"},
-                                        {VK_QUEUE_TRANSFER_BIT, "transfer"}, {VK_QUEUE_SPARSE_BINDING_BIT, "sparse-binding"}})
+        for (const auto& [bit, name] : {std::pair{VK_QUEUE_GRAPHICS_BIT, "graphics"},
+                                        {VK_QUEUE_COMPUTE_BIT, "compute"},
+                                        {VK_QUEUE_TRANSFER_BIT, "transfer"},
+                                        {VK_QUEUE_SPARSE_BINDING_BIT, "sparse-binding"}})
             if (families[queueFamily_].queueFlags & bit) flags += (flags.empty() ? "" : " | ") + std::string(name);
         return validation::fail(Error::ExternalQueueFamilyFlags, {std::to_string(queueFamily_), flags.empty() ? "none" : flags});
     }

@@ -30,9 +30,7 @@ namespace {
 
 Status stale(const char* why) { return {StatusCode::StaleHandle, std::string("endReplay: the recording is stale: ") + why}; }
 
-AccessState& stateOf(VulkanTexture* texture, uint32_t mip, VulkanBuffer* buffer) {
-    return texture ? texture->mips[mip] : buffer->state;
-}
+AccessState& stateOf(VulkanTexture* texture, uint32_t mip, VulkanBuffer* buffer) { return texture ? texture->mips[mip] : buffer->state; }
 AccessState& stateOf(const RecordedResource& r) { return stateOf(r.texture, r.mip, r.buffer); }
 
 uint64_t floatBits(float f) { return std::bit_cast<uint32_t>(f); }
@@ -63,8 +61,7 @@ void flattenBindings(const BindingSet& b, std::vector<uint64_t>& out) {
     }
 }
 
-void flattenCall(const RenderPassDesc* pass, std::span<const DrawDesc> draws, const DispatchDesc* dispatch,
-                 std::vector<uint64_t>& out) {
+void flattenCall(const RenderPassDesc* pass, std::span<const DrawDesc> draws, const DispatchDesc* dispatch, std::vector<uint64_t>& out) {
     out.clear();
     if (pass) {
         out.push_back(1);
@@ -96,8 +93,8 @@ void flattenCall(const RenderPassDesc* pass, std::span<const DrawDesc> draws, co
 }  // namespace
 
 bool sameState(const AccessState& a, const AccessState& b) {
-    if (a.layout != b.layout || a.writeStages != b.writeStages || a.writeAccess != b.writeAccess ||
-        a.readStages != b.readStages || a.visibleCount != b.visibleCount)
+    if (a.layout != b.layout || a.writeStages != b.writeStages || a.writeAccess != b.writeAccess || a.readStages != b.readStages ||
+        a.visibleCount != b.visibleCount)
         return false;
     for (uint32_t i = 0; i < a.visibleCount; ++i)
         if (a.visible[i] != b.visible[i]) return false;
@@ -106,8 +103,9 @@ bool sameState(const AccessState& a, const AccessState& b) {
 
 Status VulkanDevice::notWhileRecording(const char* call) const {
     if (mode_ == CallMode::Direct) return Status::ok();
-    return {StatusCode::InvalidArgument, std::string(call) + ": a " + (mode_ == CallMode::Recording ? "recording" : "replay") +
-                                             " is open; allowed after " + (mode_ == CallMode::Recording ? "endRecording" : "endReplay")};
+    return {StatusCode::InvalidArgument,
+            std::string(call) + ": a " + (mode_ == CallMode::Recording ? "recording" : "replay") + " is open; allowed after " +
+                (mode_ == CallMode::Recording ? "endRecording" : "endReplay")};
 }
 
 // With DeviceOptions::reuseRecordings off (caps().reusableRecordings false) each call answers as
@@ -187,8 +185,7 @@ Status VulkanDevice::endReplay() {
     if (!rec.reusable) return stale(rec.why);
     if (rec.epoch != objectEpoch_) return stale("an object was created or destroyed since it was recorded");
     for (const RecordedResource& res : rec.resources)
-        if (res.written && !sameState(stateOf(res), res.entry))
-            return stale("a resource it writes is not in the state it was recorded from");
+        if (res.written && !sameState(stateOf(res), res.entry)) return stale("a resource it writes is not in the state it was recorded from");
     Result<VkCommandBuffer> primary = primaryRecording();
     if (!primary) return primary.status();
     // What the resources it only reads need after what came before (a rewritten uniform buffer,
@@ -249,8 +246,8 @@ bool VulkanDevice::noteTimer() {
     return true;
 }
 
-void VulkanDevice::noteRecordedUse(VulkanTexture* texture, uint32_t mip, VulkanBuffer* buffer, VkImageLayout layout,
-                                   VkPipelineStageFlags stages, VkAccessFlags access, bool write) {
+void VulkanDevice::noteRecordedUse(VulkanTexture* texture, uint32_t mip, VulkanBuffer* buffer, VkImageLayout layout, VkPipelineStageFlags stages,
+                                   VkAccessFlags access, bool write) {
     AccessState& s = stateOf(texture, mip, buffer);
     if (s.recordingSerial != recordingSerial_) {
         s.recordingSerial = recordingSerial_;

@@ -32,14 +32,12 @@ Result<StagingSlice> VulkanDevice::stage(uint64_t bytes) {
     // The smallest idle block that holds the request, else a new one.
     auto best = stagingIdle_.end();
     for (auto it = stagingIdle_.begin(); it != stagingIdle_.end(); ++it)
-        if (it->buffer.desc.size >= bytes && (best == stagingIdle_.end() || it->buffer.desc.size < best->buffer.desc.size))
-            best = it;
+        if (it->buffer.desc.size >= bytes && (best == stagingIdle_.end() || it->buffer.desc.size < best->buffer.desc.size)) best = it;
     if (best != stagingIdle_.end()) {
         inUse.push_back(std::move(*best));
         stagingIdle_.erase(best);
     } else {
-        Result<VulkanBuffer> b = makeBuffer(std::max(bytes, kStagingBlockBytes),
-                                            VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+        Result<VulkanBuffer> b = makeBuffer(std::max(bytes, kStagingBlockBytes), VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                             "sfx staging ring");
         if (!b) return b.status();
         stagingCount_.add();

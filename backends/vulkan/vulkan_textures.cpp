@@ -90,8 +90,7 @@ Status VulkanDevice::uploadTexture(VulkanTexture& t, uint32_t mip, const void* d
         d24s8ToVulkan(data, staging->mapped, bytes);
     else
         std::memcpy(staging->mapped, data, bytes);
-    const ImageUse copyWrite{&t, mip, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                             VK_ACCESS_TRANSFER_WRITE_BIT, true};
+    const ImageUse copyWrite{&t, mip, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, true};
     barriers(cb.value(), std::span(&copyWrite, 1), {});
     VkBufferImageCopy region{};
     region.bufferOffset = staging->offset;
@@ -109,8 +108,7 @@ Status VulkanDevice::downloadTexture(VulkanTexture& t, uint32_t mip, void* out, 
     Result<StagingSlice> staging = stage(bytes);
     if (!staging) return staging.status();
     const StagingSlice readback = staging.value();
-    const ImageUse copyRead{&t, mip, 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                            VK_ACCESS_TRANSFER_READ_BIT, false};
+    const ImageUse copyRead{&t, mip, 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, false};
     barriers(cb.value(), std::span(&copyRead, 1), {});
     VkBufferImageCopy region{};
     region.bufferOffset = readback.offset;
@@ -125,8 +123,7 @@ Status VulkanDevice::downloadTexture(VulkanTexture& t, uint32_t mip, void* out, 
     toHost.buffer = readback.buffer;
     toHost.offset = readback.offset;
     toHost.size = bytes;
-    vk_.vkCmdPipelineBarrier(cb.value(), VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1,
-                             &toHost, 0, nullptr);
+    vk_.vkCmdPipelineBarrier(cb.value(), VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &toHost, 0, nullptr);
     // The block goes back to the ring at the submit, but nothing writes it before the copy out.
     Status s = submitAndWait();
     if (s && t.desc.format == Format::D24S8)
@@ -138,9 +135,9 @@ Status VulkanDevice::downloadTexture(VulkanTexture& t, uint32_t mip, void* out, 
 
 Result<SamplerHandle> VulkanDevice::makeSampler(const SamplerDesc& desc) {
     auto filter = [](Filter f) { return f == Filter::Linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST; };
-    const VkSamplerAddressMode address = desc.address == AddressMode::Repeat           ? VK_SAMPLER_ADDRESS_MODE_REPEAT
-                                         : desc.address == AddressMode::MirroredRepeat ? VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT
-                                                                                       : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    const VkSamplerAddressMode address = desc.address == AddressMode::Repeat ? VK_SAMPLER_ADDRESS_MODE_REPEAT
+        : desc.address == AddressMode::MirroredRepeat                        ? VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT
+                                                                             : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     VkSamplerCreateInfo sci{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     sci.magFilter = filter(desc.magFilter);
     sci.minFilter = filter(desc.minFilter);

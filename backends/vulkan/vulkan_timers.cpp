@@ -66,8 +66,7 @@ Status VulkanDevice::doEndTimer(TimerHandle h) {
 
 Result<TimerReading> VulkanDevice::doReadTimer(TimerHandle h) {
     VulkanTimer& t = timers_.get(h);
-    if (t.state != VulkanTimer::State::Flushed)
-        return validation::fail(validation::Error::TimerNoMeasurement, {});
+    if (t.state != VulkanTimer::State::Flushed) return validation::fail(validation::Error::TimerNoMeasurement, {});
     if (!queryPool_) return TimerReading{t.wallMs, TimingSource::WallClockAfterFinish};
     uint64_t stamps[2] = {0, 0};
     // A host command buffer may not have run yet: never wait for it.

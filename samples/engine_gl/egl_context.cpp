@@ -78,9 +78,7 @@ sfx::Result<std::unique_ptr<EglContext>> EglContext::open(ContextApi api) {
     return out;
 }
 
-bool EglContext::makeCurrent() {
-    return eglBindAPI(eglApi(api_)) && eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_);
-}
+bool EglContext::makeCurrent() { return eglBindAPI(eglApi(api_)) && eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_); }
 
 EglContext::~EglContext() {
     eglBindAPI(eglApi(api_));

@@ -11,11 +11,11 @@ namespace engine_gl {
 
 struct FrameLoopResult {
     uint32_t warmupFrames = 0, steadyFrames = 0;
-    double medianFrameMs = 0, minFrameMs = 0;  // steady frames, wall time including the flush
-    double medianDispatchMs = 0;               // CPU time in the AO and motion-blur dispatch() calls
+    double medianFrameMs = 0, minFrameMs = 0;   // steady frames, wall time including the flush
+    double medianDispatchMs = 0;                // CPU time in the AO and motion-blur dispatch() calls
     sfx::DeviceStats sdkAfterWarmup, sdkAtEnd;  // Device::stats() of the wrapped device
     HostGlCounts hostAfterWarmup, hostAtEnd;
-    std::string sdkMessages;                    // validation messages taken during the loop
+    std::string sdkMessages;  // validation messages taken during the loop
 };
 
 // Frames [0, warmup) then [warmup, warmup + steady).

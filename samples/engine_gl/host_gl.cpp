@@ -6,9 +6,11 @@ namespace engine_gl {
 
 std::string HostGl::load(GetProcAddress loader) {
     std::string missing;
+// clang-format off
 #define ENGINE_GL_LOAD(type, name)                                                  \
     name = reinterpret_cast<type>(loader("gl" #name));                              \
     if (!name) missing += (missing.empty() ? "gl" : ", gl") + std::string(#name);
+    // clang-format on
     ENGINE_GL_STATE_FUNCTIONS(ENGINE_GL_LOAD)
     ENGINE_GL_COUNTED_FUNCTIONS(ENGINE_GL_LOAD)
 #undef ENGINE_GL_LOAD

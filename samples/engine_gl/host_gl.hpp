@@ -15,6 +15,7 @@ namespace engine_gl {
 using GetProcAddress = void* (*)(const char* name);
 
 // Entry points the renderer calls directly: binding, state, draws, program setup.
+// clang-format off
 #define ENGINE_GL_STATE_FUNCTIONS(X)                                                          \
     X(PFNGLGETERRORPROC, GetError) X(PFNGLGETINTEGERVPROC, GetIntegerv)                       \
     X(PFNGLGETSTRINGPROC, GetString) X(PFNGLENABLEPROC, Enable) X(PFNGLDISABLEPROC, Disable)   \
@@ -41,8 +42,10 @@ using GetProcAddress = void* (*)(const char* name);
     X(PFNGLBINDATTRIBLOCATIONPROC, BindAttribLocation) X(PFNGLUNIFORM1IPROC, Uniform1i)        \
     X(PFNGLUNIFORM3FPROC, Uniform3f) X(PFNGLUNIFORM2FPROC, Uniform2f)                          \
     X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv) X(PFNGLUNIFORMMATRIX3FVPROC, UniformMatrix3fv)
+// clang-format on
 
 // Entry points that create GL objects or storage, upload or read back: counted.
+// clang-format off
 #define ENGINE_GL_COUNTED_FUNCTIONS(X)                                                        \
     X(PFNGLGENTEXTURESPROC, GenTextures) X(PFNGLTEXSTORAGE2DPROC, TexStorage2D)                \
     X(PFNGLTEXSUBIMAGE2DPROC, TexSubImage2D) X(PFNGLGENSAMPLERSPROC, GenSamplers)              \
@@ -53,14 +56,15 @@ using GetProcAddress = void* (*)(const char* name);
     X(PFNGLDELETETEXTURESPROC, DeleteTextures) X(PFNGLDELETESAMPLERSPROC, DeleteSamplers)      \
     X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers) X(PFNGLDELETEBUFFERSPROC, DeleteBuffers) \
     X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays) X(PFNGLDELETEPROGRAMPROC, DeleteProgram)
+// clang-format on
 
 // How often the host called what it must not call in a steady frame.
 struct HostGlCounts {
-    uint64_t objectsCreated = 0;   // glGen*, glCreateShader/Program
-    uint64_t objectsDeleted = 0;   // glDelete*
-    uint64_t allocations = 0;      // glTexStorage2D, glBufferData (new storage)
-    uint64_t uploads = 0;          // glTexSubImage2D, glBufferData with data
-    uint64_t readbacks = 0;        // glReadPixels
+    uint64_t objectsCreated = 0;  // glGen*, glCreateShader/Program
+    uint64_t objectsDeleted = 0;  // glDelete*
+    uint64_t allocations = 0;     // glTexStorage2D, glBufferData (new storage)
+    uint64_t uploads = 0;         // glTexSubImage2D, glBufferData with data
+    uint64_t readbacks = 0;       // glReadPixels
     bool operator==(const HostGlCounts&) const = default;
 };
 

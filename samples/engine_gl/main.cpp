@@ -41,9 +41,12 @@ int main(int argc, char** argv) {
         } else if (!value) {
             return usage(arg + " needs a value");
         } else if (arg == "--api") {
-            if (std::strcmp(value, "gles") == 0) api = engine_gl::ContextApi::GLES;
-            else if (std::strcmp(value, "gl") == 0) api = engine_gl::ContextApi::DesktopGL;
-            else return usage(std::string("--api is '") + value + "'; allowed gles or gl");
+            if (std::strcmp(value, "gles") == 0)
+                api = engine_gl::ContextApi::GLES;
+            else if (std::strcmp(value, "gl") == 0)
+                api = engine_gl::ContextApi::DesktopGL;
+            else
+                return usage(std::string("--api is '") + value + "'; allowed gles or gl");
             ++i;
         } else if (arg == "--width" || arg == "--height") {
             if (!parseCount(value, 1, 8192, arg == "--width" ? &options.width : &options.height))
@@ -71,8 +74,8 @@ int main(int argc, char** argv) {
         std::cerr << renderer.status().toString() << "\n";
         return 1;
     }
-    std::cout << "engine_gl: " << engine_gl::toString(api) << " " << options.width << "x" << options.height << ", "
-              << renderer.value()->tier().reason << "\n";
+    std::cout << "engine_gl: " << engine_gl::toString(api) << " " << options.width << "x" << options.height << ", " << renderer.value()->tier().reason
+              << "\n";
     const uint32_t warmup = frames < 10 ? 1 : 5;
     sfx::Result<engine_gl::FrameLoopResult> loop = engine_gl::runFrames(*renderer.value(), warmup, frames - warmup);
     if (!loop) {
@@ -84,9 +87,10 @@ int main(int argc, char** argv) {
         return 1;
     }
     const bool steady = loop->sdkAfterWarmup == loop->sdkAtEnd && loop->hostAfterWarmup == loop->hostAtEnd;
-    std::printf("engine_gl: %u frames, median %.2f ms (min %.2f) per steady frame, %.3f ms of it in the two dispatch() calls; "
-                "steady frames made %s -> %s\n",
-                frames, loop->medianFrameMs, loop->minFrameMs, loop->medianDispatchMs, steady ? "nothing" : "OBJECTS", out.c_str());
+    std::printf(
+        "engine_gl: %u frames, median %.2f ms (min %.2f) per steady frame, %.3f ms of it in the two dispatch() calls; "
+        "steady frames made %s -> %s\n",
+        frames, loop->medianFrameMs, loop->minFrameMs, loop->medianDispatchMs, steady ? "nothing" : "OBJECTS", out.c_str());
     if (!loop->sdkMessages.empty()) std::cerr << loop->sdkMessages;
     return steady && loop->sdkMessages.empty() ? 0 : 1;
 }

@@ -85,9 +85,12 @@ sfx::Status Renderer::createGlObjects() {
     if (!programs) return programs.status();
     programs_ = programs.value();
     const GLuint g = programs_.gbuffer;
-    uniforms_ = {gl_.GetUniformLocation(g, "uModelView"),   gl_.GetUniformLocation(g, "uProjection"),
-                 gl_.GetUniformLocation(g, "uPreviousClip"), gl_.GetUniformLocation(g, "uNormalMatrix"),
-                 gl_.GetUniformLocation(g, "uColour"),       gl_.GetUniformLocation(g, "uViewport"),
+    uniforms_ = {gl_.GetUniformLocation(g, "uModelView"),
+                 gl_.GetUniformLocation(g, "uProjection"),
+                 gl_.GetUniformLocation(g, "uPreviousClip"),
+                 gl_.GetUniformLocation(g, "uNormalMatrix"),
+                 gl_.GetUniformLocation(g, "uColour"),
+                 gl_.GetUniformLocation(g, "uViewport"),
                  gl_.GetUniformLocation(programs_.composite, "uSunView")};
     depth_ = {makeTarget(GL_DEPTH_COMPONENT32F), GL_DEPTH_COMPONENT32F};
     normals_ = {makeTarget(GL_RGBA16F), GL_RGBA16F};
@@ -127,18 +130,15 @@ sfx::Status Renderer::createMeshes() {
         gl_.BindVertexArray(m.vao);
         m.vertices = gl_.genBuffer();
         gl_.BindBuffer(GL_ARRAY_BUFFER, m.vertices);
-        gl_.bufferData(GL_ARRAY_BUFFER, GLsizeiptr(source.vertices.size() * sizeof(sfx::tools::Vertex)), source.vertices.data(),
-                       GL_STATIC_DRAW);
+        gl_.bufferData(GL_ARRAY_BUFFER, GLsizeiptr(source.vertices.size() * sizeof(sfx::tools::Vertex)), source.vertices.data(), GL_STATIC_DRAW);
         m.indices = gl_.genBuffer();
         gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, m.indices);
-        gl_.bufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(source.indices.size() * sizeof(uint32_t)), source.indices.data(),
-                       GL_STATIC_DRAW);
+        gl_.bufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(source.indices.size() * sizeof(uint32_t)), source.indices.data(), GL_STATIC_DRAW);
         const GLsizei stride = sizeof(sfx::tools::Vertex);
         gl_.EnableVertexAttribArray(kAttribPosition);
         gl_.VertexAttribPointer(kAttribPosition, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
         gl_.EnableVertexAttribArray(kAttribNormal);
-        gl_.VertexAttribPointer(kAttribNormal, 3, GL_FLOAT, GL_FALSE, stride,
-                                reinterpret_cast<const void*>(offsetof(sfx::tools::Vertex, normal)));
+        gl_.VertexAttribPointer(kAttribNormal, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offsetof(sfx::tools::Vertex, normal)));
         gl_.BindVertexArray(0);
         gl_.BindBuffer(GL_ARRAY_BUFFER, 0);
         meshes_.push_back(m);
@@ -182,8 +182,8 @@ sfx::Status Renderer::createSdk() {
     sfx::AoSettings aoSettings;
     aoSettings.radius = 0.4f;
     aoSettings.normals = sfx::AoNormals::FromTexture;  // the G-buffer's normals, not derived ones
-    sfx::Result<std::unique_ptr<sfx::AmbientObscurance>> effect =
-        sfx::AmbientObscurance::create(*device_, {options_.width, options_.height, tier_.profile, aoSettings, sfx::DepthKind::Hardware});
+    sfx::Result<std::unique_ptr<sfx::AmbientObscurance>> effect = sfx::AmbientObscurance::create(
+        *device_, {options_.width, options_.height, tier_.profile, aoSettings, sfx::DepthKind::Hardware});
     if (!effect) return effect.status();
     ao_ = std::move(effect.value());
 
@@ -286,8 +286,7 @@ sfx::Status Renderer::renderFrame(uint32_t index) {
     const Clock::duration aoTime = Clock::now() - aoStart;
     if (hooks.after) hooks.after(SdkCall::AmbientObscurance);
 
-    bindFullScreen(litFbo_, programs_.composite,
-                   {{kUnitAlbedo, albedo_.texture}, {kUnitNormals, normals_.texture}, {kUnitAo, aoOutput_.texture}});
+    bindFullScreen(litFbo_, programs_.composite, {{kUnitAlbedo, albedo_.texture}, {kUnitNormals, normals_.texture}, {kUnitAo, aoOutput_.texture}});
     const glm::dvec3 sunWorld = glm::normalize(glm::dvec3(0.4, 0.9, 0.35));
     const glm::vec3 sun(glm::normalize(glm::dmat3(view(index)) * sunWorld));
     gl_.Uniform3f(uniforms_.sun, sun.x, sun.y, sun.z);

@@ -98,9 +98,7 @@ void main() {
 )";
 
 std::string withHeader(ContextApi api, const char* body) {
-    return std::string(api == ContextApi::GLES ? "#version 300 es\nprecision highp float;\nprecision highp int;\n"
-                                               : "#version 330 core\n") +
-           body;
+    return std::string(api == ContextApi::GLES ? "#version 300 es\nprecision highp float;\nprecision highp int;\n" : "#version 330 core\n") + body;
 }
 
 sfx::Result<GLuint> compile(HostGl& gl, GLenum stage, const std::string& source, const char* what) {
@@ -119,8 +117,7 @@ sfx::Result<GLuint> compile(HostGl& gl, GLenum stage, const std::string& source,
     return shader;
 }
 
-sfx::Result<GLuint> link(HostGl& gl, ContextApi api, const char* vertex, const char* fragment, const char* what,
-                         bool meshAttributes) {
+sfx::Result<GLuint> link(HostGl& gl, ContextApi api, const char* vertex, const char* fragment, const char* what, bool meshAttributes) {
     sfx::Result<GLuint> vs = compile(gl, GL_VERTEX_SHADER, withHeader(api, vertex), what);
     if (!vs) return vs.status();
     sfx::Result<GLuint> fs = compile(gl, GL_FRAGMENT_SHADER, withHeader(api, fragment), what);

@@ -15,12 +15,14 @@ namespace {
 constexpr double kOrbitPerFrame = 0.02;  // radians the camera moves around the bunny per frame
 constexpr double kSpinPerFrame = 0.12;   // radians the bunny turns per frame
 
+// clang-format off
 #define ENGINE_VK(call)                                                                              \
     do {                                                                                             \
         const VkResult engine_vk_result_ = (call);                                                  \
         if (engine_vk_result_ != VK_SUCCESS)                                                         \
             return Status{StatusCode::DeviceError, std::string(#call) + " returned " + std::to_string(int(engine_vk_result_))}; \
     } while (0)
+// clang-format on
 
 void storeMatrix(float* dst, const glm::dmat4& m) {
     for (int c = 0; c < 4; ++c)
@@ -91,8 +93,7 @@ Status EngineRenderer::recordFrame(VkCommandBuffer cb) {
     constexpr VkImageLayout kDepth = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
     constexpr VkPipelineStageFlags kFragment = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
     constexpr VkPipelineStageFlags kColorOut = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    constexpr VkPipelineStageFlags kDepthTests =
-        VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+    constexpr VkPipelineStageFlags kDepthTests = VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
 
     // 1. G-buffer. Last frame's contents are not needed (old layout UNDEFINED); the writes wait
     //    for last frame's reads (the SDK's and the lighting pass's, all fragment shaders).
@@ -105,8 +106,7 @@ Status EngineRenderer::recordFrame(VkCommandBuffer cb) {
     // pass. Depth stays as the pass left it: that is its contract layout, and the SDK's first
     // use of it waits for the depth writes itself.
     for (const HostImage* img : {&normals_, &velocity_, &albedo_})
-        imageBarrier(cb, *img, kColor, kRead, kColorOut, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, kFragment,
-                     VK_ACCESS_SHADER_READ_BIT);
+        imageBarrier(cb, *img, kColor, kRead, kColorOut, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, kFragment, VK_ACCESS_SHADER_READ_BIT);
 
     // 2. The SDK's AO, into the host's AO image. flush() ends the SDK's recording and returns
     //    every imported image it used to its contract layout, visible to the host's next pass.
@@ -136,8 +136,7 @@ Status EngineRenderer::recordFrame(VkCommandBuffer cb) {
 
     // 5. Present from the host's blurred image: flush() left it in its contract layout
     //    (SHADER_READ_ONLY_OPTIMAL), visible to every later stage, so no barrier against the SDK.
-    imageBarrier(cb, final_, kColor, kColor, kColorOut, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, kColorOut,
-                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+    imageBarrier(cb, final_, kColor, kColor, kColorOut, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, kColorOut, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
     fullscreenPass(cb, final_, presentPipeline_, presentLayout_, presentSet_);
     return Status::ok();
 }
@@ -176,8 +175,7 @@ void EngineRenderer::gbufferPass(VkCommandBuffer cb) {
     vkCmdEndRendering(cb);
 }
 
-void EngineRenderer::fullscreenPass(VkCommandBuffer cb, const HostImage& target, VkPipeline pipeline, VkPipelineLayout layout,
-                                    VkDescriptorSet set) {
+void EngineRenderer::fullscreenPass(VkCommandBuffer cb, const HostImage& target, VkPipeline pipeline, VkPipelineLayout layout, VkDescriptorSet set) {
     VkRenderingAttachmentInfo color = colorAttachment(target);
     color.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;  // every pixel is written
     VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
@@ -202,11 +200,11 @@ Result<std::vector<uint8_t>> EngineRenderer::readImage(HostImageKind kind) {
     bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     ENGINE_VK(vkBeginCommandBuffer(cb_, &bi));
     // Outside the frame: wait for whatever wrote it last, and hand it back to every stage.
-    imageBarrier(cb_, img, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
-                 VK_ACCESS_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    imageBarrier(cb_, img, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT,
+                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
     host_.copyImageToBuffer(cb_, img, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_);
-    imageBarrier(cb_, img, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
-                 VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
+    imageBarrier(cb_, img, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                 VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
     VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;

@@ -32,8 +32,7 @@ void store(float (&dst)[16], const glm::dmat4& m) {
         for (int r = 0; r < 4; ++r) dst[c * 4 + r] = float(m[c][r]);
 }
 
-constexpr VkImageUsageFlags kGBufferUsage =
-    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+constexpr VkImageUsageFlags kGBufferUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
 
 }  // namespace
 
@@ -46,8 +45,7 @@ Result<std::unique_ptr<EngineRenderer>> EngineRenderer::create(const EngineOptio
 
 Status EngineRenderer::init(const EngineOptions& options) {
     if (options.width == 0 || options.height == 0)
-        return invalidArgument("EngineOptions.width/height", std::to_string(options.width) + "x" + std::to_string(options.height),
-                               "both at least 1");
+        return invalidArgument("EngineOptions.width/height", std::to_string(options.width) + "x" + std::to_string(options.height), "both at least 1");
     options_ = options;
     SFX_TRY(host_.create(options.validation));
     SFX_TRY(loadScene());
@@ -106,16 +104,15 @@ Status EngineRenderer::loadScene() {
 Status EngineRenderer::createTargets() {
     const uint32_t w = options_.width, h = options_.height;
     SFX_TRY(host_.makeImage(VK_FORMAT_D32_SFLOAT,
-                            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                            w, h, &depth_));
+                            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, w, h,
+                            &depth_));
     SFX_TRY(host_.makeImage(VK_FORMAT_R16G16B16A16_SFLOAT, kGBufferUsage, w, h, &normals_));
     SFX_TRY(host_.makeImage(VK_FORMAT_R16G16_SFLOAT, kGBufferUsage, w, h, &velocity_));
     SFX_TRY(host_.makeImage(VK_FORMAT_R8G8B8A8_UNORM, kGBufferUsage, w, h, &albedo_));
     SFX_TRY(host_.makeImage(VK_FORMAT_R16_SFLOAT, kGBufferUsage, w, h, &aoImage_));
     SFX_TRY(host_.makeImage(VK_FORMAT_R16G16B16A16_SFLOAT, kGBufferUsage, w, h, &lit_));
     SFX_TRY(host_.makeImage(VK_FORMAT_R16G16B16A16_SFLOAT, kGBufferUsage, w, h, &blurred_));
-    SFX_TRY(host_.makeImage(VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, w, h,
-                            &final_));
+    SFX_TRY(host_.makeImage(VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, w, h, &final_));
     // Readback of the largest image (RGBA16F), for readImage() only.
     SFX_TRY(host_.makeBuffer(VkDeviceSize(w) * h * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT, &readback_));
     SFX_TRY(host_.makeCommands(&pool_, &cb_, &fence_));
@@ -125,8 +122,8 @@ Status EngineRenderer::createTargets() {
     VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     if (vkBeginCommandBuffer(cb_, &bi) != VK_SUCCESS) return {StatusCode::DeviceError, "vkBeginCommandBuffer failed"};
-    for (HostImageKind k : {HostImageKind::Depth, HostImageKind::Normals, HostImageKind::Velocity, HostImageKind::Albedo,
-                            HostImageKind::Ao, HostImageKind::Lit, HostImageKind::Blurred, HostImageKind::Final})
+    for (HostImageKind k : {HostImageKind::Depth, HostImageKind::Normals, HostImageKind::Velocity, HostImageKind::Albedo, HostImageKind::Ao,
+                            HostImageKind::Lit, HostImageKind::Blurred, HostImageKind::Final})
         imageBarrier(cb_, image(k), VK_IMAGE_LAYOUT_UNDEFINED, contractLayout(k), VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
                      VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
     if (vkEndCommandBuffer(cb_) != VK_SUCCESS) return {StatusCode::DeviceError, "vkEndCommandBuffer failed"};
@@ -137,15 +134,12 @@ Status EngineRenderer::createTargets() {
 
 Status EngineRenderer::createPipelines() {
     SFX_TRY(host_.makeSampler(&sampler_));
-    SFX_TRY(host_.makeSetLayout(
-        {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}},
-        &gbufferSetLayout_));
+    SFX_TRY(host_.makeSetLayout({{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}},
+                                &gbufferSetLayout_));
     std::vector<VkDescriptorSetLayoutBinding> lighting;
-    for (uint32_t b = 0; b < 3; ++b)
-        lighting.push_back({b, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, &sampler_});
+    for (uint32_t b = 0; b < 3; ++b) lighting.push_back({b, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, &sampler_});
     SFX_TRY(host_.makeSetLayout(lighting, &lightingSetLayout_));
-    SFX_TRY(host_.makeSetLayout({{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, &sampler_}},
-                                &presentSetLayout_));
+    SFX_TRY(host_.makeSetLayout({{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, &sampler_}}, &presentSetLayout_));
     SFX_TRY(host_.makeDescriptorPool(3, 1, 4, &descriptorPool_));
     SFX_TRY(host_.allocateSet(descriptorPool_, gbufferSetLayout_, &gbufferSet_));
     SFX_TRY(host_.allocateSet(descriptorPool_, lightingSetLayout_, &lightingSet_));
@@ -183,8 +177,8 @@ Status EngineRenderer::createPipelines() {
 Status EngineRenderer::connectSdk() {
     DeviceOptions options;
     options.validation = options_.validation;
-    vulkan::ExternalVulkan external{host_.instance, host_.physical, host_.device, host_.queue,
-                                    host_.family, vkGetInstanceProcAddr, host_.debugUtils, host_.synchronization2};
+    vulkan::ExternalVulkan external{host_.instance, host_.physical,        host_.device,     host_.queue,
+                                    host_.family,   vkGetInstanceProcAddr, host_.debugUtils, host_.synchronization2};
     Result<std::unique_ptr<Device>> device = vulkan::wrapDevice(external, options);
     if (!device) return device.status();
     sfx_ = std::move(device.value());
@@ -216,8 +210,8 @@ Status EngineRenderer::connectSdk() {
     AoSettings ao;
     ao.normals = AoNormals::FromTexture;
     ao.radius = 0.35f;
-    Result<std::unique_ptr<AmbientObscurance>> aoEffect =
-        AmbientObscurance::create(*sfx_, {options_.width, options_.height, profile, ao, DepthKind::Hardware});
+    Result<std::unique_ptr<AmbientObscurance>> aoEffect = AmbientObscurance::create(
+        *sfx_, {options_.width, options_.height, profile, ao, DepthKind::Hardware});
     if (!aoEffect) return aoEffect.status();
     ao_ = std::move(aoEffect.value());
     MotionBlurDesc mb;

@@ -78,8 +78,7 @@ private:
     void animate();
     Status recordFrame(VkCommandBuffer cb);
     void gbufferPass(VkCommandBuffer cb);
-    void fullscreenPass(VkCommandBuffer cb, const HostImage& target, VkPipeline pipeline, VkPipelineLayout layout,
-                        VkDescriptorSet set);
+    void fullscreenPass(VkCommandBuffer cb, const HostImage& target, VkPipeline pipeline, VkPipelineLayout layout, VkDescriptorSet set);
     const HostImage& image(HostImageKind kind) const;
     VkImageLayout contractLayout(HostImageKind kind) const;
 
@@ -102,8 +101,7 @@ private:
     HostBuffer vertices_, indices_, sceneUniforms_, readback_;
     HostImage depth_, normals_, velocity_, albedo_, aoImage_, lit_, blurred_, final_;
     VkSampler sampler_ = VK_NULL_HANDLE;
-    VkDescriptorSetLayout gbufferSetLayout_ = VK_NULL_HANDLE, lightingSetLayout_ = VK_NULL_HANDLE,
-                          presentSetLayout_ = VK_NULL_HANDLE;
+    VkDescriptorSetLayout gbufferSetLayout_ = VK_NULL_HANDLE, lightingSetLayout_ = VK_NULL_HANDLE, presentSetLayout_ = VK_NULL_HANDLE;
     VkDescriptorPool descriptorPool_ = VK_NULL_HANDLE;
     VkDescriptorSet gbufferSet_ = VK_NULL_HANDLE, lightingSet_ = VK_NULL_HANDLE, presentSet_ = VK_NULL_HANDLE;
     VkPipelineLayout gbufferLayout_ = VK_NULL_HANDLE, lightingLayout_ = VK_NULL_HANDLE, presentLayout_ = VK_NULL_HANDLE;

@@ -22,15 +22,22 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         const bool hasValue = i + 1 < argc;
-        if (a == "--frames" && hasValue) frames = uint32_t(std::max(1, std::atoi(argv[++i])));
-        else if (a == "--width" && hasValue) options.width = uint32_t(std::max(1, std::atoi(argv[++i])));
-        else if (a == "--height" && hasValue) options.height = uint32_t(std::max(1, std::atoi(argv[++i])));
-        else if (a == "--tier" && hasValue && parseTier(argv[i + 1], &options.tier)) ++i;
-        else if (a == "--validate") options.validation = true;
-        else if (a == "--out" && hasValue) out = argv[++i];
+        if (a == "--frames" && hasValue)
+            frames = uint32_t(std::max(1, std::atoi(argv[++i])));
+        else if (a == "--width" && hasValue)
+            options.width = uint32_t(std::max(1, std::atoi(argv[++i])));
+        else if (a == "--height" && hasValue)
+            options.height = uint32_t(std::max(1, std::atoi(argv[++i])));
+        else if (a == "--tier" && hasValue && parseTier(argv[i + 1], &options.tier))
+            ++i;
+        else if (a == "--validate")
+            options.validation = true;
+        else if (a == "--out" && hasValue)
+            out = argv[++i];
         else {
-            std::fprintf(stderr, "usage: engine_vulkan [--frames N] [--width W] [--height H] [--tier current|high] "
-                                 "[--validate] [--out file.png]\n");
+            std::fprintf(stderr,
+                         "usage: engine_vulkan [--frames N] [--width W] [--height H] [--tier current|high] "
+                         "[--validate] [--out file.png]\n");
             return 2;
         }
     }
@@ -71,7 +78,7 @@ int main(int argc, char** argv) {
     for (const std::string& m : messages) std::fprintf(stderr, "engine_vulkan: validation: %s\n", m.c_str());
     std::sort(ms.begin(), ms.end());
     const double median = ms.empty() ? 0.0 : ms[ms.size() / 2];
-    std::printf("engine_vulkan: %u frames at %ux%u (%s tier%s), median frame %.2f ms -> %s\n", frames, r.width(), r.height(),
-                toString(options.tier), options.validation ? ", validation on" : "", median, out.c_str());
+    std::printf("engine_vulkan: %u frames at %ux%u (%s tier%s), median frame %.2f ms -> %s\n", frames, r.width(), r.height(), toString(options.tier),
+                options.validation ? ", validation on" : "", median, out.c_str());
     return messages.empty() ? 0 : 1;
 }

@@ -28,17 +28,16 @@ bool parseTier(const std::string& text, Tier* out) {
 
 std::string tierNameList() {
     std::string s;
-    for (uint32_t i = 0; i < kTierCount; ++i)
-        s += std::string(i == 0 ? "" : i + 1 == kTierCount ? " or " : ", ") + kTierNames[i];
+    for (uint32_t i = 0; i < kTierCount; ++i) s += std::string(i == 0 ? "" : i + 1 == kTierCount ? " or " : ", ") + kTierNames[i];
     return s;
 }
 
 const char* toString(BackendKind kind) {
     switch (kind) {
-    case BackendKind::Null: return "null";
-    case BackendKind::Vulkan: return "vulkan";
-    case BackendKind::GLES: return "gles";
-    case BackendKind::GL: return "gl";
+        case BackendKind::Null: return "null";
+        case BackendKind::Vulkan: return "vulkan";
+        case BackendKind::GLES: return "gles";
+        case BackendKind::GL: return "gl";
     }
     return "unknown";
 }
@@ -52,10 +51,9 @@ struct FormatInfo {
     bool integer;
 };
 constexpr FormatInfo kFormats[] = {
-    {"Undefined", 0, 0, false, false}, {"R8", 1, 1, false, false},     {"RGBA8", 4, 4, false, false},
-    {"R16F", 2, 1, false, false},      {"RG16F", 4, 2, false, false},  {"RGBA16F", 8, 4, false, false},
-    {"R32F", 4, 1, false, false},      {"RG32F", 8, 2, false, false},  {"RGBA32F", 16, 4, false, false},
-    {"R32UI", 4, 1, false, true},      {"D16", 2, 1, true, false},     {"D24S8", 4, 1, true, false},
+    {"Undefined", 0, 0, false, false}, {"R8", 1, 1, false, false},      {"RGBA8", 4, 4, false, false}, {"R16F", 2, 1, false, false},
+    {"RG16F", 4, 2, false, false},     {"RGBA16F", 8, 4, false, false}, {"R32F", 4, 1, false, false},  {"RG32F", 8, 2, false, false},
+    {"RGBA32F", 16, 4, false, false},  {"R32UI", 4, 1, false, true},    {"D16", 2, 1, true, false},    {"D24S8", 4, 1, true, false},
     {"D32F", 4, 1, true, false},
 };
 static_assert(std::size(kFormats) == size_t(Format::Count));
@@ -71,22 +69,18 @@ bool isDepthFormat(Format format) { return info(format).depth; }
 bool isIntegerFormat(Format format) { return info(format).integer; }
 uint32_t channelCount(Format format) { return info(format).channels; }
 
-const char* toString(TimingSource source) {
-    return source == TimingSource::GpuTimestamps ? "GPU timestamps" : "wall clock after glFinish";
-}
+const char* toString(TimingSource source) { return source == TimingSource::GpuTimestamps ? "GPU timestamps" : "wall clock after glFinish"; }
 
-const char* toString(CapabilityCeiling ceiling) {
-    return ceiling == CapabilityCeiling::GLES30 ? "GL ES 3.0" : "none";
-}
+const char* toString(CapabilityCeiling ceiling) { return ceiling == CapabilityCeiling::GLES30 ? "GL ES 3.0" : "none"; }
 
 const char* toString(ShaderDialect dialect) {
     switch (dialect) {
-    case ShaderDialect::Spirv: return "spirv";
-    case ShaderDialect::Essl300: return "essl300";
-    case ShaderDialect::Essl310: return "essl310";
-    case ShaderDialect::Glsl330: return "glsl330";
-    case ShaderDialect::Glsl450: return "glsl450";
-    case ShaderDialect::Count: break;
+        case ShaderDialect::Spirv: return "spirv";
+        case ShaderDialect::Essl300: return "essl300";
+        case ShaderDialect::Essl310: return "essl310";
+        case ShaderDialect::Glsl330: return "glsl330";
+        case ShaderDialect::Glsl450: return "glsl450";
+        case ShaderDialect::Count: break;
     }
     return "unknown";
 }
@@ -103,27 +97,26 @@ bool parseShaderDialect(const std::string& text, ShaderDialect* out) {
 
 const char* toString(ShaderStage stage) {
     switch (stage) {
-    case ShaderStage::Vertex: return "vertex";
-    case ShaderStage::Fragment: return "fragment";
-    case ShaderStage::Compute: return "compute";
+        case ShaderStage::Vertex: return "vertex";
+        case ShaderStage::Fragment: return "fragment";
+        case ShaderStage::Compute: return "compute";
     }
     return "unknown";
 }
 
 const char* toString(ResourceKind kind) {
     switch (kind) {
-    case ResourceKind::UniformBuffer: return "uniform buffer";
-    case ResourceKind::SampledTexture: return "sampled texture";
-    case ResourceKind::StorageBuffer: return "storage buffer";
-    case ResourceKind::StorageImage: return "storage image";
+        case ResourceKind::UniformBuffer: return "uniform buffer";
+        case ResourceKind::SampledTexture: return "sampled texture";
+        case ResourceKind::StorageBuffer: return "storage buffer";
+        case ResourceKind::StorageImage: return "storage image";
     }
     return "unknown";
 }
 
 bool CompiledProgram::usesStorage() const {
-    return std::any_of(resources.begin(), resources.end(), [](const ShaderResource& r) {
-        return r.kind == ResourceKind::StorageBuffer || r.kind == ResourceKind::StorageImage;
-    });
+    return std::any_of(resources.begin(), resources.end(),
+                       [](const ShaderResource& r) { return r.kind == ResourceKind::StorageBuffer || r.kind == ResourceKind::StorageImage; });
 }
 
 const ShaderResource* CompiledProgram::findResource(const std::string& resourceName) const {
@@ -133,8 +126,7 @@ const ShaderResource* CompiledProgram::findResource(const std::string& resourceN
 }
 
 std::string DeviceCaps::summary() const {
-    std::string s = std::string(toString(backend)) + " via " + platform + ": " + apiName + " on " + deviceName +
-                    ", shaders " + toString(dialect);
+    std::string s = std::string(toString(backend)) + " via " + platform + ": " + apiName + " on " + deviceName + ", shaders " + toString(dialect);
     if (ceiling != CapabilityCeiling::None) s += ", capability ceiling " + std::string(toString(ceiling));
     s += ", compute " + std::string(computeShaders ? "yes" : "no");
     s += ", storage buffers " + std::string(storageBuffers ? "yes" : "no");

@@ -24,11 +24,9 @@ Status textureDesc(const TextureDesc& d, const DeviceCaps& caps) {
     const uint32_t known = kTextureSampled | kTextureRenderTarget | kTextureStorage;
     if (d.usage == 0 || (d.usage & ~known) != 0) return fail(Error::TextureUsage, {textureUsageNames(d.usage)});
     if ((d.usage & kTextureSampled) && !caps.sampledFormat[size_t(d.format)])
-        return fail(Error::TextureFormatNotSampled,
-                    {toString(d.format), formatList([&](Format f) { return caps.sampledFormat[size_t(f)]; })});
+        return fail(Error::TextureFormatNotSampled, {toString(d.format), formatList([&](Format f) { return caps.sampledFormat[size_t(f)]; })});
     if ((d.usage & kTextureRenderTarget) && !caps.renderableFormat[size_t(d.format)])
-        return fail(Error::TextureFormatNotRenderable,
-                    {toString(d.format), formatList([&](Format f) { return caps.renderableFormat[size_t(f)]; })});
+        return fail(Error::TextureFormatNotRenderable, {toString(d.format), formatList([&](Format f) { return caps.renderableFormat[size_t(f)]; })});
     if (d.usage & kTextureStorage) {
         if (!caps.storageImages) return fail(Error::TextureStorageUnsupported, {underCeiling(caps)});
         if (isDepthFormat(d.format)) return fail(Error::TextureStorageDepth, {toString(d.format)});
@@ -37,8 +35,7 @@ Status textureDesc(const TextureDesc& d, const DeviceCaps& caps) {
 }
 
 Status bufferDesc(const BufferDesc& d, const DeviceCaps& caps) {
-    if (d.size == 0 || d.size > caps.limits.maxBufferSize)
-        return fail(Error::BufferSize, {str(d.size), str(caps.limits.maxBufferSize)});
+    if (d.size == 0 || d.size > caps.limits.maxBufferSize) return fail(Error::BufferSize, {str(d.size), str(caps.limits.maxBufferSize)});
     const uint32_t known = kBufferUniform | kBufferStorage | kBufferVertex | kBufferIndex;
     if (d.usage == 0 || (d.usage & ~known) != 0) return fail(Error::BufferUsage, {bufferUsageNames(d.usage)});
     if ((d.usage & kBufferStorage) && !caps.storageBuffers) return fail(Error::BufferStorageUnsupported, {underCeiling(caps)});
@@ -48,12 +45,10 @@ Status bufferDesc(const BufferDesc& d, const DeviceCaps& caps) {
 }
 
 Status samplerDesc(const SamplerDesc& d) {
-    const std::pair<const char*, Filter> filters[] = {
-        {"minFilter", d.minFilter}, {"magFilter", d.magFilter}, {"mipFilter", d.mipFilter}};
+    const std::pair<const char*, Filter> filters[] = {{"minFilter", d.minFilter}, {"magFilter", d.magFilter}, {"mipFilter", d.mipFilter}};
     for (const auto& [field, filter] : filters)
         if (uint32_t(filter) > uint32_t(Filter::Linear)) return fail(Error::SamplerFilter, {field, str(uint32_t(filter))});
-    if (uint32_t(d.address) > uint32_t(AddressMode::MirroredRepeat))
-        return fail(Error::SamplerAddress, {str(uint32_t(d.address))});
+    if (uint32_t(d.address) > uint32_t(AddressMode::MirroredRepeat)) return fail(Error::SamplerAddress, {str(uint32_t(d.address))});
     return Status::ok();
 }
 
@@ -74,8 +69,7 @@ Status program(const CompiledProgram& p, const DeviceCaps& caps) {
     for (const ShaderResource& r : p.resources) {
         if (r.kind == ResourceKind::StorageBuffer && !caps.storageBuffers)
             return fail(Error::ProgramStorageBufferUnsupported, {p.name, r.name, under});
-        if (r.kind == ResourceKind::StorageImage && !caps.storageImages)
-            return fail(Error::ProgramStorageImageUnsupported, {p.name, r.name, under});
+        if (r.kind == ResourceKind::StorageImage && !caps.storageImages) return fail(Error::ProgramStorageImageUnsupported, {p.name, r.name, under});
         const bool storage = r.kind == ResourceKind::StorageBuffer || r.kind == ResourceKind::StorageImage;
         if (storage && (r.stages & stageBit(ShaderStage::Fragment)) && !caps.fragmentStoresAndAtomics)
             return fail(Error::ProgramFragmentStorageUnsupported, {p.name, r.name, under});
@@ -87,9 +81,8 @@ Status program(const CompiledProgram& p, const DeviceCaps& caps) {
             // sfxc leaves out every stage's text for a dialect the program's tier does not target
             // (the tier table's dialects) and keeps the others; a program with no text at all,
             // or one stage missing, is a broken program instead.
-            const bool noStageHasIt = std::all_of(p.stages.begin(), p.stages.end(), [&](const StageCode& other) {
-                return other.glsl[size_t(caps.dialect)].empty();
-            });
+            const bool noStageHasIt = std::all_of(p.stages.begin(), p.stages.end(),
+                                                  [&](const StageCode& other) { return other.glsl[size_t(caps.dialect)].empty(); });
             const bool otherDialects = std::any_of(p.stages.begin(), p.stages.end(), [](const StageCode& other) {
                 return std::any_of(std::begin(other.glsl), std::end(other.glsl), [](const std::string& g) { return !g.empty(); });
             });
@@ -104,14 +97,11 @@ Status program(const CompiledProgram& p, const DeviceCaps& caps) {
 Status specializationConstants(const std::vector<SpecializationConstant>& constants, const char* where) {
     for (size_t i = 0; i < constants.size(); ++i)
         for (size_t j = 0; j < i; ++j)
-            if (constants[j].id == constants[i].id)
-                return fail(Error::SpecializationConstantIdTwice, {where, str(i), str(constants[i].id), str(j)});
+            if (constants[j].id == constants[i].id) return fail(Error::SpecializationConstantIdTwice, {where, str(i), str(constants[i].id), str(j)});
     return Status::ok();
 }
 
-ProgramInfo programInfo(const CompiledProgram& program) {
-    return {program.name, program.isCompute(), program.resources};
-}
+ProgramInfo programInfo(const CompiledProgram& program) { return {program.name, program.isCompute(), program.resources}; }
 
 Status graphicsPipelineShape(const GraphicsPipelineDesc& d, const DeviceCaps& caps) {
     SFX_TRY(specializationConstants(d.constants, "GraphicsPipelineDesc"));
@@ -121,9 +111,7 @@ Status graphicsPipelineShape(const GraphicsPipelineDesc& d, const DeviceCaps& ca
         const Format f = d.colorFormats[i];
         if (!knownFormat(f) || f == Format::Undefined || isDepthFormat(f) || !caps.renderableFormat[size_t(f)])
             return fail(Error::PipelineColorFormat,
-                        {str(i), formatName(f), formatList([&](Format g) {
-                             return !isDepthFormat(g) && caps.renderableFormat[size_t(g)];
-                         })});
+                        {str(i), formatName(f), formatList([&](Format g) { return !isDepthFormat(g) && caps.renderableFormat[size_t(g)]; })});
     }
     if (d.depthFormat != Format::Undefined && (!knownFormat(d.depthFormat) || !isDepthFormat(d.depthFormat)))
         return fail(Error::PipelineDepthFormat, {formatName(d.depthFormat)});
@@ -136,27 +124,22 @@ Status graphicsPipelineShape(const GraphicsPipelineDesc& d, const DeviceCaps& ca
         const VertexAttribute& a = layout.attributes[i];
         const uint32_t size = vertexFormatBytes(a.format);
         if (size == 0) return fail(Error::VertexAttributeFormat, {str(i), str(uint32_t(a.format))});
-        if (a.location >= kMaxVertexAttributes)
-            return fail(Error::VertexAttributeLocation, {str(i), str(a.location), str(kMaxVertexAttributes - 1)});
+        if (a.location >= kMaxVertexAttributes) return fail(Error::VertexAttributeLocation, {str(i), str(a.location), str(kMaxVertexAttributes - 1)});
         for (size_t j = 0; j < i; ++j)
-            if (layout.attributes[j].location == a.location)
-                return fail(Error::VertexAttributeLocationTwice, {str(i), str(a.location), str(j)});
+            if (layout.attributes[j].location == a.location) return fail(Error::VertexAttributeLocationTwice, {str(i), str(a.location), str(j)});
         // 64-bit: offset 0xFFFFFFFC + 16 must not wrap to 12 and pass.
         if (uint64_t(a.offset) + size > layout.stride)
-            return fail(Error::VertexAttributeOffset, {str(i), str(a.offset), str(layout.stride >= size ? layout.stride - size : 0),
-                                                       str(size), str(layout.stride)});
+            return fail(Error::VertexAttributeOffset,
+                        {str(i), str(a.offset), str(layout.stride >= size ? layout.stride - size : 0), str(size), str(layout.stride)});
     }
     return Status::ok();
 }
 
 Status graphicsPipelineState(const GraphicsPipelineDesc& d, const DeviceCaps&) {
     if (uint32_t(d.cull) > uint32_t(CullMode::Front)) return fail(Error::PipelineCull, {str(uint32_t(d.cull))});
-    if (uint32_t(d.depth.compare) > uint32_t(CompareOp::Always))
-        return fail(Error::PipelineDepthCompare, {str(uint32_t(d.depth.compare))});
-    if (uint32_t(d.blend.src) > uint32_t(BlendFactor::OneMinusDstAlpha))
-        return fail(Error::PipelineBlendFactor, {"src", str(uint32_t(d.blend.src))});
-    if (uint32_t(d.blend.dst) > uint32_t(BlendFactor::OneMinusDstAlpha))
-        return fail(Error::PipelineBlendFactor, {"dst", str(uint32_t(d.blend.dst))});
+    if (uint32_t(d.depth.compare) > uint32_t(CompareOp::Always)) return fail(Error::PipelineDepthCompare, {str(uint32_t(d.depth.compare))});
+    if (uint32_t(d.blend.src) > uint32_t(BlendFactor::OneMinusDstAlpha)) return fail(Error::PipelineBlendFactor, {"src", str(uint32_t(d.blend.src))});
+    if (uint32_t(d.blend.dst) > uint32_t(BlendFactor::OneMinusDstAlpha)) return fail(Error::PipelineBlendFactor, {"dst", str(uint32_t(d.blend.dst))});
     if (d.blend.separateAlpha && uint32_t(d.blend.srcAlpha) > uint32_t(BlendFactor::OneMinusDstAlpha))
         return fail(Error::PipelineBlendFactor, {"srcAlpha", str(uint32_t(d.blend.srcAlpha))});
     if (d.blend.separateAlpha && uint32_t(d.blend.dstAlpha) > uint32_t(BlendFactor::OneMinusDstAlpha))
@@ -184,17 +167,16 @@ Result<PipelineInfo> computePipeline(const ComputePipelineDesc& desc, const Prog
 
 uint32_t vertexFormatBytes(VertexFormat f) {
     switch (f) {
-    case VertexFormat::Float2: return 8;
-    case VertexFormat::Float3: return 12;
-    case VertexFormat::Float4: return 16;
+        case VertexFormat::Float2: return 8;
+        case VertexFormat::Float3: return 12;
+        case VertexFormat::Float4: return 16;
     }
     return 0;
 }
 
 uint64_t vertexAttributeEnd(const VertexLayout& layout) {
     uint64_t end = 0;
-    for (const VertexAttribute& a : layout.attributes)
-        end = std::max(end, uint64_t(a.offset) + vertexFormatBytes(a.format));
+    for (const VertexAttribute& a : layout.attributes) end = std::max(end, uint64_t(a.offset) + vertexFormatBytes(a.format));
     return end;
 }
 
@@ -206,15 +188,12 @@ Status mipRange(const TextureDesc& d, uint32_t mip, std::string_view argument) {
 Status textureBytes(const TextureDesc& d, uint32_t mip, size_t bytes, std::string_view argument) {
     SFX_TRY(mipRange(d, mip, "mip"));
     const uint64_t want = mipLevelBytes(d, mip);
-    if (bytes != want)
-        return fail(Error::TextureBytes,
-                    {argument, str(bytes), str(want), str(mip), str(d.width), str(d.height), toString(d.format)});
+    if (bytes != want) return fail(Error::TextureBytes, {argument, str(bytes), str(want), str(mip), str(d.width), str(d.height), toString(d.format)});
     return Status::ok();
 }
 
 Status bufferRange(const BufferDesc& d, uint64_t offset, uint64_t bytes, std::string_view argument) {
-    if (bytes == 0 || offset > d.size || bytes > d.size - offset)
-        return fail(Error::BufferRange, {argument, str(offset), str(bytes), str(d.size)});
+    if (bytes == 0 || offset > d.size || bytes > d.size - offset) return fail(Error::BufferRange, {argument, str(offset), str(bytes), str(d.size)});
     return Status::ok();
 }
 
@@ -223,8 +202,6 @@ Status pointer(const void* p, std::string_view argument, std::string_view what) 
     return Status::ok();
 }
 
-uint64_t boundSize(const BufferBinding& bb, const BufferDesc& d) {
-    return bb.size ? bb.size : (bb.offset < d.size ? d.size - bb.offset : 0);
-}
+uint64_t boundSize(const BufferBinding& bb, const BufferDesc& d) { return bb.size ? bb.size : (bb.offset < d.size ? d.size - bb.offset : 0); }
 
 }  // namespace sfx::validation

@@ -80,10 +80,10 @@ Scratch& scratch() {
 
 const char* bindingSetField(ResourceKind k) {
     switch (k) {
-    case ResourceKind::UniformBuffer: return "uniformBuffers";
-    case ResourceKind::SampledTexture: return "textures";
-    case ResourceKind::StorageBuffer: return "storageBuffers";
-    case ResourceKind::StorageImage: return "storageImages";
+        case ResourceKind::UniformBuffer: return "uniformBuffers";
+        case ResourceKind::SampledTexture: return "textures";
+        case ResourceKind::StorageBuffer: return "storageBuffers";
+        case ResourceKind::StorageImage: return "storageImages";
     }
     return "?";
 }
@@ -97,9 +97,7 @@ std::string formatsList(const std::vector<Format>& formats) {
 // Binding against reflection: each binding given once, at a binding the program has, of its kind.
 class ReflectionMatch {
 public:
-    ReflectionMatch(const PipelineInfo& pipeline, const Arg& where) : pipeline_(pipeline), where_(where), given_(scratch().given) {
-        given_.clear();
-    }
+    ReflectionMatch(const PipelineInfo& pipeline, const Arg& where) : pipeline_(pipeline), where_(where), given_(scratch().given) { given_.clear(); }
 
     Result<const ShaderResource*> claim(uint32_t binding, ResourceKind kind, const Arg& argument) {
         for (const auto& [b, arg] : given_)
@@ -108,21 +106,20 @@ public:
         for (const ShaderResource& r : pipeline_.resources)
             if (r.binding == binding) {
                 if (r.kind != kind)
-                    return fail(Error::BindingKind, {argument.str(), str(binding), pipeline_.programName, toString(r.kind),
-                                                     r.name, bindingSetField(r.kind)});
+                    return fail(Error::BindingKind,
+                                {argument.str(), str(binding), pipeline_.programName, toString(r.kind), r.name, bindingSetField(r.kind)});
                 return &r;
             }
         std::string bindings;
-        for (const ShaderResource& r : pipeline_.resources)
-            bindings += (bindings.empty() ? "" : ", ") + str(r.binding) + " (" + r.name + ")";
+        for (const ShaderResource& r : pipeline_.resources) bindings += (bindings.empty() ? "" : ", ") + str(r.binding) + " (" + r.name + ")";
         return fail(Error::BindingUnknown, {argument.str(), str(binding), pipeline_.programName, bindings.empty() ? "none" : bindings});
     }
 
     Status allClaimed() const {
         for (const ShaderResource& r : pipeline_.resources)
             if (std::none_of(given_.begin(), given_.end(), [&](const auto& g) { return g.first == r.binding; }))
-                return fail(Error::BindingMissing, {where_.str(), bindingSetField(r.kind), str(r.binding), pipeline_.programName,
-                                                    toString(r.kind), r.name});
+                return fail(Error::BindingMissing,
+                            {where_.str(), bindingSetField(r.kind), str(r.binding), pipeline_.programName, toString(r.kind), r.name});
         return Status::ok();
     }
 
@@ -132,10 +129,9 @@ private:
     std::vector<std::pair<uint32_t, Arg>>& given_;
 };
 
-Status bufferBinding(const BufferBinding& bb, ResourceKind kind, const ShaderResource& block, const Arg& argument,
-                     const ObjectLookup& objects, const DeviceCaps& caps) {
-    Result<const BufferDesc*> found =
-        named(argument.then(".buffer"), [&](const std::string& name) { return objects.buffer(bb.buffer, name); });
+Status bufferBinding(const BufferBinding& bb, ResourceKind kind, const ShaderResource& block, const Arg& argument, const ObjectLookup& objects,
+                     const DeviceCaps& caps) {
+    Result<const BufferDesc*> found = named(argument.then(".buffer"), [&](const std::string& name) { return objects.buffer(bb.buffer, name); });
     if (!found) return found.status();
     const BufferDesc& buffer = *found.value();
     const bool uniform = kind == ResourceKind::UniformBuffer;
@@ -151,26 +147,24 @@ Status bufferBinding(const BufferBinding& bb, ResourceKind kind, const ShaderRes
                      uniform ? "caps.limits.minUniformBufferOffsetAlignment" : "caps.limits.minStorageBufferOffsetAlignment"});
     const uint64_t maxRange = uniform ? caps.limits.maxUniformBlockSize : caps.limits.maxStorageBufferSize;
     if (size > maxRange)
-        return fail(Error::BufferBindingMaxRange, {argument.str(), str(size), str(maxRange),
-                                                   uniform ? "caps.limits.maxUniformBlockSize" : "caps.limits.maxStorageBufferSize"});
+        return fail(Error::BufferBindingMaxRange,
+                    {argument.str(), str(size), str(maxRange), uniform ? "caps.limits.maxUniformBlockSize" : "caps.limits.maxStorageBufferSize"});
     if (block.blockSize > size) return fail(Error::BufferBindingBlockSize, {argument.str(), str(size), str(block.blockSize), block.name});
     return Status::ok();
 }
 
 // A BindingSet against the pipeline's reflection and the bound resources; appends its mip uses.
-Status bindings(const BindingSet& set, const PipelineInfo& pipeline, const Arg& where, const ObjectLookup& objects,
-                const DeviceCaps& caps, std::vector<MipUse>& uses) {
+Status bindings(const BindingSet& set, const PipelineInfo& pipeline, const Arg& where, const ObjectLookup& objects, const DeviceCaps& caps,
+                std::vector<MipUse>& uses) {
     ReflectionMatch reflection(pipeline, where);
     for (size_t i = 0; i < set.textures.size(); ++i) {
         const TextureBinding& tb = set.textures[i];
         const Arg arg = where.then(".textures", i);
         Result<const ShaderResource*> r = reflection.claim(tb.binding, ResourceKind::SampledTexture, arg);
         if (!r) return r.status();
-        Result<const TextureDesc*> t =
-            named(arg.then(".texture"), [&](const std::string& name) { return objects.texture(tb.texture, name); });
+        Result<const TextureDesc*> t = named(arg.then(".texture"), [&](const std::string& name) { return objects.texture(tb.texture, name); });
         if (!t) return t.status();
-        if (!tb.sampler.isNull())
-            SFX_TRY(named(arg.then(".sampler"), [&](const std::string& name) { return objects.sampler(tb.sampler, name); }));
+        if (!tb.sampler.isNull()) SFX_TRY(named(arg.then(".sampler"), [&](const std::string& name) { return objects.sampler(tb.sampler, name); }));
         const TextureDesc& desc = *t.value();
         if (!(desc.usage & kTextureSampled))
             return fail(Error::ResourceUsage, {arg.then(".texture").str(), textureUsageNames(desc.usage), "texture", "sampled"});
@@ -184,16 +178,15 @@ Status bindings(const BindingSet& set, const PipelineInfo& pipeline, const Arg& 
         const Arg arg = where.then(".storageImages", i);
         Result<const ShaderResource*> r = reflection.claim(ib.binding, ResourceKind::StorageImage, arg);
         if (!r) return r.status();
-        Result<const TextureDesc*> t =
-            named(arg.then(".texture"), [&](const std::string& name) { return objects.texture(ib.texture, name); });
+        Result<const TextureDesc*> t = named(arg.then(".texture"), [&](const std::string& name) { return objects.texture(ib.texture, name); });
         if (!t) return t.status();
         if (!(t.value()->usage & kTextureStorage))
             return fail(Error::ResourceUsage, {arg.then(".texture").str(), textureUsageNames(t.value()->usage), "texture", "storage"});
         SFX_TRY(named(arg.then(".mip"), [&](const std::string& name) { return mipRange(*t.value(), ib.mip, name); }));
         uses.push_back({ib.texture, ib.mip, 1, "a storage image", arg});
     }
-    const std::pair<const std::vector<BufferBinding>*, ResourceKind> lists[] = {
-        {&set.uniformBuffers, ResourceKind::UniformBuffer}, {&set.storageBuffers, ResourceKind::StorageBuffer}};
+    const std::pair<const std::vector<BufferBinding>*, ResourceKind> lists[] = {{&set.uniformBuffers, ResourceKind::UniformBuffer},
+                                                                                {&set.storageBuffers, ResourceKind::StorageBuffer}};
     for (const auto& [list, kind] : lists)
         for (size_t i = 0; i < list->size(); ++i) {
             const BufferBinding& bb = (*list)[i];
@@ -214,8 +207,8 @@ Status noFeedbackLoop(const RenderPassDesc& pass, const BindingSet& set, const A
         const Arg arg = where.then(".textures", i);
         for (size_t c = 0; c < pass.colors.size(); ++c)
             if (pass.colors[c].texture == tb.texture && inRange(pass.colors[c].mip))
-                return fail(Error::FeedbackLoop, {arg.str(), str(tb.baseMip), str(tb.mipCount), str(pass.colors[c].mip),
-                                                  "RenderPassDesc.colors[" + str(c) + "]"});
+                return fail(Error::FeedbackLoop,
+                            {arg.str(), str(tb.baseMip), str(tb.mipCount), str(pass.colors[c].mip), "RenderPassDesc.colors[" + str(c) + "]"});
         if (!pass.depth.texture.isNull() && pass.depth.texture == tb.texture && inRange(0))
             return fail(Error::FeedbackLoop, {arg.str(), str(tb.baseMip), str(tb.mipCount), "0", "RenderPassDesc.depth"});
     }
@@ -237,9 +230,8 @@ Status noMipUsedTwoWays(const std::vector<MipUse>& uses) {
     return Status::ok();
 }
 
-Status attachment(TextureHandle texture, uint32_t mip, LoadOp load, const Arg& arg, bool depth, size_t index,
-                  const ObjectLookup& objects, uint32_t& width, uint32_t& height, std::vector<Format>& colorFormats,
-                  Format& depthFormat, std::vector<MipUse>& uses) {
+Status attachment(TextureHandle texture, uint32_t mip, LoadOp load, const Arg& arg, bool depth, size_t index, const ObjectLookup& objects,
+                  uint32_t& width, uint32_t& height, std::vector<Format>& colorFormats, Format& depthFormat, std::vector<MipUse>& uses) {
     Result<const TextureDesc*> t = named(arg.then(".texture"), [&](const std::string& name) { return objects.texture(texture, name); });
     if (!t) return t.status();
     const TextureDesc& d = *t.value();
@@ -271,16 +263,16 @@ Status drawBuffers(const DrawDesc& draw, const PipelineInfo& pipeline, const Arg
         if (!draw.vertexBuffer.isNull()) return fail(Error::DrawVertexBufferUnused, {arg.str()});
     } else {
         if (draw.vertexBuffer.isNull()) return fail(Error::DrawVertexBufferMissing, {arg.str()});
-        Result<const BufferDesc*> vb =
-            named(arg.then(".vertexBuffer"), [&](const std::string& name) { return objects.buffer(draw.vertexBuffer, name); });
+        Result<const BufferDesc*> vb = named(arg.then(".vertexBuffer"),
+                                             [&](const std::string& name) { return objects.buffer(draw.vertexBuffer, name); });
         if (!vb) return vb.status();
         vertexBuffer = vb.value();
         if (!(vertexBuffer->usage & kBufferVertex))
             return fail(Error::ResourceUsage, {arg.then(".vertexBuffer").str(), bufferUsageNames(vertexBuffer->usage), "buffer", "vertex"});
     }
     if (!draw.indexBuffer.isNull()) {
-        Result<const BufferDesc*> ib =
-            named(arg.then(".indexBuffer"), [&](const std::string& name) { return objects.buffer(draw.indexBuffer, name); });
+        Result<const BufferDesc*> ib = named(arg.then(".indexBuffer"),
+                                             [&](const std::string& name) { return objects.buffer(draw.indexBuffer, name); });
         if (!ib) return ib.status();
         const BufferDesc& index = *ib.value();
         if (!(index.usage & kBufferIndex))
@@ -303,8 +295,7 @@ Status drawBuffers(const DrawDesc& draw, const PipelineInfo& pipeline, const Arg
 
 }  // namespace
 
-Status renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, const ObjectLookup& objects,
-                  const DeviceCaps& caps) {
+Status renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, const ObjectLookup& objects, const DeviceCaps& caps) {
     if (pass.colors.empty() && pass.depth.texture.isNull()) return fail(Error::PassNoAttachments, {});
     if (pass.colors.size() > caps.limits.maxColorAttachments)
         return fail(Error::PassColorCount, {str(pass.colors.size()), str(caps.limits.maxColorAttachments)});
@@ -317,24 +308,23 @@ Status renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, c
     Format depthFormat = Format::Undefined;
     for (size_t i = 0; i < pass.colors.size(); ++i) {
         const ColorAttachment& c = pass.colors[i];
-        SFX_TRY(attachment(c.texture, c.mip, c.load, Arg("RenderPassDesc.colors", i), false, i, objects, width, height,
-                           colorFormats, depthFormat, uses));
+        SFX_TRY(
+            attachment(c.texture, c.mip, c.load, Arg("RenderPassDesc.colors", i), false, i, objects, width, height, colorFormats, depthFormat, uses));
     }
     if (!pass.depth.texture.isNull())
-        SFX_TRY(attachment(pass.depth.texture, 0, pass.depth.load, Arg("RenderPassDesc.depth"), true, 0, objects, width, height,
-                           colorFormats, depthFormat, uses));
+        SFX_TRY(attachment(pass.depth.texture, 0, pass.depth.load, Arg("RenderPassDesc.depth"), true, 0, objects, width, height, colorFormats,
+                           depthFormat, uses));
     for (size_t i = 0; i < draws.size(); ++i) {
         const DrawDesc& d = draws[i];
         const Arg arg = draws.size() == 1 ? Arg("DrawDesc") : Arg("DrawDesc", i);
-        Result<const PipelineInfo*> found =
-            named(arg.then(".pipeline"), [&](const std::string& name) { return objects.pipeline(d.pipeline, name); });
+        Result<const PipelineInfo*> found = named(arg.then(".pipeline"), [&](const std::string& name) { return objects.pipeline(d.pipeline, name); });
         if (!found) return found.status();
         const PipelineInfo& pl = *found.value();
         if (pl.compute) return fail(Error::DrawPipelineCompute, {arg.then(".pipeline").str(), pl.programName});
-        if (!std::equal(pl.colorFormats.begin(), pl.colorFormats.end(), colorFormats.begin(), colorFormats.end()) ||
-            pl.depthFormat != depthFormat)
-            return fail(Error::DrawPipelineFormats, {arg.then(".pipeline").str(), formatsList(pl.colorFormats), formatName(pl.depthFormat),
-                                                     formatsList(colorFormats), formatName(depthFormat)});
+        if (!std::equal(pl.colorFormats.begin(), pl.colorFormats.end(), colorFormats.begin(), colorFormats.end()) || pl.depthFormat != depthFormat)
+            return fail(Error::DrawPipelineFormats,
+                        {arg.then(".pipeline").str(), formatsList(pl.colorFormats), formatName(pl.depthFormat), formatsList(colorFormats),
+                         formatName(depthFormat)});
         const Arg bindingsArg = arg.then(".bindings");
         SFX_TRY(bindings(d.bindings, pl, bindingsArg, objects, caps, uses));
         SFX_TRY(noFeedbackLoop(pass, d.bindings, bindingsArg));
@@ -350,8 +340,8 @@ Status dispatch(const DispatchDesc& d, const ObjectLookup& objects, const Device
         const uint32_t count = groups[axis].second, limit = caps.limits.maxComputeWorkGroupCount[axis];
         if (count == 0 || count > limit) return fail(Error::DispatchGroups, {groups[axis].first, str(count), str(limit)});
     }
-    Result<const PipelineInfo*> found =
-        named(Arg("DispatchDesc.pipeline"), [&](const std::string& name) { return objects.pipeline(d.pipeline, name); });
+    Result<const PipelineInfo*> found = named(Arg("DispatchDesc.pipeline"),
+                                              [&](const std::string& name) { return objects.pipeline(d.pipeline, name); });
     if (!found) return found.status();
     const PipelineInfo& pl = *found.value();
     if (!pl.compute) return fail(Error::DispatchPipelineGraphics, {pl.programName});

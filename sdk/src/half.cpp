@@ -11,8 +11,8 @@ uint16_t floatToHalf(float value) {
     const uint32_t sign = (x >> 16) & 0x8000u;
     const uint32_t absx = x & 0x7fffffffu;
     if (absx >= 0x7f800000u) return uint16_t(sign | 0x7c00u | (absx > 0x7f800000u ? 0x200u : 0u));  // inf / nan
-    if (absx >= 0x477ff000u) return uint16_t(sign | 0x7c00u);  // rounds past the largest half
-    if (absx < 0x38800000u) {                                   // half subnormal or zero
+    if (absx >= 0x477ff000u) return uint16_t(sign | 0x7c00u);                                       // rounds past the largest half
+    if (absx < 0x38800000u) {                                                                       // half subnormal or zero
         if (absx < 0x33000000u) return uint16_t(sign);
         const uint32_t mant = (absx & 0x7fffffu) | 0x800000u;
         const uint32_t shift = 126u - (absx >> 23);  // 14..24

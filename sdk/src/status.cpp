@@ -4,19 +4,19 @@ namespace sfx {
 
 const char* toString(StatusCode code) {
     switch (code) {
-    case StatusCode::Ok: return "Ok";
-    case StatusCode::InvalidArgument: return "InvalidArgument";
-    case StatusCode::UnsupportedFormat: return "UnsupportedFormat";
-    case StatusCode::UnsupportedFeature: return "UnsupportedFeature";
-    case StatusCode::UnsupportedTier: return "UnsupportedTier";
-    case StatusCode::InvalidHandle: return "InvalidHandle";
-    case StatusCode::StaleHandle: return "StaleHandle";
-    case StatusCode::ForeignHandle: return "ForeignHandle";
-    case StatusCode::ShaderError: return "ShaderError";
-    case StatusCode::BackendUnavailable: return "BackendUnavailable";
-    case StatusCode::DeviceError: return "DeviceError";
-    case StatusCode::FileError: return "FileError";
-    case StatusCode::OverBudget: return "OverBudget";
+        case StatusCode::Ok: return "Ok";
+        case StatusCode::InvalidArgument: return "InvalidArgument";
+        case StatusCode::UnsupportedFormat: return "UnsupportedFormat";
+        case StatusCode::UnsupportedFeature: return "UnsupportedFeature";
+        case StatusCode::UnsupportedTier: return "UnsupportedTier";
+        case StatusCode::InvalidHandle: return "InvalidHandle";
+        case StatusCode::StaleHandle: return "StaleHandle";
+        case StatusCode::ForeignHandle: return "ForeignHandle";
+        case StatusCode::ShaderError: return "ShaderError";
+        case StatusCode::BackendUnavailable: return "BackendUnavailable";
+        case StatusCode::DeviceError: return "DeviceError";
+        case StatusCode::FileError: return "FileError";
+        case StatusCode::OverBudget: return "OverBudget";
     }
     return "Unknown";
 }

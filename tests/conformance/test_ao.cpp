@@ -82,8 +82,8 @@ AgainstReference compareWithReference(const Grid& gpu, const Grid& ref) {
 }
 // The four bounds, with the figures in the message.
 void checkWithinTolerance(const AgainstReference& r, size_t pixels) {
-    INFO("rmse " << r.rmse << " worst pixel " << r.worst << " pixels off " << r.off << " mean signed error over " << r.occluded
-                 << " occluded pixels " << r.occludedBias);
+    INFO("rmse " << r.rmse << " worst pixel " << r.worst << " pixels off " << r.off << " mean signed error over " << r.occluded << " occluded pixels "
+                 << r.occludedBias);
     CHECK(r.rmse < tolerance().rmse);
     CHECK(double(r.off) < 0.01 * double(pixels));
     CHECK(r.worst <= tolerance().worst);
@@ -133,35 +133,34 @@ TEST_CASE("ao: each technique matches its CPU reference, at full and half resolu
     double worstSeen = 0, worstBias = 0;
     std::map<AoTechnique, std::pair<double, double>> perTechnique;  // worst pixel, summed mean |error|
     for (AoResolution resolution : {AoResolution::Full, AoResolution::Half})
-    for (AoTechnique t : kTechniques)
-        for (bool blur : {false, true})
-            for (bool gbuffer : {false, true})
-                for (auto make : {&tools::cornerScene, &tools::sphereOnPlaneScene, &tools::columnsScene}) {
-                    // Even sizes: an odd width puts a pixel centre exactly on the corner's crease, where the
-                    // normal rule's tie (both neighbours equally close) falls either way in float.
-                    const bool half = resolution == AoResolution::Half;
-                    const tools::AnalyticScene scene = make(96, 64, 1.0);
-                    AoSettings s = settingsFor(t);
-                    s.blur = blur;
-                    s.resolution = resolution;
-                    s.normals = gbuffer ? AoNormals::FromTexture : AoNormals::FromDepth;
-                    INFO(test::label() << " " << toString(t) << " " << scene.name << " " << toString(resolution) << (blur ? " blur" : "")
-                                       << (gbuffer ? " gbuffer-normals" : ""));
-                    const GpuAo gpu = runAo(scene, s);
-                    REQUIRE(gpu.config.halfResolution == half);
-                    const Grid ref = reference::ambientVisibility(scene.aoInput(gbuffer), gpu.config);
-                    const AgainstReference r = compareWithReference(gpu.visibility, ref);
-                    worstSeen = std::max(worstSeen, r.worst);
-                    worstBias = std::max(worstBias, std::abs(r.occludedBias));
-                    perTechnique[t].first = std::max(perTechnique[t].first, r.worst);
-                    perTechnique[t].second += r.meanAbs / 24.0;  // 2 resolutions x 2 blurs x 2 normals x 3 scenes
-                    checkWithinTolerance(r, ref.values.size());
-                }
-    for (const auto& [t, figures] : perTechnique)
-        test::addPortabilityRow(std::string("AO ") + toString(t), figures.first, figures.second);
+        for (AoTechnique t : kTechniques)
+            for (bool blur : {false, true})
+                for (bool gbuffer : {false, true})
+                    for (auto make : {&tools::cornerScene, &tools::sphereOnPlaneScene, &tools::columnsScene}) {
+                        // Even sizes: an odd width puts a pixel centre exactly on the corner's crease, where the
+                        // normal rule's tie (both neighbours equally close) falls either way in float.
+                        const bool half = resolution == AoResolution::Half;
+                        const tools::AnalyticScene scene = make(96, 64, 1.0);
+                        AoSettings s = settingsFor(t);
+                        s.blur = blur;
+                        s.resolution = resolution;
+                        s.normals = gbuffer ? AoNormals::FromTexture : AoNormals::FromDepth;
+                        INFO(test::label() << " " << toString(t) << " " << scene.name << " " << toString(resolution) << (blur ? " blur" : "")
+                                           << (gbuffer ? " gbuffer-normals" : ""));
+                        const GpuAo gpu = runAo(scene, s);
+                        REQUIRE(gpu.config.halfResolution == half);
+                        const Grid ref = reference::ambientVisibility(scene.aoInput(gbuffer), gpu.config);
+                        const AgainstReference r = compareWithReference(gpu.visibility, ref);
+                        worstSeen = std::max(worstSeen, r.worst);
+                        worstBias = std::max(worstBias, std::abs(r.occludedBias));
+                        perTechnique[t].first = std::max(perTechnique[t].first, r.worst);
+                        perTechnique[t].second += r.meanAbs / 24.0;  // 2 resolutions x 2 blurs x 2 normals x 3 scenes
+                        checkWithinTolerance(r, ref.values.size());
+                    }
+    for (const auto& [t, figures] : perTechnique) test::addPortabilityRow(std::string("AO ") + toString(t), figures.first, figures.second);
     // The measured worst values, for docs/ao.md and docs/conformance.md beside the bounds.
-    WARN(test::label() << ": worst pixel " << worstSeen << " (bound " << worstTol << "), worst |mean signed error| "
-                       << worstBias << " (bound " << biasTol << ")");
+    WARN(test::label() << ": worst pixel " << worstSeen << " (bound " << worstTol << "), worst |mean signed error| " << worstBias << " (bound "
+                       << biasTol << ")");
 }
 
 TEST_CASE("ao: at 360 rows crease's strided diamond and Scalable's scaled clamp match the reference", "[ao]") {
@@ -222,8 +221,8 @@ TEST_CASE("ao: non-finite and out-of-range depth neighbours follow the reference
     // texels: the shader and the reference both read them as sky (sfx_shared_ao.h), so the derived
     // normals of their neighbours, and the obscurance there, agree. Those pixels themselves are sky.
     tools::AnalyticScene scene = tools::cornerScene(64, 48, 1.0);
-    const double bad[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
-                          -std::numeric_limits<double>::infinity(), 0.0, -1.0, 1e30};
+    const double bad[] = {
+        std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), 0.0, -1.0, 1e30};
     std::vector<std::pair<uint32_t, uint32_t>> poked;
     for (uint32_t k = 0; k < 24; ++k) {
         const uint32_t x = 5 + (k % 6) * 9, y = 6 + (k / 6) * 10;
@@ -250,9 +249,8 @@ TEST_CASE("ao: non-finite and out-of-range depth neighbours follow the reference
                 const uint32_t x = uint32_t(int(px) + dx), y = uint32_t(int(py) + dy);
                 const double e = std::abs(gpu.visibility.at(x, y) - ref.at(x, y));
                 if (e > worstNeighbour)
-                    worstAt = "(" + std::to_string(x) + ", " + std::to_string(y) + ") next to depth " +
-                              std::to_string(scene.linearDepth.at(px, py)) + ": gpu " + std::to_string(gpu.visibility.at(x, y)) +
-                              " reference " + std::to_string(ref.at(x, y));
+                    worstAt = "(" + std::to_string(x) + ", " + std::to_string(y) + ") next to depth " + std::to_string(scene.linearDepth.at(px, py)) +
+                        ": gpu " + std::to_string(gpu.visibility.at(x, y)) + " reference " + std::to_string(ref.at(x, y));
                 worstNeighbour = std::max(worstNeighbour, e);
             }
         }
@@ -303,14 +301,13 @@ TEST_CASE("ao: analytic properties hold on the GPU", "[ao]") {
         const GpuAo plane = runAo(tools::facingPlaneScene(96, 64), settingsFor(t));
         for (double v : plane.visibility.values) REQUIRE(v > 0.99);
         const GpuAo corner = runAo(tools::cornerScene(160, 120), settingsFor(t));
-        const auto bins = tools::occlusionBins(tools::cornerScene(160, 120), corner.visibility, 1.0, creaseEdges,
-                                              tools::onCornerPlaneA, tools::distanceToCrease);
+        const auto bins = tools::occlusionBins(tools::cornerScene(160, 120), corner.visibility, 1.0, creaseEdges, tools::onCornerPlaneA,
+                                               tools::distanceToCrease);
         for (size_t i = 0; i + 1 < bins.size(); ++i) CHECK(bins[i] >= bins[i + 1] - 0.025);
         CHECK(bins.front() > bins.back() + 0.01);
         const GpuAo scaled = runAo(tools::cornerScene(160, 120, 10.0), settingsFor(t, 10.0));
         double meanAbs = 0;
-        for (size_t i = 0; i < scaled.visibility.values.size(); ++i)
-            meanAbs += std::abs(scaled.visibility.values[i] - corner.visibility.values[i]);
+        for (size_t i = 0; i < scaled.visibility.values.size(); ++i) meanAbs += std::abs(scaled.visibility.values[i] - corner.visibility.values[i]);
         CHECK(meanAbs / double(scaled.visibility.values.size()) < 0.005);
     }
 }

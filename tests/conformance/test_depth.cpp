@@ -6,20 +6,18 @@
 #include <cmath>
 #include <limits>
 
+#include "depth_conventions.hpp"
 #include "scene.hpp"
 #include "sfx/depth.hpp"
-#include "sfx/tiers.hpp"
 #include "sfx/null_device.hpp"
 #include "sfx/reference/depth_reference.hpp"
+#include "sfx/tiers.hpp"
 #include "sfx_shared.h"
-#include "depth_conventions.hpp"
 #include "test_device.hpp"
 
 using namespace sfx;
 
 namespace {
-
-
 
 // The GPU evaluates z = B / (d*s + c) in 32-bit float from the same float d the reference
 // reads. Its relative error is bounded by the conditioning of the denominator:
@@ -113,8 +111,7 @@ TEST_CASE("linear depth matches the reference for every depth convention", "[dep
         for (uint32_t y = 0; y < H; ++y)
             for (uint32_t x = 0; x < W; ++x) {
                 INFO("texel (" << x << ", " << y << ")");
-                worstRatio = std::max(worstRatio, requireLinearMatches(stored.at(x, y), rec, expected.at(x, y),
-                                                                       got[size_t(y) * W + x]));
+                worstRatio = std::max(worstRatio, requireLinearMatches(stored.at(x, y), rec, expected.at(x, y), got[size_t(y) * W + x]));
             }
         // Print how close to the bound the device came, so the tolerance stays honest.
         WARN(test::label() << " " << c.name << ": worst error / tolerance = " << worstRatio);
@@ -215,8 +212,7 @@ TEST_CASE("LinearDepth: bad input is a named error", "[depth][bad-input]") {
     Device& device = test::device();
     const Tier tier = test::tier();
     CHECK(LinearDepth::create(device, {0, 16, tier, 1}).status().code() == StatusCode::InvalidArgument);
-    CHECK(LinearDepth::create(device, {16, 16, tier, 0}).status().message().find("LinearDepthDesc.mipLevels") !=
-          std::string::npos);
+    CHECK(LinearDepth::create(device, {16, 16, tier, 0}).status().message().find("LinearDepthDesc.mipLevels") != std::string::npos);
     CHECK(LinearDepth::create(device, {16, 16, tier, 99}).status().code() == StatusCode::InvalidArgument);
     auto depth = LinearDepth::create(device, {16, 16, tier, 1});
     REQUIRE(depth.isOk());

@@ -42,8 +42,8 @@ void addRow(const std::string& effect, const std::string& input, const std::stri
     static bool first = true;
     std::ofstream out(test::outputDir() + "/extremes_rows.md", first ? std::ios::trunc : std::ios::app);
     first = false;
-    out << "| " << effect << " | " << input << " | " << rule << " | " << toString(test::backendConfig()) << " | "
-        << toString(test::tier()) << " | " << (passed ? "finite, matches reference" : "FAILED") << " |\n";
+    out << "| " << effect << " | " << input << " | " << rule << " | " << toString(test::backendConfig()) << " | " << toString(test::tier()) << " | "
+        << (passed ? "finite, matches reference" : "FAILED") << " |\n";
 }
 
 bool drawsNothing() { return test::device().caps().backend == BackendKind::Null; }
@@ -87,8 +87,9 @@ bool aoAgreesAround(const Grid& gpu, const Grid& ref, const std::vector<std::pai
 
 TEST_CASE("extremes: hostile linear depth is sky in AO", "[extremes][ao]") {
     if (drawsNothing()) SFX_SKIP("the null backend draws nothing: GPU results are not compared on " << test::label());
-    const Hostile values[] = {{"NaN", kNaN}, {"+inf", kInf}, {"-inf", -kInf}, {"denormal", kDenormal}, {"0", 0.0f},
-                              {"-float max", -kFloatMax}, {"65504", kHalfMax}, {"float max", kFloatMax}};
+    const Hostile values[] = {
+        {"NaN", kNaN},       {"+inf", kInf},          {"-inf", -kInf}, {"denormal", kDenormal}, {"0", 0.0f}, {"-float max", -kFloatMax},
+        {"65504", kHalfMax}, {"float max", kFloatMax}};
     tools::AnalyticScene scene = tools::cornerScene(48, 36, 1.0);
     const auto sites = pokeSites(std::size(values), 7);
     for (size_t k = 0; k < sites.size(); ++k) scene.linearDepth.at(sites[k].first, sites[k].second) = values[k % std::size(values)].value;
@@ -158,8 +159,9 @@ TEST_CASE("extremes: hostile hardware depth linearises to sky", "[extremes][dept
     pd.aspect = double(W) / H;
     const CameraProjection cam = makePerspective(pd).value();
     const DepthReconstruction rec = makeDepthReconstruction(cam, W, H).value();
-    const Hostile values[] = {{"NaN", kNaN}, {"+inf", kInf}, {"-inf", -kInf}, {"-1", -1.0f}, {"2", 2.0f},
-                              {"float max", kFloatMax}, {"denormal", kDenormal}, {"0 (near plane)", 0.0f}, {"1 (far plane)", 1.0f}};
+    const Hostile values[] = {
+        {"NaN", kNaN},           {"+inf", kInf},           {"-inf", -kInf},        {"-1", -1.0f}, {"2", 2.0f}, {"float max", kFloatMax},
+        {"denormal", kDenormal}, {"0 (near plane)", 0.0f}, {"1 (far plane)", 1.0f}};
     struct Source {
         Format format;
         const char* name;
@@ -300,8 +302,8 @@ TEST_CASE("extremes: hostile velocities are still or clamped in their direction"
 TEST_CASE("extremes: hostile colour is not spread to its neighbours", "[extremes][motion_blur]") {
     if (drawsNothing()) SFX_SKIP("the null backend draws nothing: GPU results are not compared on " << test::label());
     const char* dropped = "left out of gathers; reads 0 itself";
-    const Hostile values[] = {{"NaN", kNaN}, {"+inf", kInf}, {"-inf", -kInf}, {"65504", kHalfMax}, {"-65504", -kHalfMax},
-                              {"half denormal", float(std::ldexp(1.0, -24))}};
+    const Hostile values[] = {{"NaN", kNaN},       {"+inf", kInf},        {"-inf", -kInf},
+                              {"65504", kHalfMax}, {"-65504", -kHalfMax}, {"half denormal", float(std::ldexp(1.0, -24))}};
     MotionBlurCase c = motionBlurBase(kMbWidth, kMbHeight);
     const auto sites = pokeSites(std::size(values), kMbSpacing);
     for (size_t k = 0; k < sites.size(); ++k) {

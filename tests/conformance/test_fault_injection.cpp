@@ -34,9 +34,8 @@ LiveCounts liveCounts(Device& inner) {
     // Vulkan frees destroyed objects once the submit that may use them is done: flush first.
     (void)inner.flush();
     const DeviceStats s = inner.stats();
-    return {s.textures.live,          s.buffers.live,    s.samplers.live,     s.programs.live,
-            s.pipelines.live,         s.timers.live,     s.memoryAllocations.live,
-            s.imageViews.live,        s.framebuffers.live, s.deviceMemoryBytes};
+    return {s.textures.live, s.buffers.live,           s.samplers.live,   s.programs.live,     s.pipelines.live,
+            s.timers.live,   s.memoryAllocations.live, s.imageViews.live, s.framebuffers.live, s.deviceMemoryBytes};
 }
 
 Status readAll(Device& d, TextureHandle t, std::vector<uint8_t>& out) {
@@ -68,8 +67,8 @@ void checkEveryFault(const std::string& what, const Attempt& attempt) {
     const uint64_t creations = fd.creations(), submits = fd.submits(), calls = fd.calls();
     REQUIRE(creations > 0);
     REQUIRE(submits > 0);
-    std::printf("fault injection %s %s: %llu creations, %llu submits, %llu calls\n", test::label().c_str(),
-                what.c_str(), (unsigned long long)creations, (unsigned long long)submits, (unsigned long long)calls);
+    std::printf("fault injection %s %s: %llu creations, %llu submits, %llu calls\n", test::label().c_str(), what.c_str(),
+                (unsigned long long)creations, (unsigned long long)submits, (unsigned long long)calls);
     for (Kind kind : {Kind::Creation, Kind::Submit, Kind::Loss}) {
         const uint64_t n = kind == Kind::Creation ? creations : kind == Kind::Submit ? submits : calls;
         for (uint64_t k = 1; k <= n; ++k) {
@@ -86,14 +85,12 @@ void checkEveryFault(const std::string& what, const Attempt& attempt) {
             CHECK(s.code() == StatusCode::DeviceError);
             CHECK(s.message().find("injected fault") != std::string::npos);
             const LiveCounts after = liveCounts(inner);
-            INFO("live textures " << before.textures << " -> " << after.textures << ", buffers " << before.buffers
-                                  << " -> " << after.buffers << ", samplers " << before.samplers << " -> "
-                                  << after.samplers << ", programs " << before.programs << " -> " << after.programs
-                                  << ", pipelines " << before.pipelines << " -> " << after.pipelines << ", timers "
-                                  << before.timers << " -> " << after.timers << ", memory " << before.memory << " -> "
-                                  << after.memory << ", views " << before.views << " -> " << after.views
-                                  << ", framebuffers " << before.framebuffers << " -> " << after.framebuffers
-                                  << ", bytes " << before.bytes << " -> " << after.bytes);
+            INFO("live textures " << before.textures << " -> " << after.textures << ", buffers " << before.buffers << " -> " << after.buffers
+                                  << ", samplers " << before.samplers << " -> " << after.samplers << ", programs " << before.programs << " -> "
+                                  << after.programs << ", pipelines " << before.pipelines << " -> " << after.pipelines << ", timers " << before.timers
+                                  << " -> " << after.timers << ", memory " << before.memory << " -> " << after.memory << ", views " << before.views
+                                  << " -> " << after.views << ", framebuffers " << before.framebuffers << " -> " << after.framebuffers << ", bytes "
+                                  << before.bytes << " -> " << after.bytes);
             CHECK(after == before);
             // The fault is gone: the same attempt works and gives the same output.
             SFX_REQUIRE_OK(attempt(fd, got));
@@ -129,8 +126,8 @@ TEST_CASE("fault injection: AO of each technique fails cleanly at every creation
         AoTechnique technique;
         bool profiling;  // per-pass timers: the timer creations are faulted too
     };
-    for (Variant v : {Variant{AoTechnique::Alchemy, false}, Variant{AoTechnique::Scalable, false},
-                      Variant{AoTechnique::Crease, false}, Variant{AoTechnique::Scalable, true}}) {
+    for (Variant v : {Variant{AoTechnique::Alchemy, false}, Variant{AoTechnique::Scalable, false}, Variant{AoTechnique::Crease, false},
+                      Variant{AoTechnique::Scalable, true}}) {
         const AoSettings settings = test::aoTestSettings(v.technique);
         // Hardware depth in the desc: the linearisation pass (and on the high tier the MIP) runs too.
         checkEveryFault(std::string("ao ") + toString(v.technique) + (v.profiling ? " profiled" : ""),
@@ -209,10 +206,9 @@ TEST_CASE("fault injection: transparency fails cleanly at every creation, submit
     Device& inner = test::device();
     std::vector<uint16_t> color(size_t(kW) * kH * 4, floatToHalf(0.5f));
     std::vector<float> depth(size_t(kW) * kH, 1.0f);
-    HostTexture opaque(inner, {kW, kH, 1, Format::RGBA16F, kTextureSampled | kTextureRenderTarget, "fault-opaque"},
-                       color.data(), color.size() * 2);
-    HostTexture opaqueDepth(inner, {kW, kH, 1, Format::D32F, kTextureSampled | kTextureRenderTarget, "fault-opaque-depth"},
-                            depth.data(), depth.size() * 4);
+    HostTexture opaque(inner, {kW, kH, 1, Format::RGBA16F, kTextureSampled | kTextureRenderTarget, "fault-opaque"}, color.data(), color.size() * 2);
+    HostTexture opaqueDepth(inner, {kW, kH, 1, Format::D32F, kTextureSampled | kTextureRenderTarget, "fault-opaque-depth"}, depth.data(),
+                            depth.size() * 4);
     const float c[6][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
     std::vector<TransparentVertex> quad;
     for (const auto& p : c) quad.push_back({{p[0] * 0.8f, p[1] * 0.8f, 0.0f}, {0.0f, 0.0f, 1.0f}});

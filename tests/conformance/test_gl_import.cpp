@@ -22,9 +22,9 @@
 #include <EGL/egl.h>
 #include <GL/osmesa.h>
 
+#include "effect_runs.hpp"
 #include "sfx/gl_device.hpp"
 #include "sfx/half.hpp"
-#include "effect_runs.hpp"
 #endif
 
 #ifdef SFX_TEST_GL_IMPORT
@@ -53,8 +53,7 @@ struct HostGl {
         isTexture = reinterpret_cast<decltype(isTexture)>(loader("glIsTexture"));
     }
     // A GL_TEXTURE_2D with one level of immutable storage, filled from `data` when given.
-    uint32_t texture(uint32_t internalFormat, uint32_t w, uint32_t h, uint32_t format = 0, uint32_t type = 0,
-                     const void* data = nullptr) {
+    uint32_t texture(uint32_t internalFormat, uint32_t w, uint32_t h, uint32_t format = 0, uint32_t type = 0, const void* data = nullptr) {
         uint32_t name = 0;
         genTextures(1, &name);
         bindTexture(0x0DE1, name);
@@ -94,8 +93,7 @@ TestContext currentTestContext(Device& host) {
     SFX_REQUIRE_OK(host.flush());  // the test device's context is now current
     TestContext c;
     c.osmesa = test::backendConfig().platform == "osmesa";
-    c.loader = c.osmesa ? reinterpret_cast<gl::GetProcAddressFn>(&OSMesaGetProcAddress)
-                        : reinterpret_cast<gl::GetProcAddressFn>(&eglGetProcAddress);
+    c.loader = c.osmesa ? reinterpret_cast<gl::GetProcAddressFn>(&OSMesaGetProcAddress) : reinterpret_cast<gl::GetProcAddressFn>(&eglGetProcAddress);
     c.api = host.caps().backend == BackendKind::GLES ? gl::Api::GLES : gl::Api::DesktopGL;
     return c;
 }
@@ -159,8 +157,7 @@ TEST_CASE("gl import: AO reads a host depth texture and writes a host texture", 
     CHECK(native->name == outName);
     CHECK(native->internalFormat == outInternal);
 
-    Result<std::unique_ptr<AmbientObscurance>> ao =
-        AmbientObscurance::create(d, {w, h, test::tierProfile(), AoSettings{}, DepthKind::Linear});
+    Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(d, {w, h, test::tierProfile(), AoSettings{}, DepthKind::Linear});
     INFO(ao.status().toString());
     REQUIRE(ao.isOk());
     AoInputs in;
@@ -224,7 +221,7 @@ TEST_CASE("gl import: AO reads a host depth texture and writes a host texture", 
     REQUIRE(again.isOk());
     CHECK(visibility(d, again.value(), outFormat, w, h) == imported);
     CHECK(d.takeValidationMessages().empty());
-    played.sdk.reset();  // with `again` still imported
+    played.sdk.reset();                // with `again` still imported
     CHECK(hostGl.isTexture(outName));  // nor does the device's teardown delete it
     hostGl.deleteTextures(1, &depthName);
     hostGl.deleteTextures(1, &outName);
@@ -258,24 +255,24 @@ TEST_CASE("gl import: motion blur writes a host texture, bit for bit as output()
     INFO(mb.status().toString());
     REQUIRE(mb.isOk());
     {  // the inputs live on the wrapped device: released before it is
-    test::MotionBlurGpuInputs in(d, f.color, f.depth, &f.velocity);
-    MotionBlurSettings s;
-    s.maxRadiusPx = 7;
-    s.referenceRows = 0;
-    MotionBlurInputs inputs{in.color, {in.depth, DepthKind::Linear, test::motionBlurTestCamera(w, h)}, in.velocity, {}, {}};
-    const size_t bytes = size_t(w) * h * 8;
-    auto read = [&](TextureHandle t) {
-        std::vector<uint16_t> texels(bytes / 2);
-        SFX_REQUIRE_OK(d.readTexture(t, 0, texels.data(), bytes));
-        return texels;
-    };
-    SFX_REQUIRE_OK(mb.value()->dispatch(inputs, s));
-    const std::vector<uint16_t> own = read(mb.value()->output());
-    inputs.output = outTex.value();
-    SFX_REQUIRE_OK(mb.value()->dispatch(inputs, s));
-    const std::vector<uint16_t> imported = read(outTex.value());
-    CHECK(imported == own);
-    CHECK(imported != read(in.color));  // the scene blurs: not a copy of the input
+        test::MotionBlurGpuInputs in(d, f.color, f.depth, &f.velocity);
+        MotionBlurSettings s;
+        s.maxRadiusPx = 7;
+        s.referenceRows = 0;
+        MotionBlurInputs inputs{in.color, {in.depth, DepthKind::Linear, test::motionBlurTestCamera(w, h)}, in.velocity, {}, {}};
+        const size_t bytes = size_t(w) * h * 8;
+        auto read = [&](TextureHandle t) {
+            std::vector<uint16_t> texels(bytes / 2);
+            SFX_REQUIRE_OK(d.readTexture(t, 0, texels.data(), bytes));
+            return texels;
+        };
+        SFX_REQUIRE_OK(mb.value()->dispatch(inputs, s));
+        const std::vector<uint16_t> own = read(mb.value()->output());
+        inputs.output = outTex.value();
+        SFX_REQUIRE_OK(mb.value()->dispatch(inputs, s));
+        const std::vector<uint16_t> imported = read(outTex.value());
+        CHECK(imported == own);
+        CHECK(imported != read(in.color));  // the scene blurs: not a copy of the input
     }
 
     mb.value().reset();

@@ -44,8 +44,7 @@ TEST_CASE("hal: compute, storage buffers and atomics on the high tier; refused u
 
 TEST_CASE("hal: compute writes a storage image mip, then it is sampled (high tier)", "[hal]") {
     if (test::tier() == Tier::Current) {
-        CHECK(dev().createTexture({8, 8, 1, Format::R32F, kTextureStorage}).status().code() ==
-              StatusCode::UnsupportedFeature);
+        CHECK(dev().createTexture({8, 8, 1, Format::R32F, kTextureStorage}).status().code() == StatusCode::UnsupportedFeature);
         SFX_REQUIRE_NO_VALIDATION_MESSAGES();
         return;
     }

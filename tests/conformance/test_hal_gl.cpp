@@ -17,8 +17,8 @@
 #include <EGL/egl.h>
 #include <GL/osmesa.h>
 
-#include "sfx/half.hpp"
 #include "sfx/gl_device.hpp"
+#include "sfx/half.hpp"
 #endif
 
 namespace sfx {
@@ -52,8 +52,7 @@ void destroy(Device& dev, const FullScreen& fs) {
     SFX_REQUIRE_OK(dev.destroyProgram(fs.program));
 }
 
-Status drawFullScreen(Device& dev, PipelineHandle pipeline, TextureHandle target, uint32_t mip = 0,
-                      BindingSet bindings = {}) {
+Status drawFullScreen(Device& dev, PipelineHandle pipeline, TextureHandle target, uint32_t mip = 0, BindingSet bindings = {}) {
     RenderPassDesc pass;
     pass.colors.push_back({target, mip, LoadOp::Clear, {0, 0, 0, 0}});
     DrawDesc draw;
@@ -62,11 +61,8 @@ Status drawFullScreen(Device& dev, PipelineHandle pipeline, TextureHandle target
     return dev.renderPass(pass, std::span<const DrawDesc>(&draw, 1));
 }
 
-
 // The pattern hal_gltest_pattern writes at texel (x, y).
-std::array<float, 4> pattern(uint32_t x, uint32_t y) {
-    return {float(x) / 256.0f, float(y) / 256.0f, float(x + 2 * y) / 256.0f, 0.5f};
-}
+std::array<float, 4> pattern(uint32_t x, uint32_t y) { return {float(x) / 256.0f, float(y) / 256.0f, float(x + 2 * y) / 256.0f, 0.5f}; }
 
 void checkPattern(Device& dev, Format format, uint32_t w, uint32_t h) {
     INFO("format " << toString(format) << " on " << test::label());
@@ -145,7 +141,7 @@ TEST_CASE("gl: two GL devices in one process switch contexts", "[hal][gl]") {
     Device& a = test::device();
     // The other platform: EGL GL ES beside OSMesa, OSMesa beside either EGL device.
     const BackendConfig other = test::backendConfig().platform == "osmesa" ? BackendConfig{BackendKind::GLES, "egl"}
-                                                                          : BackendConfig{BackendKind::GL, "osmesa"};
+                                                                           : BackendConfig{BackendKind::GL, "osmesa"};
     DeviceOptions options;
     options.ceiling = a.caps().ceiling;
     options.validation = true;

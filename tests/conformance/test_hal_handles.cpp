@@ -14,8 +14,7 @@ TEST_CASE("hal: bad input is a named error on every call", "[hal]") {
     const DeviceCaps& caps = dev().caps();
     // Descriptions.
     CHECK(dev().createTexture({0, 4, 1, Format::RGBA8, kTextureSampled}).status().code() == StatusCode::InvalidArgument);
-    CHECK(dev().createTexture({caps.limits.maxTextureSize + 1, 4, 1, Format::RGBA8, kTextureSampled}).status().code() ==
-          StatusCode::InvalidArgument);
+    CHECK(dev().createTexture({caps.limits.maxTextureSize + 1, 4, 1, Format::RGBA8, kTextureSampled}).status().code() == StatusCode::InvalidArgument);
     CHECK(dev().createTexture({4, 4, 4, Format::RGBA8, kTextureSampled}).status().code() == StatusCode::InvalidArgument);
     CHECK(dev().createTexture({4, 4, 1, Format(999), kTextureSampled}).status().code() == StatusCode::UnsupportedFormat);
     CHECK(dev().createTexture({4, 4, 1, Format::RGBA8, 0}).status().code() == StatusCode::InvalidArgument);

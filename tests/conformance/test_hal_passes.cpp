@@ -3,8 +3,8 @@
 // Runs on whatever backend and tier the run opened (tests/support/hal_fixture.hpp).
 #include <cmath>
 
-#include "sfx/half.hpp"
 #include "hal_fixture.hpp"
+#include "sfx/half.hpp"
 
 using namespace sfx;
 using namespace sfx::test;

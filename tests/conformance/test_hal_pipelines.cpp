@@ -44,8 +44,7 @@ TEST_CASE("hal: vertex layouts and draws that would read past their buffers are 
     // Three vertices exactly fill the buffer; a fourth would be read past its end.
     TextureHandle color = makeTexture(c, 8, 8, Format::RGBA8, kTextureSampled | kTextureRenderTarget);
     PipelineHandle pipeline = makePipeline(c, meshPipelineDesc(Format::RGBA8, Format::Undefined), "hal_test_mesh");
-    const MeshVertex vertices[] = {
-        {-1, -1, 0.5f, 1, 0, 0, 1}, {3, -1, 0.5f, 1, 0, 0, 1}, {-1, 3, 0.5f, 1, 0, 0, 1}};
+    const MeshVertex vertices[] = {{-1, -1, 0.5f, 1, 0, 0, 1}, {3, -1, 0.5f, 1, 0, 0, 1}, {-1, 3, 0.5f, 1, 0, 0, 1}};
     BufferHandle vb = makeBuffer(c, sizeof(vertices), kBufferVertex, vertices);
     const uint32_t indices[] = {0, 1, 2};
     BufferHandle ib = makeBuffer(c, sizeof(indices), kBufferIndex, indices);

@@ -18,8 +18,7 @@ TEST_CASE("hal: timers measure a flushed pass", "[hal]") {
     c.steps.push_back([t = timer.value()] { (void)dev().destroyTimer(t); });
     CHECK(dev().endTimer(timer.value()).code() == StatusCode::InvalidArgument);  // not begun
     SFX_REQUIRE_OK(dev().beginTimer(timer.value()));
-    for (int i = 0; i < 4; ++i)
-        fullscreenPass(target, pipeline, {.uniformBuffers = {{gen::hal_test_pattern::PatternParams, params}}});
+    for (int i = 0; i < 4; ++i) fullscreenPass(target, pipeline, {.uniformBuffers = {{gen::hal_test_pattern::PatternParams, params}}});
     SFX_REQUIRE_OK(dev().endTimer(timer.value()));
     SFX_REQUIRE_OK(dev().flush());
     Result<TimerReading> reading = dev().readTimer(timer.value());
@@ -36,8 +35,7 @@ TEST_CASE("hal: timers measure a flushed pass", "[hal]") {
         std::vector<double> ms;
         for (int attempt = 0; attempt < 3; ++attempt) {
             REQUIRE(dev().beginTimer(timer.value()).isOk());
-            for (int i = 0; i < passes; ++i)
-                fullscreenPass(big, pipeline, {.uniformBuffers = {{gen::hal_test_pattern::PatternParams, params}}});
+            for (int i = 0; i < passes; ++i) fullscreenPass(big, pipeline, {.uniformBuffers = {{gen::hal_test_pattern::PatternParams, params}}});
             REQUIRE(dev().endTimer(timer.value()).isOk());
             REQUIRE(dev().flush().isOk());
             ms.push_back(dev().readTimer(timer.value())->milliseconds);

@@ -4,16 +4,16 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <optional>
 #include <cstring>
+#include <optional>
 #include <random>
 
+#include "effect_runs.hpp"
+#include "portability_rows.hpp"
 #include "sfx/half.hpp"
 #include "sfx/motion_blur.hpp"
 #include "sfx/reference/motion_blur_reference.hpp"
 #include "sfx/validation_errors.hpp"
-#include "effect_runs.hpp"
-#include "portability_rows.hpp"
 #include "skips.hpp"
 #include "test_device.hpp"
 
@@ -238,8 +238,8 @@ TEST_CASE("motion blur: bad inputs are named errors", "[motion_blur][conformance
     CHECK(zeroWide.status().code() == StatusCode::InvalidArgument);
     CHECK(zeroWide.status().message().find("MotionBlurDesc.width is 0") != std::string::npos);
     const uint32_t tooTall = d.caps().limits.maxTextureSize + 1;
-    CHECK(MotionBlur::create(d, {32, tooTall, test::tierProfile(), Format::RGBA16F}).status().message().find(
-              "MotionBlurDesc.height") != std::string::npos);
+    CHECK(MotionBlur::create(d, {32, tooTall, test::tierProfile(), Format::RGBA16F}).status().message().find("MotionBlurDesc.height") !=
+          std::string::npos);
     Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {32, 16, test::tierProfile(), Format::RGBA16F});
     REQUIRE(mb.isOk());
     test::MotionBlurGpuInputs in(d, ColorGrid(32, 16), Grid(32, 16, 1.0), nullptr);
@@ -327,8 +327,7 @@ TEST_CASE("motion blur: linear depth read in place gives the same output as the 
         CHECK(plan.passes.size() == (input == DepthKind::Linear ? 4u : 5u));
         CHECK((plan.bytesOf("depth") > 0) == (input == DepthKind::Hardware));
     }
-    if (test::device().caps().backend == BackendKind::Null)
-        SFX_SKIP("the null backend draws nothing: outputs are not compared on " << test::label());
+    if (test::device().caps().backend == BackendKind::Null) SFX_SKIP("the null backend draws nothing: outputs are not compared on " << test::label());
     // Depths in range, beyond the far plane and sky: reading in place clamps as the copy does.
     const uint32_t w = 48, h = 24;
     const ColorGrid c = noise(w, h, 7);

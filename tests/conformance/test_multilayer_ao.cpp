@@ -14,8 +14,8 @@
 #include "sfx/reference/ao_reference.hpp"
 #include "sfx/reference/oit_reference.hpp"
 #include "sfx/scene_render.hpp"
-#include "sfx/truth.hpp"
 #include "sfx/tiers.hpp"
+#include "sfx/truth.hpp"
 #include "skips.hpp"
 #include "test_device.hpp"
 #include "truth_scenes.hpp"
@@ -151,7 +151,8 @@ TEST_CASE("multilayer ao: the GPU matches reference::multilayerVisibility", "[ao
             for (double v : r.gpu.values) REQUIRE(std::isfinite(v));
             WARN("multilayer worst pixel " << test::label() << " " << toString(t) << " L=" << layers << ": " << worst);
             double meanAbs = 0.0;
-            for (size_t i = 0; i < r.gpu.values.size(); ++i) meanAbs += std::abs(r.gpu.values[i] - r.reference.values[i]) / double(r.gpu.values.size());
+            for (size_t i = 0; i < r.gpu.values.size(); ++i)
+                meanAbs += std::abs(r.gpu.values[i] - r.reference.values[i]) / double(r.gpu.values.size());
             test::addPortabilityRow("multilayer AO " + std::string(toString(t)) + ", " + std::to_string(layers) + " layers", worst, meanAbs);
         }
 }
@@ -207,7 +208,6 @@ TEST_CASE("multilayer ao: bad layer counts, resolutions and layer textures are n
 namespace {
 
 std::string scenePath(const char* name) { return std::string(SFX_SOURCE_DIR) + "/tests/data/scenes/" + name; }
-
 
 }  // namespace
 
@@ -267,8 +267,8 @@ TEST_CASE("multilayer ao: depth peeling recovers the contact shadow a foreground
     INFO(count << " missed pixels: mean visibility single " << meanSingle << ", multilayer " << meanMulti << ", truth " << meanTruth);
     WARN("hidden contact " << test::label() << ": " << count << " pixels, single " << meanSingle << ", multilayer " << meanMulti << ", truth "
                            << meanTruth);
-    CHECK(meanMulti < meanSingle - 0.03);                                         // occlusion recovered
-    CHECK(std::abs(meanMulti - meanTruth) < std::abs(meanSingle - meanTruth));    // nearer the truth
+    CHECK(meanMulti < meanSingle - 0.03);                                       // occlusion recovered
+    CHECK(std::abs(meanMulti - meanTruth) < std::abs(meanSingle - meanTruth));  // nearer the truth
     // Elsewhere the layers change little: the open floor and wall away from the bar.
     double worstOpen = 0.0;
     for (size_t i = 0; i < single.size(); ++i)

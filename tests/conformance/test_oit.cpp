@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <optional>
 #include <cstring>
+#include <optional>
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -276,8 +276,7 @@ TEST_CASE("oit: opacity 0 changes nothing; opacity 1 matches the opaque path", "
     solid.layers = {{2.0, {0.25, 0.5, 0.75}, 1.0, 1}};
     const Gpu g = render(solid, {0});
     double worst = 0;
-    for (const glm::dvec3& c : g.color)
-        worst = std::max({worst, std::abs(c.r - 0.25), std::abs(c.g - 0.5), std::abs(c.b - 0.75)});
+    for (const glm::dvec3& c : g.color) worst = std::max({worst, std::abs(c.r - 0.25), std::abs(c.g - 0.5), std::abs(c.b - 0.75)});
     CHECK(worst <= kEightBit);
     if (test::tier() == Tier::High) {
         // In front of more layers, an opaque layer hides them exactly.
@@ -291,8 +290,8 @@ TEST_CASE("oit: opacity 0 changes nothing; opacity 1 matches the opaque path", "
 TEST_CASE("oit: a pool smaller than the scene counts what it drops and grows the next frame (high tier)", "[oit]") {
     if (test::tier() != Tier::High) return;
     const OitScene scene = layeredScene(6, 5);
-    const uint64_t inFront = uint64_t(std::count_if(scene.layers.begin(), scene.layers.end(),
-                                                    [&](const Layer& l) { return l.depth < scene.surfaceDepth; }));
+    const uint64_t inFront = uint64_t(
+        std::count_if(scene.layers.begin(), scene.layers.end(), [&](const Layer& l) { return l.depth < scene.surfaceDepth; }));
     const uint64_t fragments = uint64_t(kH) * (kW / 2) * (6 + inFront);
     const uint64_t small = 100;
     std::vector<TransparencyStats> frames;

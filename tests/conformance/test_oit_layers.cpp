@@ -340,9 +340,8 @@ TEST_CASE("oit layers: the resolve compresses each list as the reference does (h
                     opacityError = std::max(opacityError, std::abs(shared::oitCompressedOpacity(texel, k) - want[size_t(k)].opacity));
                 }
             }
-            WARN("compression M = " << m << (backHalf ? " (back half)" : " (anywhere)") << ": worst depth error "
-                                    << depthError * 65535 << " / 65535, opacity " << opacityError * 255 << " / 255; "
-                                    << full << " pixels had more layers than nodes");
+            WARN("compression M = " << m << (backHalf ? " (back half)" : " (anywhere)") << ": worst depth error " << depthError * 65535
+                                    << " / 65535, opacity " << opacityError * 255 << " / 255; " << full << " pixels had more layers than nodes");
             CHECK(full > 100);  // the scene reaches the drop criterion
             // One 16-bit step (float vs double normalisation), one 8-bit step (fp16 opacity).
             CHECK(depthError <= 1.0 / 65535 + 1e-12);
@@ -371,15 +370,14 @@ TEST_CASE("oit layers: opacity-based AO matches the reference, brute force and c
                 double occluded = 0;
                 for (double v : want->blended.values) occluded += v < 0.99 ? 1 : 0;
                 WARN("AO through layers, " << toString(t) << (occ == TransparencyAoOccluders::Compressed ? ", compressed" : ", brute force")
-                                           << ": blended worst " << blended.worst << " (" << blended.above * 100
-                                           << "% above 0.03), opaque worst " << opaque.worst << "; " << occluded
-                                           << " occluded pixels");
+                                           << ": blended worst " << blended.worst << " (" << blended.above * 100 << "% above 0.03), opaque worst "
+                                           << opaque.worst << "; " << occluded << " occluded pixels");
                 CHECK(occluded > 10);  // the scene is occluded somewhere (Scalable beside the wall: 15 pixels)
                 // fp16 output (2^-11 relative) and float arithmetic: measured 5.6e-4 at worst.
                 CHECK(blended.worst <= 2e-3);
                 CHECK(opaque.worst <= 2e-3);
                 std::pair<double, double>& row = rows[std::string("AO through transparent layers, ") + toString(t) +
-                                                     (occ == TransparencyAoOccluders::Compressed ? ", compressed" : ", brute force")];
+                                                      (occ == TransparencyAoOccluders::Compressed ? ", compressed" : ", brute force")];
                 row.first = std::max(row.first, blended.worst);
                 row.second += blended.meanAbs / 2.0;
             }
@@ -475,8 +473,8 @@ TEST_CASE("oit layers: AO on a floor beside a translucent wall is monotone in it
             toOpaque = std::max(toOpaque, std::abs(runs.back().blended[i] - opaqueWall.blended[i]));
             darkest = std::max(darkest, noWall.blended[i] - opaqueWall.blended[i]);
         }
-        WARN(toString(t) << ": largest rise with opacity " << rise << ", alpha 0 vs no wall " << toNoWall << ", alpha 1 vs opaque wall "
-                         << toOpaque << ", the opaque wall darkens the floor by up to " << darkest);
+        WARN(toString(t) << ": largest rise with opacity " << rise << ", alpha 0 vs no wall " << toNoWall << ", alpha 1 vs opaque wall " << toOpaque
+                         << ", the opaque wall darkens the floor by up to " << darkest);
         CHECK(darkest > 0.1);     // the wall occludes the floor beside it
         CHECK(rise <= 1e-3);      // visibility never rises with opacity (fp16 output: 1e-3)
         CHECK(toNoWall == 0.0);   // opacity 0 occludes nothing, exactly

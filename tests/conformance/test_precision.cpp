@@ -34,8 +34,11 @@ bool drawsNothing() { return test::device().caps().backend == BackendKind::Null;
 
 uint32_t channels(Format f) {
     switch (f) {
-        case Format::R8: case Format::R16F: case Format::R32F: return 1;
-        case Format::RG16F: case Format::RG32F: return 2;
+        case Format::R8:
+        case Format::R16F:
+        case Format::R32F: return 1;
+        case Format::RG16F:
+        case Format::RG32F: return 2;
         default: return 4;
     }
 }
@@ -107,8 +110,10 @@ std::vector<Format> usableFormats(std::initializer_list<Format> wanted, bool sam
     std::vector<Format> out;
     std::ostringstream missing;
     for (Format f : wanted) {
-        if (caps.renderableFormat[size_t(f)] && (!sampled || caps.sampledFormat[size_t(f)])) out.push_back(f);
-        else missing << " " << toString(f);
+        if (caps.renderableFormat[size_t(f)] && (!sampled || caps.sampledFormat[size_t(f)]))
+            out.push_back(f);
+        else
+            missing << " " << toString(f);
     }
     if (!missing.str().empty()) WARN(test::label() << ": not renderable here, not checked:" << missing.str());
     return out;
@@ -133,8 +138,8 @@ constexpr double kAoWorstPixel[kTierCount] = {0.01, 0.005};
 TEST_CASE("precision: AO output formats hold the visibility to their stated quantisation", "[precision][ao]") {
     if (drawsNothing()) SFX_SKIP("the null backend draws nothing: GPU results are not compared on " << test::label());
     Device& dev = test::device();
-    const std::vector<Format> formats =
-        usableFormats({Format::R8, Format::RGBA8, Format::R16F, Format::RG16F, Format::RGBA16F, Format::R32F, Format::RGBA32F}, false);
+    const std::vector<Format> formats = usableFormats(
+        {Format::R8, Format::RGBA8, Format::R16F, Format::RG16F, Format::RGBA16F, Format::R32F, Format::RGBA32F}, false);
     const bool haveFloat = dev.caps().renderableFormat[size_t(Format::R32F)];
     const tools::AnalyticScene scene = tools::cornerScene(96, 64, 1.0);
     const uint32_t w = scene.width, h = scene.height;
@@ -178,8 +183,8 @@ TEST_CASE("precision: AO output formats hold the visibility to their stated quan
                 worstRef = std::max(worstRef, std::abs(v - ref.values[i]) - quantisation(f, ref.values[i]));
             }
             if (haveFloat) {
-                INFO("worst excess over the quantisation " << excess.worst << " at pixel " << excess.at << ": stored "
-                                                           << stored[excess.at * c] << ", value " << value[excess.at]);
+                INFO("worst excess over the quantisation " << excess.worst << " at pixel " << excess.at << ": stored " << stored[excess.at * c]
+                                                           << ", value " << value[excess.at]);
                 CHECK(excess.worst <= 0.0);
             }
             INFO("worst |stored - reference| beyond the quantisation " << worstRef);
@@ -190,8 +195,7 @@ TEST_CASE("precision: AO output formats hold the visibility to their stated quan
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
-TEST_CASE("precision: motion blur colour formats hold the blurred colour to their stated quantisation",
-          "[precision][motion_blur]") {
+TEST_CASE("precision: motion blur colour formats hold the blurred colour to their stated quantisation", "[precision][motion_blur]") {
     if (drawsNothing()) SFX_SKIP("the null backend draws nothing: GPU results are not compared on " << test::label());
     Device& dev = test::device();
     const std::vector<Format> formats = usableFormats({Format::RGBA8, Format::RGBA16F, Format::RGBA32F}, true);
@@ -259,8 +263,8 @@ TEST_CASE("precision: motion blur colour formats hold the blurred colour to thei
             if (std::abs(stored[i] - r) > 2e-3 + quantisation(f, r)) ++far;
         }
         if (haveFloat) {
-            INFO("worst excess over the quantisation " << excess.worst << " at channel " << excess.at << ": stored "
-                                                       << stored[excess.at] << ", value " << value[excess.at]);
+            INFO("worst excess over the quantisation " << excess.worst << " at channel " << excess.at << ": stored " << stored[excess.at]
+                                                       << ", value " << value[excess.at]);
             CHECK(excess.worst <= 0.0);
         }
         INFO("channels beyond 2e-3 plus the quantisation: " << far << " of " << n * 4);
@@ -319,8 +323,8 @@ TEST_CASE("precision: transparency colour formats hold the composite to their st
             REQUIRE(std::isfinite(stored[i]));
             excess.add(stored[i], value[i], f, i);
         }
-        INFO("worst excess over the quantisation " << excess.worst << " at channel " << excess.at << ": stored "
-                                                   << stored[excess.at] << ", value " << value[excess.at]);
+        INFO("worst excess over the quantisation " << excess.worst << " at channel " << excess.at << ": stored " << stored[excess.at] << ", value "
+                                                   << value[excess.at]);
         CHECK(excess.worst <= 0.0);
     }
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();

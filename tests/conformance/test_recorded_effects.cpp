@@ -10,10 +10,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "analytic_scenes.hpp"
-#include "sfx/ao.hpp"
-#include "sfx/half.hpp"
 #include "fault_injection.hpp"
 #include "hal_fixture.hpp"
+#include "sfx/ao.hpp"
+#include "sfx/half.hpp"
 #include "sfx/motion_blur.hpp"
 #include "test_device.hpp"
 
@@ -109,17 +109,14 @@ TEST_CASE("recordings: replayed motion blur frames equal a fresh effect's as the
     }
     TextureHandle colorTex = dev.createTexture({kWidth, kHeight, 1, Format::RGBA16F, kTextureSampled, "replay-colour"}).value();
     SFX_REQUIRE_OK(dev.writeTexture(colorTex, 0, color.data(), color.size() * sizeof(uint16_t)));
-    TextureHandle out =
-        dev.createTexture({kWidth, kHeight, 1, Format::RGBA16F, kTextureSampled | kTextureRenderTarget, "replay-blurred"}).value();
+    TextureHandle out = dev.createTexture({kWidth, kHeight, 1, Format::RGBA16F, kTextureSampled | kTextureRenderTarget, "replay-blurred"}).value();
     const MotionBlurDesc desc{kWidth, kHeight, test::tierProfile(), Format::RGBA16F, DepthKind::Linear};
     std::unique_ptr<MotionBlur> mb = MotionBlur::create(dev, desc).value();
     MotionBlurInputs in;
     in.color = colorTex;
     in.depth = DepthSource{depth, DepthKind::Linear, scene.camera};
     in.output = out;  // camera-only velocity: the motion is a uniform
-    auto moved = [&](double dx) {
-        in.camera.previousViewProjection = glm::translate(glm::dmat4(1.0), glm::dvec3(dx, 0.0, 0.0));
-    };
+    auto moved = [&](double dx) { in.camera.previousViewProjection = glm::translate(glm::dmat4(1.0), glm::dvec3(dx, 0.0, 0.0)); };
     auto dispatch = [&] { return mb->dispatch(in); };
     moved(0.02);
     for (int i = 0; i < 3; ++i) (void)frame(dispatch, out);
@@ -155,8 +152,7 @@ TEST_CASE("recordings: a frame whose new recording failed is recorded again at t
     const std::vector<uint16_t> color(size_t(kWidth) * kHeight * 4, floatToHalf(0.5f));
     TextureHandle colorTex = dev.createTexture({kWidth, kHeight, 1, Format::RGBA16F, kTextureSampled, "refail-colour"}).value();
     SFX_REQUIRE_OK(dev.writeTexture(colorTex, 0, color.data(), color.size() * sizeof(uint16_t)));
-    TextureHandle out =
-        dev.createTexture({kWidth, kHeight, 1, Format::RGBA16F, kTextureSampled | kTextureRenderTarget, "refail-blurred"}).value();
+    TextureHandle out = dev.createTexture({kWidth, kHeight, 1, Format::RGBA16F, kTextureSampled | kTextureRenderTarget, "refail-blurred"}).value();
     const MotionBlurDesc desc{kWidth, kHeight, test::tierProfile(), Format::RGBA16F, DepthKind::Linear};
     MotionBlurInputs in;
     in.color = colorTex;

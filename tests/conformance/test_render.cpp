@@ -53,9 +53,8 @@ render::RenderResult renderWith(const scene::Scene& scene, const render::RenderO
 }
 
 bool hasPass(const render::FramePlan& plan, const std::string& effect) {
-    return std::any_of(plan.lines.begin(), plan.lines.end(), [&](const render::PlanLine& l) {
-        return l.kind != render::PlanLine::Kind::Omitted && l.effect == effect;
-    });
+    return std::any_of(plan.lines.begin(), plan.lines.end(),
+                       [&](const render::PlanLine& l) { return l.kind != render::PlanLine::Kind::Omitted && l.effect == effect; });
 }
 
 }  // namespace
@@ -95,7 +94,7 @@ TEST_CASE("scene renderer: unlit and background exact, AO only darkens lambert s
     }
     CHECK(unlitPixels > 20);  // the quad covers about 12 x 12 pixels
     CHECK(skyPixels > 20);
-    CHECK(darkened > 10);     // the creases at the box's foot
+    CHECK(darkened > 10);  // the creases at the box's foot
 
     CHECK_FALSE(hasPass(offPlan, "ao"));
     CHECK_FALSE(hasPass(offPlan, "depth"));

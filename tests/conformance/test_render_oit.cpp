@@ -35,9 +35,9 @@ using namespace sfx;
 namespace {
 
 constexpr uint32_t kW = 96, kH = 54;
-constexpr double kEdgeBand = 0.01;     // pixels
-constexpr double kDepthBand = 2e-5;    // window depth
-constexpr double kOrderBand = 1e-4;    // relative view depth between fragments of different objects
+constexpr double kEdgeBand = 0.01;   // pixels
+constexpr double kDepthBand = 2e-5;  // window depth
+constexpr double kOrderBand = 1e-4;  // relative view depth between fragments of different objects
 // Half an 8-bit step: fp16 storage of the opaque colour, the nodes' premultiplied colours and the
 // result (docs/oit.md, "Conformance tolerances").
 constexpr double kHighTolerance = 0.5 / 255.0;
@@ -232,8 +232,8 @@ void checkScene(const char* name, size_t minCovered) {
     render::FramePlan plan;
     const render::RenderResult r = renderScene(scene, {}, &plan);
     const Errors e = compare(scene, r);
-    INFO(name << " on " << test::label() << ": worst " << e.worst << " (vs exact sort " << e.worstExact << "), " << e.covered
-              << " covered pixels, " << e.ambiguous << " left out, " << e.deeperThanK << " deeper than K");
+    INFO(name << " on " << test::label() << ": worst " << e.worst << " (vs exact sort " << e.worstExact << "), " << e.covered << " covered pixels, "
+              << e.ambiguous << " left out, " << e.deeperThanK << " deeper than K");
     WARN(name << " on " << test::label() << ": worst channel error " << e.worst << " vs the tier's reference, " << e.worstExact
               << " vs the exact sort; " << e.ambiguous << " of " << e.covered << " covered pixels left out");
     CHECK(e.covered >= minCovered);
@@ -260,13 +260,9 @@ void checkScene(const char* name, size_t minCovered) {
 
 }  // namespace
 
-TEST_CASE("scene renderer OIT: stack of coloured panes against the sorted reference", "[render][oit][conformance]") {
-    checkScene("panes.json", 400);
-}
+TEST_CASE("scene renderer OIT: stack of coloured panes against the sorted reference", "[render][oit][conformance]") { checkScene("panes.json", 400); }
 
-TEST_CASE("scene renderer OIT: translucent bunny against the sorted reference", "[render][oit][conformance]") {
-    checkScene("bunny.json", 300);
-}
+TEST_CASE("scene renderer OIT: translucent bunny against the sorted reference", "[render][oit][conformance]") { checkScene("bunny.json", 300); }
 
 TEST_CASE("scene renderer OIT: draw order does not change the picture", "[render][oit][conformance]") {
     const scene::Scene scene = loadScene("panes.json");

@@ -140,8 +140,8 @@ TEST_CASE("sizes: at 4320 rows the tier's default motion blur radius caps at the
     // float against double arithmetic cannot round them apart.
     size_t velocityDiffers = 0;
     for (size_t i = 0; i < ref.radiusPx.values.size(); ++i) velocityDiffers += gpu.radiusPx.values[i] != ref.radiusPx.values[i] ? 1 : 0;
-    INFO("pass-1 velocity " << gpu.radiusPx.values[0][0] << ", " << gpu.radiusPx.values[0][1] << " px, reference "
-                            << ref.radiusPx.values[0][0] << ", " << ref.radiusPx.values[0][1] << "; pixels differing: " << velocityDiffers);
+    INFO("pass-1 velocity " << gpu.radiusPx.values[0][0] << ", " << gpu.radiusPx.values[0][1] << " px, reference " << ref.radiusPx.values[0][0]
+                            << ", " << ref.radiusPx.values[0][1] << "; pixels differing: " << velocityDiffers);
     CHECK(velocityDiffers == 0);
     (void)test::checkMotionBlurConformance(gpu.color, ref.color);
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
@@ -169,8 +169,7 @@ TEST_CASE("sizes: large and odd sizes run every effect with finite output", "[si
         Size size;
         std::vector<AoTechnique> techniques;
     };
-    const Run runs[] = {{{641, 359}, {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}},
-                        {{3840, 2160}, {AoTechnique::Scalable}}};
+    const Run runs[] = {{{641, 359}, {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}}, {{3840, 2160}, {AoTechnique::Scalable}}};
     for (const Run& r : runs) {
         const uint32_t w = r.size.w, h = r.size.h;
         INFO(test::label() << " " << w << "x" << h);
@@ -223,9 +222,7 @@ Status readWhole(Device& d, TextureHandle t, Format* format, std::vector<uint8_t
     return d.readTexture(t, 0, raw.data(), raw.size());
 }
 
-double secondsSince(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
+double secondsSince(std::chrono::steady_clock::time_point t0) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
 
 }  // namespace
 
@@ -326,9 +323,9 @@ TEST_CASE("sizes: 7680x4320 (or the device's maximum) runs every effect once wit
         // The pool is bounded by the device's storage buffer size, far below 33M pixels' layers
         // on llvmpipe: what does not fit is dropped and counted (docs/oit.md), never garbage.
         CHECK(st->stored + st->dropped == st->fragments);
-        std::printf("sizes %s: transparency %llu fragments, %llu stored, %llu dropped (pool %llu nodes)\n",
-                    test::label().c_str(), (unsigned long long)st->fragments, (unsigned long long)st->stored,
-                    (unsigned long long)st->dropped, (unsigned long long)st->poolNodes);
+        std::printf("sizes %s: transparency %llu fragments, %llu stored, %llu dropped (pool %llu nodes)\n", test::label().c_str(),
+                    (unsigned long long)st->fragments, (unsigned long long)st->stored, (unsigned long long)st->dropped,
+                    (unsigned long long)st->poolNodes);
         SFX_REQUIRE_OK(readWhole(dev, oit.value()->output(), &format, raw));
         CHECK(allFinite(format, raw));
         oit.value().reset();

@@ -67,7 +67,7 @@ TEST_CASE("hal: specialisation constants fix loop bounds and branches per pipeli
     REQUIRE(program.isOk());
 
     using Px = std::array<uint8_t, 4>;
-    CHECK(render(program.value(), {}) == Px{0, 32, 0, 255});                // defaults: one tap, green
+    CHECK(render(program.value(), {}) == Px{0, 32, 0, 255});                 // defaults: one tap, green
     CHECK(render(program.value(), {{0, 4}, {7, 1}}) == Px{128, 0, 0, 255});  // four taps, red
     CHECK(render(program.value(), {{7, 1}}) == Px{32, 0, 0, 255});           // the other default holds
     CHECK(render(program.value(), {{3, 9}, {0, 2}}) == Px{0, 64, 0, 255});   // an undeclared id is ignored

@@ -42,9 +42,8 @@ void checkSteady(const std::string& what, Frame&& frame) {
     }
     const double growth = test::residentMiB() - rssBefore;
     const DeviceStats after = dev.stats();
-    std::printf("steady frames %s %s: %d frames, resident %+.2f MiB, device memory %llu bytes in %llu allocations\n",
-                test::label().c_str(), what.c_str(), kSteadyFrames, growth,
-                static_cast<unsigned long long>(after.deviceMemoryBytes),
+    std::printf("steady frames %s %s: %d frames, resident %+.2f MiB, device memory %llu bytes in %llu allocations\n", test::label().c_str(),
+                what.c_str(), kSteadyFrames, growth, static_cast<unsigned long long>(after.deviceMemoryBytes),
                 static_cast<unsigned long long>(after.memoryAllocations.live));
     INFO(what);
     test::checkNothingMade(before, after);
@@ -61,14 +60,13 @@ TEST_CASE("steady frames: AO of each technique makes no object and keeps memory 
     TextureHandle depthTex = dev.createTexture({kWidth, kHeight, 1, Format::R32F, kTextureSampled, "steady-depth"}).value();
     SFX_REQUIRE_OK(dev.writeTexture(depthTex, 0, depth.data(), depth.size() * sizeof(float)));
     const Format outFormat = dev.caps().renderableFormat[size_t(Format::R16F)] ? Format::R16F : Format::RGBA8;
-    TextureHandle outTex =
-        dev.createTexture({kWidth, kHeight, 1, outFormat, kTextureSampled | kTextureRenderTarget, "steady-ao"}).value();
+    TextureHandle outTex = dev.createTexture({kWidth, kHeight, 1, outFormat, kTextureSampled | kTextureRenderTarget, "steady-ao"}).value();
     for (AoTechnique technique : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}) {
         AoSettings settings;
         settings.technique = technique;
         // Hardware depth in the desc: the linearisation pass (and on the high tier the MIP) runs too.
-        Result<std::unique_ptr<AmbientObscurance>> ao =
-            AmbientObscurance::create(dev, {kWidth, kHeight, test::tierProfile(), settings, DepthKind::Hardware});
+        Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(
+            dev, {kWidth, kHeight, test::tierProfile(), settings, DepthKind::Hardware});
         INFO(ao.status().toString());
         REQUIRE(ao.isOk());
         AoInputs in;
@@ -98,8 +96,7 @@ TEST_CASE("steady frames: motion blur makes no object and keeps memory flat", "[
     TextureHandle velocityTex = dev.createTexture({kWidth, kHeight, 1, Format::RGBA32F, kTextureSampled, "steady-velocity"}).value();
     SFX_REQUIRE_OK(dev.writeTexture(colorTex, 0, color.data(), color.size() * sizeof(uint16_t)));
     SFX_REQUIRE_OK(dev.writeTexture(velocityTex, 0, velocity.data(), velocity.size() * sizeof(float)));
-    Result<std::unique_ptr<MotionBlur>> mb =
-        MotionBlur::create(dev, {kWidth, kHeight, test::tierProfile(), Format::RGBA16F, DepthKind::Hardware});
+    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(dev, {kWidth, kHeight, test::tierProfile(), Format::RGBA16F, DepthKind::Hardware});
     INFO(mb.status().toString());
     REQUIRE(mb.isOk());
     MotionBlurInputs in;
@@ -169,8 +166,7 @@ TEST_CASE("steady frames: transparency makes no object and keeps memory flat", "
     // made again at every frame: 300 pipelines and about 1 MiB a frame.)
     Device& dev = test::device();
     const test::TranslucentQuads quads(dev, kWidth, kHeight, 0.8f, {0.3f, 0.1f});
-    TextureHandle color =
-        dev.createTexture({kWidth, kHeight, 1, Format::RGBA16F, kTextureSampled | kTextureRenderTarget, "steady-opaque"}).value();
+    TextureHandle color = dev.createTexture({kWidth, kHeight, 1, Format::RGBA16F, kTextureSampled | kTextureRenderTarget, "steady-opaque"}).value();
     const std::vector<uint16_t> grey(size_t(kWidth) * kHeight * 4, floatToHalf(0.5f));
     SFX_REQUIRE_OK(dev.writeTexture(color, 0, grey.data(), grey.size() * sizeof(uint16_t)));
     const bool layers = test::tierProfile().abufferOit;
@@ -204,8 +200,8 @@ TEST_CASE("steady frames: transparency makes no object and keeps memory flat", "
         const bool zeroToOne = dev.caps().clipDepth == ClipDepthRange::ZeroToOne;
         const float aspect = float(kWidth) / float(kHeight), fovY = glm::radians(60.0f);
         in.projection = desc.compressedNodes == 0 ? quads.projection
-                        : zeroToOne              ? glm::perspectiveRH_ZO(fovY, aspect, 0.5f, 20.0f)
-                                                 : glm::perspectiveRH_NO(fovY, aspect, 0.5f, 20.0f);
+            : zeroToOne                           ? glm::perspectiveRH_ZO(fovY, aspect, 0.5f, 20.0f)
+                                                  : glm::perspectiveRH_NO(fovY, aspect, 0.5f, 20.0f);
         in.draws = quads.draws;
         checkSteady("transparency (" + name + ")", [&] { return oit.value()->render(in); });
     }
@@ -219,8 +215,8 @@ TEST_CASE("resize: AO and motion blur rebuild textures, never programs or pipeli
     for (AoTechnique technique : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}) {
         AoSettings settings;
         settings.technique = technique;
-        Result<std::unique_ptr<AmbientObscurance>> ao =
-            AmbientObscurance::create(dev, {kWidth, kHeight, test::tierProfile(), settings, DepthKind::Hardware});
+        Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(
+            dev, {kWidth, kHeight, test::tierProfile(), settings, DepthKind::Hardware});
         INFO(ao.status().toString());
         REQUIRE(ao.isOk());
         auto aoFrame = [&](const SizedInputs& s) {
@@ -232,12 +228,13 @@ TEST_CASE("resize: AO and motion blur rebuild textures, never programs or pipeli
         SFX_REQUIRE_OK(aoFrame(a));
         SFX_REQUIRE_OK(dev.flush());
         const std::string what = std::string("ao ") + toString(technique);
-        checkResizeKeepsPipelines(what + " grow", [&] { return ao.value()->resize(kW2, kH2); }, [&] { return aoFrame(b); });
-        checkResizeKeepsPipelines(what + " shrink", [&] { return ao.value()->resize(kWidth, kHeight); }, [&] { return aoFrame(a); });
+        checkResizeKeepsPipelines(
+            what + " grow", [&] { return ao.value()->resize(kW2, kH2); }, [&] { return aoFrame(b); });
+        checkResizeKeepsPipelines(
+            what + " shrink", [&] { return ao.value()->resize(kWidth, kHeight); }, [&] { return aoFrame(a); });
     }
 
-    Result<std::unique_ptr<MotionBlur>> mb =
-        MotionBlur::create(dev, {kWidth, kHeight, test::tierProfile(), Format::RGBA16F, DepthKind::Hardware});
+    Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(dev, {kWidth, kHeight, test::tierProfile(), Format::RGBA16F, DepthKind::Hardware});
     INFO(mb.status().toString());
     REQUIRE(mb.isOk());
     MotionBlurSettings settings;
@@ -251,8 +248,10 @@ TEST_CASE("resize: AO and motion blur rebuild textures, never programs or pipeli
     };
     SFX_REQUIRE_OK(mbFrame(a));
     SFX_REQUIRE_OK(dev.flush());
-    checkResizeKeepsPipelines("motion blur grow", [&] { return mb.value()->resize(kW2, kH2); }, [&] { return mbFrame(b); });
-    checkResizeKeepsPipelines("motion blur shrink", [&] { return mb.value()->resize(kWidth, kHeight); }, [&] { return mbFrame(a); });
+    checkResizeKeepsPipelines(
+        "motion blur grow", [&] { return mb.value()->resize(kW2, kH2); }, [&] { return mbFrame(b); });
+    checkResizeKeepsPipelines(
+        "motion blur shrink", [&] { return mb.value()->resize(kWidth, kHeight); }, [&] { return mbFrame(a); });
     destroyInputs(a);
     destroyInputs(b);
 }

@@ -101,8 +101,7 @@ CompiledProgram copyProgram() { return shaderProgram("copy", Tier::Current); }
 // A 16x8 RGBA16F motion blur of the current tier dispatched into a host output of this size,
 // format and usage; the colour and depth inputs are valid.
 bool motionBlurRuns(const Caps& c) {
-    return c.renderableFormat[size_t(Format::RGBA16F)] && c.renderableFormat[size_t(Format::RG16F)] &&
-           c.sampledFormat[size_t(Format::D32F)];
+    return c.renderableFormat[size_t(Format::RGBA16F)] && c.renderableFormat[size_t(Format::RG16F)] && c.sampledFormat[size_t(Format::D32F)];
 }
 Status motionBlurInto(Objects& o, uint32_t w, uint32_t h, Format format, uint32_t usage) {
     MotionBlurDesc desc;
@@ -121,8 +120,8 @@ Status motionBlurInto(Objects& o, uint32_t w, uint32_t h, Format format, uint32_
 
 std::vector<ValidationCase> makeCases() {
     std::vector<ValidationCase> v;
-    auto add = [&](const char* what, Error rule, std::function<bool(const Caps&)> applies,
-                   std::function<std::string(const Caps&)> expected, std::function<Status(Objects&)> call) {
+    auto add = [&](const char* what, Error rule, std::function<bool(const Caps&)> applies, std::function<std::string(const Caps&)> expected,
+                   std::function<Status(Objects&)> call) {
         v.push_back({what, rule, std::move(applies), std::move(expected), std::move(call)});
     };
     auto fixed = [](std::string s) { return [s](const Caps&) { return s; }; };
@@ -149,87 +148,117 @@ std::vector<ValidationCase> makeCases() {
         });
 
     // ---- Descriptions ----------------------------------------------------------------------
-    add("zero width", Error::TextureWidth, {},
+    add(
+        "zero width", Error::TextureWidth, {},
         [](const Caps& c) { return "TextureDesc.width is 0; allowed [1, " + str(c.limits.maxTextureSize) + "]"; },
-        [](Objects& o) { return o.dev.createTexture({0, 4, 1, Format::RGBA8, kTextureSampled}).status(); });
-    add("height over the limit", Error::TextureHeight, {},
+        [](Objects& o) {
+            return o.dev.createTexture({0, 4, 1, Format::RGBA8, kTextureSampled}).status();
+        });
+    add(
+        "height over the limit", Error::TextureHeight, {},
         [](const Caps& c) {
             return "TextureDesc.height is " + str(c.limits.maxTextureSize + 1) + "; allowed [1, " + str(c.limits.maxTextureSize) + "]";
         },
         [](Objects& o) {
             return o.dev.createTexture({4, o.dev.caps().limits.maxTextureSize + 1, 1, Format::RGBA8, kTextureSampled}).status();
         });
-    add("render target beyond the framebuffer limit", Error::TextureRenderTargetSize,
+    add(
+        "render target beyond the framebuffer limit", Error::TextureRenderTargetSize,
         [](const Caps& c) { return c.limits.maxRenderTargetWidth < c.limits.maxTextureSize; },
         [](const Caps& c) {
             return "TextureDesc is " + str(c.limits.maxRenderTargetWidth + 1) + "x4 with usage render-target; allowed at most " +
-                   str(c.limits.maxRenderTargetWidth) + "x" + str(c.limits.maxRenderTargetHeight) + " (the device's framebuffer and viewport limits)";
+                str(c.limits.maxRenderTargetWidth) + "x" + str(c.limits.maxRenderTargetHeight) + " (the device's framebuffer and viewport limits)";
         },
         [](Objects& o) {
-            return o.dev.createTexture({o.dev.caps().limits.maxRenderTargetWidth + 1, 4, 1, Format::RGBA8, kTextureSampled | kTextureRenderTarget}).status();
+            return o.dev.createTexture({o.dev.caps().limits.maxRenderTargetWidth + 1, 4, 1, Format::RGBA8, kTextureSampled | kTextureRenderTarget})
+                .status();
         });
-    add("too many mips", Error::TextureMipLevels, {}, fixed("TextureDesc.mipLevels is 4; allowed [1, 3] for 4x4"),
-        [](Objects& o) { return o.dev.createTexture({4, 4, 4, Format::RGBA8, kTextureSampled}).status(); });
+    add("too many mips", Error::TextureMipLevels, {}, fixed("TextureDesc.mipLevels is 4; allowed [1, 3] for 4x4"), [](Objects& o) {
+        return o.dev.createTexture({4, 4, 4, Format::RGBA8, kTextureSampled}).status();
+    });
     add("unknown format", Error::TextureFormatUnknown, {},
         fixed("TextureDesc.format is 999, not a Format; allowed R8, RGBA8, R16F, RG16F, RGBA16F, R32F, RG32F, RGBA32F, R32UI, "
               "D16, D24S8 or D32F"),
-        [](Objects& o) { return o.dev.createTexture({4, 4, 1, Format(999), kTextureSampled}).status(); });
+        [](Objects& o) {
+            return o.dev.createTexture({4, 4, 1, Format(999), kTextureSampled}).status();
+        });
     add("no usage", Error::TextureUsage, {},
-        fixed("TextureDesc.usage is none; allowed a non-empty combination of sampled, render-target and storage"),
-        [](Objects& o) { return o.dev.createTexture({4, 4, 1, Format::RGBA8, 0}).status(); });
+        fixed("TextureDesc.usage is none; allowed a non-empty combination of sampled, render-target and storage"), [](Objects& o) {
+            return o.dev.createTexture({4, 4, 1, Format::RGBA8, 0}).status();
+        });
     add("unknown usage bit", Error::TextureUsage, {},
         fixed("TextureDesc.usage is sampled | 0x10 (unknown); allowed a non-empty combination of sampled, render-target and storage"),
-        [](Objects& o) { return o.dev.createTexture({4, 4, 1, Format::RGBA8, kTextureSampled | 0x10}).status(); });
-    add("format the device cannot sample", Error::TextureFormatNotSampled,
+        [](Objects& o) {
+            return o.dev.createTexture({4, 4, 1, Format::RGBA8, kTextureSampled | 0x10}).status();
+        });
+    add(
+        "format the device cannot sample", Error::TextureFormatNotSampled,
         [](const Caps& c) { return firstLacking(c.sampledFormat) != Format::Undefined; },
         [](const Caps& c) {
             return std::string("TextureDesc.format is ") + toString(firstLacking(c.sampledFormat)) +
-                   ", which this device cannot sample; allowed with usage sampled: " +
-                   formatList([&](Format f) { return c.sampledFormat[size_t(f)]; });
+                ", which this device cannot sample; allowed with usage sampled: " + formatList([&](Format f) { return c.sampledFormat[size_t(f)]; });
         },
         [](Objects& o) {
             return o.dev.createTexture({4, 4, 1, firstLacking(o.dev.caps().sampledFormat), kTextureSampled}).status();
         });
-    add("format the device cannot render to", Error::TextureFormatNotRenderable,
+    add(
+        "format the device cannot render to", Error::TextureFormatNotRenderable,
         [](const Caps& c) { return firstLacking(c.renderableFormat) != Format::Undefined; },
         [](const Caps& c) {
             return std::string("TextureDesc.format is ") + toString(firstLacking(c.renderableFormat)) +
-                   ", which this device cannot render to; allowed with usage render-target: " +
-                   formatList([&](Format f) { return c.renderableFormat[size_t(f)]; });
+                ", which this device cannot render to; allowed with usage render-target: " +
+                formatList([&](Format f) { return c.renderableFormat[size_t(f)]; });
         },
         [](Objects& o) {
             return o.dev.createTexture({4, 4, 1, firstLacking(o.dev.caps().renderableFormat), kTextureRenderTarget}).status();
         });
-    add("storage texture without storage images", Error::TextureStorageUnsupported, [](const Caps& c) { return !c.storageImages; },
+    add(
+        "storage texture without storage images", Error::TextureStorageUnsupported, [](const Caps& c) { return !c.storageImages; },
         [](const Caps& c) { return "TextureDesc.usage includes storage, but this device has no storage images" + ceiling(c); },
-        [](Objects& o) { return o.dev.createTexture({4, 4, 1, Format::R32F, kTextureStorage}).status(); });
-    add("depth storage texture", Error::TextureStorageDepth, [](const Caps& c) { return c.storageImages; },
+        [](Objects& o) {
+            return o.dev.createTexture({4, 4, 1, Format::R32F, kTextureStorage}).status();
+        });
+    add(
+        "depth storage texture", Error::TextureStorageDepth, [](const Caps& c) { return c.storageImages; },
         fixed("TextureDesc.format is D32F, a depth format, which cannot be a storage image; allowed a colour format with usage "
               "storage"),
-        [](Objects& o) { return o.dev.createTexture({4, 4, 1, Format::D32F, kTextureStorage}).status(); });
-    add("empty buffer", Error::BufferSize, {},
-        [](const Caps& c) { return "BufferDesc.size is 0; allowed [1, " + str(c.limits.maxBufferSize) + "]"; },
-        [](Objects& o) { return o.dev.createBuffer({0, kBufferUniform}).status(); });
+        [](Objects& o) {
+            return o.dev.createTexture({4, 4, 1, Format::D32F, kTextureStorage}).status();
+        });
+    add(
+        "empty buffer", Error::BufferSize, {}, [](const Caps& c) { return "BufferDesc.size is 0; allowed [1, " + str(c.limits.maxBufferSize) + "]"; },
+        [](Objects& o) {
+            return o.dev.createBuffer({0, kBufferUniform}).status();
+        });
     add("buffer without usage", Error::BufferUsage, {},
-        fixed("BufferDesc.usage is none; allowed a non-empty combination of uniform, storage, vertex and index"),
-        [](Objects& o) { return o.dev.createBuffer({16, 0}).status(); });
+        fixed("BufferDesc.usage is none; allowed a non-empty combination of uniform, storage, vertex and index"), [](Objects& o) {
+            return o.dev.createBuffer({16, 0}).status();
+        });
     add("buffer with unknown usage bits", Error::BufferUsage, {},
-        fixed("BufferDesc.usage is vertex | 0x30 (unknown); allowed a non-empty combination of uniform, storage, vertex and index"),
-        [](Objects& o) { return o.dev.createBuffer({16, kBufferVertex | 0x30}).status(); });
-    add("storage buffer without storage buffers", Error::BufferStorageUnsupported, [](const Caps& c) { return !c.storageBuffers; },
+        fixed("BufferDesc.usage is vertex | 0x30 (unknown); allowed a non-empty combination of uniform, storage, vertex and index"), [](Objects& o) {
+            return o.dev.createBuffer({16, kBufferVertex | 0x30}).status();
+        });
+    add(
+        "storage buffer without storage buffers", Error::BufferStorageUnsupported, [](const Caps& c) { return !c.storageBuffers; },
         [](const Caps& c) { return "BufferDesc.usage includes storage, but this device has no storage buffers" + ceiling(c); },
-        [](Objects& o) { return o.dev.createBuffer({16, kBufferStorage}).status(); });
-    add("uniform buffer over the block size", Error::BufferUniformSize,
+        [](Objects& o) {
+            return o.dev.createBuffer({16, kBufferStorage}).status();
+        });
+    add(
+        "uniform buffer over the block size", Error::BufferUniformSize,
         [](const Caps& c) { return c.limits.maxUniformBlockSize + 16 <= c.limits.maxBufferSize; },
         [](const Caps& c) {
-            return "BufferDesc.size is " + str(c.limits.maxUniformBlockSize + 16) + "; allowed [1, " +
-                   str(c.limits.maxUniformBlockSize) + "] for a buffer with usage uniform";
+            return "BufferDesc.size is " + str(c.limits.maxUniformBlockSize + 16) + "; allowed [1, " + str(c.limits.maxUniformBlockSize) +
+                "] for a buffer with usage uniform";
         },
-        [](Objects& o) { return o.dev.createBuffer({o.dev.caps().limits.maxUniformBlockSize + 16, kBufferUniform}).status(); });
-    add("unknown filter", Error::SamplerFilter, {}, fixed("SamplerDesc.magFilter is 7; allowed Nearest or Linear"),
-        [](Objects& o) { return o.dev.createSampler({Filter::Linear, Filter(7)}).status(); });
-    add("unknown address mode", Error::SamplerAddress, {},
-        fixed("SamplerDesc.address is 3; allowed ClampToEdge, Repeat or MirroredRepeat"), [](Objects& o) {
+        [](Objects& o) {
+            return o.dev.createBuffer({o.dev.caps().limits.maxUniformBlockSize + 16, kBufferUniform}).status();
+        });
+    add("unknown filter", Error::SamplerFilter, {}, fixed("SamplerDesc.magFilter is 7; allowed Nearest or Linear"), [](Objects& o) {
+        return o.dev.createSampler({Filter::Linear, Filter(7)}).status();
+    });
+    add("unknown address mode", Error::SamplerAddress, {}, fixed("SamplerDesc.address is 3; allowed ClampToEdge, Repeat or MirroredRepeat"),
+        [](Objects& o) {
             SamplerDesc d;
             d.address = AddressMode(3);
             return o.dev.createSampler(d).status();
@@ -237,12 +266,11 @@ std::vector<ValidationCase> makeCases() {
 
     // ---- Programs --------------------------------------------------------------------------
     const char* stagesAllowed = "allowed a vertex and a fragment stage, or one compute stage";
-    add("program without stages", Error::ProgramNoStages, {}, fixed(std::string("program 'copy' has no stages; ") + stagesAllowed),
-        [](Objects& o) {
-            CompiledProgram p = copyProgram();
-            p.stages.clear();
-            return tryProgram(o, p);
-        });
+    add("program without stages", Error::ProgramNoStages, {}, fixed(std::string("program 'copy' has no stages; ") + stagesAllowed), [](Objects& o) {
+        CompiledProgram p = copyProgram();
+        p.stages.clear();
+        return tryProgram(o, p);
+    });
     add("compute with graphics stages", Error::ProgramMixedStages, {},
         fixed(std::string("program 'copy' mixes compute with graphics stages; ") + stagesAllowed), [](Objects& o) {
             CompiledProgram p = copyProgram();
@@ -256,45 +284,55 @@ std::vector<ValidationCase> makeCases() {
             p.stages.resize(1);
             return tryProgram(o, p);
         });
-    add("compute program without compute", Error::ProgramComputeUnsupported, noCompute,
+    add(
+        "compute program without compute", Error::ProgramComputeUnsupported, noCompute,
         [](const Caps& c) { return "program 'hal_atomic_count' is a compute program, but this device has no compute shaders" + ceiling(c); },
         [](Objects& o) { return tryProgram(o, shaderProgram("hal_atomic_count", Tier::High)); });
-    add("storage buffer without storage buffers", Error::ProgramStorageBufferUnsupported, [](const Caps& c) { return !c.storageBuffers; },
+    add(
+        "storage buffer without storage buffers", Error::ProgramStorageBufferUnsupported, [](const Caps& c) { return !c.storageBuffers; },
         [](const Caps& c) { return "program 'copy' uses storage buffer 'Extra', but this device has no storage buffers" + ceiling(c); },
         [](Objects& o) {
             CompiledProgram p = copyProgram();
             p.resources.push_back({"Extra", "Extra", ResourceKind::StorageBuffer, 5, stageBit(ShaderStage::Fragment), 16});
             return tryProgram(o, p);
         });
-    add("fragment-stage storage without fragment stores", Error::ProgramFragmentStorageUnsupported,
+    add(
+        "fragment-stage storage without fragment stores", Error::ProgramFragmentStorageUnsupported,
         [](const Caps& c) { return c.storageBuffers && !c.fragmentStoresAndAtomics; },
-        [](const Caps& c) { return "program 'copy' uses 'uNodes' from its fragment stage, but this device has no fragment-stage stores and atomics" + ceiling(c); },
+        [](const Caps& c) {
+            return "program 'copy' uses 'uNodes' from its fragment stage, but this device has no fragment-stage stores and atomics" + ceiling(c);
+        },
         [](Objects& o) {
             CompiledProgram p = copyProgram();
             p.resources.push_back({"uNodes", "uNodes", ResourceKind::StorageBuffer, 5, stageBit(ShaderStage::Fragment), 0});
             return tryProgram(o, p);
         });
-    add("storage image without storage images", Error::ProgramStorageImageUnsupported, [](const Caps& c) { return !c.storageImages; },
+    add(
+        "storage image without storage images", Error::ProgramStorageImageUnsupported, [](const Caps& c) { return !c.storageImages; },
         [](const Caps& c) { return "program 'copy' uses storage image 'uExtra', but this device has no storage images" + ceiling(c); },
         [](Objects& o) {
             CompiledProgram p = copyProgram();
             p.resources.push_back({"uExtra", "uExtra", ResourceKind::StorageImage, 5, stageBit(ShaderStage::Fragment), 0});
             return tryProgram(o, p);
         });
-    add("empty SPIR-V", Error::ProgramNoSpirv, [](const Caps& c) { return c.dialect == ShaderDialect::Spirv; },
-        fixed("program 'copy' has no valid SPIR-V module for its vertex stage (empty, or a bad magic number)"), [](Objects& o) {
+    add(
+        "empty SPIR-V", Error::ProgramNoSpirv, [](const Caps& c) { return c.dialect == ShaderDialect::Spirv; },
+        fixed("program 'copy' has no valid SPIR-V module for its vertex stage (empty, or a bad magic number)"),
+        [](Objects& o) {
             CompiledProgram p = copyProgram();
             p.stages[0].spirv.clear();
             return tryProgram(o, p);
         });
-    add("program of a tier that does not target the dialect", Error::ProgramTierDialect,
+    add(
+        "program of a tier that does not target the dialect", Error::ProgramTierDialect,
         [](const Caps& c) { return c.dialect == ShaderDialect::Essl300 || c.dialect == ShaderDialect::Glsl330; },
         [](const Caps& c) {
             return std::string("program 'depth_mip' is built for the high tier, whose dialects do not include ") + toString(c.dialect) +
-                   "; allowed a program of a tier that targets it";
+                "; allowed a program of a tier that targets it";
         },
         [](Objects& o) { return tryProgram(o, shaderProgram("depth_mip", Tier::High)); });
-    add("no text for the dialect", Error::ProgramNoSource, [](const Caps& c) { return c.dialect != ShaderDialect::Spirv; },
+    add(
+        "no text for the dialect", Error::ProgramNoSource, [](const Caps& c) { return c.dialect != ShaderDialect::Spirv; },
         [](const Caps& c) { return std::string("program 'copy' has no ") + toString(c.dialect) + " source for its fragment stage"; },
         [](Objects& o) {
             CompiledProgram p = copyProgram();
@@ -404,10 +442,9 @@ std::vector<DeviceCaps> craftedNullCaps() {
 // entry points (tests/vulkan/test_vulkan_entry_points.cpp; GlNoCurrentContext and DeviceWrongApi
 // of the GL calls in tests/conformance/test_gl_import.cpp).
 static const std::set<Error> kHostCommandBufferRows = {
-    Error::HostCommandBufferRead,    Error::TimerHostPending,   Error::ExternalObjectNull,
-    Error::ExternalQueueFamily,      Error::ExternalQueueFamilyFlags, Error::ExternalApiVersion,
-    Error::ExternalSynchronization2,
-    Error::DeviceWrongApi,           Error::HostCommandBufferOwnDevice, Error::GlNoCurrentContext};
+    Error::HostCommandBufferRead,      Error::TimerHostPending,   Error::ExternalObjectNull,       Error::ExternalQueueFamily,
+    Error::ExternalQueueFamilyFlags,   Error::ExternalApiVersion, Error::ExternalSynchronization2, Error::DeviceWrongApi,
+    Error::HostCommandBufferOwnDevice, Error::GlNoCurrentContext};
 
 void checkEveryRuleExercised(const std::set<validation::Error>& exercised) {
     std::set<Error> withCase;

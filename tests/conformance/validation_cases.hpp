@@ -25,8 +25,8 @@ public:
     BufferHandle buffer(uint64_t size, uint32_t usage);
     ProgramHandle program(const CompiledProgram& p);
     ProgramHandle program(const char* name, Tier tier);
-    PipelineHandle graphics(const char* name, std::vector<Format> colors, Format depth = Format::Undefined,
-                            VertexLayout layout = {}, Tier tier = Tier::Current);
+    PipelineHandle graphics(const char* name, std::vector<Format> colors, Format depth = Format::Undefined, VertexLayout layout = {},
+                            Tier tier = Tier::Current);
     PipelineHandle compute(const char* name);  // a high-tier compute program
     PipelineHandle computeFrom(const CompiledProgram& p);
 

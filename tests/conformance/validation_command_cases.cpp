@@ -79,9 +79,8 @@ CompiledProgram storageAndSampled() {
 
 std::vector<ValidationCase> pipelineAndCommandCases() {
     std::vector<ValidationCase> v;
-    auto add = [&](const char* what, Error rule, std::function<bool(const Caps&)> applies,
-                   std::function<std::string(const Caps&)> expected, std::function<Status(Objects&)> call,
-                   bool (*onlyOn)(const Caps&) = nullptr) {
+    auto add = [&](const char* what, Error rule, std::function<bool(const Caps&)> applies, std::function<std::string(const Caps&)> expected,
+                   std::function<Status(Objects&)> call, bool (*onlyOn)(const Caps&) = nullptr) {
         v.push_back({what, rule, std::move(applies), std::move(expected), std::move(call), onlyOn});
     };
     auto fixed = [](std::string s) { return [s](const Caps&) { return s; }; };
@@ -99,18 +98,20 @@ std::vector<ValidationCase> pipelineAndCommandCases() {
     add("compute pipeline of a graphics program", Error::PipelineProgramGraphics, {},
         fixed("ComputePipelineDesc.program is graphics program 'copy'; allowed a compute program"),
         [](Objects& o) { return o.dev.createComputePipeline({o.program("copy", Tier::Current)}).status(); });
-    add("too many colour formats", Error::PipelineColorCount, {},
+    add(
+        "too many colour formats", Error::PipelineColorCount, {},
         [](const Caps& c) {
             return "GraphicsPipelineDesc.colorFormats has " + str(c.limits.maxColorAttachments + 1) + " formats; allowed [0, " +
-                   str(c.limits.maxColorAttachments) + "]";
+                str(c.limits.maxColorAttachments) + "]";
         },
         [](Objects& o) {
             return tryPipeline(o, withState([&](auto& d) { d.colorFormats.assign(o.dev.caps().limits.maxColorAttachments + 1, Format::RGBA8); }));
         });
-    add("depth format as colour", Error::PipelineColorFormat, {},
+    add(
+        "depth format as colour", Error::PipelineColorFormat, {},
         [](const Caps& c) {
             return "GraphicsPipelineDesc.colorFormats[0] is D32F; allowed a colour format this device renders to: " +
-                   formatList([&](Format f) { return !isDepthFormat(f) && c.renderableFormat[size_t(f)]; });
+                formatList([&](Format f) { return !isDepthFormat(f) && c.renderableFormat[size_t(f)]; });
         },
         [](Objects& o) { return tryPipeline(o, withState([](auto& d) { d.colorFormats = {Format::D32F}; })); });
     add("colour format as depth", Error::PipelineDepthFormat, {},
@@ -124,8 +125,7 @@ std::vector<ValidationCase> pipelineAndCommandCases() {
         [](Objects& o) { return tryMesh(o, meshWith([](auto& l) { l.stride = 0; })); });
     add("stride over the limit", Error::VertexStrideMax, {}, fixed("GraphicsPipelineDesc.vertexLayout.stride is 4096; allowed [0, 2048]"),
         [](Objects& o) { return tryMesh(o, meshWith([](auto& l) { l.stride = 4096; })); });
-    add("unknown attribute format", Error::VertexAttributeFormat, {},
-        fixed(attr + "[0].format is 7; allowed Float2, Float3 or Float4"),
+    add("unknown attribute format", Error::VertexAttributeFormat, {}, fixed(attr + "[0].format is 7; allowed Float2, Float3 or Float4"),
         [](Objects& o) { return tryMesh(o, meshWith([](auto& l) { l.attributes[0].format = VertexFormat(7); })); });
     add("attribute location over the limit", Error::VertexAttributeLocation, {}, fixed(attr + "[0].location is 16; allowed [0, 15]"),
         [](Objects& o) { return tryMesh(o, meshWith([](auto& l) { l.attributes[0].location = 16; })); });
@@ -145,22 +145,25 @@ std::vector<ValidationCase> pipelineAndCommandCases() {
         [](Objects& o) { return tryPipeline(o, withState([](auto& d) { d.depth.compare = CompareOp(99); })); });
     add("unknown blend factor", Error::PipelineBlendFactor, {},
         fixed("GraphicsPipelineDesc.blend.dst is 2147483648; allowed Zero, One, SrcAlpha, OneMinusSrcAlpha, DstAlpha or OneMinusDstAlpha"),
-        [](Objects& o) { return tryPipeline(o, withState([](auto& d) { d.blend = {true, BlendFactor::One, BlendFactor(0x80000000u)}; })); });
-    add("blending an integer target", Error::PipelineBlendInteger, [](const Caps& c) { return c.renderableFormat[size_t(Format::R32UI)]; },
+        [](Objects& o) {
+            return tryPipeline(o, withState([](auto& d) { d.blend = {true, BlendFactor::One, BlendFactor(0x80000000u)}; }));
+        });
+    add(
+        "blending an integer target", Error::PipelineBlendInteger, [](const Caps& c) { return c.renderableFormat[size_t(Format::R32UI)]; },
         fixed("GraphicsPipelineDesc.blend.enable is true with the integer format R32UI in colorFormats[0]; allowed false, as integer "
               "targets do not blend"),
         [](Objects& o) {
             return tryPipeline(o, withState([](auto& d) {
-                d.colorFormats = {Format::R32UI};
-                d.blend = {true, BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha};
-            }));
+                                   d.colorFormats = {Format::R32UI};
+                                   d.blend = {true, BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha};
+                               }));
         });
     add("specialisation constant id twice", Error::SpecializationConstantIdTwice, {},
-        fixed("GraphicsPipelineDesc.constants[2].id is 3, which constants[0] also has; allowed an id no other constant uses"),
-        [](Objects& o) { return tryPipeline(o, withState([](auto& d) { d.constants = {{3, 1}, {4, 2}, {3, 5}}; })); });
+        fixed("GraphicsPipelineDesc.constants[2].id is 3, which constants[0] also has; allowed an id no other constant uses"), [](Objects& o) {
+            return tryPipeline(o, withState([](auto& d) { d.constants = {{3, 1}, {4, 2}, {3, 5}}; }));
+        });
     add("compute specialisation constant id twice", Error::SpecializationConstantIdTwice, compute,
-        fixed("ComputePipelineDesc.constants[1].id is 0, which constants[0] also has; allowed an id no other constant uses"),
-        [](Objects& o) {
+        fixed("ComputePipelineDesc.constants[1].id is 0, which constants[0] also has; allowed an id no other constant uses"), [](Objects& o) {
             ComputePipelineDesc d;
             d.program = o.program("hal_atomic_count", Tier::High);
             d.constants = {{0, 1}, {0, 2}};
@@ -172,14 +175,12 @@ std::vector<ValidationCase> pipelineAndCommandCases() {
         std::vector<uint8_t> bytes(256);
         return o.dev.readTexture(o.texture(8, 8, Format::RGBA8, kRenderable, 2), 5, bytes.data(), bytes.size());
     });
-    add("wrong level size", Error::TextureBytes, {}, fixed("bytes is 255; allowed 256, the size of mip 0 of a 8x8 RGBA8 texture"),
-        [](Objects& o) {
-            std::vector<uint8_t> bytes(256);
-            return o.dev.writeTexture(o.texture(8, 8, Format::RGBA8, kTextureSampled), 0, bytes.data(), 255);
-        });
+    add("wrong level size", Error::TextureBytes, {}, fixed("bytes is 255; allowed 256, the size of mip 0 of a 8x8 RGBA8 texture"), [](Objects& o) {
+        std::vector<uint8_t> bytes(256);
+        return o.dev.writeTexture(o.texture(8, 8, Format::RGBA8, kTextureSampled), 0, bytes.data(), 255);
+    });
     add("write past the buffer", Error::BufferRange, {},
-        fixed("writeBuffer(offset, bytes) covers offset 8 + 9 bytes; allowed a non-empty range inside the buffer's 16 bytes"),
-        [](Objects& o) {
+        fixed("writeBuffer(offset, bytes) covers offset 8 + 9 bytes; allowed a non-empty range inside the buffer's 16 bytes"), [](Objects& o) {
             std::vector<uint8_t> bytes(16);
             return o.dev.writeBuffer(o.buffer(16, kBufferUniform), 8, bytes.data(), 9);
         });
@@ -206,10 +207,11 @@ std::vector<ValidationCase> pipelineAndCommandCases() {
     add("pass without attachments", Error::PassNoAttachments, {},
         fixed("RenderPassDesc has no attachments; allowed at least one colour or depth attachment"),
         [](Objects& o) { return o.dev.renderPass({}, {}); });
-    add("too many colour attachments", Error::PassColorCount, {},
+    add(
+        "too many colour attachments", Error::PassColorCount, {},
         [](const Caps& c) {
             return "RenderPassDesc.colors has " + str(c.limits.maxColorAttachments + 1) + " attachments; allowed [0, " +
-                   str(c.limits.maxColorAttachments) + "]";
+                str(c.limits.maxColorAttachments) + "]";
         },
         [](Objects& o) {
             RenderPassDesc pass;
@@ -230,12 +232,11 @@ std::vector<ValidationCase> pipelineAndCommandCases() {
             pass.depth.texture = o.texture(8, 8, Format::RGBA8, kTextureRenderTarget);
             return passOf(o, pass);
         });
-    add("unknown load op", Error::PassLoadOp, {}, fixed("RenderPassDesc.colors[0].load is 7; allowed Clear, Load or DontCare"),
-        [](Objects& o) {
-            RenderPassDesc pass;
-            pass.colors = {{o.texture(8, 8, Format::RGBA8, kRenderable), 0, LoadOp(7)}};
-            return passOf(o, pass);
-        });
+    add("unknown load op", Error::PassLoadOp, {}, fixed("RenderPassDesc.colors[0].load is 7; allowed Clear, Load or DontCare"), [](Objects& o) {
+        RenderPassDesc pass;
+        pass.colors = {{o.texture(8, 8, Format::RGBA8, kRenderable), 0, LoadOp(7)}};
+        return passOf(o, pass);
+    });
     add("attachments of two sizes", Error::PassSize, {},
         fixed("RenderPassDesc.colors[1].texture is 4x4 at mip 0; allowed 8x8, the size of the pass's first attachment"), [](Objects& o) {
             RenderPassDesc pass;
@@ -271,8 +272,7 @@ std::vector<ValidationCase> pipelineAndCommandCases() {
         return drawOnce(o, d);
     });
     add("mesh without vertices", Error::DrawVertexBufferMissing, {},
-        fixed("DrawDesc.vertexBuffer is null; allowed a buffer with usage vertex, as the pipeline has vertex attributes"),
-        [](Objects& o) {
+        fixed("DrawDesc.vertexBuffer is null; allowed a buffer with usage vertex, as the pipeline has vertex attributes"), [](Objects& o) {
             DrawDesc d;
             d.pipeline = o.graphics("hal_test_mesh", {Format::RGBA8}, Format::Undefined, meshLayout());
             return drawOnce(o, d);
@@ -292,24 +292,26 @@ std::vector<ValidationCase> pipelineAndCommandCases() {
     add("count whose vertex bytes overflow 32 bits", Error::DrawVertexCount, {},
         fixed("DrawDesc.count is 4294967295; allowed [0, 3], the vertices of stride 28 in its vertex buffer of 84 bytes"),
         [](Objects& o) { return drawMesh(o, 0xFFFFFFFFu, 84); });
-    add("dispatch without compute", Error::DispatchUnsupported, noCompute,
-        [](const Caps& c) { return "dispatch: this device has no compute shaders" + ceiling(c); },
-        [](Objects& o) { return o.dev.dispatch({}); });
-    add("no groups", Error::DispatchGroups, compute,
+    add(
+        "dispatch without compute", Error::DispatchUnsupported, noCompute,
+        [](const Caps& c) { return "dispatch: this device has no compute shaders" + ceiling(c); }, [](Objects& o) { return o.dev.dispatch({}); });
+    add(
+        "no groups", Error::DispatchGroups, compute,
         [](const Caps& c) {
             return "DispatchDesc.groupsY is 0; allowed [1, " + str(c.limits.maxComputeWorkGroupCount[1]) +
-                   "] (the device's maxComputeWorkGroupCount)";
+                "] (the device's maxComputeWorkGroupCount)";
         },
         [](Objects& o) {
             DispatchDesc d;
             d.groupsY = 0;
             return o.dev.dispatch(d);
         });
-    add("more groups than the device launches", Error::DispatchGroups,
+    add(
+        "more groups than the device launches", Error::DispatchGroups,
         [](const Caps& c) { return compute(c) && c.limits.maxComputeWorkGroupCount[0] < 0xFFFFFFFFu; },
         [](const Caps& c) {
             return "DispatchDesc.groupsX is " + str(c.limits.maxComputeWorkGroupCount[0] + 1) + "; allowed [1, " +
-                   str(c.limits.maxComputeWorkGroupCount[0]) + "] (the device's maxComputeWorkGroupCount)";
+                str(c.limits.maxComputeWorkGroupCount[0]) + "] (the device's maxComputeWorkGroupCount)";
         },
         [](Objects& o) {
             DispatchDesc d;
@@ -341,8 +343,7 @@ std::vector<ValidationCase> pipelineAndCommandCases() {
             return drawOnce(o, d);
         });
     add("resource left unbound", Error::BindingMissing, {},
-        fixed("DrawDesc.bindings.textures has nothing at binding 0; program 'copy' needs sampled texture 'uSource' there"),
-        [](Objects& o) {
+        fixed("DrawDesc.bindings.textures has nothing at binding 0; program 'copy' needs sampled texture 'uSource' there"), [](Objects& o) {
             DrawDesc d = copyDraw(o);
             d.bindings.textures.clear();
             return drawOnce(o, d);
@@ -360,8 +361,8 @@ std::vector<ValidationCase> pipelineAndCommandCases() {
             d.bindings.textures[0].texture = o.texture(8, 8, Format::RGBA8, kTextureRenderTarget);
             return drawOnce(o, d);
         });
-    add("index buffer as vertices", Error::ResourceUsage, {},
-        fixed("DrawDesc.vertexBuffer has usage index; allowed a buffer with usage vertex"), [](Objects& o) {
+    add("index buffer as vertices", Error::ResourceUsage, {}, fixed("DrawDesc.vertexBuffer has usage index; allowed a buffer with usage vertex"),
+        [](Objects& o) {
             DrawDesc d;
             d.pipeline = o.graphics("hal_test_mesh", {Format::RGBA8}, Format::Undefined, meshLayout());
             d.vertexBuffer = o.buffer(84, kBufferIndex);
@@ -373,24 +374,25 @@ std::vector<ValidationCase> pipelineAndCommandCases() {
     add("uniform range past the buffer", Error::BufferRange, {},
         fixed("DrawDesc.bindings.uniformBuffers[0] covers offset 0 + 64 bytes; allowed a non-empty range inside the buffer's 32 bytes"),
         [](Objects& o) { return drawUniform(o, 32, kBufferUniform, 0, 64); });
-    add("misaligned uniform offset", Error::BufferBindingAlignment,
-        [](const Caps& c) { return c.limits.minUniformBufferOffsetAlignment > 1; },
+    add(
+        "misaligned uniform offset", Error::BufferBindingAlignment, [](const Caps& c) { return c.limits.minUniformBufferOffsetAlignment > 1; },
         [](const Caps& c) {
             const uint64_t a = c.limits.minUniformBufferOffsetAlignment;
             return "DrawDesc.bindings.uniformBuffers[0].offset is " + str(a / 2) + "; allowed a multiple of " + str(a) +
-                   ", this device's caps.limits.minUniformBufferOffsetAlignment";
+                ", this device's caps.limits.minUniformBufferOffsetAlignment";
         },
         [](Objects& o) {
             const uint64_t a = o.dev.caps().limits.minUniformBufferOffsetAlignment;
             return drawUniform(o, 2 * a, kBufferUniform, a / 2, 16);
         });
-    add("storage range over the limit", Error::BufferBindingMaxRange,
+    add(
+        "storage range over the limit", Error::BufferBindingMaxRange,
         [](const Caps& c) {
             return compute(c) && c.limits.maxStorageBufferSize + 16 <= c.limits.maxBufferSize && c.limits.maxStorageBufferSize <= (1u << 28);
         },
         [](const Caps& c) {
             return "DispatchDesc.bindings.storageBuffers[0] binds " + str(c.limits.maxStorageBufferSize + 16) + " bytes; allowed at most " +
-                   str(c.limits.maxStorageBufferSize) + ", this device's caps.limits.maxStorageBufferSize";
+                str(c.limits.maxStorageBufferSize) + ", this device's caps.limits.maxStorageBufferSize";
         },
         [](Objects& o) {
             DispatchDesc d;
@@ -425,29 +427,39 @@ std::vector<ValidationCase> pipelineAndCommandCases() {
         });
 
     // ---- Checks only one API makes (the call succeeds on the others) --------------------------
-    add("SPIR-V whose structure is broken", Error::ShaderInvalidSpirv, {}, fixed(""), [](Objects& o) {
-        CompiledProgram p = shaderProgram("copy", Tier::Current);
-        for (size_t i = 5; i < p.stages[0].spirv.size(); ++i) p.stages[0].spirv[i] = 0xdeadbeefu;
-        return tryProgram(o, p);
-    }, isVulkan);
-    add("GLSL that does not compile", Error::ShaderCompile, {}, fixed(""), [](Objects& o) {
-        CompiledProgram p = shaderProgram("copy", Tier::Current);
-        for (std::string& g : p.stages[1].glsl)
-            if (!g.empty()) g = g.substr(0, g.find('\n') + 1) + "void main() { this is not glsl; }\n";
-        return tryProgram(o, p);
-    }, isGl);
-    add("stages that do not link", Error::ShaderLink, {}, fixed(""), [](Objects& o) {
-        CompiledProgram p = shaderProgram("copy", Tier::Current);
-        for (std::string& g : p.stages[1].glsl)
-            if (!g.empty())
-                g = g.substr(0, g.find('\n') + 1) +
-                    "precision highp float;\nout vec4 sfxOut;\nvoid notMain() { sfxOut = vec4(1.0); }\n";  // no main: links nowhere
-        return tryProgram(o, p);
-    }, isGl);
-    add("texture binding past the texture units", Error::ProgramTextureUnit, {},
+    add(
+        "SPIR-V whose structure is broken", Error::ShaderInvalidSpirv, {}, fixed(""),
+        [](Objects& o) {
+            CompiledProgram p = shaderProgram("copy", Tier::Current);
+            for (size_t i = 5; i < p.stages[0].spirv.size(); ++i) p.stages[0].spirv[i] = 0xdeadbeefu;
+            return tryProgram(o, p);
+        },
+        isVulkan);
+    add(
+        "GLSL that does not compile", Error::ShaderCompile, {}, fixed(""),
+        [](Objects& o) {
+            CompiledProgram p = shaderProgram("copy", Tier::Current);
+            for (std::string& g : p.stages[1].glsl)
+                if (!g.empty()) g = g.substr(0, g.find('\n') + 1) + "void main() { this is not glsl; }\n";
+            return tryProgram(o, p);
+        },
+        isGl);
+    add(
+        "stages that do not link", Error::ShaderLink, {}, fixed(""),
+        [](Objects& o) {
+            CompiledProgram p = shaderProgram("copy", Tier::Current);
+            for (std::string& g : p.stages[1].glsl)
+                if (!g.empty())
+                    g = g.substr(0, g.find('\n') + 1) +
+                        "precision highp float;\nout vec4 sfxOut;\nvoid notMain() { sfxOut = vec4(1.0); }\n";  // no main: links nowhere
+            return tryProgram(o, p);
+        },
+        isGl);
+    add(
+        "texture binding past the texture units", Error::ProgramTextureUnit, {},
         [](const Caps& c) {
             return "program 'copy' samples 'uSource' at binding " + str(c.limits.maxTextureBindings) + "; allowed bindings [0, " +
-                   str(c.limits.maxTextureBindings - 1) + "], the texture units of this device";
+                str(c.limits.maxTextureBindings - 1) + "], the texture units of this device";
         },
         [](Objects& o) {
             CompiledProgram p = shaderProgram("copy", Tier::Current);
@@ -455,8 +467,10 @@ std::vector<ValidationCase> pipelineAndCommandCases() {
             return tryProgram(o, p);
         },
         isGl);
-    add("more timers than the query pool holds", Error::TimerPoolFull, {},
-        fixed("createTimer: all 256 timers of the device are in use; allowed after destroying one"), [](Objects& o) {
+    add(
+        "more timers than the query pool holds", Error::TimerPoolFull, {},
+        fixed("createTimer: all 256 timers of the device are in use; allowed after destroying one"),
+        [](Objects& o) {
             std::vector<TimerHandle> timers;
             Status s;
             for (int i = 0; i < 257 && s.isOk(); ++i) {

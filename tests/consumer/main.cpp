@@ -16,7 +16,7 @@
 // sfx-readme-begin
 #include "sfx/ao.hpp"
 #include "sfx/tiers.hpp"
-#include "sfx/vulkan_device.hpp"   // or sfx/gl_device.hpp: sfx::gl::wrapCurrentContext(...)
+#include "sfx/vulkan_device.hpp"  // or sfx/gl_device.hpp: sfx::gl::wrapCurrentContext(...)
 
 namespace engine {
 
@@ -41,30 +41,28 @@ sfx::Result<std::unique_ptr<sfx::Device>> wrapHostDevice(const HostVulkan& host)
     sfx::DeviceOptions options;
     options.validation = false;  // true while developing: Khronos layer / GL error checks
     options.log = [](sfx::LogSeverity, std::string_view message) { std::cerr << message << "\n"; };
-    return sfx::vulkan::wrapDevice({host.instance, host.physicalDevice, host.device, host.queue,
-                                    host.queueFamily, host.getInstanceProcAddr}, options);
+    return sfx::vulkan::wrapDevice({host.instance, host.physicalDevice, host.device, host.queue, host.queueFamily, host.getInstanceProcAddr},
+                                   options);
 }
 
 // Once per size and settings: the effect allocates what it needs here, not per frame.
-sfx::Result<std::unique_ptr<sfx::AmbientObscurance>> createAo(sfx::Device& device, uint32_t width, uint32_t height,
-                                                              sfx::DepthKind depthKind) {
-    auto tier = sfx::tiers::choose(device.caps());                // or force sfx::Tier::Current
-    if (!tier) return tier.status();                              // names the unmet requirement
-    std::cout << tier->reason << "\n";                            // why this tier
+sfx::Result<std::unique_ptr<sfx::AmbientObscurance>> createAo(sfx::Device& device, uint32_t width, uint32_t height, sfx::DepthKind depthKind) {
+    auto tier = sfx::tiers::choose(device.caps());  // or force sfx::Tier::Current
+    if (!tier) return tier.status();                // names the unmet requirement
+    std::cout << tier->reason << "\n";              // why this tier
 
-    sfx::AoSettings settings;                                     // ranges: docs/settings.md; bad
-    settings.radius = 0.5f;                                       // values are named errors, not clamps
-    settings.intensity = std::nullopt;                            // unset: the tier's calibrated value
+    sfx::AoSettings settings;           // ranges: docs/settings.md; bad
+    settings.radius = 0.5f;             // values are named errors, not clamps
+    settings.intensity = std::nullopt;  // unset: the tier's calibrated value
     auto ao = sfx::AmbientObscurance::create(device, {width, height, tier->profile, settings, depthKind});
-    if (ao) std::cout << ao.value()->plan().describe();           // passes and bytes it holds
+    if (ao) std::cout << ao.value()->plan().describe();  // passes and bytes it holds
     return ao;
 }
 
 // Every frame: record into your frame's command buffer (Vulkan), or the current context (GL).
-sfx::Status renderAo(sfx::Device& device, sfx::AmbientObscurance& ao, VkCommandBuffer frameCommandBuffer,
-                     const FrameTextures& frame, const glm::dmat4& projection) {
-    if (device.caps().backend == sfx::BackendKind::Vulkan)
-        SFX_TRY(sfx::vulkan::setCommandBuffer(device, frameCommandBuffer));
+sfx::Status renderAo(sfx::Device& device, sfx::AmbientObscurance& ao, VkCommandBuffer frameCommandBuffer, const FrameTextures& frame,
+                     const glm::dmat4& projection) {
+    if (device.caps().backend == sfx::BackendKind::Vulkan) SFX_TRY(sfx::vulkan::setCommandBuffer(device, frameCommandBuffer));
     sfx::CameraProjection camera{projection, sfx::ClipDepthRange::ZeroToOne};
     return ao.dispatch({{frame.depth, frame.depthKind, camera}, frame.normals, frame.ao});
 }
@@ -88,8 +86,8 @@ int fail(const std::string& what) {
 // on a hand-made cost table (no device timing, so it runs without a GPU).
 int checkBudget() {
     for (const sfx::tiers::TierRow& row : sfx::tiers::table()) {
-        std::vector<sfx::budget::Candidate> candidates =
-            sfx::budget::candidates(sfx::budget::Effect::AmbientObscurance, sfx::tiers::row(row.tier).presets);
+        std::vector<sfx::budget::Candidate> candidates = sfx::budget::candidates(sfx::budget::Effect::AmbientObscurance,
+                                                                                 sfx::tiers::row(row.tier).presets);
         if (candidates.empty()) return fail(std::string("no AO budget candidates for tier ") + sfx::toString(row.tier));
         sfx::budget::CostTable table;
         table.device = "consumer";
@@ -100,8 +98,7 @@ int checkBudget() {
             table.entries.push_back({candidates[i], 1.0 + double(i)});
         sfx::Result<sfx::budget::Choice> cheapest = sfx::budget::choose(table, 1.0);
         if (!cheapest) return fail("budget::choose: " + cheapest.status().toString());
-        if (cheapest->chosen.candidate.name() != candidates.front().name())
-            return fail("a 1 ms budget chose " + cheapest->chosen.candidate.name());
+        if (cheapest->chosen.candidate.name() != candidates.front().name()) return fail("a 1 ms budget chose " + cheapest->chosen.candidate.name());
         double bestPsnr = 0;
         for (const sfx::budget::Candidate& c : candidates) bestPsnr = std::max(bestPsnr, c.psnrDb);
         sfx::Result<sfx::budget::Choice> any = sfx::budget::choose(table, 1000.0);
@@ -120,8 +117,7 @@ int main() {
 
     // wrapHostDevice links and runs: without host objects it is a named error, not a crash.
     sfx::Result<std::unique_ptr<sfx::Device>> none = engine::wrapHostDevice({});
-    if (none || none.status().code() != sfx::StatusCode::InvalidArgument)
-        return fail("wrapDevice on no Vulkan objects: " + none.status().toString());
+    if (none || none.status().code() != sfx::StatusCode::InvalidArgument) return fail("wrapDevice on no Vulkan objects: " + none.status().toString());
     if (none.value() != nullptr) return fail("an error Result's value is not a null device");
 
     sfx::BackendConfig config;
@@ -141,18 +137,16 @@ int main() {
     std::vector<float> depth(kWidth * kHeight);
     for (uint32_t y = 0; y < kHeight; ++y)
         for (uint32_t x = 0; x < kWidth; ++x) depth[y * kWidth + x] = x < kWidth / 2 ? kFar : kNear;
-    sfx::Result<sfx::TextureHandle> depthTexture =
-        device.createTexture({kWidth, kHeight, 1, sfx::Format::R32F, sfx::kTextureSampled, "consumer depth"});
+    sfx::Result<sfx::TextureHandle> depthTexture = device.createTexture(
+        {kWidth, kHeight, 1, sfx::Format::R32F, sfx::kTextureSampled, "consumer depth"});
     sfx::Result<sfx::TextureHandle> aoTexture = device.createTexture(
         {kWidth, kHeight, 1, sfx::Format::R32F, sfx::kTextureSampled | sfx::kTextureRenderTarget, "consumer ao"});
     if (!depthTexture || !aoTexture) return fail("textures: " + depthTexture.status().toString() + aoTexture.status().toString());
-    if (sfx::Status st = device.writeTexture(*depthTexture, 0, depth.data(), depth.size() * sizeof(float)); !st)
-        return fail(st.toString());
+    if (sfx::Status st = device.writeTexture(*depthTexture, 0, depth.data(), depth.size() * sizeof(float)); !st) return fail(st.toString());
 
     sfx::Result<std::unique_ptr<sfx::AmbientObscurance>> ao = engine::createAo(device, kWidth, kHeight, sfx::DepthKind::Linear);
     if (!ao) return fail("createAo: " + ao.status().toString());
-    sfx::Result<sfx::CameraProjection> camera =
-        sfx::makePerspective({1.0471975511965976, double(kWidth) / kHeight, 0.1, 100.0});
+    sfx::Result<sfx::CameraProjection> camera = sfx::makePerspective({1.0471975511965976, double(kWidth) / kHeight, 0.1, 100.0});
     if (!camera) return fail(camera.status().toString());
     engine::FrameTextures frame{*depthTexture, {}, *aoTexture, sfx::DepthKind::Linear};
     for (int f = 0; f < 3; ++f)  // a few frames, as a renderer runs them
@@ -161,8 +155,7 @@ int main() {
     if (sfx::Status st = device.flush(); !st) return fail(st.toString());
 
     std::vector<float> visibility(kWidth * kHeight);
-    if (sfx::Status st = device.readTexture(*aoTexture, 0, visibility.data(), visibility.size() * sizeof(float)); !st)
-        return fail(st.toString());
+    if (sfx::Status st = device.readTexture(*aoTexture, 0, visibility.data(), visibility.size() * sizeof(float)); !st) return fail(st.toString());
     // Open wall (left quarter, far from the step): nothing occludes it, and nothing is in front
     // of the step's near side either. The far side right at the step has the nearer half inside
     // the radius in front of it, so it is darker, the more so the closer to the step (with

@@ -8,9 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <cstdlib>
 #include <map>
+#include <optional>
 
 #include "effect_runs.hpp"
 #include "sfx/backends.hpp"
@@ -94,45 +94,47 @@ void requirePairsWithin(const std::map<std::string, std::vector<double>>& result
                 const double d = std::abs(a->second[i] - b->second[i]);
                 if (d > worst) worst = d, worstAt = i;
             }
-            INFO(what << ": " << a->first << " vs " << b->first << ": worst difference " << worst << " at value " << worstAt
-                      << " (bound " << bound << ")");
+            INFO(what << ": " << a->first << " vs " << b->first << ": worst difference " << worst << " at value " << worstAt << " (bound " << bound
+                      << ")");
             CHECK(worst <= bound);
             WARN(what << ": " << a->first << " vs " << b->first << ": worst " << worst << " (bound " << bound << ")");
         }
 }
 
 // The backends at `tier`, or a skip when fewer than two opened: there is nothing to compare.
+// clang-format off
 #define SFX_OPEN_AT_LEAST_TWO(devices, tier)                                                             \
     std::vector<Opened> devices = openAll(tier);                                                         \
     if (devices.size() < 2) SFX_SKIP("fewer than two backends at tier " << toString(tier) << ": nothing to compare")
+// clang-format on
 
 void compareAo(Tier tier) {
     SFX_OPEN_AT_LEAST_TWO(devices, tier);
     // Both resolutions, each named: at half resolution the scene is twice the size so that the
     // obscurance pass sees the same 96x64 texels and the same occlusion to agree on.
     for (AoResolution resolution : {AoResolution::Full, AoResolution::Half})
-    for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease})
-        for (bool blur : {false, true}) {
-            const int scale = resolution == AoResolution::Half ? 2 : 1;
-            const tools::AnalyticScene scene = tools::columnsScene(96 * scale, 64 * scale, 1.0);
-            AoSettings s = test::aoTestSettings(t);
-            s.blur = blur;
-            s.resolution = resolution;
-            std::map<std::string, std::vector<double>> results;
-            for (Opened& o : devices) {
-                INFO(o.name << " / " << toString(tier) << " " << toString(t));
-                results[o.name] = test::runAo(*o.device, tiers::profile(tier), scene, s).visibility.values;
+        for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease})
+            for (bool blur : {false, true}) {
+                const int scale = resolution == AoResolution::Half ? 2 : 1;
+                const tools::AnalyticScene scene = tools::columnsScene(96 * scale, 64 * scale, 1.0);
+                AoSettings s = test::aoTestSettings(t);
+                s.blur = blur;
+                s.resolution = resolution;
+                std::map<std::string, std::vector<double>> results;
+                for (Opened& o : devices) {
+                    INFO(o.name << " / " << toString(tier) << " " << toString(t));
+                    results[o.name] = test::runAo(*o.device, tiers::profile(tier), scene, s).visibility.values;
+                }
+                requireNoValidation(devices);
+                // Agreement means something only if there is occlusion to agree on: not a constant image
+                // (the weakest, Crease blurred, spans 0.94..1 on this scene).
+                const std::vector<double>& any = results.begin()->second;
+                const auto [lo, hi] = std::minmax_element(any.begin(), any.end());
+                CHECK(*hi - *lo > 0.05);
+                requirePairsWithin(
+                    results, kAoPairWorst,
+                    std::string("ao ") + toString(t) + (blur ? " blur" : "") + " " + toString(resolution) + " resolution at tier " + toString(tier));
             }
-            requireNoValidation(devices);
-            // Agreement means something only if there is occlusion to agree on: not a constant image
-            // (the weakest, Crease blurred, spans 0.94..1 on this scene).
-            const std::vector<double>& any = results.begin()->second;
-            const auto [lo, hi] = std::minmax_element(any.begin(), any.end());
-            CHECK(*hi - *lo > 0.05);
-            requirePairsWithin(results, kAoPairWorst,
-                               std::string("ao ") + toString(t) + (blur ? " blur" : "") + " " + toString(resolution) +
-                                   " resolution at tier " + toString(tier));
-        }
 }
 
 void compareMotionBlur(Tier tier) {
@@ -165,16 +167,10 @@ void compareMotionBlur(Tier tier) {
 
 }  // namespace
 
-TEST_CASE("ao agrees across backends, per technique, blur on and off: high tier", "[cross-backend][ao]") {
-    compareAo(Tier::High);
-}
-TEST_CASE("ao agrees across backends, per technique, blur on and off: current tier", "[cross-backend][ao]") {
-    compareAo(Tier::Current);
-}
+TEST_CASE("ao agrees across backends, per technique, blur on and off: high tier", "[cross-backend][ao]") { compareAo(Tier::High); }
+TEST_CASE("ao agrees across backends, per technique, blur on and off: current tier", "[cross-backend][ao]") { compareAo(Tier::Current); }
 TEST_CASE("motion blur agrees across backends: high tier", "[cross-backend][motion_blur]") { compareMotionBlur(Tier::High); }
-TEST_CASE("motion blur agrees across backends: current tier", "[cross-backend][motion_blur]") {
-    compareMotionBlur(Tier::Current);
-}
+TEST_CASE("motion blur agrees across backends: current tier", "[cross-backend][motion_blur]") { compareMotionBlur(Tier::Current); }
 
 TEST_CASE("linear depth and its pyramid agree across backends", "[cross-backend][depth]") {
     for (Tier tier : {Tier::High, Tier::Current}) {

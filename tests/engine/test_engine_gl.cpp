@@ -21,12 +21,14 @@
 #include "skips.hpp"
 
 // The call's Status must be ok; its message is shown when it is not.
+// clang-format off
 #define ENGINE_REQUIRE_OK(expr)                              \
     do {                                                     \
         const ::sfx::Status engine_st_ = (expr);             \
         INFO(#expr << " -> " << engine_st_.toString());      \
         REQUIRE(engine_st_.isOk());                          \
     } while (0)
+// clang-format on
 
 namespace {
 
@@ -87,15 +89,14 @@ std::string describe(const sfx::DeviceStats& s) {
     auto c = [](const char* n, const sfx::ObjectCount& o) {
         return std::string(n) + " " + std::to_string(o.live) + "/" + std::to_string(o.created) + " ";
     };
-    return c("textures", s.textures) + c("buffers", s.buffers) + c("samplers", s.samplers) + c("programs", s.programs) +
-           c("pipelines", s.pipelines) + c("timers", s.timers) + c("memory", s.memoryAllocations) +
-           c("readback-copies", s.stagingBuffers) + c("framebuffers", s.framebuffers) + "bytes " + std::to_string(s.deviceMemoryBytes);
+    return c("textures", s.textures) + c("buffers", s.buffers) + c("samplers", s.samplers) + c("programs", s.programs) + c("pipelines", s.pipelines) +
+        c("timers", s.timers) + c("memory", s.memoryAllocations) + c("readback-copies", s.stagingBuffers) + c("framebuffers", s.framebuffers) +
+        "bytes " + std::to_string(s.deviceMemoryBytes);
 }
 
 std::string describe(const HostGlCounts& c) {
-    return "objects created " + std::to_string(c.objectsCreated) + ", deleted " + std::to_string(c.objectsDeleted) +
-           ", storage " + std::to_string(c.allocations) + ", uploads " + std::to_string(c.uploads) + ", readbacks " +
-           std::to_string(c.readbacks);
+    return "objects created " + std::to_string(c.objectsCreated) + ", deleted " + std::to_string(c.objectsDeleted) + ", storage " +
+        std::to_string(c.allocations) + ", uploads " + std::to_string(c.uploads) + ", readbacks " + std::to_string(c.readbacks);
 }
 
 // (c): the GL state the docs promise after an SDK call, and the host's state it must not touch:
@@ -208,9 +209,8 @@ void runEngine(ContextApi api) {
         sfx::Result<FrameLoopResult> loop = runFrames(r, kWarmupFrames, kSteadyFrames);
         INFO(loop.status().toString());
         REQUIRE(loop.isOk());
-        WARN(label << ": " << kWarmupFrames + kSteadyFrames << " frames at " << kWidth << "x" << kHeight << ", median "
-                   << loop->medianFrameMs << " ms per steady frame (" << loop->medianDispatchMs
-                   << " ms in the dispatch() calls); SDK stats " << describe(loop->sdkAtEnd));
+        WARN(label << ": " << kWarmupFrames + kSteadyFrames << " frames at " << kWidth << "x" << kHeight << ", median " << loop->medianFrameMs
+                   << " ms per steady frame (" << loop->medianDispatchMs << " ms in the dispatch() calls); SDK stats " << describe(loop->sdkAtEnd));
         CHECK(loop->sdkMessages.empty());
         INFO(loop->sdkMessages);
 
@@ -314,9 +314,7 @@ void runEngine(ContextApi api) {
 
 }  // namespace
 
-TEST_CASE("engine_gl: the sample's GL ES renderer with AO and motion blur on its own textures", "[gles]") {
-    runEngine(ContextApi::GLES);
-}
+TEST_CASE("engine_gl: the sample's GL ES renderer with AO and motion blur on its own textures", "[gles]") { runEngine(ContextApi::GLES); }
 
 TEST_CASE("engine_gl: the sample's desktop GL renderer with AO and motion blur on its own textures", "[desktop]") {
     runEngine(ContextApi::DesktopGL);

@@ -117,10 +117,9 @@ TEST_CASE("engine vulkan: the sample's frames make nothing and match the SDK's o
     // The steady frames replayed the effects' recordings inside the host's command buffers
     // (AO and motion blur keep one each; a key whose replays keep failing drops its recording).
     if (d.caps().reusableRecordings) CHECK(sdkAfter.recordings.live >= 2);
-    INFO("host: allocations " << hostBefore.memoryAllocations << " -> " << hostAfter.memoryAllocations << ", objects "
-                              << hostBefore.objectsCreated << " -> " << hostAfter.objectsCreated << ", descriptor writes "
-                              << hostBefore.descriptorWrites << " -> " << hostAfter.descriptorWrites << ", staging copies "
-                              << hostBefore.stagingCopies << " -> " << hostAfter.stagingCopies);
+    INFO("host: allocations " << hostBefore.memoryAllocations << " -> " << hostAfter.memoryAllocations << ", objects " << hostBefore.objectsCreated
+                              << " -> " << hostAfter.objectsCreated << ", descriptor writes " << hostBefore.descriptorWrites << " -> "
+                              << hostAfter.descriptorWrites << ", staging copies " << hostBefore.stagingCopies << " -> " << hostAfter.stagingCopies);
     CHECK(hostAfter.memoryAllocations == hostBefore.memoryAllocations);
     CHECK(hostAfter.objectsCreated == hostBefore.objectsCreated);
     CHECK(hostAfter.descriptorWrites == hostBefore.descriptorWrites);

@@ -58,7 +58,8 @@ int main(int argc, char** argv) {
             const std::string line = "\n  " + toString(c) + ": BackendUnavailable: ";
             const size_t at = message.find(line);
             const size_t reasonEnd = at == std::string::npos ? at : message.find('\n', at + line.size());
-            const size_t reasonLength = at == std::string::npos ? 0 : (reasonEnd == std::string::npos ? message.size() : reasonEnd) - (at + line.size());
+            const size_t reasonLength = at == std::string::npos ? 0
+                                                                : (reasonEnd == std::string::npos ? message.size() : reasonEnd) - (at + line.size());
             check(reasonLength > 0, "the message gives why " + toString(c) + " did not open");
         }
         return failures ? 1 : 0;
@@ -89,8 +90,7 @@ int main(int argc, char** argv) {
     check(best->rejected.size() + 1 == compiled.size(), "every other compiled backend is in rejected");
     for (const std::string& h : hidden) {
         bool named = false;
-        for (const std::string& r : best->rejected)
-            named = named || (r.rfind(h + ": ", 0) == 0 && r.find("BackendUnavailable") != std::string::npos);
+        for (const std::string& r : best->rejected) named = named || (r.rfind(h + ": ", 0) == 0 && r.find("BackendUnavailable") != std::string::npos);
         check(named, "rejected gives why " + h + " did not open");
     }
     return failures ? 1 : 0;

@@ -14,5 +14,4 @@ GLAPI void GLAPIENTRY OSMesaDestroyContext(OSMesaContext) {}
 GLAPI GLboolean GLAPIENTRY OSMesaMakeCurrent(OSMesaContext, void*, GLenum, GLsizei, GLsizei) { return GL_FALSE; }
 GLAPI OSMesaContext GLAPIENTRY OSMesaGetCurrentContext() { return nullptr; }
 GLAPI OSMESAproc GLAPIENTRY OSMesaGetProcAddress(const char*) { return nullptr; }
-
 }

@@ -17,8 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         return 0;
     }
     const sfx::io::Image& im = image.value();
-    if (im.width == 0 || im.height == 0 || im.channels == 0 || im.channels > 4 ||
-        uint64_t(im.width) * im.height > kFuzzMaxPixels ||
+    if (im.width == 0 || im.height == 0 || im.channels == 0 || im.channels > 4 || uint64_t(im.width) * im.height > kFuzzMaxPixels ||
         im.pixels.size() != size_t(im.width) * im.height * im.channels)
         std::abort();
     return 0;

@@ -28,10 +28,25 @@ inline float hostileFloat(FuzzedDataProvider& in) {
         case 1: return in.ConsumeFloatingPointInRange<float>(-2.0f, 2.0f);
         case 2: return in.ConsumeFloatingPointInRange<float>(-2000.0f, 2000.0f);
         default: {
-            static const float kEdges[] = {0.0f, -0.0f, 1.0f, -1.0f, 1e-8f, 1e-6f, 1e-4f, 0.1f, 10.0f, 64.0f, 100.0f, 1000.0f, 1e6f,
-                                           std::numeric_limits<float>::denorm_min(), std::numeric_limits<float>::min(),
-                                           std::numeric_limits<float>::max(), std::numeric_limits<float>::infinity(),
-                                           -std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN()};
+            static const float kEdges[] = {0.0f,
+                                           -0.0f,
+                                           1.0f,
+                                           -1.0f,
+                                           1e-8f,
+                                           1e-6f,
+                                           1e-4f,
+                                           0.1f,
+                                           10.0f,
+                                           64.0f,
+                                           100.0f,
+                                           1000.0f,
+                                           1e6f,
+                                           std::numeric_limits<float>::denorm_min(),
+                                           std::numeric_limits<float>::min(),
+                                           std::numeric_limits<float>::max(),
+                                           std::numeric_limits<float>::infinity(),
+                                           -std::numeric_limits<float>::infinity(),
+                                           std::numeric_limits<float>::quiet_NaN()};
             return kEdges[in.ConsumeIntegralInRange<size_t>(0, sizeof kEdges / sizeof kEdges[0] - 1)];
         }
     }

@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
     std::string backendName = "vulkan", tierName = kTierNames[kTierCount - 1];  // the highest tier
     using namespace Catch::clara;
     auto cli = session.cli() | Opt(backendName, "backend")["--backend"]("vulkan, gles, gl-egl, gl-osmesa, null") |
-               Opt(tierName, "tier")["--tier"]("a tier: " + tierNameList() + " (a lower one is opened under its capability ceiling)");
+        Opt(tierName, "tier")["--tier"]("a tier: " + tierNameList() + " (a lower one is opened under its capability ceiling)");
     session.cli(cli);
     if (int rc = session.applyCommandLine(argc, argv); rc != 0) return rc;
 

@@ -22,8 +22,7 @@ Format pickFormat(Device& device, std::initializer_list<Format> wanted, bool ren
     return Format::RGBA8;
 }
 
-GpuAo runAo(Device& dev, const TierProfile& tier, const tools::AnalyticScene& scene, const AoSettings& settings,
-            DepthKind descInput) {
+GpuAo runAo(Device& dev, const TierProfile& tier, const tools::AnalyticScene& scene, const AoSettings& settings, DepthKind descInput) {
     AoDesc desc{scene.width, scene.height, tier, settings, descInput};
     Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev, desc);
     INFO(ao.status().toString());
@@ -105,9 +104,7 @@ MotionScene movingAndStillLayersScene() {
     return scene;
 }
 
-MotionBlurGpuInputs::MotionBlurGpuInputs(Device& d, const ColorGrid& colorGrid, const Grid& depthGrid,
-                                         const VelocityGrid* velocityGrid)
-    : device(d) {
+MotionBlurGpuInputs::MotionBlurGpuInputs(Device& d, const ColorGrid& colorGrid, const Grid& depthGrid, const VelocityGrid* velocityGrid) : device(d) {
     const uint32_t w = colorGrid.width, h = colorGrid.height;
     color = d.createTexture({w, h, 1, Format::RGBA16F, kTextureSampled, "mb-test-color"}).value();
     std::vector<uint16_t> c;
@@ -138,9 +135,8 @@ CameraProjection motionBlurTestCamera(uint32_t w, uint32_t h) {
 
 // descInput: what the effect is told it will get. The depth is linear, so Linear reads it where
 // it lies (no linearisation pass); Hardware copies it into LinearDepth's texture first.
-GpuMotionBlur runMotionBlurPasses(Device& d, const TierProfile& tier, const ColorGrid& color, const Grid& depth,
-                                  const VelocityGrid* velocity, const MotionBlurSettings& s, const CameraMotion& camera,
-                                  DepthKind descInput) {
+GpuMotionBlur runMotionBlurPasses(Device& d, const TierProfile& tier, const ColorGrid& color, const Grid& depth, const VelocityGrid* velocity,
+                                  const MotionBlurSettings& s, const CameraMotion& camera, DepthKind descInput) {
     const uint32_t w = color.width, h = color.height;
     MotionBlurGpuInputs in(d, color, depth, velocity);
     Result<std::unique_ptr<MotionBlur>> mb = MotionBlur::create(d, {w, h, tier, Format::RGBA16F, descInput});
@@ -167,9 +163,8 @@ GpuMotionBlur runMotionBlurPasses(Device& d, const TierProfile& tier, const Colo
     return result;
 }
 
-ColorGrid runMotionBlur(Device& d, const TierProfile& tier, const ColorGrid& color, const Grid& depth,
-                        const VelocityGrid* velocity, const MotionBlurSettings& s, const CameraMotion& camera,
-                        DepthKind descInput) {
+ColorGrid runMotionBlur(Device& d, const TierProfile& tier, const ColorGrid& color, const Grid& depth, const VelocityGrid* velocity,
+                        const MotionBlurSettings& s, const CameraMotion& camera, DepthKind descInput) {
     return runMotionBlurPasses(d, tier, color, depth, velocity, s, camera, descInput).color;
 }
 

@@ -57,15 +57,13 @@ struct GpuMotionBlur {
     reference::ColorGrid color;
     reference::VelocityGrid radiusPx;
 };
-GpuMotionBlur runMotionBlurPasses(Device& device, const TierProfile& tier, const reference::ColorGrid& color,
-                                  const reference::Grid& depth, const reference::VelocityGrid* velocity,
-                                  const MotionBlurSettings& s, const CameraMotion& camera = {},
+GpuMotionBlur runMotionBlurPasses(Device& device, const TierProfile& tier, const reference::ColorGrid& color, const reference::Grid& depth,
+                                  const reference::VelocityGrid* velocity, const MotionBlurSettings& s, const CameraMotion& camera = {},
                                   DepthKind descInput = DepthKind::Linear);
 
 // Runs motion blur and reads the RGBA16F output back as doubles (runMotionBlurPasses' colour).
-reference::ColorGrid runMotionBlur(Device& device, const TierProfile& tier, const reference::ColorGrid& color,
-                                   const reference::Grid& depth, const reference::VelocityGrid* velocity,
-                                   const MotionBlurSettings& s, const CameraMotion& camera = {},
+reference::ColorGrid runMotionBlur(Device& device, const TierProfile& tier, const reference::ColorGrid& color, const reference::Grid& depth,
+                                   const reference::VelocityGrid* velocity, const MotionBlurSettings& s, const CameraMotion& camera = {},
                                    DepthKind descInput = DepthKind::Linear);
 
 // The motion blur conformance rule (docs/motion_blur.md): every channel of `gpu` finite (a

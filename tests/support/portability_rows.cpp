@@ -16,8 +16,8 @@ void addPortabilityRow(const std::string& effect, double worstPixel, double mean
     // The driver's name without its build details ("llvmpipe (LLVM 15.0.6, 256 bits)" is
     // "llvmpipe"): the vector width varies with the machine, the row's key must not.
     const std::string name = device().caps().deviceName;
-    out << "| " << name.substr(0, name.find(" (")) << " | " << toString(backendConfig()) << " | " << toString(tier()) << " | "
-        << effect << " | " << figures << " |\n";
+    out << "| " << name.substr(0, name.find(" (")) << " | " << toString(backendConfig()) << " | " << toString(tier()) << " | " << effect << " | "
+        << figures << " |\n";
 }
 
 }  // namespace sfx::test

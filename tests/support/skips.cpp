@@ -21,8 +21,7 @@ const std::vector<std::string>& skips() { return gSkips; }
 int finishRun(int catchResult) {
     if (gSkips.empty()) return catchResult;
     const bool required = requireAllBackends();
-    std::cerr << (required ? "FAILED (SFX_REQUIRE_ALL_BACKENDS is set): " : "SKIPPED: ") << gSkips.size()
-              << " test case(s) could not run:\n";
+    std::cerr << (required ? "FAILED (SFX_REQUIRE_ALL_BACKENDS is set): " : "SKIPPED: ") << gSkips.size() << " test case(s) could not run:\n";
     for (const std::string& s : gSkips) std::cerr << "  " << s << "\n";
     if (catchResult != 0) return catchResult;
     return required ? 1 : kSkipExitCode;

@@ -29,6 +29,7 @@ int finishRun(int catchResult);
 }  // namespace sfx::test
 
 // Ends the running test case as skipped: `reason` (a stream expression) says why.
+// clang-format off
 #define SFX_SKIP(reason)                                                                          \
     do {                                                                                          \
         std::ostringstream sfx_skip_why_;                                                         \
@@ -37,3 +38,4 @@ int finishRun(int catchResult);
         WARN("SKIPPED: " << sfx_skip_why_.str());                                                 \
         return;                                                                                   \
     } while (0)
+// clang-format on

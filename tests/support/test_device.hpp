@@ -14,11 +14,11 @@
 
 namespace sfx::test {
 
-Device& device();                  // opened once per process
+Device& device();  // opened once per process
 const BackendConfig& backendConfig();
-Tier tier();                       // the tier under test
+Tier tier();  // the tier under test
 const TierProfile& tierProfile();
-std::string label();               // "vulkan/high" for messages and file names
+std::string label();  // "vulkan/high" for messages and file names
 
 // Validation messages (Vulkan layers, GL errors) seen so far; also fails the run at exit.
 std::vector<std::string> takeValidationMessages();
@@ -38,16 +38,20 @@ inline glm::dvec2 snapToSubPixelGrid(const glm::dvec2& windowPx) {
 }  // namespace sfx::test
 
 // Fails the test case if the backend reported validation messages since the last check.
+// clang-format off
 #define SFX_REQUIRE_NO_VALIDATION_MESSAGES()                                  \
     do {                                                                      \
         auto sfx_msgs_ = ::sfx::test::takeValidationMessages();               \
         for (const auto& m : sfx_msgs_) UNSCOPED_INFO("validation: " << m);   \
         REQUIRE(sfx_msgs_.empty());                                           \
     } while (0)
+// clang-format on
 
+// clang-format off
 #define SFX_REQUIRE_OK(expr)                                                  \
     do {                                                                      \
         ::sfx::Status sfx_st_ = (expr);                                       \
         INFO(#expr << " -> " << sfx_st_.toString());                          \
         REQUIRE(sfx_st_.isOk());                                              \
     } while (0)
+// clang-format on

@@ -26,8 +26,8 @@ const AoTechnique kTechniques[] = {AoTechnique::Alchemy, AoTechnique::Scalable, 
 const Tier kTiers[] = {Tier::Current, Tier::High};
 
 // rows: the output's height (the scenes here are mostly 96x64).
-AoConfig configFor(AoTechnique t, Tier tier, double scale = 1.0, bool blur = true, double radius = 0.5,
-                   AoResolution resolution = AoResolution::Tier, uint32_t rows = 64) {
+AoConfig configFor(AoTechnique t, Tier tier, double scale = 1.0, bool blur = true, double radius = 0.5, AoResolution resolution = AoResolution::Tier,
+                   uint32_t rows = 64) {
     AoSettings s;
     s.technique = t;
     s.resolution = resolution;
@@ -211,7 +211,8 @@ TEST_CASE("ao settings resolve to the tier table", "[ao]") {
 
 TEST_CASE("ao shared patterns: the crease diamond is 24 distinct stippled taps", "[ao]") {
     std::vector<shared::ivec2> diamond;
-    for (int j = 0; j < shared::SFX_AO_CREASE_HALF_TAPS; ++j) diamond.push_back(shared::SFX_AO_CREASE_HALF_0[j]), diamond.push_back(shared::SFX_AO_CREASE_HALF_1[j]);
+    for (int j = 0; j < shared::SFX_AO_CREASE_HALF_TAPS; ++j)
+        diamond.push_back(shared::SFX_AO_CREASE_HALF_0[j]), diamond.push_back(shared::SFX_AO_CREASE_HALF_1[j]);
     REQUIRE(diamond.size() == size_t(shared::SFX_AO_CREASE_TAPS));
     for (size_t i = 0; i < diamond.size(); ++i) {
         const auto o = diamond[i];
@@ -314,8 +315,8 @@ TEST_CASE("ao normals from depth: a non-finite or out-of-range neighbour is sky,
     // negative value and one past the far plane all read as maxDepth, and the tangent goes to the
     // other neighbour. On a tilted plane the normals next to such pixels stay the plane's normal.
     tools::AnalyticScene s = tools::tiltedPlaneScene(32, 24);
-    const double bad[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
-                          -std::numeric_limits<double>::infinity(), 0.0, -1.0, 1e30};
+    const double bad[] = {
+        std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), 0.0, -1.0, 1e30};
     std::vector<std::pair<uint32_t, uint32_t>> poked;
     for (size_t k = 0; k < std::size(bad); ++k) {
         const uint32_t x = 4 + uint32_t(k) * 4, y = 4 + uint32_t(k) * 3;  // isolated: no two share a neighbour
@@ -415,7 +416,8 @@ TEST_CASE("ao reference: doubling resolution changes AO only within tolerance", 
         for (Tier tier : kTiers) {
             INFO(name(t, tier));
             for (auto make : {&tools::cornerScene, &tools::sphereOnPlaneScene}) {
-                const Grid lo = reference::ambientVisibility(make(96, 64, 1.0).aoInput(false), configFor(t, tier, 1.0, true, 0.5, AoResolution::Tier, 64));
+                const Grid lo = reference::ambientVisibility(make(96, 64, 1.0).aoInput(false),
+                                                             configFor(t, tier, 1.0, true, 0.5, AoResolution::Tier, 64));
                 const Grid hi = tools::downsample2x(
                     reference::ambientVisibility(make(192, 128, 1.0).aoInput(false), configFor(t, tier, 1.0, true, 0.5, AoResolution::Tier, 128)));
                 double meanAbs = 0, meanLo = 0, meanHi = 0;

@@ -36,14 +36,12 @@ AoConfig resolved(AoTechnique t, Tier tier, uint32_t rows, AoResolution resoluti
 TEST_CASE("ao config: Scalable's clamp and crease's tap spacing follow the output's rows", "[ao]") {
     // Both are output pixels at SFX_AO_REFERENCE_ROWS (720), scaled with the rows and halved at
     // half size, so the look fitted at 320x180 covers the same share of the image at every size.
-    const auto clamp = [](uint32_t rows, AoResolution r) {
-        return resolved(AoTechnique::Scalable, Tier::Current, rows, r).maxRadiusPx;
-    };
+    const auto clamp = [](uint32_t rows, AoResolution r) { return resolved(AoTechnique::Scalable, Tier::Current, rows, r).maxRadiusPx; };
     CHECK(clamp(180, AoResolution::Half) == Approx(20));
     CHECK(clamp(720, AoResolution::Half) == Approx(80));
     CHECK(clamp(1080, AoResolution::Half) == Approx(120));
     CHECK(clamp(720, AoResolution::Full) == Approx(160));
-    CHECK(clamp(1, AoResolution::Half) == Approx(1));  // at least one pass pixel
+    CHECK(clamp(1, AoResolution::Half) == Approx(1));                          // at least one pass pixel
     CHECK(resolved(AoTechnique::Scalable, Tier::High, 720).maxRadiusPx == 0);  // no clamp
     for (Tier tier : kTiers) {
         INFO(toString(tier));

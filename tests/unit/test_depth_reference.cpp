@@ -4,10 +4,10 @@
 #include <cmath>
 #include <limits>
 
+#include "depth_conventions.hpp"
 #include "sfx/camera.hpp"
 #include "sfx/reference/depth_reference.hpp"
 #include "sfx_shared.h"
-#include "depth_conventions.hpp"
 
 using namespace sfx;
 
@@ -23,8 +23,10 @@ TEST_CASE("linearisation inverts the projection for every depth convention", "[d
         DepthReconstruction rec = makeDepthReconstruction(cam, 8, 8).value();
         CHECK(rec.reversedZ == c.reversed);
         CHECK(rec.nearDepth == Approx(0.1).epsilon(1e-12));
-        if (std::isinf(c.farPlane)) CHECK(rec.maxDepth == double(shared::SFX_SKY_DEPTH));
-        else CHECK(rec.maxDepth == Approx(100.0).epsilon(1e-9));
+        if (std::isinf(c.farPlane))
+            CHECK(rec.maxDepth == double(shared::SFX_SKY_DEPTH));
+        else
+            CHECK(rec.maxDepth == Approx(100.0).epsilon(1e-9));
         reference::Grid stored(4, 1);
         const double depths[4] = {0.1, 1.0, 37.0, 99.0};
         for (uint32_t i = 0; i < 4; ++i) stored.at(i, 0) = storedDepthFromLinear(cam, depths[i]);

@@ -227,7 +227,7 @@ TEST_CASE("motion blur: settings out of range are named errors; tiers and scalin
     REQUIRE(high.isOk());
     CHECK(high->taps == 9);
     CHECK(high->jitterSize == 4);
-    CHECK(high->radiusPx == 27);  // 18 px at 720 rows, scaled to 1080
+    CHECK(high->radiusPx == 27);                                                     // 18 px at 720 rows, scaled to 1080
     CHECK(resolveMotionBlur(tiers::profile(Tier::Current), s, 180)->radiusPx == 3);  // 2.5 rounds to 3
 
     auto bad = [](MotionBlurSettings st, const char* field) {

@@ -163,15 +163,15 @@ TEST_CASE("oit ao: a floor beside a translucent wall, monotone in the wall's opa
             const Grid none = opacityAmbientOcclusion(noWall, oc).value().blended;
             const Grid solid = opacityAmbientOcclusion(opaqueWall, oc).value().blended;
             std::vector<Grid> byAlpha;
-            for (double a : {0.0, 0.25, 0.5, 0.75, 1.0}) byAlpha.push_back(opacityAmbientOcclusion(render({kFloor, wall(a, false)}), oc).value().blended);
+            for (double a : {0.0, 0.25, 0.5, 0.75, 1.0})
+                byAlpha.push_back(opacityAmbientOcclusion(render({kFloor, wall(a, false)}), oc).value().blended);
             // The floor pixels the wall does not cover receive the same way in every scene.
             double largestStep = 0.0;
             size_t floorPixels = 0;
             for (uint32_t y = 0; y < kH; ++y)
                 for (uint32_t x = 0; x < kW; ++x) {
                     const size_t i = noWall.index(x, y);
-                    if (opaqueWall.opaque[i].depth != noWall.opaque[i].depth || !(noWall.opaque[i].depth < noWall.reconstruction.maxDepth))
-                        continue;
+                    if (opaqueWall.opaque[i].depth != noWall.opaque[i].depth || !(noWall.opaque[i].depth < noWall.reconstruction.maxDepth)) continue;
                     ++floorPixels;
                     REQUIRE(byAlpha[0].values[i] == none.values[i]);
                     for (size_t k = 1; k < byAlpha.size(); ++k) REQUIRE(byAlpha[k].values[i] <= byAlpha[k - 1].values[i] + 1e-12);

@@ -8,8 +8,8 @@
 #include <random>
 
 #include "sfx/reference/oit_reference.hpp"
-#include "sfx_shared_oit.h"
 #include "sfx/shader_compiler.hpp"
+#include "sfx_shared_oit.h"
 
 using namespace sfx;
 using namespace sfx::reference;
@@ -96,11 +96,11 @@ TEST_CASE("oit: any fragment order gives bit-identical results, ties ordered by 
         }
         const std::vector<OitFragment> sorted = sortedFragments(frags, o.depth);
         for (size_t i = 1; i < sorted.size(); ++i)
-            CHECK(shared::oitBefore(sorted[i - 1].depth, sorted[i - 1].drawIndex, sorted[i - 1].primitiveId, sorted[i].depth,
-                                    sorted[i].drawIndex, sorted[i].primitiveId));
+            CHECK(shared::oitBefore(sorted[i - 1].depth, sorted[i - 1].drawIndex, sorted[i - 1].primitiveId, sorted[i].depth, sorted[i].drawIndex,
+                                    sorted[i].primitiveId));
     }
-    const std::vector<OitFragment> tie = sortedFragments({layer({1, 0, 0}, 0.5, 2, 3, 1), layer({0, 1, 0}, 0.5, 2, 3, 0),
-                                                          layer({0, 0, 1}, 0.5, 2, 2, 5)}, 10.0);
+    const std::vector<OitFragment> tie = sortedFragments(
+        {layer({1, 0, 0}, 0.5, 2, 3, 1), layer({0, 1, 0}, 0.5, 2, 3, 0), layer({0, 0, 1}, 0.5, 2, 2, 5)}, 10.0);
     CHECK(tie[0].drawIndex == 2);
     CHECK(tie[1].primitiveId == 0);
     CHECK(tie[2].primitiveId == 1);

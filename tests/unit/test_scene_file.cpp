@@ -83,8 +83,8 @@ TEST_CASE("scene file: a good file loads as written", "[scene]") {
     for (const Vertex& v : s.meshes[s.objects[3].meshIndex].vertices) CHECK(glm::length(v.position) == Approx(0.5).epsilon(1e-6));
     CHECK(s.objects[3].opacity == 0.0);
     // Rotation about X then Y then Z: world = T * Rz * Ry * Rx * S.
-    Result<Scene> rot = loadSceneFromString(std::string(kMinimalHead) + R"({"mesh": "box", "position": [1, 2, 3], "rotation": [10, 20, 30], "scale": 2}]})",
-                                            kData);
+    Result<Scene> rot = loadSceneFromString(
+        std::string(kMinimalHead) + R"({"mesh": "box", "position": [1, 2, 3], "rotation": [10, 20, 30], "scale": 2}]})", kData);
     REQUIRE(rot.isOk());
     glm::dmat4 expected = glm::translate(glm::dmat4(1.0), glm::dvec3(1, 2, 3));
     expected = glm::rotate(expected, glm::radians(30.0), glm::dvec3(0, 0, 1));
@@ -145,10 +145,10 @@ TEST_CASE("scene file: every key is checked", "[scene][bad-input]") {
                     "camera.target is [0,0]; allowed an array of 3 numbers");
     requireContains(errorOf(R"({"width": 4, "height": 4, "camera": {"position": [0, 0, 5], "target": [0, 0, 5]}, "objects": []})"),
                     "camera.target equals camera.position");
-    requireContains(errorOf(R"({"width": 4, "height": 4, "camera": {"position": [0, 5, 0], "target": [0, 0, 0]}, "objects": []})"),
-                    "camera.up is");
-    requireContains(errorOf(R"({"width": 4, "height": 4, "camera": {"position": [0, 0, 5], "target": [0, 0, 0], "near": 10, "far": 5}, "objects": []})"),
-                    "camera.far is 5");
+    requireContains(errorOf(R"({"width": 4, "height": 4, "camera": {"position": [0, 5, 0], "target": [0, 0, 0]}, "objects": []})"), "camera.up is");
+    requireContains(
+        errorOf(R"({"width": 4, "height": 4, "camera": {"position": [0, 0, 5], "target": [0, 0, 0], "near": 10, "far": 5}, "objects": []})"),
+        "camera.far is 5");
     requireContains(errorOf(R"({"width": 4, "height": 4, "camera": {"position": [0, 0, 5], "target": [0, 0, 0]}, "objects": {}})"),
                     "objects is an object; allowed an array of objects");
     requireContains(objectError(R"({"mesh": "cone"})"), "objects[0].mesh is \"cone\"; allowed quad, box, sphere, or the path of an .obj file");

@@ -9,8 +9,8 @@ using namespace sfx::tools;
 TEST_CASE("svg plot: the Pareto front is the points no other beats for no more cost", "[trade]") {
     const std::vector<PlotPoint> points = {
         {10, 25, "a", "s"}, {5, 20, "b", "s"}, {12, 24, "c", "s"},  // c: a is more accurate for less
-        {20, 28, "d", "t"}, {5, 19, "e", "t"},                       // e: b is as cheap and more accurate
-        {20, 27, "f", "t"},                                          // f: d costs the same, more accurate
+        {20, 28, "d", "t"}, {5, 19, "e", "t"},                      // e: b is as cheap and more accurate
+        {20, 27, "f", "t"},                                         // f: d costs the same, more accurate
     };
     const std::vector<size_t> front = paretoFront(points);
     CHECK(front == std::vector<size_t>{1, 0, 3});
@@ -33,7 +33,7 @@ TEST_CASE("svg plot: the document has every point, the front and escaped text", 
 TEST_CASE("svg plot: a point dominates an anchor when at least as accurate for no more cost", "[trade]") {
     const std::vector<PlotPoint> points = {{10, 25, "a", "s"}, {5, 20, "b", "s"}, {13, 26, "c", "s"}, {14, 30, "d", "s"}};
     CHECK(dominating(points, {13, 26, "anchor", "x"}) == std::vector<size_t>{2});  // equal on both counts dominates
-    CHECK(dominating(points, {9, 24, "anchor", "x"}).empty());  // b is cheaper but less accurate, a more accurate but dearer
+    CHECK(dominating(points, {9, 24, "anchor", "x"}).empty());                     // b is cheaper but less accurate, a more accurate but dearer
     CHECK(dominating(points, {20, 20, "anchor", "x"}) == std::vector<size_t>{0, 1, 2, 3});
     CHECK(dominating({}, {1, 1, "anchor", "x"}).empty());
 }

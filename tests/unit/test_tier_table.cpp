@@ -19,8 +19,8 @@ namespace {
 
 // Every parameter of a profile, for comparing whole profiles.
 auto fields(const TierProfile& p) {
-    return std::make_tuple(p.tier, p.aoScalableTaps, p.aoScalableMirrored, p.aoScalableMaxRadiusPx, p.aoUsesDepthMip,
-                           p.aoDepthMipLevels, p.aoAlchemySamples, p.aoBlurRadiusPx, p.aoCreaseTaps, p.aoCreaseSpacingPx, p.aoPackedDepthTarget, p.mbTaps,
+    return std::make_tuple(p.tier, p.aoScalableTaps, p.aoScalableMirrored, p.aoScalableMaxRadiusPx, p.aoUsesDepthMip, p.aoDepthMipLevels,
+                           p.aoAlchemySamples, p.aoBlurRadiusPx, p.aoCreaseTaps, p.aoCreaseSpacingPx, p.aoPackedDepthTarget, p.mbTaps,
                            p.mbMaxRadiusPx, p.mbJitterSize, p.abufferOit);
 }
 
@@ -71,14 +71,36 @@ TEST_CASE("tier table: the default presets hold the parameters the tiers always 
     // half-size texels at 320x180, where the looks were fitted; the spacing 2 half-size pixels
     // there, which scored better held out than 1 (docs/trade.md).
     TierProfile expected[kTierCount];
-    expected[0] = {.tier = Tier::Current, .aoScalableTaps = 4, .aoScalableMirrored = true, .aoScalableMaxRadiusPx = 160.0f,
-                   .aoUsesDepthMip = false, .aoDepthMipLevels = 1, .aoAlchemySamples = 6, .aoBlurRadiusPx = 2, .aoCreaseTaps = 12,
+    expected[0] = {.tier = Tier::Current,
+                   .aoScalableTaps = 4,
+                   .aoScalableMirrored = true,
+                   .aoScalableMaxRadiusPx = 160.0f,
+                   .aoUsesDepthMip = false,
+                   .aoDepthMipLevels = 1,
+                   .aoAlchemySamples = 6,
+                   .aoBlurRadiusPx = 2,
+                   .aoCreaseTaps = 12,
                    .aoCreaseSpacingPx = 12.0f,
-                   .aoPackedDepthTarget = true, .mbTaps = 7, .mbMaxRadiusPx = 10.0f, .mbJitterSize = 2, .abufferOit = false};
-    expected[1] = {.tier = Tier::High, .aoScalableTaps = 9, .aoScalableMirrored = false, .aoScalableMaxRadiusPx = 0.0f,
-                   .aoUsesDepthMip = true, .aoDepthMipLevels = uint32_t(shared::SFX_DEPTH_MIP_MAX_LEVELS),
-                   .aoAlchemySamples = 12, .aoBlurRadiusPx = 6, .aoCreaseTaps = 24, .aoCreaseSpacingPx = 12.0f, .aoPackedDepthTarget = false, .mbTaps = 9,
-                   .mbMaxRadiusPx = 18.0f, .mbJitterSize = 4, .abufferOit = true};
+                   .aoPackedDepthTarget = true,
+                   .mbTaps = 7,
+                   .mbMaxRadiusPx = 10.0f,
+                   .mbJitterSize = 2,
+                   .abufferOit = false};
+    expected[1] = {.tier = Tier::High,
+                   .aoScalableTaps = 9,
+                   .aoScalableMirrored = false,
+                   .aoScalableMaxRadiusPx = 0.0f,
+                   .aoUsesDepthMip = true,
+                   .aoDepthMipLevels = uint32_t(shared::SFX_DEPTH_MIP_MAX_LEVELS),
+                   .aoAlchemySamples = 12,
+                   .aoBlurRadiusPx = 6,
+                   .aoCreaseTaps = 24,
+                   .aoCreaseSpacingPx = 12.0f,
+                   .aoPackedDepthTarget = false,
+                   .mbTaps = 9,
+                   .mbMaxRadiusPx = 18.0f,
+                   .mbJitterSize = 4,
+                   .abufferOit = true};
     for (uint32_t i = 0; i < kTierCount; ++i) {
         INFO(toString(Tier(i)));
         CHECK(fields(tiers::profile(Tier(i))) == fields(expected[i]));

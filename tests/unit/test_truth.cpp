@@ -61,8 +61,7 @@ truth::Camera lookAtCamera(uint32_t w, uint32_t h, glm::dvec3 eye, glm::dvec3 ta
 double stdErrorBound(uint32_t samples) { return 0.5 / std::sqrt(double(samples)); }
 
 // The mean of visibilityAt over `pixels` different per-pixel patterns.
-double meanOverPixels(const truth::Tracer& t, glm::dvec3 p, glm::dvec3 n, const truth::Settings& s, uint32_t pixels, double* worst,
-                      double expected) {
+double meanOverPixels(const truth::Tracer& t, glm::dvec3 p, glm::dvec3 n, const truth::Settings& s, uint32_t pixels, double* worst, double expected) {
     double sum = 0;
     for (uint32_t x = 0; x < pixels; ++x) {
         const double v = t.visibilityAt(p, n, s, x, 7);
@@ -167,8 +166,8 @@ TEST_CASE("truth: pictures trace the pixel-centre ray, are deterministic and the
             ++surface;
             const double dv = one->visibility[i] - reseeded->visibility[i];
             sqDiff += dv * dv;
-            const glm::dvec3 d = glm::dmat3(toWorld) * glm::dvec3((x + 0.5) * rec.projInfo[0] + rec.projInfo[2],
-                                                                  (y + 0.5) * rec.projInfo[1] + rec.projInfo[3], -1.0);
+            const glm::dvec3 d = glm::dmat3(toWorld) *
+                glm::dvec3((x + 0.5) * rec.projInfo[0] + rec.projInfo[2], (y + 0.5) * rec.projInfo[1] + rec.projInfo[3], -1.0);
             const double tFloor = -eye.y / d.y, tWall = -eye.x / d.x;
             if (!(d.y < 0 && (d.x >= 0 || tFloor < tWall))) continue;  // the wall is nearer
             const glm::dvec3 p = eye + tFloor * d;

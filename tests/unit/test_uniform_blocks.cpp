@@ -30,7 +30,8 @@ struct CppBlock {
     size_t size;
     uint32_t binding;
 };
-#define SFX_CPP_BLOCK(B) CppBlock{#B, sizeof(shared::B), shared::B::kBinding}
+#define SFX_CPP_BLOCK(B) \
+    CppBlock { #B, sizeof(shared::B), shared::B::kBinding }
 // Every SFX_BLOCK of shader_src/include, as C++ declares it.
 constexpr CppBlock kCppBlocks[] = {
     SFX_CPP_BLOCK(LinearizeParams), SFX_CPP_BLOCK(AoParams),         SFX_CPP_BLOCK(BlurParams),
@@ -53,9 +54,9 @@ const CppBlock* cppBlock(std::string_view name) {
 TEST_CASE("uniform blocks: every reflected block has its C++ struct's size and binding", "[shaders]") {
     std::set<std::string_view> seen;
     size_t blocks = 0;
-    for (std::span<const ProgramUniformBlocks> library : {std::span<const ProgramUniformBlocks>(shaders::kUniformBlocks),
-                                                          std::span<const ProgramUniformBlocks>(scene_shaders::kUniformBlocks),
-                                                          std::span<const ProgramUniformBlocks>(test_shaders::kUniformBlocks)})
+    for (std::span<const ProgramUniformBlocks> library :
+         {std::span<const ProgramUniformBlocks>(shaders::kUniformBlocks), std::span<const ProgramUniformBlocks>(scene_shaders::kUniformBlocks),
+          std::span<const ProgramUniformBlocks>(test_shaders::kUniformBlocks)})
         for (const ProgramUniformBlocks& p : library)
             for (const UniformBlockInfo& b : p.blocks) {
                 INFO(p.program << ": uniform block " << b.name);

@@ -51,9 +51,7 @@ struct Host : engine::VkHost {
         return true;
     }
 
-    vulkan::ExternalVulkan external() const {
-        return {instance, physical, device, queue, family, vkGetInstanceProcAddr, validation};
-    }
+    vulkan::ExternalVulkan external() const { return {instance, physical, device, queue, family, vkGetInstanceProcAddr, validation}; }
 
     uint32_t memoryType(uint32_t bits, VkMemoryPropertyFlags want) const {
         VkPhysicalDeviceMemoryProperties mp;
@@ -141,8 +139,7 @@ struct HostImage {
     VkFormat format;
     VkImageAspectFlags aspect;
     uint32_t width, height;
-    HostImage(const Host& h, VkFormat f, VkImageUsageFlags usage, uint32_t w, uint32_t hgt, uint32_t layers = 1,
-              uint32_t viewLayer = 0)
+    HostImage(const Host& h, VkFormat f, VkImageUsageFlags usage, uint32_t w, uint32_t hgt, uint32_t layers = 1, uint32_t viewLayer = 0)
         : host(h), format(f), width(w), height(hgt) {
         aspect = (f == VK_FORMAT_D32_SFLOAT || f == VK_FORMAT_D16_UNORM) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
         VkImageCreateInfo ici{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
@@ -195,7 +192,7 @@ inline vulkan::ExternalImage externalImage(const HostImage& img, VkImageUsageFla
 }
 
 inline void imageBarrier(VkCommandBuffer cb, const HostImage& img, uint32_t layer, VkImageLayout from, VkImageLayout to,
-                  VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
+                         VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
     engine::imageBarrier(cb, img.image, img.aspect, from, to, srcStage, srcAccess, dstStage, dstAccess, layer);
 }
 
@@ -204,14 +201,14 @@ inline void hostUpload(Host& host, const HostImage& img, uint32_t layer, const v
     HostBuffer staging(host, bytes);
     std::memcpy(staging.mapped, data, bytes);
     host.begin();
-    imageBarrier(host.cb, img, layer, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                 VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+    imageBarrier(host.cb, img, layer, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
     VkBufferImageCopy region{};
     region.imageSubresource = {img.aspect, 0, layer, 1};
     region.imageExtent = {img.width, img.height, 1};
     vkCmdCopyBufferToImage(host.cb, staging.buffer, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-    imageBarrier(host.cb, img, layer, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, layout, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                 VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
+    imageBarrier(host.cb, img, layer, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, layout, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                 VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
     host.submitAndWait();
 }
 
@@ -219,14 +216,14 @@ inline void hostUpload(Host& host, const HostImage& img, uint32_t layer, const v
 inline std::vector<uint8_t> hostDownload(Host& host, const HostImage& img, VkImageLayout layout, size_t bytes) {
     HostBuffer readback(host, bytes);
     host.begin();
-    imageBarrier(host.cb, img, 0, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
-                 VK_ACCESS_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    imageBarrier(host.cb, img, 0, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT,
+                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
     VkBufferImageCopy region{};
     region.imageSubresource = {img.aspect, 0, 0, 1};
     region.imageExtent = {img.width, img.height, 1};
     vkCmdCopyImageToBuffer(host.cb, img.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1, &region);
-    imageBarrier(host.cb, img, 0, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
-                 VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
+    imageBarrier(host.cb, img, 0, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                 VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
     VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;

@@ -71,9 +71,10 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL reportingLoader(VkInstance instance, co
 
 }  // namespace
 
-TEST_CASE("vulkan entry points: wrapDevice refuses null objects, a family out of range or without graphics, Vulkan 1.0, "
-          "synchronization2 without its entry point",
-          "[vulkan][validation]") {
+TEST_CASE(
+    "vulkan entry points: wrapDevice refuses null objects, a family out of range or without graphics, Vulkan 1.0, "
+    "synchronization2 without its entry point",
+    "[vulkan][validation]") {
     Host host;
     if (!host.create(false)) SFX_SKIP(host.skipReason);
     const vulkan::ExternalVulkan good = host.external();
@@ -84,7 +85,8 @@ TEST_CASE("vulkan entry points: wrapDevice refuses null objects, a family out of
         void (*clear)(vulkan::ExternalVulkan&);
     };
     const NullCase nulls[] = {
-        {"ExternalVulkan.getInstanceProcAddr", "the host's vkGetInstanceProcAddr", [](vulkan::ExternalVulkan& e) { e.getInstanceProcAddr = nullptr; }},
+        {"ExternalVulkan.getInstanceProcAddr", "the host's vkGetInstanceProcAddr",
+         [](vulkan::ExternalVulkan& e) { e.getInstanceProcAddr = nullptr; }},
         {"ExternalVulkan.instance", "the host's VkInstance", [](vulkan::ExternalVulkan& e) { e.instance = VK_NULL_HANDLE; }},
         {"ExternalVulkan.physicalDevice", "the host's VkPhysicalDevice", [](vulkan::ExternalVulkan& e) { e.physicalDevice = VK_NULL_HANDLE; }},
         {"ExternalVulkan.device", "the host's VkDevice", [](vulkan::ExternalVulkan& e) { e.device = VK_NULL_HANDLE; }},
@@ -112,12 +114,12 @@ TEST_CASE("vulkan entry points: wrapDevice refuses null objects, a family out of
     std::vector<VkQueueFamilyProperties> props(families);
     vkGetPhysicalDeviceQueueFamilyProperties(host.physical, &families, props.data());
     std::string flags;  // the host's family as reported: its real flags less graphics
-    for (const auto& [bit, name] : {std::pair{VK_QUEUE_COMPUTE_BIT, "compute"}, {VK_QUEUE_TRANSFER_BIT, "transfer"},
-                                    {VK_QUEUE_SPARSE_BINDING_BIT, "sparse-binding"}})
+    for (const auto& [bit, name] :
+         {std::pair{VK_QUEUE_COMPUTE_BIT, "compute"}, {VK_QUEUE_TRANSFER_BIT, "transfer"}, {VK_QUEUE_SPARSE_BINDING_BIT, "sparse-binding"}})
         if (props[good.queueFamily].queueFlags & bit) flags += (flags.empty() ? "" : " | ") + std::string(name);
     checkRefusal(noGraphics.status(), Error::ExternalQueueFamilyFlags,
-                 "ExternalVulkan.queueFamily is " + std::to_string(good.queueFamily) + ", a family with flags " +
-                     (flags.empty() ? "none" : flags) + "; allowed a family with graphics and compute");
+                 "ExternalVulkan.queueFamily is " + std::to_string(good.queueFamily) + ", a family with flags " + (flags.empty() ? "none" : flags) +
+                     "; allowed a family with graphics and compute");
 
     gReportVulkan10 = true;
     Result<std::unique_ptr<Device>> old = vulkan::wrapDevice(e);
@@ -145,8 +147,7 @@ TEST_CASE("vulkan entry points: wrapDevice refuses null objects, a family out of
     CHECK(wrapped.isOk());
 }
 
-TEST_CASE("vulkan entry points: a host command buffer only on a wrapped device, Vulkan calls only on Vulkan devices",
-          "[vulkan][validation]") {
+TEST_CASE("vulkan entry points: a host command buffer only on a wrapped device, Vulkan calls only on Vulkan devices", "[vulkan][validation]") {
     Host host;
     if (!host.create(false)) SFX_SKIP(host.skipReason);
     DeviceOptions options;

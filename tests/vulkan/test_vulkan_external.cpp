@@ -182,8 +182,7 @@ TEST_CASE("vulkan: an own device with DeviceOptions::reuseRecordings off keeps n
 TEST_CASE("vulkan: steady frames in a host command buffer make nothing", "[vulkan][steady]") {
     Host host;
     if (!host.create(false)) SFX_SKIP(host.skipReason);  // runs without the layer too
-    vulkan::ExternalVulkan ext{host.instance, host.physical, host.device, host.queue, host.family,
-                               vkGetInstanceProcAddr, host.validation};
+    vulkan::ExternalVulkan ext{host.instance, host.physical, host.device, host.queue, host.family, vkGetInstanceProcAddr, host.validation};
     const VkCommandBuffer cb = host.cb;
     VkFence fence = VK_NULL_HANDLE;
     VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
@@ -243,8 +242,7 @@ TEST_CASE("vulkan: steady frames in a host command buffer make nothing", "[vulka
         for (AoTechnique technique : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}) {
             AoSettings settings;
             settings.technique = technique;
-            Result<std::unique_ptr<AmbientObscurance>> ao =
-                AmbientObscurance::create(d, {w, h, profile, settings, DepthKind::Hardware});
+            Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(d, {w, h, profile, settings, DepthKind::Hardware});
             REQUIRE(ao.isOk());
             AoInputs in;
             in.depth = DepthSource{depthTex, DepthKind::Linear, scene.camera};

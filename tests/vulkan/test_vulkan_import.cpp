@@ -39,9 +39,8 @@ double maxDifference(const std::vector<double>& a, const std::vector<double>& b)
 }
 
 // AO of the SDK's own textures holding the same inputs: the path the imports must match.
-std::vector<double> sdkOwnAo(Device& d, AmbientObscurance& ao, uint32_t w, uint32_t h, Format depthFormat,
-                             const std::vector<float>& depth, DepthKind kind, const CameraProjection& camera,
-                             const std::vector<float>* normals) {
+std::vector<double> sdkOwnAo(Device& d, AmbientObscurance& ao, uint32_t w, uint32_t h, Format depthFormat, const std::vector<float>& depth,
+                             DepthKind kind, const CameraProjection& camera, const std::vector<float>* normals) {
     TextureHandle depthTex = d.createTexture({w, h, 1, depthFormat, kTextureSampled}).value();
     REQUIRE(d.writeTexture(depthTex, 0, depth.data(), depth.size() * 4).isOk());
     TextureHandle normalTex;
@@ -64,7 +63,6 @@ std::vector<double> sdkOwnAo(Device& d, AmbientObscurance& ao, uint32_t w, uint3
     return test::halfBytesToDoubles(bytes);
 }
 
-
 }  // namespace
 
 TEST_CASE("vulkan import: AO reads host depth and normals and writes a host image", "[vulkan][import]") {
@@ -79,13 +77,14 @@ TEST_CASE("vulkan import: AO reads host depth and normals and writes a host imag
     for (const auto& n : scene.normals) normals.insert(normals.end(), {float(n.x), float(n.y), float(n.z), 0.0f});
 
     {
-        HostImage depthImg(host, VK_FORMAT_R32_SFLOAT, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-                                                           VK_IMAGE_USAGE_TRANSFER_SRC_BIT, w, h);
+        HostImage depthImg(host, VK_FORMAT_R32_SFLOAT, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                           w, h);
         // Normals in layer 1 of a two-layer array, with the host's view of that layer.
-        HostImage normalImg(host, VK_FORMAT_R32G32B32A32_SFLOAT, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                            w, h, 2, 1);
-        HostImage outImg(host, VK_FORMAT_R16_SFLOAT, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                                                         VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, w, h);
+        HostImage normalImg(host, VK_FORMAT_R32G32B32A32_SFLOAT, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, w, h, 2, 1);
+        HostImage outImg(
+            host, VK_FORMAT_R16_SFLOAT,
+            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, w,
+            h);
         hostUpload(host, depthImg, 0, depth.data(), depth.size() * 4, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
         hostUpload(host, normalImg, 1, normals.data(), normals.size() * 4, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
         const std::vector<uint16_t> grey(size_t(w) * h, floatToHalf(0.25f));
@@ -110,7 +109,7 @@ TEST_CASE("vulkan import: AO reads host depth and normals and writes a host imag
         oe.image = outImg.image;
         oe.vkFormat = VK_FORMAT_R16_SFLOAT;
         oe.vkUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                     VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+            VK_IMAGE_USAGE_TRANSFER_DST_BIT;
         oe.usage = kTextureSampled | kTextureRenderTarget;
         oe.layout = VK_IMAGE_LAYOUT_GENERAL;
         Result<TextureHandle> depthTex = vulkan::importImage(d, de);
@@ -122,8 +121,7 @@ TEST_CASE("vulkan import: AO reads host depth and normals and writes a host imag
 
         AoSettings settings;
         settings.normals = AoNormals::FromTexture;
-        Result<std::unique_ptr<AmbientObscurance>> ao =
-            AmbientObscurance::create(d, {w, h, tiers::profile(Tier::High), settings, DepthKind::Linear});
+        Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(d, {w, h, tiers::profile(Tier::High), settings, DepthKind::Linear});
         REQUIRE(ao.isOk());
         AoInputs in;
         in.depth = DepthSource{depthTex.value(), DepthKind::Linear, scene.camera};
@@ -160,7 +158,8 @@ TEST_CASE("vulkan import: AO reads host depth and normals and writes a host imag
         REQUIRE(d.flush().isOk());
         std::vector<uint8_t> depthBytes = hostDownload(host, depthImg, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, depth.size() * 4);
         CHECK(std::memcmp(depthBytes.data(), depth.data(), depthBytes.size()) == 0);
-        CHECK(maxDifference(test::halfBytesToDoubles(hostDownload(host, outImg, VK_IMAGE_LAYOUT_GENERAL, size_t(w) * h * 2)), own) <= kSamePathTolerance);
+        CHECK(maxDifference(test::halfBytesToDoubles(hostDownload(host, outImg, VK_IMAGE_LAYOUT_GENERAL, size_t(w) * h * 2)), own) <=
+              kSamePathTolerance);
         CHECK(d.destroyTexture(outTex.value()).code() == StatusCode::StaleHandle);
         checkNoMessages(d, host);
     }
@@ -256,8 +255,8 @@ TEST_CASE("vulkan import: host passes right before and after the SDK's AO in one
     HostImage target(host, VK_FORMAT_R32_SFLOAT, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, w / 2, h / 2);
     // The AO image starts in the layout the contract names for it.
     host.begin();
-    imageBarrier(host.cb, aoImg, 0, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                 VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0);
+    imageBarrier(host.cb, aoImg, 0, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                 VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0);
     host.submitAndWait();
 
     // The depth in the layout the host's depth pass leaves it, the AO in the one its sampling
@@ -273,8 +272,7 @@ TEST_CASE("vulkan import: host passes right before and after the SDK's AO in one
     REQUIRE((depthTex.isOk() && aoTex.isOk()));
     AoSettings settings;
     settings.radius = 1.0f;
-    Result<std::unique_ptr<AmbientObscurance>> ao =
-        AmbientObscurance::create(d, {w, h, tiers::profile(Tier::High), settings, DepthKind::Hardware});
+    Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(d, {w, h, tiers::profile(Tier::High), settings, DepthKind::Hardware});
     REQUIRE(ao.isOk());
 
     // The host's sampling pass: each target pixel the maximum of a 2x2 block of the AO image
@@ -376,9 +374,8 @@ TEST_CASE("vulkan import: host passes right before and after the SDK's AO in one
 
     host.begin();
     // Host pass 1: depth, by clears of its rectangles inside the host's dynamic rendering.
-    imageBarrier(host.cb, depthImg, 0, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-                 VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                 VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+    imageBarrier(host.cb, depthImg, 0, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+                 0, VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
     VkRenderingAttachmentInfo depthAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     depthAttachment.imageView = depthImg.view;
@@ -405,9 +402,8 @@ TEST_CASE("vulkan import: host passes right before and after the SDK's AO in one
     REQUIRE(ao.value()->dispatch(in).isOk());
     REQUIRE(d.flush().isOk());
     // Host pass 2: samples the AO image, straight after.
-    imageBarrier(host.cb, target, 0, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                 VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+    imageBarrier(host.cb, target, 0, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
     VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     color.imageView = target.view;
     color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
@@ -428,8 +424,8 @@ TEST_CASE("vulkan import: host passes right before and after the SDK's AO in one
     vkCmdDraw(host.cb, 3, 1, 0, 0);
     vkCmdEndRendering(host.cb);
     imageBarrier(host.cb, target, 0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
-                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                 VK_ACCESS_TRANSFER_READ_BIT);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {w / 2, h / 2, 1};

@@ -23,8 +23,7 @@
 using namespace sfx;
 using namespace sfx::hostvk;
 
-TEST_CASE("vulkan import: motion blur writes a host image in the host's command buffer, bit for bit as output()",
-          "[vulkan][import][motion_blur]") {
+TEST_CASE("vulkan import: motion blur writes a host image in the host's command buffer, bit for bit as output()", "[vulkan][import][motion_blur]") {
     Host host;
     if (!host.create()) SFX_SKIP(host.skipReason);
     const std::unique_ptr<Device> wrapped = wrapValidated(host);
@@ -45,8 +44,8 @@ TEST_CASE("vulkan import: motion blur writes a host image in the host's command 
         }
 
     const VkImageUsageFlags inUsage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    const VkImageUsageFlags outUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                                       VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    const VkImageUsageFlags outUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+        VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     HostImage colorImg(host, VK_FORMAT_R16G16B16A16_SFLOAT, inUsage, w, h);
     HostImage depthImg(host, VK_FORMAT_R32_SFLOAT, inUsage, w, h);
     HostImage velocityImg(host, VK_FORMAT_R16G16_SFLOAT, inUsage, w, h);
@@ -60,16 +59,16 @@ TEST_CASE("vulkan import: motion blur writes a host image in the host's command 
     // rightly warn that a copy from GENERAL is slower).
     hostUpload(host, outImg, 0, marker.data(), marker.size() * 2, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
 
-    Result<TextureHandle> colorTex =
-        vulkan::importImage(d, externalImage(colorImg, inUsage, kTextureSampled, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
-    Result<TextureHandle> depthTex =
-        vulkan::importImage(d, externalImage(depthImg, inUsage, kTextureSampled, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
-    Result<TextureHandle> velocityTex =
-        vulkan::importImage(d, externalImage(velocityImg, inUsage, kTextureSampled, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
-    Result<TextureHandle> outTex =
-        vulkan::importImage(d, externalImage(outImg, outUsage, kTextureSampled | kTextureRenderTarget, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL));
-    INFO(colorTex.status().toString() << " / " << depthTex.status().toString() << " / " << velocityTex.status().toString()
-                                      << " / " << outTex.status().toString());
+    Result<TextureHandle> colorTex = vulkan::importImage(d,
+                                                         externalImage(colorImg, inUsage, kTextureSampled, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
+    Result<TextureHandle> depthTex = vulkan::importImage(d,
+                                                         externalImage(depthImg, inUsage, kTextureSampled, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
+    Result<TextureHandle> velocityTex = vulkan::importImage(
+        d, externalImage(velocityImg, inUsage, kTextureSampled, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
+    Result<TextureHandle> outTex = vulkan::importImage(
+        d, externalImage(outImg, outUsage, kTextureSampled | kTextureRenderTarget, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL));
+    INFO(colorTex.status().toString() << " / " << depthTex.status().toString() << " / " << velocityTex.status().toString() << " / "
+                                      << outTex.status().toString());
     REQUIRE((colorTex.isOk() && depthTex.isOk() && velocityTex.isOk() && outTex.isOk()));
 
     MotionBlurDesc desc;
@@ -128,8 +127,7 @@ TEST_CASE("vulkan import: motion blur writes a host image in the host's command 
     checkNoMessages(d, host);
 
     mb.value().reset();
-    for (TextureHandle t : {colorTex.value(), depthTex.value(), velocityTex.value(), outTex.value()})
-        REQUIRE(d.destroyTexture(t).isOk());
+    for (TextureHandle t : {colorTex.value(), depthTex.value(), velocityTex.value(), outTex.value()}) REQUIRE(d.destroyTexture(t).isOk());
     REQUIRE(d.flush().isOk());
     checkNoMessages(d, host);
 }

@@ -8,9 +8,7 @@
 namespace sfx::tiers {
 namespace {
 
-bool apiAtLeast(const DeviceCaps& c, uint32_t major, uint32_t minor) {
-    return c.apiMajor > major || (c.apiMajor == major && c.apiMinor >= minor);
-}
+bool apiAtLeast(const DeviceCaps& c, uint32_t major, uint32_t minor) { return c.apiMajor > major || (c.apiMajor == major && c.apiMinor >= minor); }
 
 // The current tier's requirements (what the tier is for is its row's summary, makeTable).
 std::vector<Requirement> currentRules() {
@@ -19,10 +17,10 @@ std::vector<Requirement> currentRules() {
         {"API at least GL ES 3.0, GL 3.3 or Vulkan 1.0",
          [](const DeviceCaps& c) {
              switch (c.backend) {
-             case BackendKind::GLES: return apiAtLeast(c, 3, 0);
-             case BackendKind::GL: return apiAtLeast(c, 3, 3);
-             case BackendKind::Vulkan: return apiAtLeast(c, 1, 0);
-             default: return false;
+                 case BackendKind::GLES: return apiAtLeast(c, 3, 0);
+                 case BackendKind::GL: return apiAtLeast(c, 3, 3);
+                 case BackendKind::Vulkan: return apiAtLeast(c, 1, 0);
+                 default: return false;
              }
          }},
         // Linear depth (R32F), motion blur's packed velocity and tiles (RGBA16F, RG16F). On GL ES
@@ -30,12 +28,11 @@ std::vector<Requirement> currentRules() {
         {"R32F, RGBA16F and RG16F render targets (EXT_color_buffer_float on GL ES)",
          [](const DeviceCaps& c) {
              return c.renderableFormat[size_t(Format::R32F)] && c.renderableFormat[size_t(Format::RGBA16F)] &&
-                    c.renderableFormat[size_t(Format::RG16F)];
+                 c.renderableFormat[size_t(Format::RG16F)];
          }},
         {"RGBA8 render targets", [](const DeviceCaps& c) { return c.renderableFormat[size_t(Format::RGBA8)]; }},
-        {"sampling D32F or D24S8 depth", [](const DeviceCaps& c) {
-             return c.sampledFormat[size_t(Format::D32F)] || c.sampledFormat[size_t(Format::D24S8)];
-         }},
+        {"sampling D32F or D24S8 depth",
+         [](const DeviceCaps& c) { return c.sampledFormat[size_t(Format::D32F)] || c.sampledFormat[size_t(Format::D24S8)]; }},
     };
 }
 
@@ -44,10 +41,10 @@ std::vector<Requirement> highRules() {
     std::vector<Requirement> rules = currentRules();
     rules.push_back({"API at least GL ES 3.1, GL 4.3 or Vulkan 1.1", [](const DeviceCaps& c) {
                          switch (c.backend) {
-                         case BackendKind::GLES: return apiAtLeast(c, 3, 1);
-                         case BackendKind::GL: return apiAtLeast(c, 4, 3);
-                         case BackendKind::Vulkan: return apiAtLeast(c, 1, 1);
-                         default: return false;
+                             case BackendKind::GLES: return apiAtLeast(c, 3, 1);
+                             case BackendKind::GL: return apiAtLeast(c, 4, 3);
+                             case BackendKind::Vulkan: return apiAtLeast(c, 1, 1);
+                             default: return false;
                          }
                      }});
     rules.push_back({"compute shaders", [](const DeviceCaps& c) { return c.computeShaders; }});
@@ -78,7 +75,7 @@ TierProfile currentDefault() {
     p.aoCreaseSpacingPx = 12.0f;
     // The look fitted against ray-traced truth (tools/bench/fit_ao, docs/trade.md); before the
     // calibration every tier had the papers' 1, 1, 1e-4 / 0.02, range 1, bias 0.25.
-    p.aoLook[0] = {.intensity = 0.472871f, .contrast = 1.38237f, .bias = 1.59371e-7f};                             // alchemy
+    p.aoLook[0] = {.intensity = 0.472871f, .contrast = 1.38237f, .bias = 1.59371e-7f};  // alchemy
     // Scalable fitted at half resolution with the 20 px clamp in half-size texels, its sum
     // exponent fitted too (tools/bench/fit_ao --start tier): below 1 where the course squares.
     p.aoLook[1] = {.intensity = 0.0654423f, .contrast = 7.23394f, .bias = 0.0f, .sumExponent = 0.569394f};  // scalable
@@ -90,7 +87,7 @@ TierProfile currentDefault() {
     // (docs/trade.md); the blur's 2 px become 1 half-size tap each side.
     p.aoHalfResolution = true;
     p.aoMaxDepthLayers = 1;  // multilayer AO is a high-tier feature
-    p.mbTaps = 7;                  // 6 samples + centre
+    p.mbTaps = 7;            // 6 samples + centre
     p.mbMaxRadiusPx = 10.0f;
     p.mbJitterSize = 2;  // checkerboard
     p.abufferOit = false;
@@ -105,11 +102,11 @@ TierProfile highDefault() {
     p.aoScalableMaxRadiusPx = 0.0f;  // no clamp
     p.aoUsesDepthMip = true;
     p.aoDepthMipLevels = uint32_t(shared::SFX_DEPTH_MIP_MAX_LEVELS);
-    p.aoAlchemySamples = 12;  // the paper's 12 samples per pixel
-    p.aoBlurRadiusPx = 6;     // 13-tap, as Alchemy's filter
-    p.aoCreaseTaps = 24;      // the article's whole diamond
-    p.aoCreaseSpacingPx = 12.0f;  // as the current tier
-    p.aoLook[0] = {.intensity = 0.392128f, .contrast = 1.77828f, .bias = 1e-7f};                               // alchemy
+    p.aoAlchemySamples = 12;                                                      // the paper's 12 samples per pixel
+    p.aoBlurRadiusPx = 6;                                                         // 13-tap, as Alchemy's filter
+    p.aoCreaseTaps = 24;                                                          // the article's whole diamond
+    p.aoCreaseSpacingPx = 12.0f;                                                  // as the current tier
+    p.aoLook[0] = {.intensity = 0.392128f, .contrast = 1.77828f, .bias = 1e-7f};  // alchemy
     // Scalable with its sum exponent fitted (tools/bench/fit_ao --start tier, at half resolution).
     p.aoLook[1] = {.intensity = 0.187609f, .contrast = 7.36525f, .bias = 0.0468752f, .sumExponent = 0.707107f};  // scalable
     // Crease fitted at half resolution, the default (tools/bench/fit_ao --start tier).
@@ -158,12 +155,17 @@ std::vector<Preset> highPresets() {
 
 std::vector<TierRow> makeTable() {
     std::vector<TierRow> rows;
-    rows.push_back({Tier::Current, "GL ES 3.0-class: fragment passes only, no storage buffers or atomics", currentRules(),
+    rows.push_back({Tier::Current,
+                    "GL ES 3.0-class: fragment passes only, no storage buffers or atomics",
+                    currentRules(),
                     CapabilityCeiling::GLES30,
                     {ShaderDialect::Essl300, ShaderDialect::Essl310, ShaderDialect::Glsl330, ShaderDialect::Glsl450},
                     currentPresets()});
-    rows.push_back({Tier::High, "Vulkan / GL ES 3.1+ / GL 4.3+: storage buffers, atomics, compute", highRules(),
-                    CapabilityCeiling::None, {ShaderDialect::Essl310, ShaderDialect::Glsl450},
+    rows.push_back({Tier::High,
+                    "Vulkan / GL ES 3.1+ / GL 4.3+: storage buffers, atomics, compute",
+                    highRules(),
+                    CapabilityCeiling::None,
+                    {ShaderDialect::Essl310, ShaderDialect::Glsl450},
                     highPresets()});
     return rows;
 }

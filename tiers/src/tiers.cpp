@@ -52,17 +52,12 @@ std::vector<ShaderDefine> shaderDefines(Tier tier) {
 
 Result<TierChoice> choose(const DeviceCaps& caps, std::optional<Tier> requested) {
     const std::string device = std::string(toString(caps.backend)) + " (" + caps.apiName +
-                               (caps.ceiling != CapabilityCeiling::None
-                                    ? ", capability ceiling " + std::string(toString(caps.ceiling))
-                                    : std::string()) +
-                               ")";
+        (caps.ceiling != CapabilityCeiling::None ? ", capability ceiling " + std::string(toString(caps.ceiling)) : std::string()) + ")";
     if (requested) {
-        if (uint32_t(*requested) >= kTierCount)
-            return invalidArgument("requested tier", std::to_string(uint32_t(*requested)), tierNameList());
+        if (uint32_t(*requested) >= kTierCount) return invalidArgument("requested tier", std::to_string(uint32_t(*requested)), tierNameList());
         std::vector<std::string> unmet = unmetRequirements(caps, *requested);
         if (!unmet.empty())
-            return Status{StatusCode::UnsupportedTier,
-                          "tier " + quoted(*requested) + " was requested but " + device + " lacks: " + join(unmet)};
+            return Status{StatusCode::UnsupportedTier, "tier " + quoted(*requested) + " was requested but " + device + " lacks: " + join(unmet)};
         TierChoice c{*requested, profile(*requested), "tier " + quoted(*requested) + " requested by the caller; " + device + " supports it"};
         for (uint32_t t = kTierCount; t-- > uint32_t(*requested) + 1;)
             if (unmetRequirements(caps, Tier(t)).empty()) {
@@ -77,9 +72,8 @@ Result<TierChoice> choose(const DeviceCaps& caps, std::optional<Tier> requested)
         const Tier tier = Tier(t);
         std::vector<std::string> unmet = unmetRequirements(caps, tier);
         if (unmet.empty()) {
-            const std::string why = t + 1 == kTierCount
-                                        ? device + " has every " + toString(tier) + "-tier capability"
-                                        : device + " lacks for " + quoted(Tier(t + 1)) + ": " + join(unmetAbove);
+            const std::string why = t + 1 == kTierCount ? device + " has every " + toString(tier) + "-tier capability"
+                                                        : device + " lacks for " + quoted(Tier(t + 1)) + ": " + join(unmetAbove);
             return TierChoice{tier, profile(tier), "tier " + quoted(tier) + ": " + why};
         }
         unmetAbove = std::move(unmet);

@@ -60,15 +60,24 @@ bool parseOptions(int argc, char** argv, Options* o) {
         const std::string k = argv[i];
         if (k == "--help" || i + 1 >= argc) return false;
         const std::string v = argv[i + 1];
-        if (k == "--width") o->width = uint32_t(std::stoul(v));
-        else if (k == "--height") o->height = uint32_t(std::stoul(v));
-        else if (k == "--runs") o->runs = std::max(1u, uint32_t(std::stoul(v)));
-        else if (k == "--reference-samples") o->referenceSamples = uint32_t(std::stoul(v));
-        else if (k == "--out-dir") o->outDir = v;
-        else if (k == "--backends") o->backends = splitList(v);
-        else if (k == "--scenes") o->scenes = splitList(v);
-        else if (k == "--image-scenes") o->imageScenes = splitList(v);
-        else if (k == "--sweep-scene") o->sweepScene = v;
+        if (k == "--width")
+            o->width = uint32_t(std::stoul(v));
+        else if (k == "--height")
+            o->height = uint32_t(std::stoul(v));
+        else if (k == "--runs")
+            o->runs = std::max(1u, uint32_t(std::stoul(v)));
+        else if (k == "--reference-samples")
+            o->referenceSamples = uint32_t(std::stoul(v));
+        else if (k == "--out-dir")
+            o->outDir = v;
+        else if (k == "--backends")
+            o->backends = splitList(v);
+        else if (k == "--scenes")
+            o->scenes = splitList(v);
+        else if (k == "--image-scenes")
+            o->imageScenes = splitList(v);
+        else if (k == "--sweep-scene")
+            o->sweepScene = v;
         else if (k == "--radii") {
             o->radii.clear();
             for (const std::string& r : splitList(v)) o->radii.push_back(std::stod(r));
@@ -80,9 +89,7 @@ bool parseOptions(int argc, char** argv, Options* o) {
     return true;
 }
 
-bool contains(const std::vector<std::string>& list, const std::string& item) {
-    return std::find(list.begin(), list.end(), item) != list.end();
-}
+bool contains(const std::vector<std::string>& list, const std::string& item) { return std::find(list.begin(), list.end(), item) != list.end(); }
 
 // One median per planned pass, from the effect's own profiling (plan() order).
 struct PassCost {
@@ -175,8 +182,8 @@ struct Row {
 double ratio(double ms, double copyMs) { return copyMs > 0 ? ms / copyMs : 0.0; }
 
 void printRow(const Row& r) {
-    std::printf("  %-6s %-7s %-8s %-7s r=%-4.2f  %7.3f ms = x%-6.1f", r.backend.c_str(), r.tier.c_str(), r.technique.c_str(),
-                r.scene.c_str(), r.radius, r.totalMs, r.totalRatio);
+    std::printf("  %-6s %-7s %-8s %-7s r=%-4.2f  %7.3f ms = x%-6.1f", r.backend.c_str(), r.tier.c_str(), r.technique.c_str(), r.scene.c_str(),
+                r.radius, r.totalMs, r.totalRatio);
     if (r.hasError) std::printf("  rmse %.4f max %.3f", r.rmse, r.maxErr);
     std::printf("  |");
     for (const PassCost& p : r.passes) std::printf(" %s %.2f", p.name.c_str(), p.ms);
@@ -207,10 +214,12 @@ void writeOutputs(const Options& o, const std::vector<Row>& rows, const std::str
     csv << "backend,tier,technique,scene,radius,timing,pass,ms,copy_ms,ratio_to_copy,rmse,max_error\n";
     for (const Row& r : rows) {
         auto line = [&](const std::string& pass, double ms, double toCopy, bool error) {
-            csv << r.backend << "," << r.tier << "," << r.technique << "," << r.scene << "," << r.radius << "," << r.timing << ","
-                << pass << "," << ms << "," << r.copyMs << "," << toCopy << ",";
-            if (error) csv << r.rmse << "," << r.maxErr;
-            else csv << ",";
+            csv << r.backend << "," << r.tier << "," << r.technique << "," << r.scene << "," << r.radius << "," << r.timing << "," << pass << ","
+                << ms << "," << r.copyMs << "," << toCopy << ",";
+            if (error)
+                csv << r.rmse << "," << r.maxErr;
+            else
+                csv << ",";
             csv << "\n";
         };
         line("total", r.totalMs, r.totalRatio, r.hasError);
@@ -224,14 +233,15 @@ void writeOutputs(const Options& o, const std::vector<Row>& rows, const std::str
     for (const Row& r : rows) {
         if (!r.hasError) continue;
         char line[512];
-        std::snprintf(line, sizeof line, "| %s | %s | %s | %s | %s | %s | %.4f | %.3f |\n", r.backend.c_str(), r.tier.c_str(),
-                      r.technique.c_str(), r.scene.c_str(), r.timing.c_str(), totalCell(r).c_str(), r.rmse, r.maxErr);
+        std::snprintf(line, sizeof line, "| %s | %s | %s | %s | %s | %s | %.4f | %.3f |\n", r.backend.c_str(), r.tier.c_str(), r.technique.c_str(),
+                      r.scene.c_str(), r.timing.c_str(), totalCell(r).c_str(), r.rmse, r.maxErr);
         md << line;
     }
     const std::string passScene = contains(o.scenes, "bunny") ? "bunny" : o.scenes.front();
     md << "\nPer pass (profiling on), scene " << passScene << ", radius " << kErrorRadius
        << "; ms (x copy); depth_mip is the sum of its levels (each in the CSV):\n\n";
-    md << "| backend | tier | technique | copy ms | linearize | depth_mip | half-size depth | obscurance | blur h | blur v | upsample | sum of passes | whole effect |\n";
+    md << "| backend | tier | technique | copy ms | linearize | depth_mip | half-size depth | obscurance | blur h | blur v | upsample | sum of "
+          "passes | whole effect |\n";
     md << "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const Row& r : rows) {
         if (!r.hasError || r.scene != passScene) continue;
@@ -243,11 +253,11 @@ void writeOutputs(const Options& o, const std::vector<Row>& rows, const std::str
             return ms > 0 ? cell(ms, r.copyMs) : std::string("-");
         };
         char line[1024];
-        std::snprintf(line, sizeof line, "| %s | %s | %s | %.3f | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", r.backend.c_str(),
-                      r.tier.c_str(), r.technique.c_str(), r.copyMs, optional("linearize").c_str(), optional("depth_mip").c_str(),
-                      optional("half-size depth").c_str(), cell(passMs(r, "obscurance"), r.copyMs).c_str(),
-                      optional("bilateral blur h").c_str(), optional("bilateral blur v").c_str(), optional("depth-aware upsample").c_str(),
-                      cell(sum, r.copyMs).c_str(), totalCell(r).c_str());
+        std::snprintf(line, sizeof line, "| %s | %s | %s | %.3f | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", r.backend.c_str(), r.tier.c_str(),
+                      r.technique.c_str(), r.copyMs, optional("linearize").c_str(), optional("depth_mip").c_str(),
+                      optional("half-size depth").c_str(), cell(passMs(r, "obscurance"), r.copyMs).c_str(), optional("bilateral blur h").c_str(),
+                      optional("bilateral blur v").c_str(), optional("depth-aware upsample").c_str(), cell(sum, r.copyMs).c_str(),
+                      totalCell(r).c_str());
         md << line;
     }
     md << "\nRadius sweep, scene " << o.sweepScene << ": obscurance pass ms (x copy) / whole effect ms:\n\n| backend | tier | technique |";
@@ -272,8 +282,7 @@ void writeOutputs(const Options& o, const std::vector<Row>& rows, const std::str
                 continue;
             }
             char buf[96];
-            std::snprintf(buf, sizeof buf, " %s / %.2f |", cell(passMs(*it->second, "obscurance"), it->second->copyMs).c_str(),
-                          it->second->totalMs);
+            std::snprintf(buf, sizeof buf, " %s / %.2f |", cell(passMs(*it->second, "obscurance"), it->second->copyMs).c_str(), it->second->totalMs);
             md << buf;
         }
         md << "\n";
@@ -341,7 +350,8 @@ int main(int argc, char** argv) {
                 std::cout << "bench_ao: copy pass: " << copy.status().toString() << std::endl;
                 continue;
             }
-            Result<TextureHandle> outTex = dev.createTexture({o.width, o.height, 1, outFormat, kTextureSampled | kTextureRenderTarget, "bench-ao-out"});
+            Result<TextureHandle> outTex = dev.createTexture(
+                {o.width, o.height, 1, outFormat, kTextureSampled | kTextureRenderTarget, "bench-ao-out"});
             if (!outTex) {
                 std::cout << "bench_ao: output: " << outTex.status().toString() << std::endl;
                 continue;
@@ -373,22 +383,22 @@ int main(int argc, char** argv) {
                     std::sort(radii.begin(), radii.end());
                     for (double radius : radii) {
                         settings.radius = float(radius);
-                        Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev, {o.width, o.height, choice->profile, settings});
+                        Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev,
+                                                                                                  {o.width, o.height, choice->profile, settings});
                         if (!ao) {
                             std::cout << "  error: " << ao.status().toString() << std::endl;
                             continue;
                         }
                         const AoInputs in{DepthSource{g->depth, DepthKind::Hardware, g->camera}, g->normals, outTex.value()};
-                        Result<tools::CopyPass::Interleaved> total =
-                            copy.value()->timeAgainst(o.runs, [&] { return ao.value()->dispatch(in); });
+                        Result<tools::CopyPass::Interleaved> total = copy.value()->timeAgainst(o.runs, [&] { return ao.value()->dispatch(in); });
                         Result<std::vector<PassCost>> passes = total ? profilePasses(dev, *ao.value(), in, o.runs)
                                                                      : Result<std::vector<PassCost>>(total.status());
                         if (!passes) {
                             std::cout << "  error: " << passes.status().toString() << std::endl;
                             continue;
                         }
-                        Row r{backendName, toString(tier), toString(techniques[t]), scene.name, toString(dev.caps().timing), radius,
-                              total->effectMs, total->ratio, passes.value(), total->copyMs};
+                        Row r{backendName,     toString(tier), toString(techniques[t]), scene.name,   toString(dev.caps().timing), radius,
+                              total->effectMs, total->ratio,   passes.value(),          total->copyMs};
                         if (radius == kErrorRadius) {
                             // The last profiled dispatch left its output: identical to an unprofiled one (conformance).
                             Result<reference::Grid> gpu = tools::readVisibility(dev, outTex.value(), outFormat, o.width, o.height);
@@ -398,7 +408,8 @@ int main(int argc, char** argv) {
                             }
                             const auto key = std::make_pair(print, t);
                             if (!converged.count(key))
-                                converged[key] = reference::ambientVisibility(refInput.value(), convergedConfig(settings, o.referenceSamples, o.height));
+                                converged[key] = reference::ambientVisibility(refInput.value(),
+                                                                              convergedConfig(settings, o.referenceSamples, o.height));
                             const reference::Grid& ref = converged[key];
                             double sq = 0;
                             for (size_t i = 0; i < ref.values.size(); ++i) {
@@ -424,7 +435,7 @@ int main(int argc, char** argv) {
             (void)dev.destroyTexture(outTex.value());
         }
     writeOutputs(o, rows, machine.empty() ? "unknown" : machine);
-    std::cout << "bench_ao: wrote " << o.outDir << "/ao_bench.csv, ao_bench_table.md and images/ao_*.png (" << rows.size()
-              << " configurations) in " << elapsed() << " s" << std::endl;
+    std::cout << "bench_ao: wrote " << o.outDir << "/ao_bench.csv, ao_bench_table.md and images/ao_*.png (" << rows.size() << " configurations) in "
+              << elapsed() << " s" << std::endl;
     return rows.empty() ? 1 : 0;
 }

@@ -119,10 +119,18 @@ void* countedNewAligned(size_t n, std::align_val_t a) {
 void* operator new(size_t n) { return countedNew(n); }
 void* operator new[](size_t n) { return countedNew(n); }
 void* operator new(size_t n, const std::nothrow_t&) noexcept {
-    try { return countedNew(n); } catch (...) { return nullptr; }
+    try {
+        return countedNew(n);
+    } catch (...) {
+        return nullptr;
+    }
 }
 void* operator new[](size_t n, const std::nothrow_t&) noexcept {
-    try { return countedNew(n); } catch (...) { return nullptr; }
+    try {
+        return countedNew(n);
+    } catch (...) {
+        return nullptr;
+    }
 }
 void* operator new(size_t n, std::align_val_t a) { return countedNewAligned(n, a); }
 void* operator new[](size_t n, std::align_val_t a) { return countedNewAligned(n, a); }
@@ -190,7 +198,7 @@ struct Row {
     std::string backend, tier, effect;
     Stat dispatchUs, dispatchCpuUs, frameUs, frameCpuUs;
     double news = 0, newKiB = 0, mallocs = 0, mallocKiB = 0;  // per dispatch, mean over the timed frames
-    double waits = 0, preemptions = 0;  // context switches per dispatch (voluntary, involuntary), mean
+    double waits = 0, preemptions = 0;                        // context switches per dispatch (voluntary, involuntary), mean
 };
 
 // Times `frames` frames of `dispatch` + flush after `warmup` untimed ones.
@@ -262,8 +270,8 @@ Status runBackend(const std::string& backend, const Options& o, bool reuseRecord
     }
     // Only Vulkan keeps recordings: elsewhere the option changes nothing.
     const std::string label = dev.caps().reusableRecordings ? backend + " (replayed)"
-                              : config.backend == BackendKind::Vulkan ? backend + " (recorded every frame)"
-                                                                   : backend;
+        : config.backend == BackendKind::Vulkan             ? backend + " (recorded every frame)"
+                                                            : backend;
     std::cout << "bench_cpu_overhead: " << label << ": " << dev.caps().summary() << ", tier " << toString(choice->tier) << std::endl;
 
     Result<tools::RasterScene> scene = tools::makeScene("columns");
@@ -281,10 +289,11 @@ Status runBackend(const std::string& backend, const Options& o, bool reuseRecord
     auto addRow = [&](const std::string& effect, Result<Row> r) -> Status {
         if (!r) return Status{r.status().code(), effect + ": " + r.status().message()};
         r->backend = label, r->tier = toString(choice->tier), r->effect = effect;
-        std::printf("  %-12s dispatch CPU median %7.1f us (p90 %7.1f), wall %9.1f us; frame CPU %7.1f us, wall %9.1f us; "
-                    "%.1f new / %.1f KiB, %.1f malloc / %.1f KiB, %.1f waits + %.1f preemptions per dispatch\n",
-                    effect.c_str(), r->dispatchCpuUs.median, r->dispatchCpuUs.p90, r->dispatchUs.median, r->frameCpuUs.median,
-                    r->frameUs.median, r->news, r->newKiB, r->mallocs, r->mallocKiB, r->waits, r->preemptions);
+        std::printf(
+            "  %-12s dispatch CPU median %7.1f us (p90 %7.1f), wall %9.1f us; frame CPU %7.1f us, wall %9.1f us; "
+            "%.1f new / %.1f KiB, %.1f malloc / %.1f KiB, %.1f waits + %.1f preemptions per dispatch\n",
+            effect.c_str(), r->dispatchCpuUs.median, r->dispatchCpuUs.p90, r->dispatchUs.median, r->frameCpuUs.median, r->frameUs.median, r->news,
+            r->newKiB, r->mallocs, r->mallocKiB, r->waits, r->preemptions);
         std::fflush(stdout);
         rows.push_back(r.value());
         return Status::ok();
@@ -323,18 +332,17 @@ std::string table(const std::vector<Row>& rows, const Options& o) {
          "|---|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
     for (const Row& r : rows) {
         std::snprintf(line, sizeof line, "| %s | %s | %s | %.1f | %.1f | %.1f | %.1f | %.0f | %.0f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f |\n",
-                      r.backend.c_str(), r.tier.c_str(), r.effect.c_str(), r.dispatchCpuUs.median, r.dispatchCpuUs.p90,
-                      r.dispatchUs.median, r.dispatchUs.p90, r.frameCpuUs.median, r.frameUs.median, r.news, r.newKiB, r.mallocs,
-                      r.mallocKiB, r.waits, r.preemptions);
+                      r.backend.c_str(), r.tier.c_str(), r.effect.c_str(), r.dispatchCpuUs.median, r.dispatchCpuUs.p90, r.dispatchUs.median,
+                      r.dispatchUs.p90, r.frameCpuUs.median, r.frameUs.median, r.news, r.newKiB, r.mallocs, r.mallocKiB, r.waits, r.preemptions);
         s << line;
     }
-    s << "\n" << o.width << "x" << o.height << ", " << o.frames << " frames after " << o.warmup << " warm-up frames per cell; "
+    s << "\n"
+      << o.width << "x" << o.height << ", " << o.frames << " frames after " << o.warmup << " warm-up frames per cell; "
       << "CPU: the render thread's CPU time; frame: dispatch() + flush() (Vulkan: submit and wait; GL: glFinish); "
       << "new / malloc: calls and KiB on the render thread inside dispatch() (malloc includes the driver's and operator new's); "
       << "waits / preemptions: the render thread's voluntary / involuntary context switches inside dispatch()"
       << (SFX_COUNT_HEAP ? "" : "; heap counting off (sanitizer build)")
-      << (o.evictMiB ? "; " + std::to_string(o.evictMiB) + " MiB written before each timed dispatch (cold caches)" : std::string())
-      << ".\n";
+      << (o.evictMiB ? "; " + std::to_string(o.evictMiB) + " MiB written before each timed dispatch (cold caches)" : std::string()) << ".\n";
     return s.str();
 }
 
@@ -352,8 +360,7 @@ int main(int argc, char** argv) {
     app.add_option("--out", o.out, "also write the table to this markdown file");
     app.add_option("--recordings", o.recordings, "Vulkan: replay (steady frames replay the recorded passes), record (every frame records), both")
         ->check(CLI::IsMember({"both", "replay", "record"}));
-    app.add_option("--evict-mib", o.evictMiB, "MiB to write before each timed dispatch, to start it with cold caches")
-        ->check(CLI::Range(0u, 4096u));
+    app.add_option("--evict-mib", o.evictMiB, "MiB to write before each timed dispatch, to start it with cold caches")->check(CLI::Range(0u, 4096u));
     CLI11_PARSE(app, argc, argv);
 #else
     (void)argc, (void)argv;

@@ -27,13 +27,13 @@
 #include <limits>
 #include <set>
 
+#include "bench_device.hpp"
+#include "motion_cases.hpp"
+#include "scene.hpp"
 #include "sfx/backends.hpp"
 #include "sfx/image_io.hpp"
 #include "sfx/motion_blur.hpp"
 #include "sfx/reference/motion_blur_reference.hpp"
-#include "bench_device.hpp"
-#include "motion_cases.hpp"
-#include "scene.hpp"
 
 using namespace sfx;
 using namespace sfx::reference;
@@ -104,9 +104,9 @@ ColorGrid shadeGBuffer(const tools::GBufferContents& g) {
 // The t = 0 frame as the effect sees it, read back for the error mask and the CPU reference.
 struct ShadedFrame {
     ColorGrid color;
-    Grid linearDepth;        // from the D32F depth, as sfx::LinearDepth computes it
-    VelocityGrid velocity;   // the G-buffer's, pixels across the shutter interval
-    std::vector<bool> drawn; // albedo a > 0
+    Grid linearDepth;         // from the D32F depth, as sfx::LinearDepth computes it
+    VelocityGrid velocity;    // the G-buffer's, pixels across the shutter interval
+    std::vector<bool> drawn;  // albedo a > 0
 };
 
 Result<ShadedFrame> readFrame(Device& device, const tools::GBuffer& g) {
@@ -130,8 +130,8 @@ Result<ShadedFrame> readFrame(Device& device, const tools::GBuffer& g) {
 }
 
 // The average of the shaded colour at `instants` times spread evenly over [-0.5, 0.5].
-Result<ColorGrid> sceneGroundTruth(Device& device, tools::SceneRenderer& renderer, const tools::RasterScene& scene, uint32_t w,
-                                   uint32_t h, uint32_t instants) {
+Result<ColorGrid> sceneGroundTruth(Device& device, tools::SceneRenderer& renderer, const tools::RasterScene& scene, uint32_t w, uint32_t h,
+                                   uint32_t instants) {
     ColorGrid sum(w, h);
     for (uint32_t i = 0; i < instants; ++i) {
         const double t = (i + 0.5) / instants - 0.5;
@@ -155,7 +155,7 @@ std::vector<bool> sceneSilhouetteMask(const ShadedFrame& f, uint32_t radius) {
     std::vector<bool> edge(size_t(w) * h, false), mask(size_t(w) * h, false);
     auto differ = [&](size_t a, size_t b) {
         const bool surface = f.drawn[a] != f.drawn[b] ||
-                             std::fabs(f.linearDepth.values[a] - f.linearDepth.values[b]) > 0.03 * std::min(f.linearDepth.values[a], f.linearDepth.values[b]);
+            std::fabs(f.linearDepth.values[a] - f.linearDepth.values[b]) > 0.03 * std::min(f.linearDepth.values[a], f.linearDepth.values[b]);
         const double dx = f.velocity.values[a][0] - f.velocity.values[b][0], dy = f.velocity.values[a][1] - f.velocity.values[b][1];
         return surface && dx * dx + dy * dy > 0.25;
     };
@@ -180,14 +180,16 @@ std::vector<bool> sceneSilhouetteMask(const ShadedFrame& f, uint32_t radius) {
 // The effect on the G-buffer as a host would run it: its D32F hardware depth and RG16F
 // velocity directly, or (camera) no velocity and the camera's matrices.
 Result<tools::MotionBlurRun> runOnGBuffer(Device& device, Tier tier, const tools::GBuffer& g, const ColorGrid& color, const CameraMotion* camera,
-                         uint32_t runs) {
+                                          uint32_t runs) {
     Result<TextureHandle> ct = tools::uploadColor(device, color, "bench-scene-color");
     if (!ct) return ct.status();
     MotionBlurInputs in;
     in.color = ct.value();
     in.depth = {g.depth, DepthKind::Hardware, g.camera};
-    if (camera) in.camera = *camera;
-    else in.velocity = g.velocity;
+    if (camera)
+        in.camera = *camera;
+    else
+        in.velocity = g.velocity;
     Result<tools::MotionBlurRun> run = tools::timeMotionBlur(device, tiers::profile(tier), {}, g.width, g.height, in, runs);
     (void)device.destroyTexture(ct.value());
     return run;
@@ -200,9 +202,7 @@ struct BenchOptions {
     std::string imagesDir;        // none written when empty
 };
 
-const char* timingLabel(TimingSource source) {
-    return source == TimingSource::GpuTimestamps ? "gpu-timestamps" : "wall-clock-after-finish";
-}
+const char* timingLabel(TimingSource source) { return source == TimingSource::GpuTimestamps ? "gpu-timestamps" : "wall-clock-after-finish"; }
 
 // The 3D cases on one device: per scene the ground truth and the t = 0 frame are rendered by
 // this device's rasteriser, so the input, the truth and the effect agree on every edge.
@@ -223,7 +223,8 @@ Status runSceneCases(Device& device, const std::string& backend, Tier tier, cons
         // Meshes are per scene: load replaces the previous scene's buffers.
         SFX_TRY(renderer.value()->load(scene.value()));
         std::cout << "[" << sceneName << " 3D] " << backend << "/" << toString(tier) << ": ground truth from " << o.sceneInstants
-                  << " rendered instants...\n" << std::flush;
+                  << " rendered instants...\n"
+                  << std::flush;
         Result<ColorGrid> truth = sceneGroundTruth(device, *renderer.value(), scene.value(), o.width, o.height, o.sceneInstants);
         if (!truth) return truth.status();
         Result<tools::GBuffer> g = renderer.value()->render(scene.value(), o.width, o.height, 0.0);
@@ -235,8 +236,8 @@ Status runSceneCases(Device& device, const std::string& backend, Tier tier, cons
             const tools::ColorErrors input = tools::colorErrors(frame->color, truth.value(), mask);
             double maxSpeed = 0;
             for (const auto& v : frame->velocity.values) maxSpeed = std::max(maxSpeed, std::hypot(v[0], v[1]));
-            std::cout << "  input (no blur): rmse " << input.rmse << ", near moving silhouettes " << input.rmseSilhouette
-                      << "; largest velocity " << maxSpeed << " px across the shutter\n";
+            std::cout << "  input (no blur): rmse " << input.rmse << ", near moving silhouettes " << input.rmseSilhouette << "; largest velocity "
+                      << maxSpeed << " px across the shutter\n";
             writeOnce(sceneName + "_input", frame->color);
             writeOnce(sceneName + "_groundtruth", truth.value());
             for (const MovingSceneCase& c : movingSceneCases()) {
@@ -271,14 +272,14 @@ Status runSceneCases(Device& device, const std::string& backend, Tier tier, cons
                 const tools::ColorErrors e = tools::colorErrors(run->output, truth.value(), mask);
                 const tools::ColorErrors vsRef = tools::colorErrors(run->output, ref, std::vector<bool>(mask.size(), false));
                 const char* velocity = c.cameraOnly ? "camera" : "buffer";
-                std::printf("  %-15s %-10s %-7s %u taps r=%u px: %8.3f ms (%s), rmse %.4f, silhouettes %.4f, vs reference %.5f\n",
-                            c.name.c_str(), backend.c_str(), toString(tier), p.taps, p.radiusPx, run->medianMs, timingLabel(run->source),
-                            e.rmse, e.rmseSilhouette, vsRef.rmse);
+                std::printf("  %-15s %-10s %-7s %u taps r=%u px: %8.3f ms (%s), rmse %.4f, silhouettes %.4f, vs reference %.5f\n", c.name.c_str(),
+                            backend.c_str(), toString(tier), p.taps, p.radiusPx, run->medianMs, timingLabel(run->source), e.rmse, e.rmseSilhouette,
+                            vsRef.rmse);
                 std::fflush(stdout);
                 writeOnce(c.name + "_" + toString(tier), run->output);
-                csv << c.name << "," << o.width << "," << o.height << "," << backend << "," << toString(tier) << "," << p.taps << ","
-                    << p.radiusPx << "," << timingLabel(run->source) << "," << run->medianMs << "," << e.rmse << "," << e.rmseSilhouette
-                    << "," << input.rmse << "," << input.rmseSilhouette << "," << vsRef.rmse << "," << velocity << "\n";
+                csv << c.name << "," << o.width << "," << o.height << "," << backend << "," << toString(tier) << "," << p.taps << "," << p.radiusPx
+                    << "," << timingLabel(run->source) << "," << run->medianMs << "," << e.rmse << "," << e.rmseSilhouette << "," << input.rmse << ","
+                    << input.rmseSilhouette << "," << vsRef.rmse << "," << velocity << "\n";
             }
             return Status::ok();
         };
@@ -355,11 +356,13 @@ int main(int argc, char** argv) {
 
     std::vector<BackendConfig> configs;
     for (const BackendConfig& c : compiledBackends())
-        if (c.backend != BackendKind::Null && (backendsFlag == "all" || ("," + backendsFlag + ",").find("," + toString(c) + ",") != std::string::npos))
+        if (c.backend != BackendKind::Null &&
+            (backendsFlag == "all" || ("," + backendsFlag + ",").find("," + toString(c) + ",") != std::string::npos))
             configs.push_back(c);
 
     std::ofstream csv(csvPath);
-    csv << "scene,width,height,backend,tier,taps,radius_px,timing_source,median_ms,rmse,rmse_silhouette,input_rmse,input_rmse_silhouette,reference_rmse,velocity\n";
+    csv << "scene,width,height,backend,tier,taps,radius_px,timing_source,median_ms,rmse,rmse_silhouette,input_rmse,input_rmse_silhouette,reference_"
+           "rmse,velocity\n";
     PerspectiveDesc pd;
     pd.aspect = double(width) / height;
     const CameraProjection cam = makePerspective(pd).value();
@@ -397,9 +400,8 @@ int main(int argc, char** argv) {
                 const tools::ColorErrors e = tools::colorErrors(run->output, truth, mask);
                 const tools::ColorErrors vsRef = tools::colorErrors(run->output, ref, std::vector<bool>(mask.size(), false));
                 const char* source = timingLabel(run->source);
-                std::printf("  %-10s %-7s %u taps r=%u px: %8.3f ms (%s), rmse %.4f, silhouettes %.4f, vs reference %.5f\n",
-                            toString(config).c_str(), toString(tier), p.taps, p.radiusPx, run->medianMs, source, e.rmse,
-                            e.rmseSilhouette, vsRef.rmse);
+                std::printf("  %-10s %-7s %u taps r=%u px: %8.3f ms (%s), rmse %.4f, silhouettes %.4f, vs reference %.5f\n", toString(config).c_str(),
+                            toString(tier), p.taps, p.radiusPx, run->medianMs, source, e.rmse, e.rmseSilhouette, vsRef.rmse);
                 std::fflush(stdout);
                 if (!imagesDir.empty() && !imageWritten) {
                     (void)io::writePng(imagesDir + "/mb_" + ns.name + "_" + toString(tier) + ".png", toImage(run->output));
@@ -407,8 +409,8 @@ int main(int argc, char** argv) {
                     imageWritten = true;
                 }
                 csv << ns.name << "," << width << "," << height << "," << toString(config) << "," << toString(tier) << "," << p.taps << ","
-                    << p.radiusPx << "," << source << "," << run->medianMs << "," << e.rmse << "," << e.rmseSilhouette << ","
-                    << input.rmse << "," << input.rmseSilhouette << "," << vsRef.rmse << ",buffer\n";
+                    << p.radiusPx << "," << source << "," << run->medianMs << "," << e.rmse << "," << e.rmseSilhouette << "," << input.rmse << ","
+                    << input.rmseSilhouette << "," << vsRef.rmse << ",buffer\n";
             }
             if (!imagesDir.empty() && !imageWritten)
                 (void)io::writePng(imagesDir + "/mb_" + ns.name + "_" + toString(tier) + "_reference.png", toImage(ref));

@@ -84,9 +84,9 @@ struct Row {
 
 void printRow(const Row& r) {
     std::printf("  %-8s %-6s %-7s %-8s blur %-3s  PSNR %6s dB, occluded %6s dB (%zu px), signed %+.4f (occluded %+.4f), worst %.3f at (%u, %u)\n",
-                r.scene.c_str(), r.backend.c_str(), r.tier.c_str(), r.technique.c_str(), r.blur ? "on" : "off",
-                fixed(r.error.psnr, 2).c_str(), fixed(r.error.psnrOccluded, 2).c_str(), r.error.occludedPixels, r.error.meanSignedError,
-                r.error.meanSignedErrorOccluded, r.error.worstError, r.error.worstX, r.error.worstY);
+                r.scene.c_str(), r.backend.c_str(), r.tier.c_str(), r.technique.c_str(), r.blur ? "on" : "off", fixed(r.error.psnr, 2).c_str(),
+                fixed(r.error.psnrOccluded, 2).c_str(), r.error.occludedPixels, r.error.meanSignedError, r.error.meanSignedErrorOccluded,
+                r.error.worstError, r.error.worstX, r.error.worstY);
     std::fflush(stdout);
 }
 
@@ -165,13 +165,15 @@ std::string markdown(const Options& o, const std::vector<Row>& rows, const std::
         s.worst = std::max(s.worst, r.error.worstError);
         ++s.n;
     }
-    md << "\nMean over the " << o.scenes.size() << " scenes (PSNR in dB averaged; signed error where the truth < 0.95: > 0 too bright; "
+    md << "\nMean over the " << o.scenes.size()
+       << " scenes (PSNR in dB averaged; signed error where the truth < 0.95: > 0 too bright; "
           "worst = the largest |error| of any pixel of any scene):\n\n";
-    md << "| technique | tier | blur | backend | PSNR | PSNR occluded | signed error occluded | worst |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    md << "| technique | tier | blur | backend | PSNR | PSNR occluded | signed error occluded | worst |\n| --- | --- | --- | --- | --- | --- | --- | "
+          "--- |\n";
     for (const std::string& key : order) {
         const Sum& s = sums[key];
-        md << "| " << key << " | " << fixed(s.psnr / s.n, 2) << " | " << fixed(s.psnrOccluded / s.n, 2) << " | "
-           << fixed(s.signedOccluded / s.n, 3) << " | " << fixed(s.worst, 3) << " |\n";
+        md << "| " << key << " | " << fixed(s.psnr / s.n, 2) << " | " << fixed(s.psnrOccluded / s.n, 2) << " | " << fixed(s.signedOccluded / s.n, 3)
+           << " | " << fixed(s.worst, 3) << " |\n";
     }
     const std::string first = rows.size() > o.scenes.size() ? rows[o.scenes.size()].backend : "";
     md << "\nPer scene, backend " << first << " (and the baseline): PSNR over the frame / where the truth < 0.95, dB:\n\n| technique | tier | blur |";
@@ -190,8 +192,10 @@ std::string markdown(const Options& o, const std::vector<Row>& rows, const std::
         md << "\n| " << key << " |";
         for (const std::string& name : o.scenes) {
             const auto it = byScene[key].find(name);
-            if (it == byScene[key].end()) md << " - |";
-            else md << " " << fixed(it->second->error.psnr, 1) << " / " << fixed(it->second->error.psnrOccluded, 1) << " |";
+            if (it == byScene[key].end())
+                md << " - |";
+            else
+                md << " " << fixed(it->second->error.psnr, 1) << " / " << fixed(it->second->error.psnrOccluded, 1) << " |";
         }
     }
     md << "\n";
@@ -231,11 +235,12 @@ int main(int argc, char** argv) {
         truths.emplace(name, std::move(t.value()));
     }
     std::string machine;
-    const Status run = tools::forEachDevice(o.backends, {Tier::High, Tier::Current}, "bench_trade", [&](Device& dev, const std::string& backend, Tier tier) {
-        if (machine.empty()) machine = dev.caps().deviceName;
-        std::cout << "[" << elapsed() << " s] " << dev.caps().summary() << ", tier " << toString(tier) << std::endl;
-        return runDevice(dev, backend, tier, o, truths, rows);
-    });
+    const Status run = tools::forEachDevice(
+        o.backends, {Tier::High, Tier::Current}, "bench_trade", [&](Device& dev, const std::string& backend, Tier tier) {
+            if (machine.empty()) machine = dev.caps().deviceName;
+            std::cout << "[" << elapsed() << " s] " << dev.caps().summary() << ", tier " << toString(tier) << std::endl;
+            return runDevice(dev, backend, tier, o, truths, rows);
+        });
     if (!run) {
         std::cerr << "bench_trade: " << run.toString() << "\n";
         return 1;
@@ -246,11 +251,16 @@ int main(int argc, char** argv) {
            "mean_signed_error,mean_signed_error_occluded,worst_error,worst_x,worst_y\n";
     for (const Row& r : rows)
         csv << r.scene << "," << o.width << "," << o.height << "," << o.radius << "," << o.samples << "," << r.backend << "," << r.tier << ","
-            << r.technique << "," << (r.technique == "none" ? "-" : r.blur ? "on" : "off") << "," << fixed(r.error.psnr, 3) << ","
-            << fixed(r.error.psnrOccluded, 3) << "," << r.error.occludedPixels << "," << fixed(r.error.meanSignedError, 5) << ","
-            << fixed(r.error.meanSignedErrorOccluded, 5) << "," << fixed(r.error.worstError, 4) << "," << r.error.worstX << ","
-            << r.error.worstY << "\n";
-    if (Status st = tools::replaceMarkdownSection(o.outDir + "/trade.md", "bench_trade", markdown(o, rows, truths, machine.empty() ? "no device" : machine)); !st) {
+            << r.technique << ","
+            << (r.technique == "none" ? "-"
+                    : r.blur          ? "on"
+                                      : "off")
+            << "," << fixed(r.error.psnr, 3) << "," << fixed(r.error.psnrOccluded, 3) << "," << r.error.occludedPixels << ","
+            << fixed(r.error.meanSignedError, 5) << "," << fixed(r.error.meanSignedErrorOccluded, 5) << "," << fixed(r.error.worstError, 4) << ","
+            << r.error.worstX << "," << r.error.worstY << "\n";
+    if (Status st = tools::replaceMarkdownSection(o.outDir + "/trade.md", "bench_trade",
+                                                  markdown(o, rows, truths, machine.empty() ? "no device" : machine));
+        !st) {
         std::cerr << "bench_trade: " << st.toString() << "\n";
         return 1;
     }

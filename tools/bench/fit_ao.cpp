@@ -20,13 +20,13 @@
 #include <optional>
 #include <sstream>
 
+#include "ao_scoring.hpp"
 #include "bench_device.hpp"
 #include "markdown_section.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/tiers.hpp"
 #include "sfx/truth_metrics.hpp"
 #include "trade_views.hpp"
-#include "ao_scoring.hpp"
 
 using namespace sfx;
 
@@ -43,14 +43,14 @@ struct Options {
     std::string cacheDir = "build/truth-cache", outDir = "docs";
     uint32_t refinements = 5;  // levels of the fine search (its step halves at each)
     std::vector<std::string> tiers{"high", "current"};
-    bool diagnose = false;     // score the tier defaults' variants instead of fitting
+    bool diagnose = false;        // score the tier defaults' variants instead of fitting
     std::string start = "paper";  // where the search starts: the papers' look, or the tier table's
 };
 
 // A searched parameter: a field of AoSettings, its range and whether the search steps in log space.
 struct Parameter {
     const char* name;
-    std::optional<float> AoSettings::*field = nullptr;           // a top-level field, or
+    std::optional<float> AoSettings::*field = nullptr;              // a top-level field, or
     std::optional<float> AoCreaseSettings::*creaseField = nullptr;  // one of crease's
     double lo, hi;
     bool logScale;
@@ -114,7 +114,8 @@ std::string describe(const AoSettings& s) {
 // space where marked), then `refinements` levels of a Hooke-Jeeves pattern search in the unit
 // cube of the parameters: +-step on each in turn, then a jump along the move just made (the
 // intensity-contrast ridge is diagonal), the step halving from 1/8 of the range each level.
-Result<AoSettings> fit(tools::AoEvaluator& ev, const AoSettings& start, const std::vector<tools::AoCase>& training, const Options& o, const std::string& label) {
+Result<AoSettings> fit(tools::AoEvaluator& ev, const AoSettings& start, const std::vector<tools::AoCase>& training, const Options& o,
+                       const std::string& label) {
     const std::vector<Parameter> params = parametersOf(start.technique);
     auto settingsAt = [&](const std::vector<double>& u) {
         AoSettings s = start;
@@ -170,7 +171,6 @@ Result<AoSettings> fit(tools::AoEvaluator& ev, const AoSettings& start, const st
     return settingsAt(best);
 }
 
-
 // Where a technique's error at the tier's defaults comes from: the held-out score of the default
 // and of variants that each change one thing (no blur: how much noise the blur hides; 4x the
 // taps: the noise left; full resolution: what half resolution costs; no screen-radius clamp).
@@ -184,8 +184,10 @@ Status diagnose(tools::AoEvaluator& ev, Tier tier, AoTechnique technique, const 
     const std::vector<Variant> variants{
         {"default", [](AoSettings&, TierProfile&) {}},
         {"blur off", [](AoSettings& s, TierProfile&) { s.blur = false; }},
-        {"4x taps", [&](AoSettings& s, TierProfile& p) {
-             if (technique != AoTechnique::Crease) s.samples = std::min(64u, 4 * (technique == AoTechnique::Alchemy ? p.aoAlchemySamples : p.aoScalableTaps));
+        {"4x taps",
+         [&](AoSettings& s, TierProfile& p) {
+             if (technique != AoTechnique::Crease)
+                 s.samples = std::min(64u, 4 * (technique == AoTechnique::Alchemy ? p.aoAlchemySamples : p.aoScalableTaps));
          }},
         {"full resolution", [](AoSettings& s, TierProfile&) { s.resolution = AoResolution::Full; }},
         {"no radius clamp", [](AoSettings&, TierProfile& p) { p.aoScalableMaxRadiusPx = 0; }},
@@ -229,8 +231,7 @@ std::string markdown(const Options& o, const std::vector<FitRow>& rows, const st
     for (double r : o.trainingRadii) md << " " << r;
     md << "): " << list(training) << ".\n\nHeld-out views (radii";
     for (double r : o.heldOutRadii) md << " " << r;
-    md << "; `scene@turn_distance_lift` is the camera turned about the target): "
-       << list(heldOut) << ".\n\n";
+    md << "; `scene@turn_distance_lift` is the camera turned about the target): " << list(heldOut) << ".\n\n";
     md << "| tier | technique | fitted defaults | training PSNR / occluded | held-out PSNR / occluded (before the fit) | held-out worst case "
           "PSNR / occluded | held-out signed error occluded | gain over no AO, occluded |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const FitRow& r : rows)
@@ -240,8 +241,9 @@ std::string markdown(const Options& o, const std::vector<FitRow>& rows, const st
            << fixed(r.heldOut.worstPsnrOccluded, 2) << " | " << fixed(r.heldOut.signedOccluded, 3) << " | "
            << fixed(r.heldOut.psnrOccluded - none.at("held-out").psnrOccluded, 2) << " dB |\n";
     md << "| - | none | visibility 1 | " << fixed(none.at("training").psnr, 2) << " / " << fixed(none.at("training").psnrOccluded, 2) << " | "
-       << fixed(none.at("held-out").psnr, 2) << " / " << fixed(none.at("held-out").psnrOccluded, 2) << " | " << fixed(none.at("held-out").worstPsnr, 2)
-       << " / " << fixed(none.at("held-out").worstPsnrOccluded, 2) << " | " << fixed(none.at("held-out").signedOccluded, 3) << " | 0 |\n";
+       << fixed(none.at("held-out").psnr, 2) << " / " << fixed(none.at("held-out").psnrOccluded, 2) << " | "
+       << fixed(none.at("held-out").worstPsnr, 2) << " / " << fixed(none.at("held-out").worstPsnrOccluded, 2) << " | "
+       << fixed(none.at("held-out").signedOccluded, 3) << " | 0 |\n";
     return md.str();
 }
 
@@ -253,7 +255,9 @@ int main(int argc, char** argv) {
     app.add_option("--width", o.width, "pixels")->capture_default_str();
     app.add_option("--height", o.height, "pixels")->capture_default_str();
     app.add_option("--samples", o.samples, "truth directions per pixel (a square >= 256)")->capture_default_str();
-    app.add_option("--training-radii", o.trainingRadii, "comma-separated world-space radii of the training views")->delimiter(',')->capture_default_str();
+    app.add_option("--training-radii", o.trainingRadii, "comma-separated world-space radii of the training views")
+        ->delimiter(',')
+        ->capture_default_str();
     app.add_option("--held-out-radii", o.heldOutRadii, "comma-separated radii of the held-out views")->delimiter(',')->capture_default_str();
     app.add_option("--backend", o.backend, "vulkan, gles, gl, gl-egl, gl-osmesa (the backends agree)")->capture_default_str();
     app.add_option("--techniques", o.techniques, "comma-separated: alchemy, scalable, crease")->delimiter(',')->capture_default_str();
@@ -275,8 +279,9 @@ int main(int argc, char** argv) {
     auto progress = [&](const std::string& line) { std::cout << "[" << elapsed() << " s] " << line << std::endl; };
     const tools::TruthSettings truthSettings{o.width, o.height, o.samples, o.cacheDir};
     Result<std::vector<tools::AoCase>> training = tools::loadCases(views, 0, trainingViews.size(), o.trainingRadii, truthSettings, progress);
-    Result<std::vector<tools::AoCase>> heldOut =
-        training ? tools::loadCases(views, trainingViews.size(), views.size(), o.heldOutRadii, truthSettings, progress) : training;
+    Result<std::vector<tools::AoCase>> heldOut = training
+        ? tools::loadCases(views, trainingViews.size(), views.size(), o.heldOutRadii, truthSettings, progress)
+        : training;
     if (!heldOut) {
         std::cerr << "fit_ao: " << heldOut.status().toString() << "\n";
         return 1;
@@ -329,9 +334,10 @@ int main(int argc, char** argv) {
                 return 1;
             }
             rows.push_back({toString(tier), name, describe(fitted.value()), fitted.value(), before.value(), trained.value(), held.value()});
-            std::cout << "[" << elapsed() << " s] " << label << ": " << rows.back().fitted << "; held out " << fixed(held->psnr, 2) << " dB, occluded "
-                      << fixed(held->psnrOccluded, 2) << " dB (before the fit " << fixed(before->psnr, 2) << " / " << fixed(before->psnrOccluded, 2)
-                      << "; no AO " << fixed(none["held-out"].psnr, 2) << " / " << fixed(none["held-out"].psnrOccluded, 2) << ")" << std::endl;
+            std::cout << "[" << elapsed() << " s] " << label << ": " << rows.back().fitted << "; held out " << fixed(held->psnr, 2)
+                      << " dB, occluded " << fixed(held->psnrOccluded, 2) << " dB (before the fit " << fixed(before->psnr, 2) << " / "
+                      << fixed(before->psnrOccluded, 2) << "; no AO " << fixed(none["held-out"].psnr, 2) << " / "
+                      << fixed(none["held-out"].psnrOccluded, 2) << ")" << std::endl;
         }
     }
     if (o.diagnose) return 0;
@@ -343,17 +349,19 @@ int main(int argc, char** argv) {
     for (const FitRow& r : rows) {
         const AoSettings& rs = r.settings;
         csv << r.tier << "," << r.technique << "," << rs.intensity.value() << "," << rs.contrast.value() << "," << rs.bias.value() << ","
-            << (rs.technique == AoTechnique::Scalable ? rs.sumExponent.value() : -1.0f) << "," << rs.crease.range.value() << "," << rs.crease.bias.value() << "," << fixed(r.trainingScore.psnr, 3) << ","
-            << fixed(r.trainingScore.psnrOccluded, 3) << "," << fixed(r.heldOut.psnr, 3) << "," << fixed(r.heldOut.psnrOccluded, 3) << ","
-            << fixed(r.heldOut.signedOccluded, 4) << "," << fixed(r.before.psnr, 3) << "," << fixed(r.before.psnrOccluded, 3) << ","
-            << fixed(none["held-out"].psnr, 3) << "," << fixed(none["held-out"].psnrOccluded, 3) << "\n";
+            << (rs.technique == AoTechnique::Scalable ? rs.sumExponent.value() : -1.0f) << "," << rs.crease.range.value() << ","
+            << rs.crease.bias.value() << "," << fixed(r.trainingScore.psnr, 3) << "," << fixed(r.trainingScore.psnrOccluded, 3) << ","
+            << fixed(r.heldOut.psnr, 3) << "," << fixed(r.heldOut.psnrOccluded, 3) << "," << fixed(r.heldOut.signedOccluded, 4) << ","
+            << fixed(r.before.psnr, 3) << "," << fixed(r.before.psnrOccluded, 3) << "," << fixed(none["held-out"].psnr, 3) << ","
+            << fixed(none["held-out"].psnrOccluded, 3) << "\n";
     }
     if (Status st = tools::replaceMarkdownSection(o.outDir + "/trade.md", "fit_ao",
-                                                    markdown(o, rows, none, trainingViews, heldOutViews, machine.empty() ? "no device" : machine));
+                                                  markdown(o, rows, none, trainingViews, heldOutViews, machine.empty() ? "no device" : machine));
         !st) {
         std::cerr << "fit_ao: " << st.toString() << "\n";
         return 1;
     }
-    std::cout << "fit_ao: " << rows.size() << " fits -> " << o.outDir << "/ao_fit.csv and " << o.outDir << "/trade.md in " << elapsed() << " s" << std::endl;
+    std::cout << "fit_ao: " << rows.size() << " fits -> " << o.outDir << "/ao_fit.csv and " << o.outDir << "/trade.md in " << elapsed() << " s"
+              << std::endl;
     return rows.empty() ? 1 : 0;
 }

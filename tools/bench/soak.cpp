@@ -83,11 +83,10 @@ struct HostTargets {
             const void* data;
             size_t bytes;
         };
-        const Make makes[] = {
-            {&depth, {s.w, s.h, 1, Format::R32F, kTextureSampled, "soak-depth"}, z.data(), z.size() * 4},
-            {&color, {s.w, s.h, 1, Format::RGBA16F, kTextureSampled, "soak-colour"}, c.data(), c.size() * 2},
-            {&velocity, {s.w, s.h, 1, Format::RG32F, kTextureSampled, "soak-velocity"}, v.data(), v.size() * 4},
-            {&aoOut, {s.w, s.h, 1, aoFormat, kTextureSampled | kTextureRenderTarget, "soak-ao"}, nullptr, 0}};
+        const Make makes[] = {{&depth, {s.w, s.h, 1, Format::R32F, kTextureSampled, "soak-depth"}, z.data(), z.size() * 4},
+                              {&color, {s.w, s.h, 1, Format::RGBA16F, kTextureSampled, "soak-colour"}, c.data(), c.size() * 2},
+                              {&velocity, {s.w, s.h, 1, Format::RG32F, kTextureSampled, "soak-velocity"}, v.data(), v.size() * 4},
+                              {&aoOut, {s.w, s.h, 1, aoFormat, kTextureSampled | kTextureRenderTarget, "soak-ao"}, nullptr, 0}};
         for (const Make& m : makes) {
             Result<TextureHandle> t = dev.createTexture(m.desc);
             if (!t) return t.status();
@@ -109,19 +108,17 @@ struct Live {
     DeviceStats s;
     // The HAL kinds and what the backend made behind them, without its caches.
     bool sameObjects(const DeviceStats& o) const {
-        return s.textures.live == o.textures.live && s.buffers.live == o.buffers.live &&
-               s.samplers.live == o.samplers.live && s.programs.live == o.programs.live &&
-               s.pipelines.live == o.pipelines.live && s.timers.live == o.timers.live &&
-               s.imageViews.live == o.imageViews.live && s.framebuffers.live == o.framebuffers.live;
+        return s.textures.live == o.textures.live && s.buffers.live == o.buffers.live && s.samplers.live == o.samplers.live &&
+            s.programs.live == o.programs.live && s.pipelines.live == o.pipelines.live && s.timers.live == o.timers.live &&
+            s.imageViews.live == o.imageViews.live && s.framebuffers.live == o.framebuffers.live;
     }
 };
 
 std::string counts(const DeviceStats& s) {
     std::ostringstream o;
-    o << "textures " << s.textures.live << ", buffers " << s.buffers.live << ", samplers " << s.samplers.live
-      << ", programs " << s.programs.live << ", pipelines " << s.pipelines.live << ", timers " << s.timers.live
-      << ", image views " << s.imageViews.live << ", framebuffers " << s.framebuffers.live << ", memory allocations "
-      << s.memoryAllocations.live << ", staging " << s.stagingBuffers.live << ", descriptor sets "
+    o << "textures " << s.textures.live << ", buffers " << s.buffers.live << ", samplers " << s.samplers.live << ", programs " << s.programs.live
+      << ", pipelines " << s.pipelines.live << ", timers " << s.timers.live << ", image views " << s.imageViews.live << ", framebuffers "
+      << s.framebuffers.live << ", memory allocations " << s.memoryAllocations.live << ", staging " << s.stagingBuffers.live << ", descriptor sets "
       << s.descriptorSets.live << ", device bytes " << s.deviceMemoryBytes;
     return o.str();
 }
@@ -151,8 +148,8 @@ bool soak(const BackendConfig& config, int frames, int progressEvery, bool valid
     if (best->tier != Tier::Current) tiersToRun.push_back(Tier::Current);
     const int cycle = int(kSizes.size()) * 3 * int(tiersToRun.size()) * kFramesPerChange;
     const int warmup = std::max(cycle, frames / 10);
-    std::printf("soak %s: %s; %d frames, warm-up %d, tiers %zu, sizes %zu\n", name.c_str(), dev.caps().summary().c_str(),
-                frames, warmup, tiersToRun.size(), kSizes.size());
+    std::printf("soak %s: %s; %d frames, warm-up %d, tiers %zu, sizes %zu\n", name.c_str(), dev.caps().summary().c_str(), frames, warmup,
+                tiersToRun.size(), kSizes.size());
 
     bool ok = true;
     std::vector<std::string> messages;
@@ -225,15 +222,13 @@ bool soak(const BackendConfig& config, int frames, int progressEvery, bool valid
             if (f + 1 > warmup) rssPeak = std::max(rssPeak, residentMiB());
             if (progressEvery > 0 && (f + 1) % progressEvery == 0) {
                 const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-                std::printf("soak %s: frame %d / %d, %.1f s, resident %.1f MiB\n", name.c_str(), f + 1, frames, secs,
-                            residentMiB());
+                std::printf("soak %s: frame %d / %d, %.1f s, resident %.1f MiB\n", name.c_str(), f + 1, frames, secs, residentMiB());
                 std::fflush(stdout);
             }
         }
         if (ok && frames > warmup) {
             const DeviceStats end = dev.stats();
-            if (end.descriptorSets.live > warmStats.descriptorSets.live ||
-                end.stagingBuffers.live > warmStats.stagingBuffers.live ||
+            if (end.descriptorSets.live > warmStats.descriptorSets.live || end.stagingBuffers.live > warmStats.stagingBuffers.live ||
                 end.memoryAllocations.live > warmStats.memoryAllocations.live)
                 fail(frames, "backend caches grew after warm-up: " + counts(warmStats) + " -> " + counts(end));
         }
@@ -249,11 +244,11 @@ bool soak(const BackendConfig& config, int frames, int progressEvery, bool valid
         growth = (rssPeak - rssWarm) / rssWarm * 100.0;
         if (growth > 1.0 && checkMemory) fail(frames, "resident memory grew " + std::to_string(growth) + "% after warm-up (allowed 1%)");
     }
-    std::printf("soak %s: %s, %d frames in %.1f s (%.2f ms/frame), validation %s, resident peak in the last warm-up cycle %.1f MiB, "
-                "after it %.1f MiB (%+.2f%%%s), at end %.1f MiB; live objects at start [%s], at end [%s]; %zu validation messages\n",
-                name.c_str(), ok ? "PASS" : "FAIL", frames, secs, 1000.0 * secs / frames, validation ? "on" : "off", rssWarm, rssPeak,
-                growth, checkMemory ? "" : ", not checked: --memory-report-only",
-                rssEnd, counts(start.s).c_str(), counts(end).c_str(), messages.size());
+    std::printf(
+        "soak %s: %s, %d frames in %.1f s (%.2f ms/frame), validation %s, resident peak in the last warm-up cycle %.1f MiB, "
+        "after it %.1f MiB (%+.2f%%%s), at end %.1f MiB; live objects at start [%s], at end [%s]; %zu validation messages\n",
+        name.c_str(), ok ? "PASS" : "FAIL", frames, secs, 1000.0 * secs / frames, validation ? "on" : "off", rssWarm, rssPeak, growth,
+        checkMemory ? "" : ", not checked: --memory-report-only", rssEnd, counts(start.s).c_str(), counts(end).c_str(), messages.size());
     return ok;
 }
 
@@ -270,9 +265,11 @@ int churn(const BackendConfig& config, const std::string& kindAndProgram, int n,
     const std::string kind = kindAndProgram.substr(0, colon);
     const std::string programName = colon == std::string::npos ? gen::mb_reconstruct::kName : kindAndProgram.substr(colon + 1);
     const bool isReconstruct = programName == gen::mb_reconstruct::kName;
-    const Format passFormat = programName.rfind("mb_", 0) == 0 ? (programName == "mb_pack" ? Format::RGBA16F : isReconstruct ? Format::RGBA16F : Format::RG16F)
-                              : programName.rfind("ao_", 0) == 0 ? Format::R16F
-                                                                 : Format::R32F;
+    const Format passFormat = programName.rfind("mb_", 0) == 0 ? (programName == "mb_pack" ? Format::RGBA16F
+                                                                      : isReconstruct      ? Format::RGBA16F
+                                                                                           : Format::RG16F)
+        : programName.rfind("ao_", 0) == 0                     ? Format::R16F
+                                                               : Format::R32F;
     DeviceOptions options;
     options.validation = validation;
     Result<std::unique_ptr<Device>> opened = openDevice(config, options);
@@ -335,15 +332,16 @@ int churn(const BackendConfig& config, const std::string& kindAndProgram, int n,
             std::vector<float> depth(size_t(s.w) * s.h, z);
             st = dev.writeTexture(host.depth, 0, depth.data(), depth.size() * sizeof(float));
         } else {
-            std::fprintf(stderr, "soak: --churn is '%s'; allowed ao, mb, depth[:LEVELS], program, pipeline, program+pipeline[:PROGRAM]\n", kind.c_str());
+            std::fprintf(stderr, "soak: --churn is '%s'; allowed ao, mb, depth[:LEVELS], program, pipeline, program+pipeline[:PROGRAM]\n",
+                         kind.c_str());
             return 2;
         }
         if (!st) return std::printf("churn: %s\n", st.toString().c_str()), 1;
         if (Status f = dev.flush(); !f) return std::printf("churn: %s\n", f.toString().c_str()), 1;
         for (const std::string& m : dev.takeValidationMessages()) std::printf("churn: validation: %s\n", m.c_str());
         if ((i + 1) % std::max(1, n / 10) == 0)
-            std::printf("churn %s %s: %d / %d, %.1f s, resident %.2f MiB\n", toString(config).c_str(), kind.c_str(), i + 1,
-                        n, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), residentMiB());
+            std::printf("churn %s %s: %d / %d, %.1f s, resident %.2f MiB\n", toString(config).c_str(), kind.c_str(), i + 1, n,
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), residentMiB());
         std::fflush(stdout);
     }
     const DeviceStats end = dev.stats();
@@ -388,9 +386,10 @@ int main(int argc, char** argv) {
                 backends.push_back(c);
             }
         } else {
-            std::fprintf(stderr, "usage: soak [--backends vulkan,gles,gl-egl,gl-osmesa] [--frames 10000] [--progress 1000]\n"
-                                 "            [--no-validation] [--memory-report-only]\n"
-                                 "       soak --backends B --churn ao|mb|depth[:LEVELS]|program|pipeline|program+pipeline[:PROGRAM] --frames N\n");
+            std::fprintf(stderr,
+                         "usage: soak [--backends vulkan,gles,gl-egl,gl-osmesa] [--frames 10000] [--progress 1000]\n"
+                         "            [--no-validation] [--memory-report-only]\n"
+                         "       soak --backends B --churn ao|mb|depth[:LEVELS]|program|pipeline|program+pipeline[:PROGRAM] --frames N\n");
             return a == "--help" ? 0 : 2;
         }
     }

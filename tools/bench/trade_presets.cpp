@@ -48,8 +48,8 @@ struct Options {
 
 struct Row {
     std::string backend, tier, preset, effect, technique;  // technique "-" for motion blur
-    std::string resolution = "-";                           // AO: "full" or "half"
-    uint32_t taps = 0, blurOrRadius = 0;                    // AO: taps, blur half-width; MB: taps, max radius px
+    std::string resolution = "-";                          // AO: "full" or "half"
+    uint32_t taps = 0, blurOrRadius = 0;                   // AO: taps, blur half-width; MB: taps, max radius px
     double ms = 0, copyPasses = 0, psnr = 0, psnrOccluded = 0;
     double psnrAnalytic = 0;  // AO: over the held-out analytic scenes only (the anchors' kind), at the anchors' size
 };
@@ -59,9 +59,7 @@ struct Row {
 // 29 dB for 23-29 copy passes. Quoted figures, not run here (no XeGTAO code is in the
 // project); High is placed at the low end of its cost range, the stricter test of dominance.
 const char* const kXeGtaoSeries = "XeGTAO Medium/High (quoted figures, not run here)";
-std::vector<tools::PlotPoint> xeGtaoAnchors() {
-    return {{13.0, 26.0, "XeGTAO Medium", kXeGtaoSeries}, {23.0, 29.0, "XeGTAO High", kXeGtaoSeries}};
-}
+std::vector<tools::PlotPoint> xeGtaoAnchors() { return {{13.0, 26.0, "XeGTAO Medium", kXeGtaoSeries}, {23.0, 29.0, "XeGTAO High", kXeGtaoSeries}}; }
 
 // The high tier's AO presets of a backend as plot points (cost in copy passes, PSNR over the
 // held-out views, or over their analytic scenes only).
@@ -70,7 +68,8 @@ std::vector<tools::PlotPoint> highTierAoPoints(const std::vector<Row>& rows, con
     for (const Row& r : rows)
         if (r.backend == backend && r.effect == "ao" && r.tier == "high") {
             const double y = analytic ? r.psnrAnalytic : r.psnr;
-            points.push_back({r.copyPasses, y, r.preset + " " + r.technique + " (" + fixed(r.copyPasses, 1) + " copy passes, " + fixed(y, 2) + " dB)", ""});
+            points.push_back(
+                {r.copyPasses, y, r.preset + " " + r.technique + " (" + fixed(r.copyPasses, 1) + " copy passes, " + fixed(y, 2) + " dB)", ""});
         }
     return points;
 }
@@ -87,7 +86,7 @@ std::vector<std::string> xeGtaoDominance(const Options& o, const std::vector<Row
             if (points.empty()) continue;
             for (const tools::PlotPoint& anchor : xeGtaoAnchors()) {
                 std::string line = backend + ", " + (analytic ? "analytic scenes" : "all held-out views") + ", " + anchor.label + " (" +
-                                   fixed(anchor.y, 0) + " dB, " + fixed(anchor.x, 0) + " copy passes): ";
+                    fixed(anchor.y, 0) + " dB, " + fixed(anchor.x, 0) + " copy passes): ";
                 const std::vector<size_t> d = tools::dominating(points, anchor);
                 if (d.empty()) {
                     double bestY = -1e9, cheapest = 1e9;
@@ -96,7 +95,7 @@ std::vector<std::string> xeGtaoDominance(const Options& o, const std::vector<Row
                         if (p.y >= anchor.y) cheapest = std::min(cheapest, p.x);
                     }
                     line += "no high-tier preset dominates it; the most accurate reaches " + fixed(bestY, 2) + " dB" +
-                            (cheapest < 1e9 ? ", the cheapest at least as accurate costs " + fixed(cheapest, 1) + " copy passes" : "");
+                        (cheapest < 1e9 ? ", the cheapest at least as accurate costs " + fixed(cheapest, 1) + " copy passes" : "");
                 } else {
                     line += "dominated by";
                     for (size_t k = 0; k < d.size(); ++k) line += (k ? "; " : " ") + points[d[k]].label;
@@ -146,8 +145,8 @@ Result<std::map<std::string, AoAccuracy>> aoAccuracy(Device& dev, Tier tier, con
             const AoAccuracy a{tools::summarise(errors.value()), tools::summarise(analytic.value())};
             out[preset.name + "/" + toString(t)] = a;
             std::cout << "  " << toString(tier) << "/" << preset.name << "/" << toString(t) << ": held-out PSNR " << fixed(a.heldOut.psnr, 2)
-                      << " dB, occluded " << fixed(a.heldOut.psnrOccluded, 2) << " dB; analytic scenes at " << o.anchorWidth << "x"
-                      << o.anchorHeight << " " << fixed(a.analytic.psnr, 2) << " dB" << std::endl;
+                      << " dB, occluded " << fixed(a.heldOut.psnrOccluded, 2) << " dB; analytic scenes at " << o.anchorWidth << "x" << o.anchorHeight
+                      << " " << fixed(a.analytic.psnr, 2) << " dB" << std::endl;
         }
     return out;
 }
@@ -185,10 +184,11 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
         mbScores = m.value();
     }
     // AO cost on one view's G-buffer at the cost size.
-    Result<std::unique_ptr<tools::ViewInputs>> in =
-        tools::ViewInputs::create(dev, tier, tools::TradeView{o.costView, false, 0, 1, 0}, o.costWidth, o.costHeight);
+    Result<std::unique_ptr<tools::ViewInputs>> in = tools::ViewInputs::create(dev, tier, tools::TradeView{o.costView, false, 0, 1, 0}, o.costWidth,
+                                                                              o.costHeight);
     if (!in) return in.status();
-    Result<TextureHandle> out = dev.createTexture({o.costWidth, o.costHeight, 1, outFormat, kTextureSampled | kTextureRenderTarget, "trade-cost-out"});
+    Result<TextureHandle> out = dev.createTexture(
+        {o.costWidth, o.costHeight, 1, outFormat, kTextureSampled | kTextureRenderTarget, "trade-cost-out"});
     if (!out) return out.status();
     Status status = Status::ok();
     for (const Preset& preset : tiers::row(tier).presets) {
@@ -196,10 +196,11 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
             AoSettings s;
             s.technique = t;
             s.normals = AoNormals::FromTexture;
-            Result<std::unique_ptr<AmbientObscurance>> ao =
-                AmbientObscurance::create(dev, {o.costWidth, o.costHeight, preset.params, s, in.value()->depthKind()});
+            Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(
+                dev, {o.costWidth, o.costHeight, preset.params, s, in.value()->depthKind()});
             if (!ao) return ao.status();
-            const AoInputs inputs{DepthSource{in.value()->depth(), in.value()->depthKind(), in.value()->camera()}, in.value()->normals(), out.value()};
+            const AoInputs inputs{DepthSource{in.value()->depth(), in.value()->depthKind(), in.value()->camera()}, in.value()->normals(),
+                                  out.value()};
             // Timed interleaved with copies (CopyPass::timeAgainst): on a loaded machine the load
             // drifts between configurations, and a ratio to a copy timed minutes earlier would drift
             // with it.
@@ -212,11 +213,11 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
             const AoAccuracy& accuracy = aoScores.at(preset.name + "/" + toString(t));
             const tools::AoScore& score = accuracy.heldOut;
             rows.push_back({backend, toString(tier), preset.name, "ao", toString(t), preset.params.aoHalfResolution ? "half" : "full",
-                            aoTaps(preset.params, t), preset.params.aoBlurRadiusPx, r->effectMs, r->ratio, score.psnr,
-                            score.psnrOccluded, accuracy.analytic.psnr});
+                            aoTaps(preset.params, t), preset.params.aoBlurRadiusPx, r->effectMs, r->ratio, score.psnr, score.psnrOccluded,
+                            accuracy.analytic.psnr});
             std::cout << "  " << backend << "/" << toString(tier) << "/" << preset.name << "/" << toString(t) << ": " << fixed(r->effectMs, 2)
-                      << " ms = " << fixed(rows.back().copyPasses, 1) << " copy passes (copy " << fixed(copyMsNow, 3) << " ms), PSNR " << fixed(score.psnr, 2)
-                      << " dB" << std::endl;
+                      << " ms = " << fixed(rows.back().copyPasses, 1) << " copy passes (copy " << fixed(copyMsNow, 3) << " ms), PSNR "
+                      << fixed(score.psnr, 2) << " dB" << std::endl;
         }
         if (!status) break;
         // Motion blur cost on the "pan" scene at the cost size.
@@ -235,10 +236,11 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
             break;
         }
         const MotionBlurParams p = resolveMotionBlur(preset.params, {}, o.costHeight).value();
-        rows.push_back({backend, toString(tier), preset.name, "motion-blur", "-", "-", p.taps, p.radiusPx, mb->medianMs, mb->medianMs / copyAfter.value(),
-                        mbScores.at(preset.name), 0, 0});
-        std::cout << "  " << backend << "/" << toString(tier) << "/" << preset.name << "/motion blur: " << fixed(mb->medianMs, 2) << " ms = "
-                  << fixed(rows.back().copyPasses, 1) << " copy passes, PSNR " << fixed(mbScores.at(preset.name), 2) << " dB" << std::endl;
+        rows.push_back({backend, toString(tier), preset.name, "motion-blur", "-", "-", p.taps, p.radiusPx, mb->medianMs,
+                        mb->medianMs / copyAfter.value(), mbScores.at(preset.name), 0, 0});
+        std::cout << "  " << backend << "/" << toString(tier) << "/" << preset.name << "/motion blur: " << fixed(mb->medianMs, 2)
+                  << " ms = " << fixed(rows.back().copyPasses, 1) << " copy passes, PSNR " << fixed(mbScores.at(preset.name), 2) << " dB"
+                  << std::endl;
     }
     (void)dev.destroyTexture(out.value());
     return status;
@@ -246,11 +248,12 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
 
 std::string markdown(const Options& o, const std::vector<Row>& rows, const std::string& machine) {
     std::ostringstream md;
-    md << "Measured by `build/tools/bench/trade_presets` on " << machine << ". Cost at " << o.costWidth << "x" << o.costHeight
-       << " (median of " << o.runs << " HAL-timed runs; copy passes = that cost over one full-screen copy of the same size on the same device: for AO the median ratio of runs timed interleaved with copies, for motion blur copies timed right after it); AO PSNR "
+    md << "Measured by `build/tools/bench/trade_presets` on " << machine << ". Cost at " << o.costWidth << "x" << o.costHeight << " (median of "
+       << o.runs
+       << " HAL-timed runs; copy passes = that cost over one full-screen copy of the same size on the same device: for AO the median ratio of runs "
+          "timed interleaved with copies, for motion blur copies timed right after it); AO PSNR "
           "over the held-out views of the fit at radii 0.25-2 ("
-       << o.truth.width << "x" << o.truth.height << "), motion blur PSNR against " << o.instants
-       << " supersampled instants on the 2.5D scenes.\n\n";
+       << o.truth.width << "x" << o.truth.height << "), motion blur PSNR against " << o.instants << " supersampled instants on the 2.5D scenes.\n\n";
     for (const std::string& backend : o.backends) {
         md << "![Pareto plot, AO, " << backend << "](images/pareto_ao_" << backend << ".svg)\n\n";
         md << "![Pareto plot, motion blur, " << backend << "](images/pareto_mb_" << backend << ".svg)\n\n";
@@ -262,12 +265,14 @@ std::string markdown(const Options& o, const std::vector<Row>& rows, const std::
        << ". The costs are this run's:\n\n";
     for (const std::string& line : xeGtaoDominance(o, rows)) md << "- " << line << "\n";
     md << "\n";
-    md << "| backend | tier | preset | effect | technique | AO resolution | taps | blur px / max radius px | ms | copy passes | PSNR | PSNR occluded | PSNR analytic scenes at "
-       << o.anchorWidth << "x" << o.anchorHeight << " |\n"
+    md << "| backend | tier | preset | effect | technique | AO resolution | taps | blur px / max radius px | ms | copy passes | PSNR | PSNR occluded "
+          "| PSNR analytic scenes at "
+       << o.anchorWidth << "x" << o.anchorHeight
+       << " |\n"
           "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const Row& r : rows)
-        md << "| " << r.backend << " | " << r.tier << " | " << r.preset << " | " << r.effect << " | " << r.technique << " | " << r.resolution << " | " << r.taps << " | "
-           << r.blurOrRadius << " | " << fixed(r.ms, 2) << " | " << fixed(r.copyPasses, 1) << " | " << fixed(r.psnr, 2) << " | "
+        md << "| " << r.backend << " | " << r.tier << " | " << r.preset << " | " << r.effect << " | " << r.technique << " | " << r.resolution << " | "
+           << r.taps << " | " << r.blurOrRadius << " | " << fixed(r.ms, 2) << " | " << fixed(r.copyPasses, 1) << " | " << fixed(r.psnr, 2) << " | "
            << (r.effect == "ao" ? fixed(r.psnrOccluded, 2) : "-") << " | " << (r.effect == "ao" ? fixed(r.psnrAnalytic, 2) : "-") << " |\n";
     return md.str();
 }
@@ -277,14 +282,14 @@ Status writePlots(const Options& o, const std::vector<Row>& rows) {
     for (const std::string& backend : o.backends)
         for (const std::string effect : {"ao", "motion-blur"}) {
             tools::Plot plot;
-            plot.title = (effect == "ao" ? "AO" : "Motion blur") + std::string(" presets on ") + backend + " at " + std::to_string(o.costWidth) + "x" +
-                         std::to_string(o.costHeight);
+            plot.title = (effect == "ao" ? "AO" : "Motion blur") + std::string(" presets on ") + backend + " at " + std::to_string(o.costWidth) +
+                "x" + std::to_string(o.costHeight);
             plot.xLabel = "cost, copy passes";
             plot.yLabel = effect == "ao" ? "PSNR against ray-traced truth, dB (held-out views)" : "PSNR against supersampled truth, dB";
             for (const Row& r : rows)
                 if (r.backend == backend && r.effect == effect)
-                    plot.points.push_back({r.copyPasses, r.psnr, r.tier + "/" + r.preset,
-                                           effect == "ao" ? r.technique + " (" + r.tier + ")" : r.tier});
+                    plot.points.push_back(
+                        {r.copyPasses, r.psnr, r.tier + "/" + r.preset, effect == "ao" ? r.technique + " (" + r.tier + ")" : r.tier});
             if (effect == "ao") plot.anchors = xeGtaoAnchors();
             SFX_TRY(tools::writeSvg(o.outDir + "/images/pareto_" + (effect == "ao" ? "ao_" : "mb_") + backend + ".svg", plot));
         }
@@ -315,8 +320,9 @@ int main(int argc, char** argv) {
         if (v.analytic) cases.analyticViews.push_back(v);
     const auto progress = [&](const std::string& line) { std::cout << "[" << elapsed() << " s] " << line << std::endl; };
     Result<std::vector<tools::AoCase>> heldOut = tools::loadCases(cases.views, 0, cases.views.size(), o.radii, o.truth, progress);
-    Result<std::vector<tools::AoCase>> analytic = heldOut ? tools::loadCases(cases.analyticViews, 0, cases.analyticViews.size(), o.radii, o.anchorTruth(), progress)
-                                                            : Result<std::vector<tools::AoCase>>(heldOut.status());
+    Result<std::vector<tools::AoCase>> analytic = heldOut
+        ? tools::loadCases(cases.analyticViews, 0, cases.analyticViews.size(), o.radii, o.anchorTruth(), progress)
+        : Result<std::vector<tools::AoCase>>(heldOut.status());
     if (!analytic) {
         std::cerr << "trade_presets: " << analytic.status().toString() << "\n";
         return 1;
@@ -327,22 +333,25 @@ int main(int argc, char** argv) {
     std::map<Tier, std::map<std::string, double>> mbScores;
     std::vector<Row> rows;
     std::string machine;
-    const Status run = tools::forEachDevice(o.backends, {Tier::High, Tier::Current}, "trade_presets", [&](Device& dev, const std::string& backend, Tier tier) {
-        if (machine.empty()) machine = dev.caps().deviceName;
-        std::cout << "[" << elapsed() << " s] " << dev.caps().summary() << ", tier " << toString(tier) << std::endl;
-        return runDevice(dev, backend, tier, o, cases, aoScores[tier], mbScores[tier], rows);
-    });
+    const Status run = tools::forEachDevice(
+        o.backends, {Tier::High, Tier::Current}, "trade_presets", [&](Device& dev, const std::string& backend, Tier tier) {
+            if (machine.empty()) machine = dev.caps().deviceName;
+            std::cout << "[" << elapsed() << " s] " << dev.caps().summary() << ", tier " << toString(tier) << std::endl;
+            return runDevice(dev, backend, tier, o, cases, aoScores[tier], mbScores[tier], rows);
+        });
     if (!run) {
         std::cerr << "trade_presets: " << run.toString() << "\n";
         return 1;
     }
     std::filesystem::create_directories(o.outDir);
     std::ofstream csv(o.outDir + "/trade_presets.csv");
-    csv << "backend,tier,preset,effect,technique,ao_resolution,taps,blur_or_max_radius_px,cost_width,cost_height,ms,copy_passes,psnr_db,psnr_occluded_db,psnr_analytic_db,analytic_width,analytic_height\n";
+    csv << "backend,tier,preset,effect,technique,ao_resolution,taps,blur_or_max_radius_px,cost_width,cost_height,ms,copy_passes,psnr_db,psnr_"
+           "occluded_db,psnr_analytic_db,analytic_width,analytic_height\n";
     for (const Row& r : rows)
-        csv << r.backend << "," << r.tier << "," << r.preset << "," << r.effect << "," << r.technique << "," << r.resolution << "," << r.taps << "," << r.blurOrRadius << ","
-            << o.costWidth << "," << o.costHeight << "," << fixed(r.ms, 3) << "," << fixed(r.copyPasses, 2) << "," << fixed(r.psnr, 3) << ","
-            << fixed(r.psnrOccluded, 3) << "," << fixed(r.psnrAnalytic, 3) << "," << o.anchorWidth << "," << o.anchorHeight << "\n";
+        csv << r.backend << "," << r.tier << "," << r.preset << "," << r.effect << "," << r.technique << "," << r.resolution << "," << r.taps << ","
+            << r.blurOrRadius << "," << o.costWidth << "," << o.costHeight << "," << fixed(r.ms, 3) << "," << fixed(r.copyPasses, 2) << ","
+            << fixed(r.psnr, 3) << "," << fixed(r.psnrOccluded, 3) << "," << fixed(r.psnrAnalytic, 3) << "," << o.anchorWidth << "," << o.anchorHeight
+            << "\n";
     for (const std::string& line : xeGtaoDominance(o, rows)) std::cout << "dominance: " << line << std::endl;
     Status st = writePlots(o, rows);
     if (st) st = tools::replaceMarkdownSection(o.outDir + "/trade.md", "trade_presets", markdown(o, rows, machine.empty() ? "no device" : machine));

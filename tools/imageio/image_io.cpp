@@ -1,14 +1,14 @@
 #include "sfx/image_io.hpp"
 
+#include <Iex.h>
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfIO.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
 #include <ImfVersion.h>
 #include <ImfXdr.h>
-#include <ImfInputFile.h>
-#include <Iex.h>
-#include <ImfOutputFile.h>
 #include <png.h>
 
 #include <algorithm>
@@ -36,9 +36,9 @@ Status fileError(const std::string& path, const std::string& what) { return {Sta
 Status checkImage(const Image& image, const std::string& path) {
     if (image.width == 0 || image.height == 0 || image.channels == 0 || image.channels > 4 ||
         image.pixels.size() != size_t(image.width) * image.height * image.channels)
-        return fileError(path, "image to write is malformed (" + std::to_string(image.width) + "x" +
-                                   std::to_string(image.height) + "x" + std::to_string(image.channels) + ", " +
-                                   std::to_string(image.pixels.size()) + " values)");
+        return fileError(path,
+                         "image to write is malformed (" + std::to_string(image.width) + "x" + std::to_string(image.height) + "x" +
+                             std::to_string(image.channels) + ", " + std::to_string(image.pixels.size()) + " values)");
     return Status::ok();
 }
 
@@ -46,9 +46,9 @@ Status checkImage(const Image& image, const std::string& path) {
 // (or, compressed, really hold) more pixels than the tools and effects take.
 Status checkDecodedSize(const std::string& path, const char* format, uint64_t width, uint64_t height, uint64_t maxPixels) {
     if (width <= kMaxImageSide && height <= kMaxImageSide && width * height <= maxPixels) return Status::ok();
-    return fileError(path, std::string(format) + " size " + std::to_string(width) + "x" + std::to_string(height) +
-                               " is over the limit (sides up to " + std::to_string(kMaxImageSide) + ", up to " +
-                               std::to_string(maxPixels) + " pixels)");
+    return fileError(path,
+                     std::string(format) + " size " + std::to_string(width) + "x" + std::to_string(height) + " is over the limit (sides up to " +
+                         std::to_string(kMaxImageSide) + ", up to " + std::to_string(maxPixels) + " pixels)");
 }
 
 // ---- PNG ------------------------------------------------------------------------------------
@@ -56,8 +56,7 @@ Result<Image> decodePng(const std::string& path, const uint8_t* data, size_t siz
     png_image png;
     std::memset(&png, 0, sizeof png);
     png.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_memory(&png, data, size))
-        return fileError(path, std::string("not a readable PNG: ") + png.message);
+    if (!png_image_begin_read_from_memory(&png, data, size)) return fileError(path, std::string("not a readable PNG: ") + png.message);
     if (Status fits = checkDecodedSize(path, "PNG", png.width, png.height, maxPixels); !fits) {
         png_image_free(&png);
         return fits;
@@ -80,10 +79,7 @@ Status writePngFile(const std::string& path, const Image& image) {
     png.version = PNG_IMAGE_VERSION;
     png.width = image.width;
     png.height = image.height;
-    png.format = image.channels == 1 ? PNG_FORMAT_GRAY
-                 : image.channels == 2 ? PNG_FORMAT_GA
-                 : image.channels == 3 ? PNG_FORMAT_RGB
-                                       : PNG_FORMAT_RGBA;
+    png.format = image.channels == 1 ? PNG_FORMAT_GRAY : image.channels == 2 ? PNG_FORMAT_GA : image.channels == 3 ? PNG_FORMAT_RGB : PNG_FORMAT_RGBA;
     std::vector<uint8_t> bytes(image.pixels.size());
     for (size_t i = 0; i < bytes.size(); ++i) {
         float v = image.pixels[i];
@@ -104,8 +100,7 @@ Result<Image> decodePfm(const std::string& path, const uint8_t* data, size_t siz
     long long w = 0, h = 0;
     double scale = 0;
     in >> magic >> w >> h >> scale;
-    if (!in || (magic != "PF" && magic != "Pf"))
-        return fileError(path, "not a PFM file (expected 'PF' or 'Pf', width, height and scale)");
+    if (!in || (magic != "PF" && magic != "Pf")) return fileError(path, "not a PFM file (expected 'PF' or 'Pf', width, height and scale)");
     // Sides first, so the byte count below cannot overflow.
     if (w <= 0 || h <= 0 || w > static_cast<long long>(kMaxImageSide) || h > static_cast<long long>(kMaxImageSide))
         return fileError(path, "PFM size " + std::to_string(w) + "x" + std::to_string(h) + " is outside 1.." + std::to_string(kMaxImageSide));
@@ -117,9 +112,10 @@ Result<Image> decodePfm(const std::string& path, const uint8_t* data, size_t siz
     const long long available = dataStart < 0 ? 0 : static_cast<long long>(size) - dataStart;
     const long long needed = w * h * channels * 4;
     if (dataStart < 0 || available < needed)
-        return fileError(path, "PFM header says " + std::to_string(w) + "x" + std::to_string(h) + "x" +
-                                   std::to_string(channels) + " floats (" + std::to_string(needed) + " bytes) but the file holds " +
-                                   std::to_string(std::max<long long>(available, 0)) + " bytes of data");
+        return fileError(path,
+                         "PFM header says " + std::to_string(w) + "x" + std::to_string(h) + "x" + std::to_string(channels) + " floats (" +
+                             std::to_string(needed) + " bytes) but the file holds " + std::to_string(std::max<long long>(available, 0)) +
+                             " bytes of data");
     // Uncompressed, so the data check above already bounds the allocation by the file's size;
     // the limit is the same as for the other formats.
     SFX_TRY(checkDecodedSize(path, "PFM", uint64_t(w), uint64_t(h), maxPixels));
@@ -148,8 +144,7 @@ Status writePfmFile(const std::string& path, const Image& image) {
     for (uint32_t r = 0; r < image.height; ++r) {
         const uint32_t y = image.height - 1 - r;
         for (uint32_t x = 0; x < image.width; ++x)
-            for (uint32_t c = 0; c < outChannels; ++c)
-                row[size_t(x) * outChannels + c] = c < image.channels ? image.at(x, y, c) : 0.0f;
+            for (uint32_t c = 0; c < outChannels; ++c) row[size_t(x) * outChannels + c] = c < image.channels ? image.at(x, y, c) : 0.0f;
         out.write(reinterpret_cast<const char*>(row.data()), std::streamsize(row.size() * 4));
     }
     if (!out) return fileError(path, "write failed");
@@ -186,11 +181,30 @@ private:
 // types by their size, a channel list up to its empty name, a preview by its pixel count.
 // Types read by the size field (strings, vectors, opaque ones) always match.
 bool exrValueMatchesSize(const std::string& type, const uint8_t* value, size_t length) {
-    static const std::pair<const char*, size_t> kFixed[] = {
-        {"box2i", 16}, {"box2f", 16}, {"chromaticities", 32}, {"compression", 1}, {"deepImageState", 1}, {"double", 8},
-        {"envmap", 1}, {"float", 4}, {"int", 4}, {"keycode", 28}, {"lineOrder", 1}, {"m33f", 36}, {"m33d", 72},
-        {"m44f", 64}, {"m44d", 128}, {"rational", 8}, {"tiledesc", 9}, {"timecode", 8}, {"v2i", 8}, {"v2f", 8},
-        {"v2d", 16}, {"v3i", 12}, {"v3f", 12}, {"v3d", 24}};
+    static const std::pair<const char*, size_t> kFixed[] = {{"box2i", 16},
+                                                            {"box2f", 16},
+                                                            {"chromaticities", 32},
+                                                            {"compression", 1},
+                                                            {"deepImageState", 1},
+                                                            {"double", 8},
+                                                            {"envmap", 1},
+                                                            {"float", 4},
+                                                            {"int", 4},
+                                                            {"keycode", 28},
+                                                            {"lineOrder", 1},
+                                                            {"m33f", 36},
+                                                            {"m33d", 72},
+                                                            {"m44f", 64},
+                                                            {"m44d", 128},
+                                                            {"rational", 8},
+                                                            {"tiledesc", 9},
+                                                            {"timecode", 8},
+                                                            {"v2i", 8},
+                                                            {"v2f", 8},
+                                                            {"v2d", 16},
+                                                            {"v3i", 12},
+                                                            {"v3f", 12},
+                                                            {"v3d", 24}};
     for (const auto& [name, bytes] : kFixed)
         if (type == name) return length == bytes;
     if (type == "chlist") {  // (name NUL, 16 bytes of channel)*, then NUL
@@ -204,7 +218,9 @@ bool exrValueMatchesSize(const std::string& type, const uint8_t* value, size_t l
     }
     if (type == "preview") {  // uint32 width, height, then RGBA8 pixels
         if (length < 8) return false;
-        auto u32 = [&](size_t at) { return uint64_t(value[at]) | uint64_t(value[at + 1]) << 8 | uint64_t(value[at + 2]) << 16 | uint64_t(value[at + 3]) << 24; };
+        auto u32 = [&](size_t at) {
+            return uint64_t(value[at]) | uint64_t(value[at + 1]) << 8 | uint64_t(value[at + 2]) << 16 | uint64_t(value[at + 3]) << 24;
+        };
         return 8 + u32(0) * u32(4) * 4 == length;
     }
     return true;
@@ -230,13 +246,14 @@ Status checkExrAttributeSizes(const std::string& path, const uint8_t* data, size
         const int32_t length = int32_t(uint32_t(le[0]) | uint32_t(le[1]) << 8 | uint32_t(le[2]) << 16 | uint32_t(le[3]) << 24);
         pos += 4;
         if (length < 0 || uint64_t(length) > size - pos)
-            return fileError(path, "not a readable EXR: attribute '" + name + "' claims " + std::to_string(length) + " bytes; " +
-                                       std::to_string(size - pos) + " are left in the file");
+            return fileError(path,
+                             "not a readable EXR: attribute '" + name + "' claims " + std::to_string(length) + " bytes; " +
+                                 std::to_string(size - pos) + " are left in the file");
         // OpenEXR reads the values of the types it knows by their content, not by the size
         // field: the two must agree, or its reading and this walk part ways.
         if (!exrValueMatchesSize(type, data + pos, size_t(length)))
-            return fileError(path, "not a readable EXR: attribute '" + name + "' of type " + type + " does not fill its " +
-                                       std::to_string(length) + " bytes");
+            return fileError(
+                path, "not a readable EXR: attribute '" + name + "' of type " + type + " does not fill its " + std::to_string(length) + " bytes");
         pos += size_t(length);
     }
     if (pos >= size) return fileError(path, "not a readable EXR: the header is cut short");
@@ -256,8 +273,7 @@ Result<Image> decodeExr(const std::string& path, const uint8_t* data, size_t siz
         Imf::Xdr::read<Imf::StreamIO>(stream, magic);
         Imf::Xdr::read<Imf::StreamIO>(stream, version);
         if (magic != Imf::MAGIC) return fileError(path, "not a readable EXR: no OpenEXR magic number");
-        if (Imf::isNonImage(version) || Imf::isMultiPart(version))
-            return fileError(path, "deep or multi-part EXR files are not supported");
+        if (Imf::isNonImage(version) || Imf::isMultiPart(version)) return fileError(path, "deep or multi-part EXR files are not supported");
         SFX_TRY(checkExrAttributeSizes(path, data, size, version));
         Imf::Header peek;
         peek.readFrom(stream, version);
@@ -275,12 +291,15 @@ Result<Image> decodeExr(const std::string& path, const uint8_t* data, size_t siz
         // Conventional orders first; otherwise the channels in the file's (alphabetical) order.
         std::vector<std::string> order;
         auto has = [&](const char* n) { return std::find(names.begin(), names.end(), n) != names.end(); };
-        if (has("R") && has("G") && has("B")) order = has("A") ? std::vector<std::string>{"R", "G", "B", "A"} : std::vector<std::string>{"R", "G", "B"};
-        else if (has("R") && has("G")) order = {"R", "G"};
-        else if (has("Y")) order = {"Y"};
-        else order = names;
-        if (order.empty() || order.size() > 4)
-            return fileError(path, "EXR has " + std::to_string(order.size()) + " channels; 1 to 4 are supported");
+        if (has("R") && has("G") && has("B"))
+            order = has("A") ? std::vector<std::string>{"R", "G", "B", "A"} : std::vector<std::string>{"R", "G", "B"};
+        else if (has("R") && has("G"))
+            order = {"R", "G"};
+        else if (has("Y"))
+            order = {"Y"};
+        else
+            order = names;
+        if (order.empty() || order.size() > 4) return fileError(path, "EXR has " + std::to_string(order.size()) + " channels; 1 to 4 are supported");
         Image image(uint32_t(w), uint32_t(h), uint32_t(order.size()));
         Imf::FrameBuffer fb;
         const size_t xStride = sizeof(float) * image.channels, yStride = xStride * size_t(w);
@@ -303,8 +322,7 @@ Status writeExrFile(const std::string& path, const Image& image) {
         Imf::FrameBuffer fb;
         const size_t xStride = sizeof(float) * image.channels, yStride = xStride * image.width;
         for (uint32_t c = 0; c < image.channels; ++c)
-            fb.insert(kNames[image.channels - 1][c],
-                      Imf::Slice(Imf::FLOAT, (char*)(image.pixels.data() + c), xStride, yStride));
+            fb.insert(kNames[image.channels - 1][c], Imf::Slice(Imf::FLOAT, (char*)(image.pixels.data() + c), xStride, yStride));
         file.setFrameBuffer(fb);
         file.writePixels(int(image.height));
         return Status::ok();
@@ -327,8 +345,7 @@ Result<Image> decodeImage(const std::string& path, const void* data, size_t size
 Result<Image> readImage(const std::string& path) {
     if (!std::filesystem::exists(path)) return fileError(path, "no such file");
     const std::string ext = extensionOf(path);
-    if (ext != ".png" && ext != ".pfm" && ext != ".exr")
-        return fileError(path, "unknown image extension '" + ext + "'; allowed .png, .pfm, .exr");
+    if (ext != ".png" && ext != ".pfm" && ext != ".exr") return fileError(path, "unknown image extension '" + ext + "'; allowed .png, .pfm, .exr");
     std::ifstream in(path, std::ios::binary);
     if (!in) return fileError(path, "cannot open for reading");
     const std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

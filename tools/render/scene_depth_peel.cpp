@@ -2,8 +2,8 @@
 #include "scene_depth_peel.hpp"
 
 #include <cstring>
-#include <tuple>
 #include <glm/gtc/type_ptr.hpp>
+#include <tuple>
 
 #include "sfx_scene_shaders.hpp"
 #include "sfx_shared_raster.h"
@@ -18,8 +18,8 @@ void storeMatrix(float (&dst)[16], const glm::dmat4& m) {
 
 }  // namespace
 
-Result<std::unique_ptr<DepthPeel>> DepthPeel::create(Device& device, Tier tier, const tools::RasterScene& scene, uint32_t layers,
-                                                     uint32_t width, uint32_t height) {
+Result<std::unique_ptr<DepthPeel>> DepthPeel::create(Device& device, Tier tier, const tools::RasterScene& scene, uint32_t layers, uint32_t width,
+                                                     uint32_t height) {
     std::unique_ptr<DepthPeel> p(new DepthPeel(device, width, height));
     Result<std::unique_ptr<LinearDepth>> linear = LinearDepth::create(device, {width, height, tier, 1, DepthKind::Hardware});
     if (!linear) return linear.status();
@@ -132,8 +132,9 @@ std::vector<PlanLine> DepthPeel::plan() const {
                            std::to_string(l - 1) + ", for --ao-layers " + n});
     for (const PlannedResource& r : linear_->plan().resources)
         out.push_back({K::Resource, "ao-layers", "layer 0 (" + r.name + ")", r.width, r.height, r.bytes,
-                       r.format == Format::Undefined ? std::string("uniform buffer: the linearisation's constants")
-                                                     : std::string(toString(r.format)) + ": layer 0's linear depth, which AO reads in place (no linearisation of its own)"});
+                       r.format == Format::Undefined
+                           ? std::string("uniform buffer: the linearisation's constants")
+                           : std::string(toString(r.format)) + ": layer 0's linear depth, which AO reads in place (no linearisation of its own)"});
     for (size_t l = 1; l <= layers_.size(); ++l) {
         const PlannedResource r = plannedTexture("ao-layers", "layer", {w, h, 1, Format::R32F, kTextureSampled | kTextureRenderTarget, "layer"});
         out.push_back({K::Resource, "ao-layers", "layer " + std::to_string(l) + " linear depth", w, h, r.bytes,

@@ -18,8 +18,8 @@ class DepthPeel {
 public:
     // layers: [2, SFX_AO_MAX_DEPTH_LAYERS] (validated by the caller); the tier's programs must
     // have the peel (the high tier's).
-    static Result<std::unique_ptr<DepthPeel>> create(Device& device, Tier tier, const tools::RasterScene& scene, uint32_t layers,
-                                                     uint32_t width, uint32_t height);
+    static Result<std::unique_ptr<DepthPeel>> create(Device& device, Tier tier, const tools::RasterScene& scene, uint32_t layers, uint32_t width,
+                                                     uint32_t height);
     ~DepthPeel();
     DepthPeel(const DepthPeel&) = delete;
     DepthPeel& operator=(const DepthPeel&) = delete;

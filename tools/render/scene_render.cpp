@@ -27,7 +27,6 @@ std::string mib(uint64_t bytes) {
     return s.str();
 }
 
-
 std::string aoPassWhy(const PlannedPass& p) {
     if (p.name == "linearize") return "linear depth from the hardware depth, which the AO taps read";
     if (p.name.rfind("depth_mip", 0) == 0) return "depth MIP level the tier's Scalable AO reads for distant taps";
@@ -48,8 +47,7 @@ Status validateOptions(const RenderOptions& o) {
                                "[1, " + std::to_string(kMaxAoLayers) + "] (1: the first visible layer; more: depth peeling, high tier)");
     if (o.aoLayers > 1 && !o.ao) return invalidArgument("--ao-layers", std::to_string(o.aoLayers), "1 with --ao off (the layers are for AO)");
     if (o.maxLayers != keptLayers(TransparencyQuality::Standard) && o.maxLayers != keptLayers(TransparencyQuality::High))
-        return invalidArgument("--max-layers", std::to_string(o.maxLayers),
-                               "16 or 32 (the fragments the A-buffer resolve keeps exact per pixel)");
+        return invalidArgument("--max-layers", std::to_string(o.maxLayers), "16 or 32 (the fragments the A-buffer resolve keeps exact per pixel)");
     if (o.nodes < 1 || o.nodes > kMaxCompressedNodes)
         return invalidArgument("--nodes", std::to_string(o.nodes), "[1, " + std::to_string(kMaxCompressedNodes) + "]");
     return Status::ok();
@@ -97,8 +95,8 @@ std::string RenderStats::describe() const {
         s << "transparency: A-buffer, " << transparentTriangles << " triangles, " << transparencyFrames << " frame(s)";
         if (firstFrameDropped) s << " (the first frame's guessed pool dropped " << firstFrameDropped << " fragments; redrawn)";
         s << "\n";
-        s << "fragments: " << oit.fragments << ", stored: " << oit.stored << ", dropped: " << oit.dropped
-          << ", pool nodes: " << oit.poolNodes << ", pool bytes: " << oit.poolBytes << "\n";
+        s << "fragments: " << oit.fragments << ", stored: " << oit.stored << ", dropped: " << oit.dropped << ", pool nodes: " << oit.poolNodes
+          << ", pool bytes: " << oit.poolBytes << "\n";
         s << "depth complexity: mean " << meanDepthComplexity << " fragments per pixel\n";
     }
     return s.str();
@@ -113,15 +111,14 @@ struct SceneRender::Impl {
     std::vector<size_t> transparent;
     std::unique_ptr<tools::SceneRenderer> raster;
     std::unique_ptr<AmbientObscurance> ao;
-    std::unique_ptr<DepthPeel> peel;  // only with --ao-layers > 1
+    std::unique_ptr<DepthPeel> peel;                  // only with --ao-layers > 1
     std::unique_ptr<SceneTransparency> transparency;  // only with a translucent object and --oit auto
     TextureHandle aoOutput;
     Format aoFormat = Format::Undefined;
     uint32_t width = 0, height = 0;
     uint32_t triangles = 0;
 
-    Impl(Device& d, const tiers::TierChoice& t, const scene::Scene& f, const RenderOptions& o)
-        : device(d), tier(t), file(f), options(o) {}
+    Impl(Device& d, const tiers::TierChoice& t, const scene::Scene& f, const RenderOptions& o) : device(d), tier(t), file(f), options(o) {}
     ~Impl() {
         ao.reset();
         peel.reset();
@@ -169,20 +166,19 @@ Result<std::unique_ptr<SceneRender>> SceneRender::create(Device& device, const t
             s.depthLayers = options.aoLayers;
             aoDepth = DepthKind::Linear;  // layer 0 from the peel's linearisation, read in place
         }
-        Result<std::unique_ptr<AmbientObscurance>> ao =
-            AmbientObscurance::create(device, {impl->width, impl->height, tier.profile, s, aoDepth});
+        Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(device, {impl->width, impl->height, tier.profile, s, aoDepth});
         if (!ao) return ao.status();
         impl->ao = std::move(ao.value());
         impl->aoFormat = device.caps().renderableFormat[size_t(Format::R32F)] ? Format::R32F : Format::RGBA8;
-        Result<TextureHandle> out =
-            device.createTexture({impl->width, impl->height, 1, impl->aoFormat, kTextureSampled | kTextureRenderTarget, "render-ao"});
+        Result<TextureHandle> out = device.createTexture(
+            {impl->width, impl->height, 1, impl->aoFormat, kTextureSampled | kTextureRenderTarget, "render-ao"});
         if (!out) return out.status();
         impl->aoOutput = out.value();
     }
     if (!impl->transparent.empty() && options.oit) {
-        Result<std::unique_ptr<SceneTransparency>> t = SceneTransparency::create(
-            device, tier, file, impl->transparent, options.transparentDrawOrder, impl->width, impl->height, options.maxLayers,
-            LayerAoOptions{options.ao, options.aoRadius, options.nodes});
+        Result<std::unique_ptr<SceneTransparency>> t = SceneTransparency::create(device, tier, file, impl->transparent, options.transparentDrawOrder,
+                                                                                 impl->width, impl->height, options.maxLayers,
+                                                                                 LayerAoOptions{options.ao, options.aoRadius, options.nodes});
         if (!t) return t.status();
         impl->transparency = std::move(t.value());
     }
@@ -194,9 +190,9 @@ FramePlan SceneRender::plan() const {
     const uint32_t w = m.width, h = m.height;
     FramePlan p;
     using K = PlanLine::Kind;
-    p.lines.push_back({K::Pass, "scene", "raster", w, h, 0,
-                       std::to_string(m.scene.meshes.size()) + " opaque objects, " + std::to_string(m.triangles) +
-                           " triangles into depth, normals and colour"});
+    p.lines.push_back(
+        {K::Pass, "scene", "raster", w, h, 0,
+         std::to_string(m.scene.meshes.size()) + " opaque objects, " + std::to_string(m.triangles) + " triangles into depth, normals and colour"});
     const struct {
         const char* name;
         Format format;
@@ -216,7 +212,8 @@ FramePlan SceneRender::plan() const {
     if (m.ao) {
         const EffectPlan aoPlan = m.ao->plan();
         const std::string tech = toString(*m.options.ao);
-        for (const PlannedPass& pass : aoPlan.passes) p.lines.push_back({K::Pass, pass.effect, pass.name, pass.width, pass.height, 0, aoPassWhy(pass)});
+        for (const PlannedPass& pass : aoPlan.passes)
+            p.lines.push_back({K::Pass, pass.effect, pass.name, pass.width, pass.height, 0, aoPassWhy(pass)});
         for (const PlannedResource& r : aoPlan.resources)
             p.lines.push_back({K::Resource, r.effect, r.name, r.width, r.height, r.bytes,
                                (r.format == Format::Undefined ? std::string("uniform buffer") : std::string(toString(r.format))) +
@@ -224,15 +221,15 @@ FramePlan SceneRender::plan() const {
         const PlannedResource out = plannedTexture("ao", "visibility", {w, h, 1, m.aoFormat, kTextureSampled | kTextureRenderTarget, "ao"});
         p.lines.push_back({K::Resource, "ao", "visibility", w, h, out.bytes,
                            std::string(toString(m.aoFormat)) + ": the AO result the composite multiplies into the ambient term"});
-        if (!m.peel) p.lines.push_back({K::Omitted, "ao", "multilayer depth", 0, 0, 0, "not asked (--ao-layers 1): AO tests the first visible layer only"});
+        if (!m.peel)
+            p.lines.push_back({K::Omitted, "ao", "multilayer depth", 0, 0, 0, "not asked (--ao-layers 1): AO tests the first visible layer only"});
     } else {
         p.lines.push_back({K::Omitted, "ao", "all", 0, 0, 0, "--ao off: no linear depth, AO or blur passes and no AO textures"});
     }
     p.lines.push_back({K::Host, "composite", "shade", w, h, 0,
                        "lambert: colour * (ambient * AO + light * n.l); unlit: colour exactly; background where nothing is drawn"});
     if (m.transparent.empty()) {
-        p.lines.push_back({K::Omitted, "transparency", "oit", 0, 0, 0,
-                           "nothing in the scene is transparent: no A-buffer, node pool or OIT pass"});
+        p.lines.push_back({K::Omitted, "transparency", "oit", 0, 0, 0, "nothing in the scene is transparent: no A-buffer, node pool or OIT pass"});
     } else if (!m.options.oit) {
         p.lines.push_back({K::Omitted, "transparency", "oit", 0, 0, 0,
                            "--oit off: " + std::to_string(m.transparent.size()) + " transparent objects are not drawn"});
@@ -330,8 +327,7 @@ Result<RenderResult> SceneRender::render() {
             std::optional<io::Image> layerAo;
             if (m.transparency->aoThroughLayers()) layerAo.emplace();
             SFX_TRY(m.transparency->render(g->depth, view, g->camera.projection, result.color, result.stats,
-                                           m.options.keepOpaqueInputs ? &kept.color : nullptr, recomposite,
-                                           layerAo ? &*layerAo : nullptr));
+                                           m.options.keepOpaqueInputs ? &kept.color : nullptr, recomposite, layerAo ? &*layerAo : nullptr));
             if (layerAo) result.ao = std::move(layerAo);
             if (m.options.keepOpaqueInputs) {
                 kept.storedDepth.resize(size_t(m.width) * m.height);

@@ -9,10 +9,10 @@
 
 namespace sfx::render {
 
-Result<std::unique_ptr<SceneTransparency>> SceneTransparency::create(Device& device, const tiers::TierChoice& tier,
-                                                                     const scene::Scene& file, const std::vector<size_t>& objects,
-                                                                     const std::vector<uint32_t>& drawOrder, uint32_t width,
-                                                                     uint32_t height, uint32_t maxLayers, const LayerAoOptions& layerAo) {
+Result<std::unique_ptr<SceneTransparency>> SceneTransparency::create(Device& device, const tiers::TierChoice& tier, const scene::Scene& file,
+                                                                     const std::vector<size_t>& objects, const std::vector<uint32_t>& drawOrder,
+                                                                     uint32_t width, uint32_t height, uint32_t maxLayers,
+                                                                     const LayerAoOptions& layerAo) {
     std::vector<uint32_t> order = drawOrder;
     if (order.empty()) {
         order.resize(objects.size());
@@ -39,8 +39,7 @@ Result<std::unique_ptr<SceneTransparency>> SceneTransparency::create(Device& dev
     desc.quality = maxLayers > keptLayers(TransparencyQuality::Standard) ? TransparencyQuality::High : TransparencyQuality::Standard;
     // AO through the layers where the tier keeps layers and the technique has an opacity-based
     // form (Alchemy, Scalable): the taps read the lists compressed to M nodes.
-    if (tier.profile.abufferOit && layerAo.technique &&
-        (*layerAo.technique == AoTechnique::Alchemy || *layerAo.technique == AoTechnique::Scalable)) {
+    if (tier.profile.abufferOit && layerAo.technique && (*layerAo.technique == AoTechnique::Alchemy || *layerAo.technique == AoTechnique::Scalable)) {
         AoSettings s;
         s.technique = *layerAo.technique;
         s.radius = layerAo.radius;
@@ -112,8 +111,8 @@ std::vector<PlanLine> SceneTransparency::plan() const {
                                                     : "weighted blended OIT (current tier: one blend state, no storage)";
     const EffectPlan p = effect_->plan(true);
     for (const PlannedPass& pass : p.passes)
-        lines.push_back({K::Pass, "transparency", pass.name, pass.width, pass.height, 0,
-                         n + " translucent objects through sfx::Transparency, " + path});
+        lines.push_back(
+            {K::Pass, "transparency", pass.name, pass.width, pass.height, 0, n + " translucent objects through sfx::Transparency, " + path});
     for (const PlannedResource& r : p.resources) {
         std::string why = r.format == Format::Undefined ? std::string("buffer") : std::string(toString(r.format));
         why += ": held by sfx::Transparency for the " + path;

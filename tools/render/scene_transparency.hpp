@@ -21,7 +21,7 @@ namespace sfx::render {
 struct LayerAoOptions {
     std::optional<AoTechnique> technique;  // nullopt or Crease: none
     float radius = 0.5f;
-    uint32_t nodes = 4;  // M, [1, 4]
+    uint32_t nodes = 4;         // M, [1, 4]
     uint32_t filterRadius = 2;  // the layer AO's bilateral filter, taps each side (TransparencyAoDesc::filterRadius)
 };
 
@@ -32,9 +32,8 @@ public:
     // the same every frame whatever the draw order. `drawOrder` permutes the draws (empty: file
     // order). `maxLayers` is 16 or 32 (validateOptions).
     static Result<std::unique_ptr<SceneTransparency>> create(Device& device, const tiers::TierChoice& tier, const scene::Scene& file,
-                                                              const std::vector<size_t>& objects, const std::vector<uint32_t>& drawOrder,
-                                                              uint32_t width, uint32_t height, uint32_t maxLayers,
-                                                              const LayerAoOptions& layerAo = {});
+                                                             const std::vector<size_t>& objects, const std::vector<uint32_t>& drawOrder,
+                                                             uint32_t width, uint32_t height, uint32_t maxLayers, const LayerAoOptions& layerAo = {});
     ~SceneTransparency();
     SceneTransparency(const SceneTransparency&) = delete;
     SceneTransparency& operator=(const SceneTransparency&) = delete;
@@ -53,8 +52,8 @@ public:
     // with it, which is composited in one more frame; `layerAo` receives the blended visibility
     // through the layers (what --ao-out writes).
     using Recomposite = std::function<io::Image(const std::vector<float>& opaqueVisibility)>;
-    Status render(TextureHandle opaqueDepth, const glm::dmat4& view, const glm::dmat4& projection, io::Image& color,
-                  RenderStats& stats, io::Image* uploaded, const Recomposite& recomposite = {}, io::Image* layerAo = nullptr);
+    Status render(TextureHandle opaqueDepth, const glm::dmat4& view, const glm::dmat4& projection, io::Image& color, RenderStats& stats,
+                  io::Image* uploaded, const Recomposite& recomposite = {}, io::Image* layerAo = nullptr);
     bool aoThroughLayers() const { return effect_->aoThroughLayers(); }
 
 private:

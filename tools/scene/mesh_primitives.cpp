@@ -77,8 +77,7 @@ Result<TriangleMesh> parseObjMesh(const std::string& path, const std::string& te
     for (size_t i = 0; i < m.vertices.size(); ++i) {
         const glm::vec3 p(attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]);
         // A non-finite position would make every normal it touches NaN.
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-            return error("vertex " + std::to_string(i + 1) + " is not finite");
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return error("vertex " + std::to_string(i + 1) + " is not finite");
         m.vertices[i] = {p, glm::vec3(0)};
     }
     // tinyobjloader triangulates polygons and resolves relative (negative) indices, but it

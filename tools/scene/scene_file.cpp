@@ -81,8 +81,8 @@ public:
     }
 
     // A finite number in [lo, hi] (or (lo, hi] with openLow, [lo, hi) with openHigh).
-    double number(const json& v, const std::string& path, double lo, double hi, const std::string& allowed,
-                  bool openLow = false, bool openHigh = false) const {
+    double number(const json& v, const std::string& path, double lo, double hi, const std::string& allowed, bool openLow = false,
+                  bool openHigh = false) const {
         if (!v.is_number()) outOfRange(path, v, "a number in " + allowed);
         const double x = v.get<double>();
         const bool low = openLow ? x > lo : x >= lo, high = openHigh ? x < hi : x <= hi;
@@ -92,8 +92,7 @@ public:
     dvec3 vec3(const json& v, const std::string& path, double lo, double hi, const std::string& allowed, bool openLow = false) const {
         if (!v.is_array() || v.size() != 3) outOfRange(path, v, "an array of 3 numbers, each in " + allowed);
         dvec3 out;
-        for (int i = 0; i < 3; ++i)
-            out[i] = number(v[size_t(i)], path + "[" + std::to_string(i) + "]", lo, hi, allowed, openLow);
+        for (int i = 0; i < 3; ++i) out[i] = number(v[size_t(i)], path + "[" + std::to_string(i) + "]", lo, hi, allowed, openLow);
         return out;
     }
     uint32_t size(const json& v, const std::string& path) const {
@@ -133,8 +132,9 @@ SceneCamera readCamera(const Reader& r, const json& v) {
         r.fail(path + ".target", "equals camera.position; allowed any other point");
     const double across = glm::length(glm::cross(glm::normalize(forward), c.up));
     if (!(across > 1e-6 * glm::length(c.up)) || !(glm::length(c.up) > 0.0))
-        r.fail(path + ".up", "is [" + std::to_string(c.up.x) + ", " + std::to_string(c.up.y) + ", " + std::to_string(c.up.z) +
-                                 "]; allowed a non-zero vector not parallel to camera.target - camera.position");
+        r.fail(path + ".up",
+               "is [" + std::to_string(c.up.x) + ", " + std::to_string(c.up.y) + ", " + std::to_string(c.up.z) +
+                   "]; allowed a non-zero vector not parallel to camera.target - camera.position");
     return c;
 }
 
@@ -163,12 +163,15 @@ public:
         o.mesh = r_.string(r_.required(v, path, "mesh"), path + ".mesh", kMeshAllowed);
         o.meshIndex = meshFor(o.mesh, path + ".mesh");
         const std::string coordinates = "[-1e6, 1e6]";
-        if (const json* p = Reader::optional(v, "position")) o.position = r_.vec3(*p, path + ".position", -kMaxCoordinate, kMaxCoordinate, coordinates);
+        if (const json* p = Reader::optional(v, "position"))
+            o.position = r_.vec3(*p, path + ".position", -kMaxCoordinate, kMaxCoordinate, coordinates);
         if (const json* p = Reader::optional(v, "rotation"))
             o.rotationDegrees = r_.vec3(*p, path + ".rotation", -kMaxCoordinate, kMaxCoordinate, "[-1e6, 1e6] degrees");
         if (const json* s = Reader::optional(v, "scale")) {
-            if (s->is_number()) o.scale = dvec3(r_.number(*s, path + ".scale", 0.0, kMaxCoordinate, "(0, 1e6], or 3 such numbers", true));
-            else o.scale = r_.vec3(*s, path + ".scale", 0.0, kMaxCoordinate, "(0, 1e6]", true);
+            if (s->is_number())
+                o.scale = dvec3(r_.number(*s, path + ".scale", 0.0, kMaxCoordinate, "(0, 1e6], or 3 such numbers", true));
+            else
+                o.scale = r_.vec3(*s, path + ".scale", 0.0, kMaxCoordinate, "(0, 1e6]", true);
         }
         if (const json* c = Reader::optional(v, "color")) o.color = r_.vec3(*c, path + ".color", 0.0, kMaxColor, "[0, 65504] (linear RGB)");
         if (const json* a = Reader::optional(v, "opacity")) {
@@ -177,9 +180,12 @@ public:
         }
         if (const json* s = Reader::optional(v, "shading")) {
             const std::string name = s->is_string() ? s->get<std::string>() : std::string();
-            if (name == "lambert") o.shading = Shading::Lambert;
-            else if (name == "unlit") o.shading = Shading::Unlit;
-            else r_.outOfRange(path + ".shading", *s, "\"lambert\" or \"unlit\"");
+            if (name == "lambert")
+                o.shading = Shading::Lambert;
+            else if (name == "unlit")
+                o.shading = Shading::Unlit;
+            else
+                r_.outOfRange(path + ".shading", *s, "\"lambert\" or \"unlit\"");
         }
         o.world = worldMatrix(o);
         return o;
@@ -198,13 +204,18 @@ private:
         auto it = index_.find(key);
         if (it != index_.end()) return it->second;
         TriangleMesh mesh;
-        if (name == "quad") mesh = quadMesh();
-        else if (name == "box") mesh = boxMesh(glm::vec3(-0.5f), glm::vec3(0.5f));
-        else if (name == "sphere") mesh = sphereMesh(glm::vec3(0.0f), 0.5f);
+        if (name == "quad")
+            mesh = quadMesh();
+        else if (name == "box")
+            mesh = boxMesh(glm::vec3(-0.5f), glm::vec3(0.5f));
+        else if (name == "sphere")
+            mesh = sphereMesh(glm::vec3(0.0f), 0.5f);
         else {
             Result<TriangleMesh> obj = loadObjMesh(key);
-            if (!obj) throw SceneError{Status{StatusCode::FileError, r_.file() + ": " + path + " '" + name + "' does not load: " +
-                                                                   obj.status().message() + "; allowed " + kMeshAllowed}};
+            if (!obj)
+                throw SceneError{
+                    Status{StatusCode::FileError,
+                           r_.file() + ": " + path + " '" + name + "' does not load: " + obj.status().message() + "; allowed " + kMeshAllowed}};
             mesh = std::move(obj.value());
         }
         meshes_.push_back(std::move(mesh));
@@ -237,8 +248,10 @@ json parseJson(const std::string& text, const std::string& file) {
     std::vector<std::set<std::string>> keys;
     std::string duplicate;
     json::parser_callback_t cb = [&](int, json::parse_event_t event, json& parsed) {
-        if (event == json::parse_event_t::object_start) keys.emplace_back();
-        else if (event == json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
+        if (event == json::parse_event_t::object_start)
+            keys.emplace_back();
+        else if (event == json::parse_event_t::object_end && !keys.empty())
+            keys.pop_back();
         else if (event == json::parse_event_t::key && !keys.empty() && duplicate.empty() && parsed.is_string() &&
                  !keys.back().insert(parsed.get<std::string>()).second)
             duplicate = parsed.get<std::string>();

@@ -26,9 +26,9 @@ struct AnalyticScene {
     uint32_t width = 0, height = 0;
     CameraProjection camera;
     DepthReconstruction reconstruction;
-    reference::Grid linearDepth;         // misses are the far plane (sky)
-    std::vector<glm::dvec3> normals;     // unit, facing the camera; (0,0,1) for sky
-    std::vector<glm::dvec3> positions;   // exact hit points (view space)
+    reference::Grid linearDepth;        // misses are the far plane (sky)
+    std::vector<glm::dvec3> normals;    // unit, facing the camera; (0,0,1) for sky
+    std::vector<glm::dvec3> positions;  // exact hit points (view space)
 
     reference::AoInput aoInput(bool withNormals) const;
 };
@@ -84,8 +84,8 @@ namespace sfx::tools {
 // [edges[i], edges[i+1]); -1 for an empty bin. Positions are divided by `scale` first.
 // onSurface(position, normal) picks the pixels, distanceOf(position) bins them.
 template <class SurfaceFn, class DistanceFn>
-std::vector<double> occlusionBins(const AnalyticScene& s, const reference::Grid& vis, double scale,
-                                  const std::vector<double>& edges, SurfaceFn onSurface, DistanceFn distanceOf) {
+std::vector<double> occlusionBins(const AnalyticScene& s, const reference::Grid& vis, double scale, const std::vector<double>& edges,
+                                  SurfaceFn onSurface, DistanceFn distanceOf) {
     std::vector<double> sum(edges.size() - 1, 0.0), count(edges.size() - 1, 0.0);
     for (uint32_t y = 0; y < s.height; ++y)
         for (uint32_t x = 0; x < s.width; ++x) {

@@ -9,7 +9,6 @@ namespace sfx::tools {
 
 using namespace sfx::reference;
 
-
 // Scenes laid out in fractions of the picture, so every size shows the same thing; velocities
 // scale with the height as the tier radii do. At 180 rows the displacements (8-10 px, a blur
 // radius of 4-5 px) sit at the high tier's radius (4.5 px there) and beyond the current

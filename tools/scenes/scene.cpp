@@ -239,8 +239,7 @@ Result<GBuffer> SceneRenderer::render(const RasterScene& scene, uint32_t width, 
                        {&g.velocity, Format::RG16F, "scene-velocity"},
                        {&g.albedo, albedoFormat_, "scene-albedo"}};
         for (const auto& t : targets) {
-            Result<TextureHandle> texture =
-                device_.createTexture({width, height, 1, t.format, kTextureSampled | kTextureRenderTarget, t.name});
+            Result<TextureHandle> texture = device_.createTexture({width, height, 1, t.format, kTextureSampled | kTextureRenderTarget, t.name});
             if (!texture) return texture.status();
             *t.handle = texture.value();
         }
@@ -267,8 +266,7 @@ Result<GBuffer> SceneRenderer::render(const RasterScene& scene, uint32_t width, 
             draws.push_back(d);
         }
         RenderPassDesc pass;
-        pass.colors = {ColorAttachment{g.normals, 0, LoadOp::Clear, {0, 0, 0, 0}},
-                       ColorAttachment{g.velocity, 0, LoadOp::Clear, {0, 0, 0, 0}},
+        pass.colors = {ColorAttachment{g.normals, 0, LoadOp::Clear, {0, 0, 0, 0}}, ColorAttachment{g.velocity, 0, LoadOp::Clear, {0, 0, 0, 0}},
                        ColorAttachment{g.albedo, 0, LoadOp::Clear, {0, 0, 0, 0}}};
         pass.depth = DepthAttachment{g.depth, LoadOp::Clear, 1.0f};
         pass.debugName = "scene-gbuffer";

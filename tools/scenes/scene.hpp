@@ -22,7 +22,7 @@ struct Mesh : scene::TriangleMesh {
     Mesh() = default;
     Mesh(scene::TriangleMesh triangles) : scene::TriangleMesh(std::move(triangles)) {}
     glm::dmat4 model{1.0};
-    glm::dvec3 velocity{0.0};       // world units per shutter interval (for moving-object demos)
+    glm::dvec3 velocity{0.0};  // world units per shutter interval (for moving-object demos)
     // RasterParams.surface: rgb linear colour, a the shading code (SFX_RASTER_SHADING_*);
     // a = 0 draws the samples' checkered albedo.
     glm::dvec4 surface{0.0};
@@ -66,10 +66,10 @@ struct GBuffer {
 // the benchmarks' CPU shading and the demo's pictures read.
 struct GBufferContents {
     uint32_t width = 0, height = 0;
-    std::vector<float> storedDepth;    // the D32F values as rasterised
-    std::vector<glm::vec3> normals;    // view space, from the RGBA16F halves (exact)
-    std::vector<glm::vec2> velocity;   // pixels across the shutter interval, from RG16F (exact)
-    std::vector<uint8_t> albedo;       // RGBA8 (readBack needs the RGBA8 albedo format)
+    std::vector<float> storedDepth;   // the D32F values as rasterised
+    std::vector<glm::vec3> normals;   // view space, from the RGBA16F halves (exact)
+    std::vector<glm::vec2> velocity;  // pixels across the shutter interval, from RG16F (exact)
+    std::vector<uint8_t> albedo;      // RGBA8 (readBack needs the RGBA8 albedo format)
     bool drawn(size_t i) const { return albedo[i * 4 + 3] != 0; }
 };
 Result<GBufferContents> readBack(Device& device, const GBuffer& gbuffer);

@@ -8,8 +8,10 @@ namespace sfx::tools {
 std::string TradeView::name() const {
     if (analytic) return "analytic-" + scene;
     char buf[64];
-    if (distanceScale == 1 && lift == 0) std::snprintf(buf, sizeof buf, "@%g", turnDegrees);
-    else std::snprintf(buf, sizeof buf, "@%g_%g_%g", turnDegrees, distanceScale, lift);
+    if (distanceScale == 1 && lift == 0)
+        std::snprintf(buf, sizeof buf, "@%g", turnDegrees);
+    else
+        std::snprintf(buf, sizeof buf, "@%g_%g_%g", turnDegrees, distanceScale, lift);
     return scene + buf;
 }
 

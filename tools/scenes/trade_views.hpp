@@ -15,12 +15,12 @@
 namespace sfx::tools {
 
 struct TradeView {
-    std::string scene;          // a sample scene (sceneNames()) or an analytic one (analyticSceneNames())
+    std::string scene;  // a sample scene (sceneNames()) or an analytic one (analyticSceneNames())
     bool analytic = false;
-    double turnDegrees = 0;     // the eye turned about the vertical through the target
-    double distanceScale = 1;   // and moved along its line of sight toward (< 1) or away from the target
-    double lift = 0;            // and raised, world units
-    std::string name() const;   // "corner@0", "corner@-30_0.8_0", "analytic-contact"
+    double turnDegrees = 0;    // the eye turned about the vertical through the target
+    double distanceScale = 1;  // and moved along its line of sight toward (< 1) or away from the target
+    double lift = 0;           // and raised, world units
+    std::string name() const;  // "corner@0", "corner@-30_0.8_0", "analytic-contact"
 };
 
 std::vector<TradeView> trainingViews();

@@ -10,8 +10,8 @@ namespace sfx::tools {
 
 std::string truthCachePath(const std::string& cacheDir, const TruthScene& scene, const truth::Settings& s) {
     std::ostringstream key;
-    key << cacheDir << "/v" << kTruthVersion << "_" << scene.name << "_" << scene.camera.width << "x" << scene.camera.height << "_r"
-        << s.radius << "_n" << s.samples << "_s" << s.seed << ".exr";
+    key << cacheDir << "/v" << kTruthVersion << "_" << scene.name << "_" << scene.camera.width << "x" << scene.camera.height << "_r" << s.radius
+        << "_n" << s.samples << "_s" << s.seed << ".exr";
     return key.str();
 }
 

@@ -75,8 +75,9 @@ int runAo(const AoFlags& f) {
     if (normalImage) {
         const io::Image& n = *normalImage;
         if (n.channels < 3)
-            return fail(cmd, Status{StatusCode::FileError, "--normals " + f.normalsPath + " has " + std::to_string(n.channels) +
-                                                               " channel(s); view-space normals need x, y, z"});
+            return fail(cmd,
+                        Status{StatusCode::FileError,
+                               "--normals " + f.normalsPath + " has " + std::to_string(n.channels) + " channel(s); view-space normals need x, y, z"});
         if (Status st = refuseNaN(n, 3, "--normals", f.normalsPath); !st) return fail(cmd, st);
         std::vector<float> px(size_t(w) * h * 4, 0.0f);
         for (uint32_t y = 0; y < h; ++y)
@@ -113,9 +114,9 @@ int runAo(const AoFlags& f) {
     if (Status st = io::writeImage(f.outPath, image); !st) return fail(cmd, st);
     Result<std::string> png = writePngBeside(f.outPath, image);
     if (!png) return fail(cmd, png.status());
-    std::cout << "sfx ao: " << toString(s.technique) << " on " << dev.caps().summary() << ", tier " << toString(opened->tier.tier)
-              << ", " << w << "x" << h << ", AO at " << (ao.value()->config().halfResolution ? "half" : "full")
-              << " resolution -> " << f.outPath << " and " << png.value() << "\n";
+    std::cout << "sfx ao: " << toString(s.technique) << " on " << dev.caps().summary() << ", tier " << toString(opened->tier.tier) << ", " << w << "x"
+              << h << ", AO at " << (ao.value()->config().halfResolution ? "half" : "full") << " resolution -> " << f.outPath << " and "
+              << png.value() << "\n";
     if (f.showPlan) std::cout << ao.value()->plan().describe();
     return 0;
 }
@@ -130,9 +131,10 @@ Command addAoCommand(CLI::App& app) {
     flags->device.add(*c.app);
     flags->camera.add(*c.app);
     c.app->add_option("--technique", flags->technique, "alchemy | scalable | crease")->capture_default_str();
-    c.app->add_option("--resolution", flags->resolution,
-                      "tier | full | half: where obscurance and blur run; half = half size, then a depth-aware upsample; "
-                      "tier = the tier preset's")
+    c.app
+        ->add_option("--resolution", flags->resolution,
+                     "tier | full | half: where obscurance and blur run; half = half size, then a depth-aware upsample; "
+                     "tier = the tier preset's")
         ->capture_default_str();
     c.app->add_option("--normals", flags->normalsPath,
                       "view-space normals file (x right, y up, camera looking down -z; signed float xyz in PFM/EXR)");

@@ -10,20 +10,17 @@ namespace sfx::cli {
 
 void DeviceFlags::add(CLI::App& app) {
     app.add_option("--backend", backend, "auto | vulkan | gles | gl | gl-egl | gl-osmesa")->capture_default_str();
-    app.add_option("--tier", tier, "auto, or a tier (" + tierNameList() + "; a lower tier runs under its capability ceiling)")
-        ->capture_default_str();
+    app.add_option("--tier", tier, "auto, or a tier (" + tierNameList() + "; a lower tier runs under its capability ceiling)")->capture_default_str();
     app.add_option("--device", device,
                    "Vulkan: the physical device, by its index or part of its name (sfx info lists them); default the best by type");
-    app.add_flag("--validate", validate,
-                 "API validation (Vulkan validation layer, GL error checks); messages go to stderr");
+    app.add_flag("--validate", validate, "API validation (Vulkan validation layer, GL error checks); messages go to stderr");
 }
 
 Result<OpenedDevice> openDevice(const DeviceFlags& flags) {
     std::optional<Tier> tier;
     if (flags.tier != "auto") {
         Tier t;
-        if (!parseTier(flags.tier, &t))
-            return invalidArgument("--tier", "'" + flags.tier + "'", "auto or " + tierNameList());
+        if (!parseTier(flags.tier, &t)) return invalidArgument("--tier", "'" + flags.tier + "'", "auto or " + tierNameList());
         tier = t;
     }
     DeviceOptions options;
@@ -64,26 +61,22 @@ Status refuseNaN(const io::Image& image, uint32_t channels, const std::string& f
         for (uint32_t x = 0; x < image.width; ++x)
             for (uint32_t c = 0; c < std::min(channels, image.channels); ++c)
                 if (std::isnan(image.at(x, y, c)))
-                    return {StatusCode::InvalidArgument, flag + " " + path + ": pixel (" + std::to_string(x) + ", " +
-                                                             std::to_string(y) + ") channel " + std::to_string(c) +
-                                                             " is NaN; input files may hold any value but NaN"};
+                    return {StatusCode::InvalidArgument,
+                            flag + " " + path + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") channel " + std::to_string(c) +
+                                " is NaN; input files may hold any value but NaN"};
     return Status::ok();
 }
 
 void CameraFlags::add(CLI::App& app) {
-    app.add_option("--depth", depthPath,
-                   "depth file (PFM, EXR or PNG; first channel; row order as the format defines)")
-        ->required();
+    app.add_option("--depth", depthPath, "depth file (PFM, EXR or PNG; first channel; row order as the format defines)")->required();
     app.add_option("--depth-kind", depthKind,
                    "linear: positive eye-space distance along the view axis, in scene units;\n"
                    "hardware: the stored depth-buffer value in [0,1], mapped by the projection below")
         ->capture_default_str();
     app.add_option("--fov-y", fovYDegrees, "vertical field of view in degrees, (0, 180)")->capture_default_str();
     app.add_option("--near", nearPlane, "near plane distance, > 0")->capture_default_str();
-    app.add_option("--far", farPlane, "far plane distance, > near; 'inf' for an infinite far plane")
-        ->capture_default_str();
-    app.add_option("--clip-depth", clipDepth, "hardware depth convention: 0,1 (Vulkan/D3D) or -1,1 (GL default)")
-        ->capture_default_str();
+    app.add_option("--far", farPlane, "far plane distance, > near; 'inf' for an infinite far plane")->capture_default_str();
+    app.add_option("--clip-depth", clipDepth, "hardware depth convention: 0,1 (Vulkan/D3D) or -1,1 (GL default)")->capture_default_str();
     app.add_flag("--reversed-z", reversedZ, "hardware depth is reversed (near = 1, far = 0)");
 }
 
@@ -91,23 +84,19 @@ Result<io::Image> loadMatching(const std::string& path, uint32_t width, uint32_t
     Result<io::Image> image = io::readImage(path);
     if (!image) return image.status();
     if (image->width != width || image->height != height)
-        return Status{StatusCode::InvalidArgument, std::string(what) + " " + path + " is " + std::to_string(image->width) +
-                                                       "x" + std::to_string(image->height) + "; the depth is " +
-                                                       std::to_string(width) + "x" + std::to_string(height)};
+        return Status{StatusCode::InvalidArgument,
+                      std::string(what) + " " + path + " is " + std::to_string(image->width) + "x" + std::to_string(image->height) +
+                          "; the depth is " + std::to_string(width) + "x" + std::to_string(height)};
     return image;
 }
 
 Result<LoadedDepth> readDepth(const CameraFlags& f) {
-    if (f.depthKind != "linear" && f.depthKind != "hardware")
-        return invalidArgument("--depth-kind", "'" + f.depthKind + "'", "linear or hardware");
-    if (!(f.fovYDegrees > 0 && f.fovYDegrees < 180))
-        return invalidArgument("--fov-y", std::to_string(f.fovYDegrees), "(0, 180) degrees");
-    if (!(f.nearPlane > 0) || !std::isfinite(f.nearPlane))
-        return invalidArgument("--near", std::to_string(f.nearPlane), "a finite distance > 0");
+    if (f.depthKind != "linear" && f.depthKind != "hardware") return invalidArgument("--depth-kind", "'" + f.depthKind + "'", "linear or hardware");
+    if (!(f.fovYDegrees > 0 && f.fovYDegrees < 180)) return invalidArgument("--fov-y", std::to_string(f.fovYDegrees), "(0, 180) degrees");
+    if (!(f.nearPlane > 0) || !std::isfinite(f.nearPlane)) return invalidArgument("--near", std::to_string(f.nearPlane), "a finite distance > 0");
     if (!(f.farPlane > f.nearPlane))
         return invalidArgument("--far", std::to_string(f.farPlane), "> --near (" + std::to_string(f.nearPlane) + "), or inf");
-    if (f.clipDepth != "0,1" && f.clipDepth != "-1,1")
-        return invalidArgument("--clip-depth", "'" + f.clipDepth + "'", "0,1 or -1,1");
+    if (f.clipDepth != "0,1" && f.clipDepth != "-1,1") return invalidArgument("--clip-depth", "'" + f.clipDepth + "'", "0,1 or -1,1");
 
     LoadedDepth out;
     Result<io::Image> image = io::readImage(f.depthPath);

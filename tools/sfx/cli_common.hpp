@@ -46,7 +46,7 @@ struct CameraFlags {
 };
 
 struct LoadedDepth {
-    io::Image image;   // as read, one channel, row 0 = top
+    io::Image image;     // as read, one channel, row 0 = top
     DepthSource source;  // kind and camera; the texture once uploadDepth has run (R32F)
 };
 // Reads the depth file (PFM/EXR/PNG; first channel) once, validates flags and values (no NaN:

@@ -17,9 +17,12 @@ std::string yesNo(bool b) { return b ? "yes" : "no"; }
 enum class LookOf { Alchemy, Scalable, Crease };
 std::string look(const AoLook& l, LookOf t) {
     char buf[96];
-    if (t == LookOf::Crease) std::snprintf(buf, sizeof buf, "%g, %g, %g, %g", l.intensity, l.contrast, l.creaseRange, l.creaseBias);
-    else if (t == LookOf::Scalable) std::snprintf(buf, sizeof buf, "%g, %g, %g, %g", l.intensity, l.contrast, l.bias, l.sumExponent);
-    else std::snprintf(buf, sizeof buf, "%g, %g, %g", l.intensity, l.contrast, l.bias);
+    if (t == LookOf::Crease)
+        std::snprintf(buf, sizeof buf, "%g, %g, %g, %g", l.intensity, l.contrast, l.creaseRange, l.creaseBias);
+    else if (t == LookOf::Scalable)
+        std::snprintf(buf, sizeof buf, "%g, %g, %g, %g", l.intensity, l.contrast, l.bias, l.sumExponent);
+    else
+        std::snprintf(buf, sizeof buf, "%g, %g, %g", l.intensity, l.contrast, l.bias);
     return buf;
 }
 
@@ -36,14 +39,19 @@ const ParameterRow kParameterRows[] = {
     {"depth MIP levels read by AO", [](const TierProfile& p) { return std::to_string(p.aoDepthMipLevels); }},
     {"Alchemy samples per pixel", [](const TierProfile& p) { return std::to_string(p.aoAlchemySamples); }},
     {"crease AO taps per pixel",
-     [](const TierProfile& p) { return std::string(p.aoCreaseTaps == 24 ? "24 (the 11x11 stippled diamond)" : "12 (half the diamond, by checkerboard)"); }},
+     [](const TierProfile& p) {
+         return std::string(p.aoCreaseTaps == 24 ? "24 (the 11x11 stippled diamond)" : "12 (half the diamond, by checkerboard)");
+     }},
     {"crease AO tap spacing (px at 720 rows)", [](const TierProfile& p) { return std::to_string(int(p.aoCreaseSpacingPx)); }},
-    {"AO resolution (obscurance and blur)", [](const TierProfile& p) { return std::string(p.aoHalfResolution ? "half, depth-aware upsample" : "full"); }},
-    {"AO depth layers at most (multilayer AO)", [](const TierProfile& p) { return p.aoMaxDepthLayers > 1 ? std::to_string(p.aoMaxDepthLayers) : std::string("1 (single layer only)"); }},
+    {"AO resolution (obscurance and blur)",
+     [](const TierProfile& p) { return std::string(p.aoHalfResolution ? "half, depth-aware upsample" : "full"); }},
+    {"AO depth layers at most (multilayer AO)",
+     [](const TierProfile& p) { return p.aoMaxDepthLayers > 1 ? std::to_string(p.aoMaxDepthLayers) : std::string("1 (single layer only)"); }},
     {"AO bilateral blur half-width (px)", [](const TierProfile& p) { return std::to_string(p.aoBlurRadiusPx); }},
     {"AO blur depth source",
      [](const TierProfile& p) {
-         return std::string(p.aoPackedDepthTarget ? "key packed in the RGBA8 AO target" : "linear depth carried in the float AO target (RG32F; RGBA32F for crease)");
+         return std::string(p.aoPackedDepthTarget ? "key packed in the RGBA8 AO target"
+                                                  : "linear depth carried in the float AO target (RG32F; RGBA32F for crease)");
      }},
     {"alchemy AO look (intensity, contrast, bias)", [](const TierProfile& p) { return look(p.aoLook[0], LookOf::Alchemy); }},
     {"scalable AO look (intensity, contrast, bias, sum exponent)", [](const TierProfile& p) { return look(p.aoLook[1], LookOf::Scalable); }},
@@ -88,11 +96,10 @@ void printRules(std::ostream& out) {
     for (const tiers::TierRow& r : table) {
         std::string dialects, defines;
         for (ShaderDialect d : r.glDialects) dialects += (dialects.empty() ? "" : ", ") + std::string(toString(d));
-        for (const tiers::ShaderDefine& d : tiers::shaderDefines(r.tier))
-            defines += (defines.empty() ? "" : ", ") + d.name + "=" + d.value;
+        for (const tiers::ShaderDefine& d : tiers::shaderDefines(r.tier)) defines += (defines.empty() ? "" : ", ") + d.name + "=" + d.value;
         out << "| " << toString(r.tier) << " | " << r.summary << " | "
-            << (r.ceiling == CapabilityCeiling::None ? std::string("none") : std::string(toString(r.ceiling))) << " | "
-            << dialects << " | " << defines << " |\n";
+            << (r.ceiling == CapabilityCeiling::None ? std::string("none") : std::string(toString(r.ceiling))) << " | " << dialects << " | "
+            << defines << " |\n";
     }
 
     out << "\n";
@@ -119,12 +126,11 @@ std::string defaultCostCacheDir() {
 // The limits and formats the tiers and effects rely on, two lines.
 void printLimitsAndFormats(std::ostream& out, const DeviceCaps& caps) {
     const DeviceLimits& l = caps.limits;
-    out << "  limits: textures up to " << l.maxTextureSize << ", render targets up to " << l.maxRenderTargetWidth << "x"
-        << l.maxRenderTargetHeight << ", " << l.maxColorAttachments << " colour attachments, " << l.subPixelPrecisionBits
-        << " sub-pixel bits, uniform blocks "
+    out << "  limits: textures up to " << l.maxTextureSize << ", render targets up to " << l.maxRenderTargetWidth << "x" << l.maxRenderTargetHeight
+        << ", " << l.maxColorAttachments << " colour attachments, " << l.subPixelPrecisionBits << " sub-pixel bits, uniform blocks "
         << l.maxUniformBlockSize << " bytes, storage buffers " << l.maxStorageBufferSize << " bytes, compute work groups "
-        << l.maxComputeWorkGroupInvocations << " invocations and " << l.maxComputeWorkGroupCount[0] << "x"
-        << l.maxComputeWorkGroupCount[1] << "x" << l.maxComputeWorkGroupCount[2] << " groups, " << l.maxTextureBindings << " texture bindings\n";
+        << l.maxComputeWorkGroupInvocations << " invocations and " << l.maxComputeWorkGroupCount[0] << "x" << l.maxComputeWorkGroupCount[1] << "x"
+        << l.maxComputeWorkGroupCount[2] << " groups, " << l.maxTextureBindings << " texture bindings\n";
     std::string sampled, renderable;
     for (size_t f = 1; f < size_t(Format::Count); ++f) {
         if (caps.sampledFormat[f]) sampled += std::string(sampled.empty() ? "" : " ") + toString(Format(f));
@@ -184,10 +190,14 @@ Command addInfoCommand(CLI::App& app) {
     static bool settings = false;
     c.app->add_flag("--settings", settings, "print every numeric setting's allowed range as a Markdown table and exit");
     static BudgetFlags budgetFlags;
-    c.app->add_option("--budget", budgetFlags.budgetMs, "a cost budget in ms: print the most accurate preset that fits on the best device, and the table");
+    c.app->add_option("--budget", budgetFlags.budgetMs,
+                      "a cost budget in ms: print the most accurate preset that fits on the best device, and the table");
     c.app->add_option("--size", budgetFlags.size, "with --budget: the frame size, WIDTHxHEIGHT")->capture_default_str();
     c.app->add_option("--effect", budgetFlags.effect, "with --budget: ao or motion-blur")->capture_default_str();
-    c.app->add_option("--cache-dir", budgetFlags.cacheDir, "with --budget: where measured cost tables are cached ($XDG_CACHE_HOME/scalablefx or ~/.cache/scalablefx)")->capture_default_str();
+    c.app
+        ->add_option("--cache-dir", budgetFlags.cacheDir,
+                     "with --budget: where measured cost tables are cached ($XDG_CACHE_HOME/scalablefx or ~/.cache/scalablefx)")
+        ->capture_default_str();
     c.app->add_flag("--recalibrate", budgetFlags.recalibrate, "with --budget: measure the costs again");
     c.run = [] {
         if (rules) {

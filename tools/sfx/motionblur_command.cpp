@@ -41,8 +41,7 @@ constexpr float kLargestHalf = 65504.0f;
 // "10 current, 18 high": one default-preset value per tier of the table, for help texts.
 std::string perTier(std::string (*value)(const TierProfile&)) {
     std::string s;
-    for (const tiers::TierRow& r : tiers::table())
-        s += (s.empty() ? "" : ", ") + value(r.presets.front().params) + " " + toString(r.tier);
+    for (const tiers::TierRow& r : tiers::table()) s += (s.empty() ? "" : ", ") + value(r.presets.front().params) + " " + toString(r.tier);
     return s;
 }
 
@@ -78,9 +77,9 @@ Status run(const MotionBlurFlags& f) {
     if (!velocity) return velocity.status();
     const uint32_t needed = velExt == ".pfm" ? 3u : 2u;
     if (velocity->channels < needed)
-        return {StatusCode::InvalidArgument, "--velocity " + f.velocityPath + " has " + std::to_string(velocity->channels) +
-                                                 " channel(s); a velocity " + velExt.substr(1) + " needs " + std::to_string(needed) +
-                                                 (velExt == ".pfm" ? " (x, y, ignored)" : " (x, y)")};
+        return {StatusCode::InvalidArgument,
+                "--velocity " + f.velocityPath + " has " + std::to_string(velocity->channels) + " channel(s); a velocity " + velExt.substr(1) +
+                    " needs " + std::to_string(needed) + (velExt == ".pfm" ? " (x, y, ignored)" : " (x, y)")};
     // Any velocity but NaN: the effect clamps infinite and huge ones to the radius (sfx_shared_mb.h).
     SFX_TRY(refuseNaN(velocity.value(), 2, "--velocity", f.velocityPath));
 
@@ -186,8 +185,9 @@ Command addMotionBlurCommand(CLI::App& app) {
                     settingHelp(Setting::MbMaxRadiusPx) + "; not given: the tier's (" +
                         perTier([](const TierProfile& p) { return std::to_string(int(p.mbMaxRadiusPx)); }) + ")");
     sub->add_option("--reference-rows", flags->referenceRows, settingHelp(Setting::MbReferenceRows))->capture_default_str();
-    sub->add_option("--samples", flags->samples,
-                    settingHelp(Setting::MbSamples) + "; not given: the tier's (" + perTier([](const TierProfile& p) { return std::to_string(p.mbTaps); }) + ")");
+    sub->add_option(
+        "--samples", flags->samples,
+        settingHelp(Setting::MbSamples) + "; not given: the tier's (" + perTier([](const TierProfile& p) { return std::to_string(p.mbTaps); }) + ")");
     sub->add_option("--soft-depth", flags->softDepth, settingHelp(Setting::MbSoftDepthExtent))->capture_default_str();
     sub->add_option("--centre-weight", flags->centreWeight, settingHelp(Setting::MbCentreWeight))->capture_default_str();
     sub->add_option("--exposure", flags->exposure, settingHelp(Setting::MbExposure))->capture_default_str();

@@ -66,10 +66,11 @@ Command addTruthCommand(CLI::App& app) {
     c.app->add_option("--height", flags->height, "pixels, 1 to 16384")->capture_default_str();
     c.app->add_option("--radius", flags->radius, "world-space AO radius, > 0")->capture_default_str();
     c.app->add_option("--samples", flags->samples, "cosine-weighted directions per pixel, a square >= 256")->capture_default_str();
-    c.app->add_option("--seed", flags->seed, "selects the per-pixel stratified pattern (output is deterministic per seed)")
-        ->capture_default_str();
+    c.app->add_option("--seed", flags->seed, "selects the per-pixel stratified pattern (output is deterministic per seed)")->capture_default_str();
     c.app->add_option("--threads", flags->threads, "0 = all hardware threads (does not change the result)")->capture_default_str();
-    c.app->add_option("--out", flags->outPath, "output .pfm or .exr: channel 0 visibility (1 on sky), channel 1 surface mask (a .png preview is written beside it)")
+    c.app
+        ->add_option("--out", flags->outPath,
+                     "output .pfm or .exr: channel 0 visibility (1 on sky), channel 1 surface mask (a .png preview is written beside it)")
         ->required();
     c.run = [flags] { return runTruth(*flags); };
     return c;

@@ -36,8 +36,8 @@ void printReflection(const CompiledProgram& p) {
     }
 }
 
-int runManifest(const std::string& manifest, const std::vector<std::string>& includes, const std::string& outHeader,
-                const std::string& outSource, const std::string& cppNamespace, bool verbose) {
+int runManifest(const std::string& manifest, const std::vector<std::string>& includes, const std::string& outHeader, const std::string& outSource,
+                const std::string& cppNamespace, bool verbose) {
     Result<std::vector<shaderc::ManifestEntry>> entries = shaderc::parseManifest(manifest);
     if (!entries) {
         std::cerr << entries.status().message() << "\n";
@@ -116,13 +116,13 @@ int main(int argc, char** argv) {
         "  sfxc --manifest shader_src/programs.txt --check\n",
         "sfxc"};
     std::vector<std::string> files;
-    std::string target = "spirv", tierName = kTierNames[kTierCount - 1], output, manifest, outHeader, outSource,
-                cppNamespace = "shaders";
+    std::string target = "spirv", tierName = kTierNames[kTierCount - 1], output, manifest, outHeader, outSource, cppNamespace = "shaders";
     std::vector<std::string> includes, defines;
     bool reflectFlag = false, check = false, verbose = false;
     app.add_option("files", files, "shader files (.vert .frag .comp) to compile one by one");
     app.add_option("--target,-t", target, "spirv | essl300 | essl310 | glsl330 | glsl450")->capture_default_str();
-    app.add_option("--tier", tierName, "the tier (" + tierNameList() + "): defines what the tier table generates for it, e.g. SFX_TIER_HIGH")->capture_default_str();
+    app.add_option("--tier", tierName, "the tier (" + tierNameList() + "): defines what the tier table generates for it, e.g. SFX_TIER_HIGH")
+        ->capture_default_str();
     app.add_option("-o,--output", output, "output file (one input file); default: GLSL to stdout");
     app.add_option("-I,--include", includes, "include directory (repeatable)");
     app.add_option("-D,--define", defines, "NAME or NAME=VALUE (repeatable)");
@@ -130,8 +130,7 @@ int main(int argc, char** argv) {
     app.add_option("--manifest", manifest, "programs.txt: compile every program for its tiers and all targets");
     app.add_option("--out-header", outHeader, "with --manifest: generated C++ header");
     app.add_option("--out-source", outSource, "with --manifest: generated C++ source embedding the programs");
-    app.add_option("--namespace", cppNamespace,
-                   "with --manifest: namespace under sfx:: for find() and all(), one per embedded library")
+    app.add_option("--namespace", cppNamespace, "with --manifest: namespace under sfx:: for find() and all(), one per embedded library")
         ->capture_default_str();
     app.add_flag("--check", check, "with --manifest: compile everything, write nothing");
     app.add_flag("-v,--verbose", verbose, "print each program as it compiles");
@@ -144,8 +143,7 @@ int main(int argc, char** argv) {
         }
         if (includes.empty()) includes.push_back((fs::path(manifest).parent_path() / "include").string());
         const bool identifier = !cppNamespace.empty() && !std::isdigit(static_cast<unsigned char>(cppNamespace[0])) &&
-                                std::all_of(cppNamespace.begin(), cppNamespace.end(),
-                                            [](char ch) { return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_'; });
+            std::all_of(cppNamespace.begin(), cppNamespace.end(), [](char ch) { return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_'; });
         if (!identifier) {
             std::cerr << "sfxc: error: --namespace '" << cppNamespace << "' is not a C++ identifier (letters, digits, _)\n";
             return 2;

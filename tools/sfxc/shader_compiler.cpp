@@ -30,9 +30,18 @@ Result<std::string> readTextFile(const std::string& path) {
 
 bool stageFromPath(const std::string& path, ShaderStage* out) {
     const std::string ext = fs::path(path).extension().string();
-    if (ext == ".vert") { *out = ShaderStage::Vertex; return true; }
-    if (ext == ".frag") { *out = ShaderStage::Fragment; return true; }
-    if (ext == ".comp") { *out = ShaderStage::Compute; return true; }
+    if (ext == ".vert") {
+        *out = ShaderStage::Vertex;
+        return true;
+    }
+    if (ext == ".frag") {
+        *out = ShaderStage::Fragment;
+        return true;
+    }
+    if (ext == ".comp") {
+        *out = ShaderStage::Compute;
+        return true;
+    }
     return false;
 }
 
@@ -45,9 +54,9 @@ void initGlslangOnce() {
 
 EShLanguage toGlslang(ShaderStage s) {
     switch (s) {
-    case ShaderStage::Vertex: return EShLangVertex;
-    case ShaderStage::Fragment: return EShLangFragment;
-    case ShaderStage::Compute: return EShLangCompute;
+        case ShaderStage::Vertex: return EShLangVertex;
+        case ShaderStage::Fragment: return EShLangFragment;
+        case ShaderStage::Compute: return EShLangCompute;
     }
     return EShLangFragment;
 }
@@ -135,8 +144,7 @@ Result<std::vector<uint32_t>> glslToSpirv(const StageSource& src, const CompileO
 
     glslang::TProgram program;
     program.addShader(&shader);
-    if (!program.link(messages))
-        return Status{StatusCode::ShaderError, src.path + ":0: error: link: " + formatGlslangLog(program.getInfoLog())};
+    if (!program.link(messages)) return Status{StatusCode::ShaderError, src.path + ":0: error: link: " + formatGlslangLog(program.getInfoLog())};
 
     std::vector<uint32_t> spirv;
     glslang::SpvOptions spvOptions;
@@ -184,11 +192,9 @@ Result<std::string> spirvToGlsl(const std::vector<uint32_t>& spirv, const Dialec
         if (blockNames) {
             spirv_cross::ShaderResources res = glsl.get_shader_resources();
             for (const auto& r : res.uniform_buffers)
-                blockNames->push_back({glsl.get_decoration(r.id, spv::DecorationBinding),
-                                       glsl.get_remapped_declared_block_name(r.id)});
+                blockNames->push_back({glsl.get_decoration(r.id, spv::DecorationBinding), glsl.get_remapped_declared_block_name(r.id)});
             for (const auto& r : res.storage_buffers)
-                blockNames->push_back({glsl.get_decoration(r.id, spv::DecorationBinding),
-                                       glsl.get_remapped_declared_block_name(r.id)});
+                blockNames->push_back({glsl.get_decoration(r.id, spv::DecorationBinding), glsl.get_remapped_declared_block_name(r.id)});
         }
         return out;
     } catch (const std::exception& e) {
@@ -196,8 +202,7 @@ Result<std::string> spirvToGlsl(const std::vector<uint32_t>& spirv, const Dialec
     }
 }
 
-Status reflect(const std::vector<uint32_t>& spirv, ShaderStage stage, const std::string& path,
-               std::vector<ShaderResource>* merged) {
+Status reflect(const std::vector<uint32_t>& spirv, ShaderStage stage, const std::string& path, std::vector<ShaderResource>* merged) {
     try {
         spirv_cross::Compiler comp(spirv);
         spirv_cross::ShaderResources res = comp.get_shader_resources();
@@ -205,8 +210,8 @@ Status reflect(const std::vector<uint32_t>& spirv, ShaderStage stage, const std:
             const uint32_t set = comp.get_decoration(r.id, spv::DecorationDescriptorSet);
             const uint32_t binding = comp.get_decoration(r.id, spv::DecorationBinding);
             if (set != 0)
-                return {StatusCode::ShaderError, path + ":0: error: resource '" + r.name + "' is in set " +
-                                                     std::to_string(set) + "; the SDK uses set 0 only"};
+                return {StatusCode::ShaderError,
+                        path + ":0: error: resource '" + r.name + "' is in set " + std::to_string(set) + "; the SDK uses set 0 only"};
             const bool isBlock = kind == ResourceKind::UniformBuffer || kind == ResourceKind::StorageBuffer;
             ShaderResource sr;
             sr.name = isBlock ? comp.get_name(r.base_type_id) : comp.get_name(r.id);
@@ -218,8 +223,9 @@ Status reflect(const std::vector<uint32_t>& spirv, ShaderStage stage, const std:
             for (ShaderResource& m : *merged) {
                 if (m.binding != binding) continue;
                 if (m.name != sr.name || m.kind != sr.kind)
-                    return {StatusCode::ShaderError, path + ":0: error: binding " + std::to_string(binding) + " is '" +
-                                                         sr.name + "' here and '" + m.name + "' in another stage"};
+                    return {
+                        StatusCode::ShaderError,
+                        path + ":0: error: binding " + std::to_string(binding) + " is '" + sr.name + "' here and '" + m.name + "' in another stage"};
                 m.stages |= sr.stages;
                 return Status::ok();
             }
@@ -231,8 +237,7 @@ Status reflect(const std::vector<uint32_t>& spirv, ShaderStage stage, const std:
         for (const auto& r : res.storage_buffers) SFX_TRY(add(r, ResourceKind::StorageBuffer));
         for (const auto& r : res.storage_images) SFX_TRY(add(r, ResourceKind::StorageImage));
         if (!res.separate_images.empty() || !res.separate_samplers.empty())
-            return {StatusCode::ShaderError,
-                    path + ":0: error: separate images/samplers are not supported; use combined sampler2D"};
+            return {StatusCode::ShaderError, path + ":0: error: separate images/samplers are not supported; use combined sampler2D"};
         return Status::ok();
     } catch (const std::exception& e) {
         return {StatusCode::ShaderError, path + ":0: error: reflection: " + e.what()};
@@ -241,10 +246,8 @@ Status reflect(const std::vector<uint32_t>& spirv, ShaderStage stage, const std:
 
 }  // namespace
 
-Result<CompiledProgram> compileProgram(const std::string& name, const std::vector<StageSource>& stages,
-                                       const CompileOptions& options) {
-    if (uint32_t(options.tier) >= kTierCount)
-        return invalidArgument("CompileOptions.tier", std::to_string(uint32_t(options.tier)), tierNameList());
+Result<CompiledProgram> compileProgram(const std::string& name, const std::vector<StageSource>& stages, const CompileOptions& options) {
+    if (uint32_t(options.tier) >= kTierCount) return invalidArgument("CompileOptions.tier", std::to_string(uint32_t(options.tier)), tierNameList());
     CompiledProgram program;
     program.name = name;
     program.tier = options.tier;
@@ -312,8 +315,7 @@ Result<std::vector<ManifestEntry>> parseManifest(const std::string& path) {
         }
         for (size_t i = 2; i < w.size(); ++i) {
             ShaderStage s;
-            if (!stageFromPath(w[i], &s))
-                return Status{StatusCode::FileError, where + "'" + w[i] + "' has no stage extension (.vert .frag .comp)"};
+            if (!stageFromPath(w[i], &s)) return Status{StatusCode::FileError, where + "'" + w[i] + "' has no stage extension (.vert .frag .comp)"};
             e.files.push_back(w[i]);
         }
         entries.push_back(std::move(e));
@@ -338,8 +340,7 @@ static std::string spirvArrayName(const CompiledProgram& p, size_t stage) {
     return "kSpirv_" + identifier(p.name) + "_" + toString(p.tier) + "_" + std::to_string(stage);
 }
 
-Result<std::pair<std::string, std::string>> generateEmbedding(const std::vector<CompiledProgram>& programs,
-                                                              const EmbeddingDesc& desc) {
+Result<std::pair<std::string, std::string>> generateEmbedding(const std::vector<CompiledProgram>& programs, const EmbeddingDesc& desc) {
     const std::string ns = "sfx::" + desc.cppNamespace;
     const std::string generated = "// Generated by tools/sfxc from shader_src/" + desc.manifestName + ". Do not edit.\n";
     // Binding constants: one namespace per program; a resource must have one binding across tiers,
@@ -352,19 +353,20 @@ Result<std::pair<std::string, std::string>> generateEmbedding(const std::vector<
         for (const ShaderResource& r : p.resources) {
             auto [it, inserted] = names.emplace(r.name, r.binding);
             if (!inserted && it->second != r.binding)
-                return Status{StatusCode::ShaderError, "program '" + p.name + "': resource '" + r.name +
-                                                           "' has binding " + std::to_string(it->second) + " on one tier and " +
-                                                           std::to_string(r.binding) + " on another"};
+                return Status{StatusCode::ShaderError,
+                              "program '" + p.name + "': resource '" + r.name + "' has binding " + std::to_string(it->second) + " on one tier and " +
+                                  std::to_string(r.binding) + " on another"};
             if (r.kind != ResourceKind::UniformBuffer) continue;
             auto [block, added] = blocks.emplace(r.name, &r);
             if (!added && block->second->blockSize != r.blockSize)
-                return Status{StatusCode::ShaderError, "program '" + p.name + "': uniform block '" + r.name + "' is " +
-                                                           std::to_string(block->second->blockSize) + " bytes on one tier and " +
-                                                           std::to_string(r.blockSize) + " on another"};
+                return Status{StatusCode::ShaderError,
+                              "program '" + p.name + "': uniform block '" + r.name + "' is " + std::to_string(block->second->blockSize) +
+                                  " bytes on one tier and " + std::to_string(r.blockSize) + " on another"};
         }
     }
     std::ostringstream h;
-    h << generated << "#pragma once\n\n"
+    h << generated
+      << "#pragma once\n\n"
          "#include <array>\n#include <cstdint>\n#include <span>\n#include <string_view>\n\n#include \"sfx/shader_program.hpp\"\n"
          "#include \"sfx/status.hpp\"\n\n"
          "// Binding numbers reflected from the shaders, so no backend or effect hard-codes one, and\n"
@@ -373,8 +375,7 @@ Result<std::pair<std::string, std::string>> generateEmbedding(const std::vector<
     for (const auto& [program, names] : bindings) {
         h << "namespace " << identifier(program) << " {\n";
         h << "inline constexpr const char* kName = \"" << program << "\";\n";
-        for (const auto& [name, binding] : names)
-            h << "inline constexpr uint32_t " << identifier(name) << " = " << binding << ";\n";
+        for (const auto& [name, binding] : names) h << "inline constexpr uint32_t " << identifier(name) << " = " << binding << ";\n";
         const auto& blocks = uniformBlocks[program];
         h << "inline constexpr std::array<UniformBlockInfo, " << blocks.size() << "> kUniformBlocks{";
         if (!blocks.empty()) {
@@ -385,7 +386,8 @@ Result<std::pair<std::string, std::string>> generateEmbedding(const std::vector<
         h << "};\n";
         h << "}  // namespace " << identifier(program) << "\n";
     }
-    h << "}  // namespace sfx::gen\n\nnamespace " << ns << " {\n"
+    h << "}  // namespace sfx::gen\n\nnamespace " << ns
+      << " {\n"
          "// Every program's reflected uniform blocks, by program name.\n"
          "inline constexpr ProgramUniformBlocks kUniformBlocks[] = {\n";
     for (const auto& [program, names] : bindings)
@@ -393,11 +395,11 @@ Result<std::pair<std::string, std::string>> generateEmbedding(const std::vector<
     h << "};\n"
          "// The embedded program `name` compiled for `tier`; InvalidArgument names the known ones.\n"
          "Result<const CompiledProgram*> find(std::string_view name, Tier tier);\n"
-         "std::span<const CompiledProgram> all();\n}  // namespace " << ns << "\n";
+         "std::span<const CompiledProgram> all();\n}  // namespace "
+      << ns << "\n";
 
     std::ostringstream c;
-    c << generated << "#include \"" << desc.headerName << "\"\n\n#include <string>\n#include <vector>\n\nnamespace " << ns
-      << " {\nnamespace {\n";
+    c << generated << "#include \"" << desc.headerName << "\"\n\n#include <string>\n#include <vector>\n\nnamespace " << ns << " {\nnamespace {\n";
     for (size_t pi = 0; pi < programs.size(); ++pi) {
         const CompiledProgram& p = programs[pi];
         for (size_t si = 0; si < p.stages.size(); ++si) {
@@ -410,20 +412,18 @@ Result<std::pair<std::string, std::string>> generateEmbedding(const std::vector<
     c << "std::vector<CompiledProgram> build() {\n    std::vector<CompiledProgram> out;\n";
     for (size_t pi = 0; pi < programs.size(); ++pi) {
         const CompiledProgram& p = programs[pi];
-        c << "    {\n        CompiledProgram p;\n        p.name = \"" << p.name << "\";\n        p.tier = Tier("
-          << uint32_t(p.tier) << ");\n";
+        c << "    {\n        CompiledProgram p;\n        p.name = \"" << p.name << "\";\n        p.tier = Tier(" << uint32_t(p.tier) << ");\n";
         for (size_t si = 0; si < p.stages.size(); ++si) {
             const StageCode& s = p.stages[si];
             c << "        {\n            StageCode s;\n            s.stage = ShaderStage(" << uint32_t(s.stage) << ");\n"
-              << "            s.spirv.assign(std::begin(" << spirvArrayName(p, si) << "), std::end(" << spirvArrayName(p, si)
-              << "));\n";
+              << "            s.spirv.assign(std::begin(" << spirvArrayName(p, si) << "), std::end(" << spirvArrayName(p, si) << "));\n";
             for (const DialectTarget& t : kGlTargets)
                 c << "            s.glsl[" << size_t(t.dialect) << "] = " << rawString(s.glsl[size_t(t.dialect)]) << ";\n";
             c << "            p.stages.push_back(std::move(s));\n        }\n";
         }
         for (const ShaderResource& r : p.resources)
-            c << "        p.resources.push_back({\"" << r.name << "\", \"" << r.glName << "\", ResourceKind("
-              << uint32_t(r.kind) << "), " << r.binding << "u, " << r.stages << "u, " << r.blockSize << "u});\n";
+            c << "        p.resources.push_back({\"" << r.name << "\", \"" << r.glName << "\", ResourceKind(" << uint32_t(r.kind) << "), "
+              << r.binding << "u, " << r.stages << "u, " << r.blockSize << "u});\n";
         c << "        out.push_back(std::move(p));\n    }\n";
     }
     c << "    return out;\n}\n\nconst std::vector<CompiledProgram>& library() {\n"
@@ -437,7 +437,8 @@ Result<std::pair<std::string, std::string>> generateEmbedding(const std::vector<
          "    }\n"
          "    return Status{StatusCode::InvalidArgument, \"shader program '\" + std::string(name) + \"' has no \" +\n"
          "                      toString(tier) + \"-tier build; known: \" + known};\n"
-         "}\n}  // namespace " + ns + "\n";
+         "}\n}  // namespace " +
+            ns + "\n";
     return std::make_pair(h.str(), c.str());
 }
 

@@ -123,14 +123,17 @@ Result<std::unique_ptr<Tracer>> Tracer::create(const Geometry& g) {
 
     auto impl = std::make_unique<Impl>();
     impl->device = rtcNewDevice(nullptr);
-    if (!impl->device) return Status{StatusCode::BackendUnavailable, "Embree: rtcNewDevice failed (error " + std::to_string(int(rtcGetDeviceError(nullptr))) + ")"};
+    if (!impl->device)
+        return Status{StatusCode::BackendUnavailable, "Embree: rtcNewDevice failed (error " + std::to_string(int(rtcGetDeviceError(nullptr))) + ")"};
     impl->scene = rtcNewScene(impl->device);
     rtcSetSceneFlags(impl->scene, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(impl->scene, RTC_BUILD_QUALITY_HIGH);
     if (!g.triangles.empty()) {
         RTCGeometry mesh = rtcNewGeometry(impl->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), g.vertices.size()));
-        auto* idx = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), g.triangles.size()));
+        auto* v = static_cast<float*>(
+            rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), g.vertices.size()));
+        auto* idx = static_cast<uint32_t*>(
+            rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), g.triangles.size()));
         for (size_t i = 0; i < g.vertices.size(); ++i)
             for (int c = 0; c < 3; ++c) v[3 * i + c] = g.vertices[i][c];
         for (size_t i = 0; i < g.triangles.size(); ++i)
@@ -141,7 +144,8 @@ Result<std::unique_ptr<Tracer>> Tracer::create(const Geometry& g) {
     }
     if (!g.spheres.empty()) {
         RTCGeometry points = rtcNewGeometry(impl->device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
-        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(points, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), g.spheres.size()));
+        auto* v = static_cast<float*>(
+            rtcSetNewGeometryBuffer(points, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), g.spheres.size()));
         for (size_t i = 0; i < g.spheres.size(); ++i)
             for (int c = 0; c < 4; ++c) v[4 * i + c] = g.spheres[i][c];
         rtcCommitGeometry(points);

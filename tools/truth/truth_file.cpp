@@ -17,7 +17,8 @@ Result<Image> readImageFile(const std::string& path) {
     Result<io::Image> im = io::readImage(path);
     if (!im) return im.status();
     if (im->channels < 2)
-        return Status{StatusCode::FileError, path + ": " + std::to_string(im->channels) + " channel(s); a truth image has visibility and a surface mask"};
+        return Status{StatusCode::FileError,
+                      path + ": " + std::to_string(im->channels) + " channel(s); a truth image has visibility and a surface mask"};
     Image t;
     t.width = im->width;
     t.height = im->height;

@@ -5,12 +5,14 @@
 namespace sfx::engine {
 namespace {
 
+// clang-format off
 #define ENGINE_VK(call)                                                                               \
     do {                                                                                              \
         const VkResult engine_vk_result_ = (call);                                                   \
         if (engine_vk_result_ != VK_SUCCESS)                                                          \
             return Status{StatusCode::DeviceError, std::string(#call) + " returned " + std::to_string(int(engine_vk_result_))}; \
     } while (0)
+// clang-format on
 
 VKAPI_ATTR VkBool32 VKAPI_CALL collect(VkDebugUtilsMessageSeverityFlagBitsEXT, VkDebugUtilsMessageTypeFlagsEXT,
                                        const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
@@ -34,8 +36,7 @@ bool VkHost::validationLayerInstalled() {
 
 Status VkHost::createInstance(bool validation) {
     const char* layer = "VK_LAYER_KHRONOS_validation";
-    if (validation && !validationLayerInstalled())
-        return unavailable("VK_LAYER_KHRONOS_validation is not installed (validation was asked for)");
+    if (validation && !validationLayerInstalled()) return unavailable("VK_LAYER_KHRONOS_validation is not installed (validation was asked for)");
     const char* extensions[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME};
     const VkValidationFeatureEnableEXT sync = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
     VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
@@ -56,8 +57,7 @@ Status VkHost::createInstance(bool validation) {
     if (vkCreateInstance(&ci, nullptr, &instance) != VK_SUCCESS) return unavailable("vkCreateInstance failed (no Vulkan driver?)");
     ++counts_.objectsCreated;
     if (!validation) return Status::ok();
-    auto createMessenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-        vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
+    auto createMessenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
     VkDebugUtilsMessengerCreateInfoEXT mi{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
     mi.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT;
     mi.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT;
@@ -166,7 +166,9 @@ Status VkHost::makeImage(VkFormat format, VkImageUsageFlags usage, uint32_t widt
     out->aspect = format == VK_FORMAT_D32_SFLOAT ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
     switch (format) {
         case VK_FORMAT_R16_SFLOAT: out->texelBytes = 2; break;
-        case VK_FORMAT_R16G16_SFLOAT: case VK_FORMAT_R8G8B8A8_UNORM: case VK_FORMAT_D32_SFLOAT: out->texelBytes = 4; break;
+        case VK_FORMAT_R16G16_SFLOAT:
+        case VK_FORMAT_R8G8B8A8_UNORM:
+        case VK_FORMAT_D32_SFLOAT: out->texelBytes = 4; break;
         default: out->texelBytes = 8; break;  // R16G16B16A16_SFLOAT
     }
     VkImageCreateInfo ici{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
@@ -245,8 +247,7 @@ Status VkHost::makePipeline(const PipelineDesc& desc, VkPipelineLayout* layout, 
         stages[i].pName = "main";
     }
     const VkVertexInputBindingDescription binding{0, 24, VK_VERTEX_INPUT_RATE_VERTEX};
-    const VkVertexInputAttributeDescription attributes[2] = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
-                                                             {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 12}};
+    const VkVertexInputAttributeDescription attributes[2] = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}, {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 12}};
     VkPipelineVertexInputStateCreateInfo vi{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     if (desc.meshVertices) {
         vi.vertexBindingDescriptionCount = 1;
@@ -381,9 +382,8 @@ void VkHost::destroy(HostBuffer& buffer) {
     buffer = {};
 }
 
-void imageBarrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
-                  VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
-                  VkAccessFlags dstAccess, uint32_t layer) {
+void imageBarrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to, VkPipelineStageFlags srcStage,
+                  VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess, uint32_t layer) {
     VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
     b.srcAccessMask = srcAccess;
     b.dstAccessMask = dstAccess;
@@ -395,9 +395,8 @@ void imageBarrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, 
     vkCmdPipelineBarrier(cb, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &b);
 }
 
-void imageBarrier(VkCommandBuffer cb, const HostImage& image, VkImageLayout from, VkImageLayout to,
-                  VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
-                  VkAccessFlags dstAccess) {
+void imageBarrier(VkCommandBuffer cb, const HostImage& image, VkImageLayout from, VkImageLayout to, VkPipelineStageFlags srcStage,
+                  VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
     imageBarrier(cb, image.image, image.aspect, from, to, srcStage, srcAccess, dstStage, dstAccess);
 }
 

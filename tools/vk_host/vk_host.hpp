@@ -54,7 +54,7 @@ struct PipelineDesc {
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;  // with depth test LESS and writes
     bool meshVertices = false;                   // position + normal (two vec3) at binding 0
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-    uint32_t pushConstantBytes = 0;              // vertex stage
+    uint32_t pushConstantBytes = 0;  // vertex stage
 };
 
 class VkHost {
@@ -72,7 +72,7 @@ public:
     VkDevice device = VK_NULL_HANDLE;
     VkQueue queue = VK_NULL_HANDLE;
     uint32_t family = 0;
-    bool debugUtils = false;  // a messenger collects the layer's warnings and errors
+    bool debugUtils = false;        // a messenger collects the layer's warnings and errors
     bool synchronization2 = false;  // the device feature, enabled when the device has it
 
     Status makeImage(VkFormat format, VkImageUsageFlags usage, uint32_t width, uint32_t height, HostImage* out);
@@ -105,12 +105,10 @@ private:
 };
 
 // One image barrier: `from` -> `to` layout, with the stages and accesses on either side.
-void imageBarrier(VkCommandBuffer cb, const HostImage& image, VkImageLayout from, VkImageLayout to,
-                  VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
-                  VkAccessFlags dstAccess);
+void imageBarrier(VkCommandBuffer cb, const HostImage& image, VkImageLayout from, VkImageLayout to, VkPipelineStageFlags srcStage,
+                  VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);
 // The same on any VkImage (the SDK's own motion blur output), on one array layer.
-void imageBarrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
-                  VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
-                  VkAccessFlags dstAccess, uint32_t layer = 0);
+void imageBarrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to, VkPipelineStageFlags srcStage,
+                  VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess, uint32_t layer = 0);
 
 }  // namespace sfx::engine

@@ -27,7 +27,7 @@ bool parseAoTechnique(const std::string& text, AoTechnique* out);
 enum class AoNormals : uint32_t {
     FromDepth,    // derived from linear depth (smaller-difference neighbour on each axis)
     FromTexture,  // AoInputs.normals: view-space unit normals, x right, y up, camera looking down -z.
-                  // Float formats (RGBA16F, RGBA32F) hold signed xyz; RGBA8 holds xyz * 0.5 + 0.5.
+    // Float formats (RGBA16F, RGBA32F) hold signed xyz; RGBA8 holds xyz * 0.5 + 0.5.
 };
 
 // Where obscurance and blur run. Half: on a half-size depth (each texel a real full-size
@@ -60,19 +60,19 @@ struct AoCreaseSettings {
 
 struct AoSettings {
     AoTechnique technique = AoTechnique::Scalable;
-    float radius = 0.5f;                  // world-space sampling radius (Alchemy, Scalable)
-    std::optional<float> intensity;       // sigma, scales occlusion (all techniques)
-    std::optional<float> contrast;        // k: visibility = max(0, 1 - occlusion)^k
+    float radius = 0.5f;             // world-space sampling radius (Alchemy, Scalable)
+    std::optional<float> intensity;  // sigma, scales occlusion (all techniques)
+    std::optional<float> contrast;   // k: visibility = max(0, 1 - occlusion)^k
     // Alchemy: beta, a distance per unit of depth (the paper's kAoAlchemyDefaultBias).
     // Scalable: subtracted from each tap's cosine (the paper's kAoScalableDefaultBias).
     std::optional<float> bias;
     // Scalable: occlusion = (2 sigma / N * sum)^e (the course's kAoScalableCourseSumExponent).
     std::optional<float> sumExponent;
-    float epsilon = 1e-4f;                // guards divisions; in units of radius^2
+    float epsilon = 1e-4f;  // guards divisions; in units of radius^2
     // Taps per pixel. Scalable on a mirrored tier: even. Crease: 12 (the diamond's checkerboard
     // half per pixel) or 24 (the whole diamond).
     std::optional<uint32_t> samples;
-    bool blur = true;                     // the separable depth-aware bilateral blur
+    bool blur = true;  // the separable depth-aware bilateral blur
     // Blur half-width in output pixels (TierProfile::aoBlurRadiusPx when unset); at half
     // resolution the blur takes (r + 1) / 2 half-size taps each side.
     std::optional<uint32_t> blurRadius;
@@ -102,7 +102,7 @@ struct AoCreaseConfig {
 struct AoConfig {
     AoTechnique technique = AoTechnique::Scalable;
     double radius = 0.5, intensity = 1, contrast = 1, bias = 0.02, epsilon = 1e-4;
-    double sumExponent = 2;       // Scalable: occlusion = (2 sigma / N * sum)^sumExponent
+    double sumExponent = 2;  // Scalable: occlusion = (2 sigma / N * sum)^sumExponent
     // Every pixel count below is in the obscurance pass's pixels: at half resolution half-size ones.
     bool halfResolution = false;  // obscurance + blur at half size, then the depth-aware upsample
     uint32_t samples = 4;         // taps per pixel (Scalable mirrored: total, both signs)

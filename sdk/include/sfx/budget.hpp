@@ -23,10 +23,10 @@ bool parseEffect(const std::string& text, Effect* out);
 // One way to run an effect: a preset of the device's tier (and, for AO, a technique).
 struct Candidate {
     Effect effect = Effect::AmbientObscurance;
-    std::string preset;                              // a preset name of the tier's row
-    AoTechnique technique = AoTechnique::Alchemy;    // AO only
-    double psnrDb = 0;                               // accuracy against the truth, higher is better
-    std::string name() const;                        // "medium/alchemy" (AO), "medium" (motion blur)
+    std::string preset;                            // a preset name of the tier's row
+    AoTechnique technique = AoTechnique::Alchemy;  // AO only
+    double psnrDb = 0;                             // accuracy against the truth, higher is better
+    std::string name() const;                      // "medium/alchemy" (AO), "medium" (motion blur)
 };
 
 struct CostEntry {

@@ -41,7 +41,7 @@ struct PerspectiveDesc {
     double fovYRadians = 1.0471975511965976;  // 60 degrees
     double aspect = 1.0;                      // width / height
     double nearPlane = 0.1;
-    double farPlane = 100.0;                  // may be +infinity
+    double farPlane = 100.0;  // may be +infinity
     bool reversedZ = false;
     ClipDepthRange clipDepth = ClipDepthRange::ZeroToOne;
     bool rowZeroIsTop = true;

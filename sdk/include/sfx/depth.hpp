@@ -14,10 +14,10 @@
 namespace sfx {
 
 namespace detail {
-class PipelineCache;  // the effects' pipelines by specialisation constants (internal)
-class UniformWrites;  // the effects' uniform buffers, written when their bytes change (internal)
+class PipelineCache;   // the effects' pipelines by specialisation constants (internal)
+class UniformWrites;   // the effects' uniform buffers, written when their bytes change (internal)
 class RecordedPasses;  // the effects' passes recorded once and replayed (internal)
-}
+}  // namespace detail
 
 enum class DepthKind : uint32_t {
     Hardware,  // the depth buffer as rendered (D16, D24S8, D32F), mapped by the camera's projection
@@ -32,7 +32,7 @@ struct DepthSource {
 };
 
 struct LinearDepthDesc {
-    uint32_t width = 0;      // [1, caps.limits.maxTextureSize]
+    uint32_t width = 0;  // [1, caps.limits.maxTextureSize]
     uint32_t height = 0;
     Tier tier = Tier::Current;
     // Levels of the rotated-grid depth pyramid, level 0 included: 1 = linear depth only (the
@@ -78,9 +78,7 @@ public:
     TextureHandle sourceTexture() const { return hostTexture_; }
     // True when no pyramid is built and the input is linear or the readers linearize: dispatch
     // records nothing.
-    bool passThrough() const {
-        return desc_.mipLevels == 1 && !desc_.halfSizeBase && (desc_.input == DepthKind::Linear || desc_.readersLinearize);
-    }
+    bool passThrough() const { return desc_.mipLevels == 1 && !desc_.halfSizeBase && (desc_.input == DepthKind::Linear || desc_.readersLinearize); }
     // The kind of the last dispatched source (what texture() holds when passing through).
     DepthKind sourceKind() const { return sourceKind_; }
     // LinearizeParams (sfx_shared.h) of the last dispatch; with readersLinearize, for the readers

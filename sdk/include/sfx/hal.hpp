@@ -32,8 +32,8 @@ const char* toString(BackendKind kind);  // "null", "vulkan", "gles", "gl"
 
 enum class Format : uint32_t {
     Undefined = 0,
-    R8,        // unorm
-    RGBA8,     // unorm
+    R8,     // unorm
+    RGBA8,  // unorm
     R16F,
     RG16F,
     RGBA16F,
@@ -41,11 +41,11 @@ enum class Format : uint32_t {
     RG32F,
     RGBA32F,
     R32UI,
-    D16,       // depth, unorm
-    D24S8,     // depth unorm 24 + stencil 8; bytes: one uint32 per texel, depth in the high 24 bits
-               // (depth * 0xFFFFFF << 8), stencil in the low 8. Where the API cannot copy stencil
-               // (Vulkan's depth-aspect copies, GL ES) stencil reads as 0 and is ignored on write.
-    D32F,      // depth, float
+    D16,    // depth, unorm
+    D24S8,  // depth unorm 24 + stencil 8; bytes: one uint32 per texel, depth in the high 24 bits
+    // (depth * 0xFFFFFF << 8), stencil in the low 8. Where the API cannot copy stencil
+    // (Vulkan's depth-aspect copies, GL ES) stencil reads as 0 and is ignored on write.
+    D32F,  // depth, float
     Count
 };
 const char* toString(Format format);
@@ -73,7 +73,7 @@ enum BufferUsage : uint32_t {
     kBufferUniform = 1u << 0,
     kBufferStorage = 1u << 1,  // high tier only
     kBufferVertex = 1u << 2,
-    kBufferIndex = 1u << 3,    // 32-bit indices
+    kBufferIndex = 1u << 3,  // 32-bit indices
 };
 
 struct BufferDesc {
@@ -138,8 +138,8 @@ struct GraphicsPipelineDesc {
     VertexLayout vertexLayout;
     DepthState depth;
     BlendState blend;
-    CullMode cull = CullMode::None;   // front faces are counter-clockwise in framebuffer memory rows
-    std::vector<Format> colorFormats; // one per colour attachment, [0, caps.limits.maxColorAttachments]
+    CullMode cull = CullMode::None;    // front faces are counter-clockwise in framebuffer memory rows
+    std::vector<Format> colorFormats;  // one per colour attachment, [0, caps.limits.maxColorAttachments]
     Format depthFormat = Format::Undefined;
     const char* debugName = "";
     std::vector<SpecializationConstant> constants;  // distinct ids
@@ -156,9 +156,9 @@ struct ComputePipelineDesc {
 struct TextureBinding {
     uint32_t binding = 0;
     TextureHandle texture;
-    uint32_t baseMip = 0;    // the shader's lod 0
-    uint32_t mipCount = 1;   // mips visible to the shader
-    SamplerHandle sampler;   // null: nearest, clamp to edge
+    uint32_t baseMip = 0;   // the shader's lod 0
+    uint32_t mipCount = 1;  // mips visible to the shader
+    SamplerHandle sampler;  // null: nearest, clamp to edge
 };
 struct BufferBinding {
     uint32_t binding = 0;
@@ -262,17 +262,17 @@ struct DeviceLimits {
 
 struct DeviceCaps {
     BackendKind backend = BackendKind::Null;
-    std::string platform;     // "vulkan-loader", "egl", "osmesa", "null"
-    std::string apiName;      // "Vulkan 1.3.239", "OpenGL ES 3.2 Mesa 22.3.6", ...
+    std::string platform;  // "vulkan-loader", "egl", "osmesa", "null"
+    std::string apiName;   // "Vulkan 1.3.239", "OpenGL ES 3.2 Mesa 22.3.6", ...
     uint32_t apiMajor = 0, apiMinor = 0;
-    std::string deviceName;   // "llvmpipe (LLVM 15.0.6, 256 bits)", "NVIDIA H100 ..."
-    std::string deviceChoice; // why this device: "the only usable device of 1", "asked for by ..."
+    std::string deviceName;                        // "llvmpipe (LLVM 15.0.6, 256 bits)", "NVIDIA H100 ..."
+    std::string deviceChoice;                      // why this device: "the only usable device of 1", "asked for by ..."
     ShaderDialect dialect = ShaderDialect::Spirv;  // what createProgram consumes
     CapabilityCeiling ceiling = CapabilityCeiling::None;
 
     bool computeShaders = false;
     bool storageBuffers = false;
-    bool atomics = false;             // atomic operations on storage buffers
+    bool atomics = false;  // atomic operations on storage buffers
     bool storageImages = false;
     // Storage buffer and storage image writes and atomics (atomicAdd on buffers,
     // imageAtomicExchange on R32UI storage images) from fragment shaders, so a render pass can
@@ -331,7 +331,10 @@ struct DeviceOptions {
 struct ObjectCount {
     uint64_t live = 0;
     uint64_t created = 0;
-    void add(uint64_t n = 1) { live += n; created += n; }
+    void add(uint64_t n = 1) {
+        live += n;
+        created += n;
+    }
     void remove(uint64_t n = 1) { live -= n < live ? n : live; }
     bool operator==(const ObjectCount&) const = default;
 };
@@ -342,14 +345,14 @@ struct ObjectCount {
 // (0 where a backend has no such thing: GL has no descriptor sets, the null backend no memory).
 struct DeviceStats {
     ObjectCount textures, buffers, samplers, programs, pipelines, timers;
-    ObjectCount recordings;         // Device::endRecording (Vulkan: secondary command buffers)
-    ObjectCount memoryAllocations;  // Vulkan: vkAllocateMemory; GL: texture and buffer storage
-    ObjectCount stagingBuffers;     // Vulkan: blocks of the upload/readback ring; GL: readback copies
-    ObjectCount descriptorSets;     // Vulkan: sets in the cache (made once per distinct binding set)
-    ObjectCount descriptorPools;    // Vulkan
-    ObjectCount imageViews;         // Vulkan: sampled, storage and attachment views
-    ObjectCount framebuffers;       // GL: framebuffer objects (Vulkan renders without any)
-    uint64_t deviceMemoryBytes = 0; // bytes of GPU (or, null: host) memory the device holds now
+    ObjectCount recordings;          // Device::endRecording (Vulkan: secondary command buffers)
+    ObjectCount memoryAllocations;   // Vulkan: vkAllocateMemory; GL: texture and buffer storage
+    ObjectCount stagingBuffers;      // Vulkan: blocks of the upload/readback ring; GL: readback copies
+    ObjectCount descriptorSets;      // Vulkan: sets in the cache (made once per distinct binding set)
+    ObjectCount descriptorPools;     // Vulkan
+    ObjectCount imageViews;          // Vulkan: sampled, storage and attachment views
+    ObjectCount framebuffers;        // GL: framebuffer objects (Vulkan renders without any)
+    uint64_t deviceMemoryBytes = 0;  // bytes of GPU (or, null: host) memory the device holds now
     bool operator==(const DeviceStats&) const = default;
 };
 // The counts of a device's HandlePool (sfx/handle.hpp).
@@ -359,8 +362,8 @@ ObjectCount objectCount(const Pool& pool) {
 }
 // The HAL kinds of DeviceStats from a backend's six pools; the backend adds its own kinds.
 template <class Textures, class Buffers, class Samplers, class Programs, class Pipelines, class Timers>
-DeviceStats halObjectStats(const Textures& textures, const Buffers& buffers, const Samplers& samplers,
-                           const Programs& programs, const Pipelines& pipelines, const Timers& timers) {
+DeviceStats halObjectStats(const Textures& textures, const Buffers& buffers, const Samplers& samplers, const Programs& programs,
+                           const Pipelines& pipelines, const Timers& timers) {
     DeviceStats s;
     s.textures = objectCount(textures);
     s.buffers = objectCount(buffers);
@@ -468,8 +471,9 @@ protected:
 
 private:
     Status noRecordings(const char* call) const {
-        return {StatusCode::UnsupportedFeature, std::string(call) + ": the " + toString(caps().backend) +
-                                                    " device keeps no reusable recordings (caps().reusableRecordings is false)"};
+        return {
+            StatusCode::UnsupportedFeature,
+            std::string(call) + ": the " + toString(caps().backend) + " device keeps no reusable recordings (caps().reusableRecordings is false)"};
     }
 
     // ---- The backend's side ----------------------------------------------------------------
@@ -499,10 +503,8 @@ private:
 
     // `info` is what the shared checks made of the desc and its program: the backend keeps it
     // for objects() to hand to the checks of later draws and dispatches.
-    virtual Result<PipelineHandle> doCreateGraphicsPipeline(const GraphicsPipelineDesc& desc,
-                                                            validation::PipelineInfo info) = 0;
-    virtual Result<PipelineHandle> doCreateComputePipeline(const ComputePipelineDesc& desc,
-                                                           validation::PipelineInfo info) = 0;
+    virtual Result<PipelineHandle> doCreateGraphicsPipeline(const GraphicsPipelineDesc& desc, validation::PipelineInfo info) = 0;
+    virtual Result<PipelineHandle> doCreateComputePipeline(const ComputePipelineDesc& desc, validation::PipelineInfo info) = 0;
     virtual Status doDestroyPipeline(PipelineHandle pipeline) = 0;
 
     virtual Result<TimerHandle> doCreateTimer() = 0;
@@ -524,7 +526,7 @@ private:
 
 // Byte size of one mip level of a texture.
 uint64_t mipLevelBytes(const TextureDesc& desc, uint32_t mip);
-uint64_t textureBytes(const TextureDesc& desc);  // all its mip levels
+uint64_t textureBytes(const TextureDesc& desc);   // all its mip levels
 uint32_t mipExtent(uint32_t base, uint32_t mip);  // max(1, base >> mip)
 uint32_t maxMipLevels(uint32_t width, uint32_t height);
 

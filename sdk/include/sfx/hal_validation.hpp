@@ -93,8 +93,7 @@ public:
 template <class Textures, class Buffers, class Samplers, class Programs, class Pipelines, class Timers>
 class PoolLookup final : public ObjectLookup {
 public:
-    PoolLookup(const Textures& t, const Buffers& b, const Samplers& s, const Programs& pr, const Pipelines& p,
-               const Timers& ti)
+    PoolLookup(const Textures& t, const Buffers& b, const Samplers& s, const Programs& pr, const Pipelines& p, const Timers& ti)
         : textures_(t), buffers_(b), samplers_(s), programs_(pr), pipelines_(p), timers_(ti) {}
     Result<const TextureDesc*> texture(TextureHandle h, const std::string& argument) const override {
         SFX_TRY(textures_.check(h, argument));
@@ -125,9 +124,8 @@ private:
 };
 // The PoolLookup of a backend's six pools.
 template <class Textures, class Buffers, class Samplers, class Programs, class Pipelines, class Timers>
-PoolLookup<Textures, Buffers, Samplers, Programs, Pipelines, Timers> poolLookup(const Textures& t, const Buffers& b,
-                                                                                const Samplers& s, const Programs& pr,
-                                                                                const Pipelines& p, const Timers& ti) {
+PoolLookup<Textures, Buffers, Samplers, Programs, Pipelines, Timers> poolLookup(const Textures& t, const Buffers& b, const Samplers& s,
+                                                                                const Programs& pr, const Pipelines& p, const Timers& ti) {
     return {t, b, s, pr, p, ti};
 }
 
@@ -140,8 +138,7 @@ PoolLookup<Textures, Buffers, Samplers, Programs, Pipelines, Timers> poolLookup(
 // vertexAttributeEnd, lie inside the vertex buffer. Indexed: the count 32-bit indices lie inside
 // the index buffer (the vertices the index values name are the API's robustness's business:
 // robustBufferAccess on Vulkan).
-Status renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, const ObjectLookup& objects,
-                  const DeviceCaps& caps);
+Status renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, const ObjectLookup& objects, const DeviceCaps& caps);
 // Every check of a dispatch: the device has compute, group counts, a compute pipeline, and its
 // bindings: each given once, at a binding of the program's reflection, of the resource kind the
 // program has there, every reflected resource given; textures with usage sampled (storage images:

@@ -42,8 +42,7 @@ uint16_t nextDeviceSerial();
 template <class Tag, class T>
 class HandlePool {
 public:
-    explicit HandlePool(uint16_t deviceSerial, const char* kindName)
-        : serial_(deviceSerial), kind_(kindName) {}
+    explicit HandlePool(uint16_t deviceSerial, const char* kindName) : serial_(deviceSerial), kind_(kindName) {}
 
     Handle<Tag> insert(T object) {
         uint32_t index;
@@ -69,8 +68,7 @@ public:
         uint64_t index = (h.bits & 0xffffffffu) - 1;
         if (index >= slots_.size()) return validation::fail(Error::HandleUnknown, {argument, kind_, kind_});
         const Slot& slot = slots_[index];
-        if (!slot.alive || slot.generation != uint16_t(h.bits >> 32))
-            return validation::fail(Error::HandleStale, {argument, kind_, kind_});
+        if (!slot.alive || slot.generation != uint16_t(h.bits >> 32)) return validation::fail(Error::HandleStale, {argument, kind_, kind_});
         return Status::ok();
     }
 

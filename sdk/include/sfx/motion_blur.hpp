@@ -59,10 +59,10 @@ struct MotionBlurSettings {
 // The parameters one dispatch runs with, after tier defaults and resolution scaling.
 // Shared by the effect and the CPU reference so both run the same numbers.
 struct MotionBlurParams {
-    uint32_t taps = 0;          // centre included, odd
-    uint32_t pairs = 0;         // (taps - 1) / 2 mirrored sample pairs
-    uint32_t jitterSize = 0;    // 2 = checkerboard, 4 = 4x4 randomised
-    uint32_t radiusPx = 0;      // k: clamp radius and tile size, output pixels, [1, 64]
+    uint32_t taps = 0;        // centre included, odd
+    uint32_t pairs = 0;       // (taps - 1) / 2 mirrored sample pairs
+    uint32_t jitterSize = 0;  // 2 = checkerboard, 4 = 4x4 randomised
+    uint32_t radiusPx = 0;    // k: clamp radius and tile size, output pixels, [1, 64]
     // The tier-default radius scaled to the output height exceeded the 64 px limit and
     // radiusPx is that limit; scaledRadiusPx is the radius before the cap (0 when not capped).
     bool radiusCapped = false;
@@ -87,12 +87,12 @@ struct CameraMotion {
 };
 
 struct MotionBlurInputs {
-    TextureHandle color;     // the desc's colorFormat, output size, sampled
-    DepthSource depth;       // output size
+    TextureHandle color;  // the desc's colorFormat, output size, sampled
+    DepthSource depth;    // output size
     // RG16F, RG32F, RGBA16F or RGBA32F (xy read), output size, pixels per shutter interval.
     // Null: camera-only velocity from depth and `camera`.
     TextureHandle velocity;
-    CameraMotion camera;     // read only when velocity is null
+    CameraMotion camera;  // read only when velocity is null
     // Where the blurred colour goes. Null: the effect's own output() texture. Else a texture of
     // the host's (created, or imported with sfx::vulkan::importImage / sfx::gl::importTexture):
     // the MotionBlur size, the desc's colorFormat, usage including kTextureRenderTarget, and not
@@ -102,7 +102,7 @@ struct MotionBlurInputs {
 };
 
 struct MotionBlurDesc {
-    uint32_t width = 0;   // [1, caps.limits.maxTextureSize]
+    uint32_t width = 0;  // [1, caps.limits.maxTextureSize]
     uint32_t height = 0;
     TierProfile profile;  // tiers::profile(tier) or tiers::choose(caps)->profile
     // Format of the host colour and of the output: RGBA8, RGBA16F or RGBA32F (renderable).

@@ -48,11 +48,11 @@ struct TransparentVertex {
 
 // One transparent draw: a non-indexed triangle list of TransparentVertex.
 struct TransparentDraw {
-    BufferHandle vertices;      // kBufferVertex
-    uint32_t vertexCount = 0;   // a positive multiple of 3
-    glm::mat4 model{1.0f};      // object to world
-    glm::vec3 color{1.0f};      // straight linear RGB, each in [0, 1e4]
-    float opacity = 1.0f;       // [0, 1]
+    BufferHandle vertices;     // kBufferVertex
+    uint32_t vertexCount = 0;  // a positive multiple of 3
+    glm::mat4 model{1.0f};     // object to world
+    glm::vec3 color{1.0f};     // straight linear RGB, each in [0, 1e4]
+    float opacity = 1.0f;      // [0, 1]
     // Orders this draw's fragments against other draws' at exactly equal depth; give every
     // draw its own id, stable from frame to frame, so the result ignores draw order. [0, 2^31)
     uint32_t id = 0;
@@ -95,8 +95,8 @@ struct TransparencyAoDesc {
 };
 
 struct TransparencyDesc {
-    uint32_t width = 0, height = 0;  // [1, caps.limits.maxTextureSize]
-    TierProfile profile;             // tiers::profile(tier) or tiers::choose(caps)->profile
+    uint32_t width = 0, height = 0;        // [1, caps.limits.maxTextureSize]
+    TierProfile profile;                   // tiers::profile(tier) or tiers::choose(caps)->profile
     Format colorFormat = Format::RGBA16F;  // RGBA8, RGBA16F or RGBA32F: opaque colour and output
     Format depthFormat = Format::D32F;     // D16, D24S8 or D32F: the opaque depth
     TransparencyQuality quality = TransparencyQuality::Standard;
@@ -114,14 +114,14 @@ struct TransparencyDesc {
 
 // What the last flushed frame did (high tier; zeros on the current tier, which has no pool).
 struct TransparencyStats {
-    uint64_t fragments = 0;   // that passed the depth test (stored + dropped)
+    uint64_t fragments = 0;  // that passed the depth test (stored + dropped)
     uint64_t stored = 0;
     uint64_t dropped = 0;
-    uint64_t poolNodes = 0;   // the pool's capacity that frame
+    uint64_t poolNodes = 0;  // the pool's capacity that frame
     uint64_t poolBytes = 0;
 };
 
-uint32_t keptLayers(TransparencyQuality quality);  // K: 16 or 32
+uint32_t keptLayers(TransparencyQuality quality);   // K: 16 or 32
 uint32_t keptLayers(const TransparencyDesc& desc);  // desc.maxLayers, or its quality's K
 
 class Transparency {

@@ -49,8 +49,8 @@ struct SettingRange {
 std::span<const SettingRange> settingRanges();  // every row, in Setting order
 const SettingRange& settingRange(Setting id);
 
-std::string formatSettingNumber(double v);   // "1e-4", "0.5", "1000"
-std::string rangeText(const SettingRange& r);  // "[1e-4, 1000]", "(0, 100]"
+std::string formatSettingNumber(double v);      // "1e-4", "0.5", "1000"
+std::string rangeText(const SettingRange& r);   // "[1e-4, 1000]", "(0, 100]"
 bool inRange(const SettingRange& r, double v);  // false for NaN
 // "<description>, <range>[ unit]": the CLI's help text for the setting.
 std::string settingHelp(Setting id);

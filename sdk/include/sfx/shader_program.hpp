@@ -30,11 +30,11 @@ enum class ResourceKind : uint32_t { UniformBuffer, SampledTexture, StorageBuffe
 const char* toString(ResourceKind kind);  // "uniform buffer", "sampled texture", ... (words for messages)
 
 struct ShaderResource {
-    std::string name;     // as declared in shader_src (the variable, or the block type for buffers)
-    std::string glName;   // what GL's glGetUniformLocation / glGetUniformBlockIndex / glGetProgramResourceIndex take
+    std::string name;    // as declared in shader_src (the variable, or the block type for buffers)
+    std::string glName;  // what GL's glGetUniformLocation / glGetUniformBlockIndex / glGetProgramResourceIndex take
     ResourceKind kind = ResourceKind::UniformBuffer;
-    uint32_t binding = 0; // descriptor binding (set 0) in Vulkan; texture unit / block binding in GL
-    uint32_t stages = 0;  // stageBit mask
+    uint32_t binding = 0;    // descriptor binding (set 0) in Vulkan; texture unit / block binding in GL
+    uint32_t stages = 0;     // stageBit mask
     uint32_t blockSize = 0;  // bytes, for uniform and storage blocks (storage: fixed part)
 };
 

@@ -56,14 +56,12 @@ private:
 // Status (which carries no value) is an error with StatusCode::InvalidArgument.
 template <class T>
 class [[nodiscard]] Result {
-    static_assert(std::is_default_constructible_v<T>,
-                  "Result<T> needs a default-constructible T: it is what an error Result's value() gives");
+    static_assert(std::is_default_constructible_v<T>, "Result<T> needs a default-constructible T: it is what an error Result's value() gives");
 
 public:
     Result(T value) : value_(std::move(value)) {}
     Result(Status status) : status_(std::move(status)) {
-        if (status_.isOk())
-            status_ = Status{StatusCode::InvalidArgument, "Result<T> was made from an Ok Status, which has no value"};
+        if (status_.isOk()) status_ = Status{StatusCode::InvalidArgument, "Result<T> was made from an Ok Status, which has no value"};
     }
 
     bool isOk() const { return status_.isOk(); }
@@ -88,8 +86,10 @@ Status invalidArgument(const std::string& argument, const std::string& got, cons
 }  // namespace sfx
 
 // Propagates a failed Status to the caller. Used inside functions returning Status or Result<T>.
+// clang-format off
 #define SFX_TRY(expr)                                   \
     do {                                                \
         ::sfx::Status sfx_try_status_ = (expr);         \
         if (!sfx_try_status_.isOk()) return sfx_try_status_; \
     } while (0)
+// clang-format on

@@ -10,9 +10,11 @@ namespace sfx {
 // Every tier, lowest first: X(enumerator, name). Adding a tier is a line here plus its row in
 // the tier table (tiers/src/tier_table.cpp), which holds what the tier is for (its summary,
 // `sfx info --rules`, docs/tiers.md) and generates its shader defines.
+// clang-format off
 #define SFX_TIER_LIST(X) \
     X(Current, "current") \
     X(High, "high")
+// clang-format on
 
 enum class Tier : uint32_t {
 #define SFX_TIER_ENUMERATOR(e, name) e,
@@ -47,16 +49,16 @@ struct AoLook {
 struct TierProfile {
     Tier tier = Tier::Current;
     // Ambient obscurance
-    uint32_t aoScalableTaps = 0;       // 4 (mirrored) or 9 (spiral)
-    bool aoScalableMirrored = false;   // current tier: each offset also used negated
+    uint32_t aoScalableTaps = 0;      // 4 (mirrored) or 9 (spiral)
+    bool aoScalableMirrored = false;  // current tier: each offset also used negated
     // Scalable's screen-space clamp of the AO radius (0 = none), in output pixels at
     // SFX_AO_REFERENCE_ROWS (720) rows, scaled with the output's rows so the look does not
     // depend on the resolution.
     float aoScalableMaxRadiusPx = 0;
-    bool aoUsesDepthMip = false;       // Scalable AO reads the depth MIP pyramid (SFX_AO_DEPTH_MIP)
-    uint32_t aoDepthMipLevels = 0;     // levels of that pyramid (level 0 included)
-    uint32_t aoAlchemySamples = 0;     // default Alchemy sample count
-    uint32_t aoBlurRadiusPx = 0;       // bilateral blur half-width
+    bool aoUsesDepthMip = false;    // Scalable AO reads the depth MIP pyramid (SFX_AO_DEPTH_MIP)
+    uint32_t aoDepthMipLevels = 0;  // levels of that pyramid (level 0 included)
+    uint32_t aoAlchemySamples = 0;  // default Alchemy sample count
+    uint32_t aoBlurRadiusPx = 0;    // bilateral blur half-width
     // Crease taps per pixel: 24 (the article's 11x11 stippled diamond) or 12 (its checkerboard
     // half, alternating between neighbours: the blur sees all 24 at half the fetches).
     uint32_t aoCreaseTaps = 24;
@@ -64,7 +66,7 @@ struct TierProfile {
     // scaled with the output's rows: the diamond covers the same share of the image at every
     // size (AoConfig::creaseStride is it in the pass's pixels, at least 1).
     float aoCreaseSpacingPx = 12;
-    AoLook aoLook[3];                  // per technique, indexed by AoTechnique (alchemy, scalable, crease)
+    AoLook aoLook[3];  // per technique, indexed by AoTechnique (alchemy, scalable, crease)
     // Where the blur finds each pixel's depth: true (current tier), a 16-bit key packed in an
     // RGBA8 AO target; false (high), the linear depth in a float target (RG32F; RGBA32F for
     // crease). Either way one fetch per tap. Becomes SFX_AO_PACKED_DEPTH_TARGET.
@@ -75,9 +77,9 @@ struct TierProfile {
     // the table generates SFX_AO_MULTILAYER, which declares the obscurance passes' layer bindings.
     uint32_t aoMaxDepthLayers = 1;
     // Motion blur
-    uint32_t mbTaps = 0;               // reconstruction taps including the centre
-    float mbMaxRadiusPx = 0;           // maximum blur radius at the reference resolution
-    uint32_t mbJitterSize = 0;         // 2 (checkerboard) or 4 (4x4 randomised)
+    uint32_t mbTaps = 0;        // reconstruction taps including the centre
+    float mbMaxRadiusPx = 0;    // maximum blur radius at the reference resolution
+    uint32_t mbJitterSize = 0;  // 2 (checkerboard) or 4 (4x4 randomised)
     // Order-independent transparency
     bool abufferOit = false;
 };

@@ -131,8 +131,8 @@ enum class Error : uint32_t {
 struct ErrorEntry {
     Error error;
     StatusCode code;
-    const char* name;      // "BindingUnknown", for tests and logs
-    const char* message;   // a sentence; each "{}" takes the next argument, in order
+    const char* name;     // "BindingUnknown", for tests and logs
+    const char* message;  // a sentence; each "{}" takes the next argument, in order
 };
 
 // The row of `error` in the table.

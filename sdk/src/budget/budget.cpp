@@ -50,9 +50,10 @@ Result<Choice> choose(const CostTable& table, double budgetMs) {
             best = &e;
     }
     if (!best)
-        return Status{StatusCode::OverBudget, "no " + std::string(toString(table.effect)) + " preset fits " + ms(budgetMs) + " at " +
-                                                  std::to_string(table.width) + "x" + std::to_string(table.height) + " on " + table.device +
-                                                  ": the cheapest, " + cheapest->candidate.name() + ", costs " + ms(cheapest->milliseconds)};
+        return Status{StatusCode::OverBudget,
+                      "no " + std::string(toString(table.effect)) + " preset fits " + ms(budgetMs) + " at " + std::to_string(table.width) + "x" +
+                          std::to_string(table.height) + " on " + table.device + ": the cheapest, " + cheapest->candidate.name() + ", costs " +
+                          ms(cheapest->milliseconds)};
     return Choice{*best, budgetMs, table};
 }
 

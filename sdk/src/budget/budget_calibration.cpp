@@ -120,8 +120,10 @@ Result<TimerReading> timeMedian(Device& dev, uint32_t runs, const std::function<
         if (status) status = dev.flush();
         if (!status) break;
         Result<TimerReading> r = dev.readTimer(timer.value());
-        if (!r) status = r.status();
-        else if (i > 0) ms.push_back(r->milliseconds), last = r.value();
+        if (!r)
+            status = r.status();
+        else if (i > 0)
+            ms.push_back(r->milliseconds), last = r.value();
     }
     (void)dev.destroyTimer(timer.value());
     if (!status) return status;
@@ -156,8 +158,7 @@ Result<CostTable> costTable(Device& dev, const std::vector<Preset>& presets, Eff
             return invalidArgument("presets", "'" + p.name + "' of tier " + toString(p.params.tier) + " among presets of tier " + toString(tier),
                                    "presets of one tier");
     const std::vector<Candidate> list = candidates(effect, presets);
-    const std::string path =
-        options.cacheDir.empty() ? "" : costTablePath(options.cacheDir, dev.caps().deviceName, effect, width, height);
+    const std::string path = options.cacheDir.empty() ? "" : costTablePath(options.cacheDir, dev.caps().deviceName, effect, width, height);
     if (!path.empty() && !options.recalibrate) {
         Result<CostTable> cached = readCostTable(path, list);
         if (cached && cached->device == dev.caps().deviceName && cached->tier == tier) return cached;

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <string>
 
-#include "sfx/ao.hpp"
 #include "ao_internal.hpp"
 #include "effect_common.hpp"
 #include "recorded_passes.hpp"
+#include "sfx/ao.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared_ao.h"
 
@@ -32,8 +32,8 @@ const char* programName(AoTechnique t) {
 }
 
 bool isOutputFormat(Format f) {
-    return f == Format::R8 || f == Format::RGBA8 || f == Format::R16F || f == Format::RG16F || f == Format::RGBA16F ||
-           f == Format::R32F || f == Format::RGBA32F;
+    return f == Format::R8 || f == Format::RGBA8 || f == Format::R16F || f == Format::RG16F || f == Format::RGBA16F || f == Format::R32F ||
+        f == Format::RGBA32F;
 }
 
 }  // namespace
@@ -49,8 +49,11 @@ Result<std::unique_ptr<AmbientObscurance>> AmbientObscurance::create(Device& dev
 }
 
 AmbientObscurance::AmbientObscurance(Device& device, const AoDesc& desc)
-    : device_(device), desc_(desc), pipelines_(std::make_unique<detail::PipelineCache>(device)),
-      uniforms_(std::make_unique<detail::UniformWrites>()), recorded_(std::make_unique<detail::RecordedPasses>(device)) {}
+    : device_(device),
+      desc_(desc),
+      pipelines_(std::make_unique<detail::PipelineCache>(device)),
+      uniforms_(std::make_unique<detail::UniformWrites>()),
+      recorded_(std::make_unique<detail::RecordedPasses>(device)) {}
 
 AmbientObscurance::~AmbientObscurance() { release(); }
 
@@ -170,8 +173,9 @@ Result<std::vector<PassTiming>> AmbientObscurance::passTimings() {
     for (size_t i = 0; i < passTimers_.size(); ++i) {
         Result<TimerReading> reading = device_.readTimer(passTimers_[i]);
         if (!reading)
-            return Status{reading.status().code(), "AmbientObscurance::passTimings: pass '" + p.passes[i].name + "' (dispatch, then flush, first): " +
-                                                       reading.status().message()};
+            return Status{
+                reading.status().code(),
+                "AmbientObscurance::passTimings: pass '" + p.passes[i].name + "' (dispatch, then flush, first): " + reading.status().message()};
         out.push_back({p.passes[i].effect, p.passes[i].name, reading.value()});
     }
     return out;
@@ -247,8 +251,9 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
         return invalidArgument("AoInputs.output size", std::to_string(out->width) + "x" + std::to_string(out->height),
                                std::to_string(desc_.width) + "x" + std::to_string(desc_.height) + " (the AO size)");
     if (!isOutputFormat(out->format) || !device_.caps().renderableFormat[size_t(out->format)])
-        return {StatusCode::UnsupportedFormat, std::string("AoInputs.output format ") + toString(out->format) +
-                                                   " is not allowed; R8, RGBA8, R16F, RG16F, RGBA16F, R32F or RGBA32F renderable on the device"};
+        return {StatusCode::UnsupportedFormat,
+                std::string("AoInputs.output format ") + toString(out->format) +
+                    " is not allowed; R8, RGBA8, R16F, RG16F, RGBA16F, R32F or RGBA32F renderable on the device"};
     if (!(out->usage & kTextureRenderTarget)) return invalidArgument("AoInputs.output usage", "without kTextureRenderTarget", "a render target");
     int32_t normalSource = 0;
     if (config_.normals == AoNormals::FromTexture) {
@@ -257,16 +262,20 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
         if (nd->width != desc_.width || nd->height != desc_.height)
             return invalidArgument("AoInputs.normals size", std::to_string(nd->width) + "x" + std::to_string(nd->height),
                                    std::to_string(desc_.width) + "x" + std::to_string(desc_.height) + " (the AO size)");
-        if (nd->format == Format::RGBA8) normalSource = 2;
-        else if (nd->format == Format::RGBA16F || nd->format == Format::RGBA32F) normalSource = 1;
-        else return {StatusCode::UnsupportedFormat, std::string("AoInputs.normals format ") + toString(nd->format) +
-                                                        "; allowed RGBA16F/RGBA32F (signed xyz) or RGBA8 (xyz * 0.5 + 0.5)"};
+        if (nd->format == Format::RGBA8)
+            normalSource = 2;
+        else if (nd->format == Format::RGBA16F || nd->format == Format::RGBA32F)
+            normalSource = 1;
+        else
+            return {
+                StatusCode::UnsupportedFormat,
+                std::string("AoInputs.normals format ") + toString(nd->format) + "; allowed RGBA16F/RGBA32F (signed xyz) or RGBA8 (xyz * 0.5 + 0.5)"};
     }
     SFX_TRY(detail::checkDepthLayers(device_, in, config_, desc_.width, desc_.height));
     // Pass timers make a recording single-use: profiling records every frame.
     if (profiling_) return recordPasses(in, out.value(), normalSource);
-    const uint64_t key = detail::RecordedPasses::key({in.depth.texture.bits, in.normals.bits, in.output.bits, in.depthLayers[0].bits,
-                                                      in.depthLayers[1].bits, in.depthLayers[2].bits});
+    const uint64_t key = detail::RecordedPasses::key(
+        {in.depth.texture.bits, in.normals.bits, in.output.bits, in.depthLayers[0].bits, in.depthLayers[1].bits, in.depthLayers[2].bits});
     return recorded_->run(key, [&] { return recordPasses(in, out.value(), normalSource); });
 }
 
@@ -388,8 +397,7 @@ EffectPlan AmbientObscurance::plan() const {
     const bool half = config_.halfResolution, blur = config_.blurRadius > 0;
     const uint32_t w = passWidth(), h = passHeight();
     const std::string atHalf = half ? " at half size" : "";
-    if (half && !halfDepthFromMip())
-        plan.passes.push_back({"ao", "half-size depth (AO at half resolution; no depth MIP level 1 to reuse)", w, h});
+    if (half && !halfDepthFromMip()) plan.passes.push_back({"ao", "half-size depth (AO at half resolution; no depth MIP level 1 to reuse)", w, h});
     const std::string layers = config_.depthLayers > 1 ? ", taps test " + std::to_string(config_.depthLayers) + " depth layers" : "";
     plan.passes.push_back({"ao", std::string("obscurance (") + toString(config_.technique) + layers + ")" + atHalf, w, h});
     plan.resources.push_back({"ao", "ao params", Format::Undefined, 0, 0, 1, sizeof(AoParams)});
@@ -400,9 +408,10 @@ EffectPlan AmbientObscurance::plan() const {
     if (half) plan.passes.push_back({"ao", "depth-aware upsample to full size (AO at half resolution)", desc_.width, desc_.height});
     const Format targetFormat = detail::aoTargetFormat(desc_.profile, config_.technique);
     const TextureDesc td{w, h, 1, targetFormat, kTextureSampled | kTextureRenderTarget};
-    const std::string raw = desc_.profile.aoPackedDepthTarget && blur ? "raw AO + packed depth key (RGBA8)" :
-                            desc_.profile.aoPackedDepthTarget ? "raw AO (RGBA8)" :
-                            std::string("raw AO + linear depth (") + toString(targetFormat) + "): the blur and upsample read one texel per tap";
+    const std::string raw = desc_.profile.aoPackedDepthTarget && blur ? "raw AO + packed depth key (RGBA8)"
+        : desc_.profile.aoPackedDepthTarget
+        ? "raw AO (RGBA8)"
+        : std::string("raw AO + linear depth (") + toString(targetFormat) + "): the blur and upsample read one texel per tap";
     if (blur || half) plan.resources.push_back(plannedTexture("ao", raw + (half ? ", half size: the upsample's source" : ""), td));
     if (blur) {
         plan.resources.push_back(plannedTexture("ao", "blur intermediate" + atHalf, td));

@@ -38,7 +38,8 @@ Status AmbientObscurance::allocateHalfRes() {
 
 Status AmbientObscurance::recordHalfDepth(size_t passIndex) {
     const int linearize = depth_->passThrough() && depth_->sourceKind() == DepthKind::Hardware ? 1 : 0;
-    Result<PipelineHandle> pipeline = pipelines_->get(halfDepthProgram_, Format::R32F, {{SFX_AO_SC_HALF_DEPTH_LINEARIZE, linearize}}, "sfx-ao-half-depth");
+    Result<PipelineHandle> pipeline = pipelines_->get(halfDepthProgram_, Format::R32F, {{SFX_AO_SC_HALF_DEPTH_LINEARIZE, linearize}},
+                                                      "sfx-ao-half-depth");
     if (!pipeline) return pipeline.status();
     RenderPassDesc pass;
     pass.colors = {ColorAttachment{halfDepth_, 0, LoadOp::DontCare, {}}};
@@ -70,12 +71,12 @@ Status AmbientObscurance::recordUpsample(const AoInputs& in, Format outFormat, T
     // The half-size depth comes with the AO texel where the target carries it (the float targets
     // of the high tier); else from the half-size depth texture (or level 0 of the half-size pyramid).
     const int depthIn = detail::aoDepthInTarget(desc_.profile, config_.technique, config_.blurRadius > 0, true);
-    const int halfDepthSource = depthIn == SFX_AO_DEPTH_IN_FLOAT_G   ? SFX_AO_HALF_DEPTH_SOURCE_G
-                                : depthIn == SFX_AO_DEPTH_IN_FLOAT_B ? SFX_AO_HALF_DEPTH_SOURCE_B
-                                : depthIn == SFX_AO_DEPTH_IN_KEY_BA  ? SFX_AO_HALF_DEPTH_SOURCE_KEY
-                                                                     : SFX_AO_HALF_DEPTH_TEXTURE;
-    Result<PipelineHandle> pipeline = pipelines_->get(upsampleProgram_, outFormat, {{SFX_AO_SC_UPSAMPLE_DEPTH, halfDepthSource}, {SFX_AO_SC_UPSAMPLE_LINEARIZE, linearize}},
-                                                      "sfx-ao-upsample");
+    const int halfDepthSource = depthIn == SFX_AO_DEPTH_IN_FLOAT_G ? SFX_AO_HALF_DEPTH_SOURCE_G
+        : depthIn == SFX_AO_DEPTH_IN_FLOAT_B                       ? SFX_AO_HALF_DEPTH_SOURCE_B
+        : depthIn == SFX_AO_DEPTH_IN_KEY_BA                        ? SFX_AO_HALF_DEPTH_SOURCE_KEY
+                                                                   : SFX_AO_HALF_DEPTH_TEXTURE;
+    Result<PipelineHandle> pipeline = pipelines_->get(
+        upsampleProgram_, outFormat, {{SFX_AO_SC_UPSAMPLE_DEPTH, halfDepthSource}, {SFX_AO_SC_UPSAMPLE_LINEARIZE, linearize}}, "sfx-ao-upsample");
     if (!pipeline) return pipeline.status();
     RenderPassDesc pass;
     pass.colors = {ColorAttachment{in.output, 0, LoadOp::DontCare, {}}};

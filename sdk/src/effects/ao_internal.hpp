@@ -30,14 +30,14 @@ inline int aoDepthInTarget(const TierProfile& profile, AoTechnique technique, bo
 
 inline bool mipGivesHalfDepth(const AoConfig& config, const TierProfile& profile, uint32_t width, uint32_t height) {
     return config.halfResolution && config.technique == AoTechnique::Scalable && profile.aoUsesDepthMip &&
-           std::min(profile.aoDepthMipLevels, maxMipLevels(width, height)) >= 2;
+        std::min(profile.aoDepthMipLevels, maxMipLevels(width, height)) >= 2;
 }
 
 // Multilayer AO (ao_multilayer.cpp): named errors for AoInputs.depthLayers the config needs,
 // and the obscurance pass's layer bindings where the tier's programs declare them.
 Status checkDepthLayers(Device& device, const AoInputs& in, const AoConfig& config, uint32_t width, uint32_t height);
-void appendDepthLayerBindings(std::vector<TextureBinding>& bindings, const AoInputs& in, const AoConfig& config,
-                              const TierProfile& profile, const TextureBinding& passDepth);
+void appendDepthLayerBindings(std::vector<TextureBinding>& bindings, const AoInputs& in, const AoConfig& config, const TierProfile& profile,
+                              const TextureBinding& passDepth);
 
 }  // namespace sfx::detail
 

@@ -26,8 +26,8 @@ Status checkDepthLayers(Device& device, const AoInputs& in, const AoConfig& conf
     return Status::ok();
 }
 
-void appendDepthLayerBindings(std::vector<TextureBinding>& bindings, const AoInputs& in, const AoConfig& config,
-                              const TierProfile& profile, const TextureBinding& passDepth) {
+void appendDepthLayerBindings(std::vector<TextureBinding>& bindings, const AoInputs& in, const AoConfig& config, const TierProfile& profile,
+                              const TextureBinding& passDepth) {
     if (profile.aoMaxDepthLayers <= 1) return;  // the tier's programs declare no layer bindings
     const uint32_t slots[] = {gen::ao_scalable::uDepthLayer1, gen::ao_scalable::uDepthLayer2, gen::ao_scalable::uDepthLayer3};
     static_assert(sizeof(slots) / sizeof(slots[0]) == size_t(shared::SFX_AO_MAX_DEPTH_LAYERS) - 1);

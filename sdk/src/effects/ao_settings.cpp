@@ -71,20 +71,21 @@ bool parseAoResolution(const std::string& text, AoResolution* out) {
 Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
     // A value-initialised TierProfile has every count at 0 and would divide by zero in the
     // shaders; it must come from tiers::profile() or tiers::choose().
-    if (uint32_t(profile.tier) >= kTierCount || profile.aoScalableTaps == 0 || profile.aoAlchemySamples == 0 ||
-        profile.aoBlurRadiusPx == 0 || profile.aoDepthMipLevels == 0)
+    if (uint32_t(profile.tier) >= kTierCount || profile.aoScalableTaps == 0 || profile.aoAlchemySamples == 0 || profile.aoBlurRadiusPx == 0 ||
+        profile.aoDepthMipLevels == 0)
         return invalidArgument("AoDesc.profile", "an empty or unknown tier profile (tap counts 0)",
                                "tiers::profile(tier) or tiers::choose(caps)->profile");
     // A hand-filled profile must also stay inside what the shaders are built for: the resolved
     // config takes its counts from it unchecked.
     if (profile.aoScalableTaps > uint32_t(shared::SFX_AO_MAX_SAMPLES) || profile.aoAlchemySamples > uint32_t(shared::SFX_AO_MAX_SAMPLES) ||
-        (profile.aoScalableMirrored && profile.aoScalableTaps % 2 != 0) ||
-        profile.aoBlurRadiusPx > uint32_t(shared::SFX_AO_MAX_BLUR_RADIUS) || !(profile.aoScalableMaxRadiusPx >= 0.0f) ||
+        (profile.aoScalableMirrored && profile.aoScalableTaps % 2 != 0) || profile.aoBlurRadiusPx > uint32_t(shared::SFX_AO_MAX_BLUR_RADIUS) ||
+        !(profile.aoScalableMaxRadiusPx >= 0.0f) ||
         (profile.aoCreaseTaps != kCreaseHalfTaps && profile.aoCreaseTaps != uint32_t(shared::SFX_AO_CREASE_TAPS)) ||
         std::isinf(profile.aoScalableMaxRadiusPx) || !(profile.aoCreaseSpacingPx > 0.0f && profile.aoCreaseSpacingPx <= kMaxCreaseSpacingPx))
         return invalidArgument("AoDesc.profile", "a tier profile with counts outside the shaders' limits",
                                "tiers::profile(tier) or tiers::choose(caps)->profile");
-    if (uint32_t(s.technique) > 2) return invalidArgument("AoSettings.technique", std::to_string(uint32_t(s.technique)), "Alchemy, Scalable or Crease");
+    if (uint32_t(s.technique) > 2)
+        return invalidArgument("AoSettings.technique", std::to_string(uint32_t(s.technique)), "Alchemy, Scalable or Crease");
     SFX_TRY(checkSetting(Setting::AoRadius, s.radius));
     const AoLook& look = profile.aoLook[uint32_t(s.technique)];
     SFX_TRY(checkLookField(Setting::AoIntensity, s.intensity, "AoDesc.profile.aoLook.intensity", look.intensity));
@@ -99,18 +100,19 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
     } else if (s.samples) {
         SFX_TRY(checkSetting(Setting::AoSamples, *s.samples));
         if (s.technique == AoTechnique::Scalable && profile.aoScalableMirrored && *s.samples % 2 != 0)
-            return invalidArgument("AoSettings.samples", std::to_string(*s.samples),
-                                   std::string("an even count on the ") + toString(profile.tier) + " tier (its Scalable taps come in mirrored pairs)");
+            return invalidArgument(
+                "AoSettings.samples", std::to_string(*s.samples),
+                std::string("an even count on the ") + toString(profile.tier) + " tier (its Scalable taps come in mirrored pairs)");
     }
     if (s.blurRadius) SFX_TRY(checkSetting(Setting::AoBlurRadius, *s.blurRadius));
-    if (uint32_t(s.resolution) > 2)
-        return invalidArgument("AoSettings.resolution", std::to_string(uint32_t(s.resolution)), "Tier, Full or Half");
+    if (uint32_t(s.resolution) > 2) return invalidArgument("AoSettings.resolution", std::to_string(uint32_t(s.resolution)), "Tier, Full or Half");
     if (uint32_t(s.normals) > 1) return invalidArgument("AoSettings.normals", std::to_string(uint32_t(s.normals)), "FromDepth or FromTexture");
     const uint32_t maxLayers = std::clamp(profile.aoMaxDepthLayers, 1u, uint32_t(shared::SFX_AO_MAX_DEPTH_LAYERS));
     if (s.depthLayers < 1 || s.depthLayers > maxLayers)
-        return invalidArgument("AoSettings.depthLayers", std::to_string(s.depthLayers),
-                               maxLayers == 1 ? std::string("1 on the ") + toString(profile.tier) + " tier (multilayer AO needs a tier with aoMaxDepthLayers > 1: high)"
-                                              : "[1, " + std::to_string(maxLayers) + "] on the " + toString(profile.tier) + " tier");
+        return invalidArgument(
+            "AoSettings.depthLayers", std::to_string(s.depthLayers),
+            maxLayers == 1 ? std::string("1 on the ") + toString(profile.tier) + " tier (multilayer AO needs a tier with aoMaxDepthLayers > 1: high)"
+                           : "[1, " + std::to_string(maxLayers) + "] on the " + toString(profile.tier) + " tier");
     if (s.depthLayers > 1 && s.resolution == AoResolution::Half)
         return invalidArgument("AoSettings.resolution", "Half with depthLayers " + std::to_string(s.depthLayers),
                                "Full or Tier (multilayer AO runs at full resolution: the layers are full size)");

@@ -9,13 +9,11 @@
 namespace sfx {
 
 Result<DepthReconstruction> makeDepthReconstruction(const CameraProjection& camera, uint32_t width, uint32_t height) {
-    if (width == 0 || height == 0)
-        return invalidArgument("target size", std::to_string(width) + "x" + std::to_string(height), "both > 0");
+    if (width == 0 || height == 0) return invalidArgument("target size", std::to_string(width) + "x" + std::to_string(height), "both > 0");
     const glm::dmat4& P = camera.projection;
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(P[c][r]))
-                return invalidArgument("CameraProjection.projection", "non-finite", "a finite perspective matrix");
+            if (!std::isfinite(P[c][r])) return invalidArgument("CameraProjection.projection", "non-finite", "a finite perspective matrix");
     // A perspective projection looking down -z has clip.w = -z_view.
     if (P[2][3] != -1.0 || P[3][3] != 0.0 || P[0][3] != 0.0 || P[1][3] != 0.0)
         return invalidArgument("CameraProjection.projection", "not perspective",
@@ -64,8 +62,7 @@ Result<CameraProjection> makePerspective(const PerspectiveDesc& d) {
         return invalidArgument("PerspectiveDesc.aspect", std::to_string(d.aspect), "a finite value > 0");
     if (!(d.nearPlane > 0.0) || !std::isfinite(d.nearPlane))
         return invalidArgument("PerspectiveDesc.nearPlane", std::to_string(d.nearPlane), "a finite value > 0");
-    if (!(d.farPlane > d.nearPlane))
-        return invalidArgument("PerspectiveDesc.farPlane", std::to_string(d.farPlane), "> nearPlane, or +infinity");
+    if (!(d.farPlane > d.nearPlane)) return invalidArgument("PerspectiveDesc.farPlane", std::to_string(d.farPlane), "> nearPlane, or +infinity");
     const double f = 1.0 / std::tan(d.fovYRadians * 0.5);
     const double n = d.nearPlane, fa = d.farPlane;
     const bool infinite = std::isinf(fa);

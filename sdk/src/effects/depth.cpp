@@ -15,9 +15,7 @@ using detail::loadProgram;
 // The uniform block of linearize_depth.frag, declared once in sfx_shared.h.
 using shared::LinearizeParams;
 
-bool isHardwareDepthFormat(Format f) {
-    return f == Format::D16 || f == Format::D24S8 || f == Format::D32F || f == Format::R32F;
-}
+bool isHardwareDepthFormat(Format f) { return f == Format::D16 || f == Format::D24S8 || f == Format::D32F || f == Format::R32F; }
 
 }  // namespace
 
@@ -37,7 +35,9 @@ Result<std::unique_ptr<LinearDepth>> LinearDepth::create(Device& device, const L
 }
 
 LinearDepth::LinearDepth(Device& device, const LinearDepthDesc& desc)
-    : device_(device), desc_(desc), pipelines_(std::make_unique<detail::PipelineCache>(device)),
+    : device_(device),
+      desc_(desc),
+      pipelines_(std::make_unique<detail::PipelineCache>(device)),
       uniforms_(std::make_unique<detail::UniformWrites>()) {}
 
 LinearDepth::~LinearDepth() { release(); }
@@ -119,8 +119,7 @@ Status LinearDepth::resize(uint32_t width, uint32_t height) {
 }
 
 Status LinearDepth::dispatch(const DepthSource& source, std::span<const TimerHandle> passTimers) {
-    if (texture_.isNull() && !passThrough())
-        return {StatusCode::InvalidHandle, "LinearDepth: resources were not created (failed resize?)"};
+    if (texture_.isNull() && !passThrough()) return {StatusCode::InvalidHandle, "LinearDepth: resources were not created (failed resize?)"};
     // One timer per planned pass: linearize, then one per MIP level past 0 (none passing through).
     // plan() builds strings: asked only when profiling.
     const size_t passes = passTimers.empty() ? 0 : plan().passes.size();
@@ -133,8 +132,8 @@ Status LinearDepth::dispatch(const DepthSource& source, std::span<const TimerHan
         return invalidArgument("DepthSource.texture size", std::to_string(src->width) + "x" + std::to_string(src->height),
                                std::to_string(desc_.width) + "x" + std::to_string(desc_.height) + " (the LinearDepth size)");
     if (source.kind == DepthKind::Hardware && !isHardwareDepthFormat(src->format))
-        return {StatusCode::UnsupportedFormat, std::string("DepthSource.texture format ") + toString(src->format) +
-                                                   " is not hardware depth; allowed D16, D24S8, D32F, R32F"};
+        return {StatusCode::UnsupportedFormat,
+                std::string("DepthSource.texture format ") + toString(src->format) + " is not hardware depth; allowed D16, D24S8, D32F, R32F"};
     if (source.kind == DepthKind::Linear && src->format != Format::R32F)
         return {StatusCode::UnsupportedFormat,
                 std::string("DepthSource.texture format ") + toString(src->format) + " is not linear depth; allowed R32F"};

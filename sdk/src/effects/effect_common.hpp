@@ -31,8 +31,10 @@ inline Result<ProgramHandle> loadProgram(Device& device, const char* name, Tier 
 inline Status checkTargetSize(const Device& device, uint32_t width, uint32_t height, const std::string& what) {
     const DeviceLimits& limits = device.caps().limits;
     const auto range = [](uint32_t max) { return "[1, " + std::to_string(max) + "] (the device's render-target limit)"; };
-    if (width == 0 || width > limits.maxRenderTargetWidth) return invalidArgument(what + "width", std::to_string(width), range(limits.maxRenderTargetWidth));
-    if (height == 0 || height > limits.maxRenderTargetHeight) return invalidArgument(what + "height", std::to_string(height), range(limits.maxRenderTargetHeight));
+    if (width == 0 || width > limits.maxRenderTargetWidth)
+        return invalidArgument(what + "width", std::to_string(width), range(limits.maxRenderTargetWidth));
+    if (height == 0 || height > limits.maxRenderTargetHeight)
+        return invalidArgument(what + "height", std::to_string(height), range(limits.maxRenderTargetHeight));
     return Status::ok();
 }
 

@@ -1,7 +1,7 @@
 #include "sfx/motion_blur.hpp"
 
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,9 +24,7 @@ using detail::loadProgram;
 using PackParams = shared::MbPackParams;
 using ReconstructParams = shared::MbReconstructParams;
 
-bool isVelocityFormat(Format f) {
-    return f == Format::RG16F || f == Format::RG32F || f == Format::RGBA16F || f == Format::RGBA32F;
-}
+bool isVelocityFormat(Format f) { return f == Format::RG16F || f == Format::RG32F || f == Format::RGBA16F || f == Format::RGBA32F; }
 
 std::string num(double v) {
     char buf[64];
@@ -38,8 +36,7 @@ std::string num(double v) {
 // tiers::profile() or tiers::choose(), whose values the shaders' loops and tables accept.
 Status checkProfile(const TierProfile& p) {
     if (uint32_t(p.tier) >= kTierCount || p.mbTaps < 3 || p.mbTaps > uint32_t(shared::SFX_MB_MAX_TAPS) || p.mbTaps % 2 == 0 ||
-        !(p.mbMaxRadiusPx > 0.0f && p.mbMaxRadiusPx <= float(shared::SFX_MB_MAX_RADIUS_LIMIT_PX)) ||
-        (p.mbJitterSize != 2 && p.mbJitterSize != 4))
+        !(p.mbMaxRadiusPx > 0.0f && p.mbMaxRadiusPx <= float(shared::SFX_MB_MAX_RADIUS_LIMIT_PX)) || (p.mbJitterSize != 2 && p.mbJitterSize != 4))
         return invalidArgument("MotionBlurDesc.profile", "an empty or unknown tier profile (mbTaps " + std::to_string(p.mbTaps) + ")",
                                "tiers::profile(tier) or tiers::choose(caps)->profile");
     return Status::ok();
@@ -80,8 +77,8 @@ Result<MotionBlurParams> resolveMotionBlur(const TierProfile& profile, const Mot
         radius = limit;
     }
     if (radius > limit)
-        return invalidArgument("MotionBlurSettings.maxRadiusPx", std::to_string(*s.maxRadiusPx) + " (" + std::to_string(radius) +
-                                   " px at " + std::to_string(height) + " rows)",
+        return invalidArgument("MotionBlurSettings.maxRadiusPx",
+                               std::to_string(*s.maxRadiusPx) + " (" + std::to_string(radius) + " px at " + std::to_string(height) + " rows)",
                                "a scaled radius <= 64 px");
     p.radiusPx = uint32_t(radius);
     p.softDepthExtent = s.softDepthExtent;
@@ -98,16 +95,18 @@ Result<std::unique_ptr<MotionBlur>> MotionBlur::create(Device& device, const Mot
     const DeviceCaps& caps = device.caps();
     for (Format f : {Format::RGBA16F, Format::RG16F, desc.colorFormat})
         if (!caps.renderableFormat[size_t(f)])
-            return Status{StatusCode::UnsupportedFormat,
-                          std::string("motion blur renders ") + toString(f) + ", which this device cannot render to"};
+            return Status{StatusCode::UnsupportedFormat, std::string("motion blur renders ") + toString(f) + ", which this device cannot render to"};
     std::unique_ptr<MotionBlur> mb(new MotionBlur(device, desc));
     SFX_TRY(mb->allocate());
     return mb;
 }
 
 MotionBlur::MotionBlur(Device& device, const MotionBlurDesc& desc)
-    : device_(device), desc_(desc), pipelines_(std::make_unique<detail::PipelineCache>(device)),
-      uniforms_(std::make_unique<detail::UniformWrites>()), recorded_(std::make_unique<detail::RecordedPasses>(device)) {}
+    : device_(device),
+      desc_(desc),
+      pipelines_(std::make_unique<detail::PipelineCache>(device)),
+      uniforms_(std::make_unique<detail::UniformWrites>()),
+      recorded_(std::make_unique<detail::RecordedPasses>(device)) {}
 
 MotionBlur::~MotionBlur() { release(); }
 
@@ -230,8 +229,9 @@ Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings
     if (color->width != desc_.width || color->height != desc_.height)
         return invalidArgument("MotionBlurInputs.color size", std::to_string(color->width) + "x" + std::to_string(color->height), expectedSize());
     if (color->format != desc_.colorFormat)
-        return {StatusCode::UnsupportedFormat, std::string("MotionBlurInputs.color format ") + toString(color->format) +
-                                                   " differs from MotionBlurDesc.colorFormat " + toString(desc_.colorFormat)};
+        return {StatusCode::UnsupportedFormat,
+                std::string("MotionBlurInputs.color format ") + toString(color->format) + " differs from MotionBlurDesc.colorFormat " +
+                    toString(desc_.colorFormat)};
     if (!(color->usage & kTextureSampled)) return invalidArgument("MotionBlurInputs.color usage", "without kTextureSampled", "a sampled texture");
 
     // The host's output, or the effect's own (checked at creation).
@@ -240,8 +240,9 @@ Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings
         Result<TextureDesc> out = device_.textureDesc(in.output);
         if (!out) return Status{out.status().code(), "MotionBlurInputs.output: " + out.status().message()};
         if (out->width != desc_.width || out->height != desc_.height)
-            return validation::fail(validation::Error::MotionBlurOutputSize, {std::to_string(out->width), std::to_string(out->height),
-                                                                              std::to_string(desc_.width), std::to_string(desc_.height)});
+            return validation::fail(
+                validation::Error::MotionBlurOutputSize,
+                {std::to_string(out->width), std::to_string(out->height), std::to_string(desc_.width), std::to_string(desc_.height)});
         if (out->format != desc_.colorFormat)
             return validation::fail(validation::Error::MotionBlurOutputFormat, {toString(out->format), toString(desc_.colorFormat)});
         if (!(out->usage & kTextureRenderTarget))
@@ -255,8 +256,8 @@ Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings
         if (vel->width != desc_.width || vel->height != desc_.height)
             return invalidArgument("MotionBlurInputs.velocity size", std::to_string(vel->width) + "x" + std::to_string(vel->height), expectedSize());
         if (!isVelocityFormat(vel->format))
-            return {StatusCode::UnsupportedFormat, std::string("MotionBlurInputs.velocity format ") + toString(vel->format) +
-                                                       "; allowed RG16F, RG32F, RGBA16F, RGBA32F"};
+            return {StatusCode::UnsupportedFormat,
+                    std::string("MotionBlurInputs.velocity format ") + toString(vel->format) + "; allowed RG16F, RG32F, RGBA16F, RGBA32F"};
         if (!(vel->usage & kTextureSampled))
             return invalidArgument("MotionBlurInputs.velocity usage", "without kTextureSampled", "a sampled texture");
     }
@@ -302,17 +303,16 @@ Status MotionBlur::recordPasses(const MotionBlurInputs& in, const MotionBlurPara
     auto pipeline = [&](ProgramHandle program, Format format, std::initializer_list<SpecializationConstant> constants, const char* name) {
         return pipelines_->get(program, format, constants, name);
     };
-    Result<PipelineHandle> packPipeline =
-        pipeline(packProgram_, Format::RGBA16F, {{SFX_MB_SC_CAMERA_ONLY, cameraOnly ? 1 : 0}}, gen::mb_pack::kName);
+    Result<PipelineHandle> packPipeline = pipeline(packProgram_, Format::RGBA16F, {{SFX_MB_SC_CAMERA_ONLY, cameraOnly ? 1 : 0}}, gen::mb_pack::kName);
     if (!packPipeline) return packPipeline.status();
-    Result<PipelineHandle> tilePipeline =
-        pipeline(tileProgram_, Format::RG16F, {{SFX_MB_SC_TILE_SIZE, int32_t(p.radiusPx)}}, gen::mb_tile_max::kName);
+    Result<PipelineHandle> tilePipeline = pipeline(tileProgram_, Format::RG16F, {{SFX_MB_SC_TILE_SIZE, int32_t(p.radiusPx)}},
+                                                   gen::mb_tile_max::kName);
     if (!tilePipeline) return tilePipeline.status();
     Result<PipelineHandle> neighborPipeline = pipeline(neighborProgram_, Format::RG16F, {}, gen::mb_neighbor_max::kName);
     if (!neighborPipeline) return neighborPipeline.status();
-    Result<PipelineHandle> reconstructPipeline =
-        pipeline(reconstructProgram_, desc_.colorFormat,
-                 {{SFX_MB_SC_PAIRS, int32_t(p.pairs)}, {SFX_MB_SC_JITTER_SIZE, int32_t(p.jitterSize)}}, gen::mb_reconstruct::kName);
+    Result<PipelineHandle> reconstructPipeline = pipeline(reconstructProgram_, desc_.colorFormat,
+                                                          {{SFX_MB_SC_PAIRS, int32_t(p.pairs)}, {SFX_MB_SC_JITTER_SIZE, int32_t(p.jitterSize)}},
+                                                          gen::mb_reconstruct::kName);
     if (!reconstructPipeline) return reconstructPipeline.status();
 
     auto run = [&](TextureHandle target, const char* name, PipelineHandle pipeline, BindingSet bindings) -> Status {
@@ -357,20 +357,18 @@ EffectPlan MotionBlur::plan(const MotionBlurSettings& settings) const {
     std::string tile = " (" + std::to_string(radius) + "x" + std::to_string(radius) + " tiles";
     if (resolved && resolved->radiusCapped)
         tile += "; the tier's default radius, " + num(resolved->scaledRadiusPx) + " px at " + std::to_string(desc_.height) +
-                " rows, capped at the shaders' 64 px limit";
+            " rows, capped at the shaders' 64 px limit";
     tile += ")";
     plan.passes.push_back({"motion_blur", "pack velocity + depth", desc_.width, desc_.height});
     plan.passes.push_back({"motion_blur", "tile max" + tile, tw, th});
     plan.passes.push_back({"motion_blur", "neighbour max 3x3", tw, th});
-    plan.passes.push_back({"motion_blur", "reconstruct " + std::to_string(resolved ? resolved->taps : 0) + " taps", desc_.width,
-                           desc_.height});
+    plan.passes.push_back({"motion_blur", "reconstruct " + std::to_string(resolved ? resolved->taps : 0) + " taps", desc_.width, desc_.height});
     const uint32_t rt = kTextureSampled | kTextureRenderTarget;
     plan.resources.push_back(plannedTexture("motion_blur", "packed velocity + depth", {desc_.width, desc_.height, 1, Format::RGBA16F, rt}));
     plan.resources.push_back(plannedTexture("motion_blur", "tile max", {tw, th, 1, Format::RG16F, rt}));
     plan.resources.push_back(plannedTexture("motion_blur", "neighbour max", {tw, th, 1, Format::RG16F, rt}));
     plan.resources.push_back(plannedTexture("motion_blur", "output", {desc_.width, desc_.height, 1, desc_.colorFormat, rt}));
-    plan.resources.push_back({"motion_blur", "uniforms", Format::Undefined, 0, 0, 1,
-                              sizeof(PackParams) + sizeof(ReconstructParams)});
+    plan.resources.push_back({"motion_blur", "uniforms", Format::Undefined, 0, 0, 1, sizeof(PackParams) + sizeof(ReconstructParams)});
     return plan;
 }
 

@@ -53,19 +53,20 @@ Result<std::unique_ptr<Transparency>> Transparency::create(Device& device, const
     if (desc.initialPoolNodes == uint64_t(0)) return invalidArgument("TransparencyDesc.initialPoolNodes", "0", "at least 1 node, or unset");
     const DeviceCaps& caps = device.caps();
     if (!caps.renderableFormat[size_t(desc.colorFormat)])
-        return Status{StatusCode::UnsupportedFormat, std::string("TransparencyDesc.colorFormat ") + toString(desc.colorFormat) +
-                                                         " is not renderable on this device"};
+        return Status{StatusCode::UnsupportedFormat,
+                      std::string("TransparencyDesc.colorFormat ") + toString(desc.colorFormat) + " is not renderable on this device"};
     SFX_TRY(checkLayerSettings(desc));
     if (desc.profile.abufferOit && desc.ao.enabled && desc.ao.filterRadius > 0 && !caps.renderableFormat[size_t(Format::RGBA32F)])
-        return Status{StatusCode::UnsupportedFormat, "TransparencyDesc.ao.filterRadius " + std::to_string(desc.ao.filterRadius) +
-                                                         " needs RGBA32F render targets (the filter's depth keys); the device has none "
-                                                         "(use 0: the raw AO)"};
+        return Status{StatusCode::UnsupportedFormat,
+                      "TransparencyDesc.ao.filterRadius " + std::to_string(desc.ao.filterRadius) +
+                          " needs RGBA32F render targets (the filter's depth keys); the device has none "
+                          "(use 0: the raw AO)"};
     std::unique_ptr<Transparency> t(new Transparency(device, desc));
     if (desc.profile.abufferOit) {
         if (!caps.fragmentStoresAndAtomics || !caps.computeShaders)
             return Status{StatusCode::UnsupportedFeature,
                           "TransparencyDesc.profile is the high tier (A-buffer); the device has no fragment stores and atomics "
-                    "or no compute shaders (use the current tier's profile)"};
+                          "or no compute shaders (use the current tier's profile)"};
         t->abuffer_ = true;
     } else if (!caps.renderableFormat[size_t(Format::RGBA16F)]) {
         return Status{StatusCode::UnsupportedFormat, "weighted blended OIT needs RGBA16F render targets; the device has none"};
@@ -124,12 +125,10 @@ void Transparency::release() {
     auto buffer = [&](BufferHandle& h) { drop(h, &Device::destroyBuffer); };
     auto pipeline = [&](PipelineHandle& h) { drop(h, &Device::destroyPipeline); };
     auto program = [&](ProgramHandle& h) { drop(h, &Device::destroyProgram); };
-    for (PipelineHandle* p :
-         {&clearPipeline_, &fillPipeline_, &resolvePipeline_, &accumPipeline_, &weightedResolvePipeline_, &aoPipeline_,
-          &filterPipelines_[0], &filterPipelines_[1]})
+    for (PipelineHandle* p : {&clearPipeline_, &fillPipeline_, &resolvePipeline_, &accumPipeline_, &weightedResolvePipeline_, &aoPipeline_,
+                              &filterPipelines_[0], &filterPipelines_[1]})
         pipeline(*p);
-    for (ProgramHandle* p :
-         {&clearProgram_, &fillProgram_, &resolveProgram_, &accumProgram_, &weightedResolveProgram_, &aoProgram_, &filterProgram_})
+    for (ProgramHandle* p : {&clearProgram_, &fillProgram_, &resolveProgram_, &accumProgram_, &weightedResolveProgram_, &aoProgram_, &filterProgram_})
         program(*p);
     for (TextureHandle* t : {&ownedOutput_, &heads_, &accum_, &weight_, &ownedAo_, &aoRaw_, &aoFiltered_}) texture(*t);
     buffer(compressed_);
@@ -188,8 +187,8 @@ Status Transparency::ensurePrograms() {
                                  {SFX_OIT_SC_RESOLVE_TRANSMITTANCE, writeTransmittance}};
         else
             resolve.constants = {{SFX_OIT_SC_RESOLVE_TRANSMITTANCE, writeTransmittance}};
-        SFX_TRY(graphics(desc_.compressedNodes > 0 ? gen::oit_resolve_compress::kName : gen::oit_resolve::kName, &resolveProgram_,
-                         &resolvePipeline_, resolve));
+        SFX_TRY(graphics(desc_.compressedNodes > 0 ? gen::oit_resolve_compress::kName : gen::oit_resolve::kName, &resolveProgram_, &resolvePipeline_,
+                         resolve));
         if (desc_.ao.enabled) {
             const AoConfig& c = desc_.ao.config;
             GraphicsPipelineDesc ao;
@@ -243,8 +242,7 @@ Status Transparency::ensureTargets() {
             resolveParams_ = b.value();
         }
         SFX_TRY(ensureLayerTargets());
-        if (pool_.isNull())
-            SFX_TRY(ensurePool(desc_.initialPoolNodes.value_or(uint64_t(kOitInitialNodesPerPixel) * desc_.width * desc_.height)));
+        if (pool_.isNull()) SFX_TRY(ensurePool(desc_.initialPoolNodes.value_or(uint64_t(kOitInitialNodesPerPixel) * desc_.width * desc_.height)));
     } else {
         SFX_TRY(make(&accum_, Format::RGBA16F, rt, "sfx-oit-wboit-accum"));
         SFX_TRY(make(&weight_, Format::RGBA16F, rt, "sfx-oit-wboit-weight"));
@@ -255,9 +253,8 @@ Status Transparency::ensureTargets() {
 uint64_t Transparency::maxPoolNodes() const {
     const DeviceLimits& l = device_.caps().limits;
     const uint64_t bytes = std::min(l.maxStorageBufferSize, l.maxBufferSize);
-    const uint64_t nodes = bytes > uint64_t(shared::SFX_OIT_POOL_HEADER_BYTES)
-                               ? (bytes - uint64_t(shared::SFX_OIT_POOL_HEADER_BYTES)) / kOitNodeBytes
-                               : 0;
+    const uint64_t nodes = bytes > uint64_t(shared::SFX_OIT_POOL_HEADER_BYTES) ? (bytes - uint64_t(shared::SFX_OIT_POOL_HEADER_BYTES)) / kOitNodeBytes
+                                                                               : 0;
     // Node indices are 32-bit, and the end-of-list index is reserved.
     return std::min<uint64_t>(nodes, 0xFFFFFFFEull);
 }
@@ -269,8 +266,8 @@ Status Transparency::ensurePool(uint64_t nodes) {
     pool_ = {};
     poolNodes_ = 0;
     poolUsed_ = false;
-    Result<BufferHandle> b =
-        device_.createBuffer({uint64_t(shared::SFX_OIT_POOL_HEADER_BYTES) + nodes * kOitNodeBytes, kBufferStorage, "sfx-oit-pool"});
+    Result<BufferHandle> b = device_.createBuffer(
+        {uint64_t(shared::SFX_OIT_POOL_HEADER_BYTES) + nodes * kOitNodeBytes, kBufferStorage, "sfx-oit-pool"});
     if (!b) return b.status();
     pool_ = b.value();
     poolNodes_ = nodes;
@@ -323,9 +320,9 @@ EffectPlan Transparency::plan(bool hasTransparentDraws) const {
         plan.passes.push_back({"oit", "resolve (sort, nearest " + k + " exact + tail, over opaque)", w, h});
         plan.resources.push_back(plannedTexture("oit", "list heads (one node index per pixel)", {w, h, 1, Format::R32UI, kTextureStorage}));
         const uint64_t nodes = poolNodes_ != 0 ? poolNodes_ : desc_.initialPoolNodes.value_or(uint64_t(kOitInitialNodesPerPixel) * w * h);
-        plan.resources.push_back({"oit", "node pool (" + std::to_string(nodes) + " nodes: last count x " +
-                                             std::to_string(kOitPoolHeadroom).substr(0, 3) + ")",
-                                  Format::Undefined, 0, 0, 1, uint64_t(shared::SFX_OIT_POOL_HEADER_BYTES) + nodes * kOitNodeBytes});
+        plan.resources.push_back(
+            {"oit", "node pool (" + std::to_string(nodes) + " nodes: last count x " + std::to_string(kOitPoolHeadroom).substr(0, 3) + ")",
+             Format::Undefined, 0, 0, 1, uint64_t(shared::SFX_OIT_POOL_HEADER_BYTES) + nodes * kOitNodeBytes});
         plan.resources.push_back({"oit", "resolve uniforms", Format::Undefined, 0, 0, 1, sizeof(shared::OitResolveParams)});
         planLayerAo(plan);
     } else {
@@ -336,8 +333,8 @@ EffectPlan Transparency::plan(bool hasTransparentDraws) const {
         planLayerAo(plan);
     }
     plan.resources.push_back(plannedTexture("oit", "output (composited colour)", {w, h, 1, desc_.colorFormat, rt}));
-    plan.resources.push_back({"oit", "draw uniforms (one block per draw)", Format::Undefined, 0, 0, 1,
-                              drawParams_.size() * sizeof(shared::OitDrawParams)});
+    plan.resources.push_back(
+        {"oit", "draw uniforms (one block per draw)", Format::Undefined, 0, 0, 1, drawParams_.size() * sizeof(shared::OitDrawParams)});
     return plan;
 }
 

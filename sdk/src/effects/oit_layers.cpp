@@ -22,8 +22,7 @@ std::string fmt(double v) {
 Status inRange(const char* field, double v, double lo, double hi, bool openLow = false) {
     const bool ok = std::isfinite(v) && (openLow ? v > lo : v >= lo) && v <= hi;
     if (ok) return Status::ok();
-    return invalidArgument(std::string("TransparencyDesc.ao.config.") + field, fmt(v),
-                           (openLow ? "(" : "[") + fmt(lo) + ", " + fmt(hi) + "]");
+    return invalidArgument(std::string("TransparencyDesc.ao.config.") + field, fmt(v), (openLow ? "(" : "[") + fmt(lo) + ", " + fmt(hi) + "]");
 }
 
 }  // namespace
@@ -58,8 +57,8 @@ Status checkLayerSettings(const TransparencyDesc& desc) {
 Status Transparency::ensureLayerTargets() {
     const uint64_t pixels = uint64_t(desc_.width) * desc_.height;
     if (desc_.compressedNodes > 0 && compressed_.isNull()) {
-        Result<BufferHandle> b =
-            device_.createBuffer({pixels * uint64_t(shared::SFX_OIT_COMPRESSED_WORDS) * 4u, kBufferStorage, "sfx-oit-compressed"});
+        Result<BufferHandle> b = device_.createBuffer(
+            {pixels * uint64_t(shared::SFX_OIT_COMPRESSED_WORDS) * 4u, kBufferStorage, "sfx-oit-compressed"});
         if (!b) return b.status();
         compressed_ = b.value();
     }
@@ -166,9 +165,10 @@ void Transparency::planLayerAo(EffectPlan& plan) const {
     }
     if (desc_.ao.enabled) {
         const bool compressed = desc_.ao.occluders == TransparencyAoOccluders::Compressed;
-        plan.passes.push_back({"oit", std::string("AO through layers (") + toString(desc_.ao.config.technique) + ", " +
-                                          (compressed ? "taps read the compressed nodes" : "brute force: taps walk the lists") +
-                                          "; blended by opacity, separate from colour)",
+        plan.passes.push_back({"oit",
+                               std::string("AO through layers (") + toString(desc_.ao.config.technique) + ", " +
+                                   (compressed ? "taps read the compressed nodes" : "brute force: taps walk the lists") +
+                                   "; blended by opacity, separate from colour)",
                                w, h});
         plan.resources.push_back(plannedTexture("oit", "AO through layers (r blended, g opaque surface)",
                                                 {w, h, 1, Format::RG16F, kTextureSampled | kTextureRenderTarget}));
@@ -176,13 +176,14 @@ void Transparency::planLayerAo(EffectPlan& plan) const {
         if (desc_.ao.filterRadius > 0) {
             const std::string r = std::to_string(desc_.ao.filterRadius);
             for (const char* dir : {"horizontal", "vertical"})
-                plan.passes.push_back({"oit", std::string("AO bilateral filter, ") + dir + " (" + r +
-                                                  " taps each side; keys: front depth for blended, opaque depth for opaque)",
+                plan.passes.push_back({"oit",
+                                       std::string("AO bilateral filter, ") + dir + " (" + r +
+                                           " taps each side; keys: front depth for blended, opaque depth for opaque)",
                                        w, h});
             plan.resources.push_back(plannedTexture("oit", "raw AO through layers + filter keys (front depth, opaque depth)",
                                                     {w, h, 1, Format::RGBA32F, kTextureSampled | kTextureRenderTarget}));
-            plan.resources.push_back(plannedTexture("oit", "AO after the horizontal filter pass",
-                                                    {w, h, 1, Format::RG16F, kTextureSampled | kTextureRenderTarget}));
+            plan.resources.push_back(
+                plannedTexture("oit", "AO after the horizontal filter pass", {w, h, 1, Format::RG16F, kTextureSampled | kTextureRenderTarget}));
         }
     }
 }

@@ -98,8 +98,7 @@ Status Transparency::renderAbuffer(const TransparencyInputs& in) {
     const bool layers = desc_.compressedNodes > 0 || desc_.ao.enabled;
     DepthReconstruction rec;
     if (layers) {
-        Result<DepthReconstruction> r =
-            makeDepthReconstruction({glm::dmat4(in.projection), device_.caps().clipDepth}, desc_.width, desc_.height);
+        Result<DepthReconstruction> r = makeDepthReconstruction({glm::dmat4(in.projection), device_.caps().clipDepth}, desc_.width, desc_.height);
         if (!r)
             return invalidArgument("TransparencyInputs.projection", "not a perspective projection (" + r.status().message() + ")",
                                    "a finite perspective projection looking down -z (needed by compression and AO)");
@@ -171,9 +170,8 @@ Status Transparency::renderWeighted(const TransparencyInputs& in) {
     resolve.debugName = "oit weighted blended resolve";
     DrawDesc r;
     r.pipeline = weightedResolvePipeline_;
-    r.bindings.textures = {{gen::oit_wboit_resolve::uOpaque, in.opaqueColor},
-                           {gen::oit_wboit_resolve::uAccum, accum_},
-                           {gen::oit_wboit_resolve::uWeight, weight_}};
+    r.bindings.textures = {
+        {gen::oit_wboit_resolve::uOpaque, in.opaqueColor}, {gen::oit_wboit_resolve::uAccum, accum_}, {gen::oit_wboit_resolve::uWeight, weight_}};
     return timed(1, [&] { return device_.renderPass(resolve, {&r, 1}); });
 }
 

@@ -34,8 +34,8 @@ std::string EffectPlan::describe() const {
         s += line;
     }
     for (const auto& r : resources) {
-        std::snprintf(line, sizeof line, "  resource %-12s %-24s %5ux%-5u %-8s %u mip(s) %10llu bytes\n", r.effect.c_str(),
-                      r.name.c_str(), r.width, r.height, toString(r.format), r.mipLevels, (unsigned long long)r.bytes);
+        std::snprintf(line, sizeof line, "  resource %-12s %-24s %5ux%-5u %-8s %u mip(s) %10llu bytes\n", r.effect.c_str(), r.name.c_str(), r.width,
+                      r.height, toString(r.format), r.mipLevels, (unsigned long long)r.bytes);
         s += line;
     }
     std::set<std::string> effects;

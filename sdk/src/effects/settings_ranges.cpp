@@ -29,8 +29,10 @@ const SettingRange kRows[] = {
     {S::AoEpsilon, "AoSettings.epsilon", double(1e-8f), 1, kClosed, kClosed, "radius^2", "guards divisions"},
     {S::AoSamples, "AoSettings.samples", 1, shared::SFX_AO_MAX_SAMPLES, kClosed, kClosed, "taps",
      "taps per pixel (Alchemy, Scalable; even on a mirrored tier); Crease takes 12 or 24"},
-    {S::AoBlurRadius, "AoSettings.blurRadius", 1, shared::SFX_AO_MAX_BLUR_RADIUS, kClosed, kClosed, "px", "bilateral blur half-width in output pixels"},
-    {S::AoCreaseRange, "AoSettings.crease.range", kAoMinRadius, 1000, kClosed, kClosed, "world units", "Crease: distance at which a tap's influence reaches 0"},
+    {S::AoBlurRadius, "AoSettings.blurRadius", 1, shared::SFX_AO_MAX_BLUR_RADIUS, kClosed, kClosed, "px",
+     "bilateral blur half-width in output pixels"},
+    {S::AoCreaseRange, "AoSettings.crease.range", kAoMinRadius, 1000, kClosed, kClosed, "world units",
+     "Crease: distance at which a tap's influence reaches 0"},
     {S::AoCreaseBias, "AoSettings.crease.bias", 0, 100, kOpen, kClosed, "", "Crease: scales (cos - minimumCrease) before saturating"},
     {S::AoCreaseAverager, "AoSettings.crease.averager", 0, 1000, kOpen, kClosed, "", "Crease: divisor of the tap sum"},
     {S::AoCreaseMinimumCrease, "AoSettings.crease.minimumCrease", -1, 1, kClosed, kOpen, "", "Crease: cosine below which a tap adds nothing"},
@@ -81,8 +83,10 @@ std::string formatSettingNumber(double v) {
     char buf[64];
     const double a = std::fabs(v);
     // Float precision: bounds such as double(1e-8f) print as the value written.
-    if (a != 0 && std::isfinite(v) && (a < 1e-3 || a >= 1e5)) std::snprintf(buf, sizeof buf, "%.5e", v);
-    else std::snprintf(buf, sizeof buf, "%.6g", v);
+    if (a != 0 && std::isfinite(v) && (a < 1e-3 || a >= 1e5))
+        std::snprintf(buf, sizeof buf, "%.5e", v);
+    else
+        std::snprintf(buf, sizeof buf, "%.6g", v);
     return trimExponent(buf);
 }
 

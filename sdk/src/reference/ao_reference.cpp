@@ -27,9 +27,7 @@ AoTap tapAt(uint32_t x, uint32_t y, float rho, sh::vec2 d, uint32_t w, uint32_t 
 struct PixelMap {
     bool half = false;
     int fullWidth = 0, fullHeight = 0;
-    sh::ivec2 source(int x, int y) const {
-        return half ? sh::aoFullResPixel(sh::ivec2{x, y}, sh::ivec2{fullWidth, fullHeight}) : sh::ivec2{x, y};
-    }
+    sh::ivec2 source(int x, int y) const { return half ? sh::aoFullResPixel(sh::ivec2{x, y}, sh::ivec2{fullWidth, fullHeight}) : sh::ivec2{x, y}; }
 };
 
 dvec3 positionAt(const DepthReconstruction& rec, const PixelMap& map, int x, int y, double z) {
@@ -43,8 +41,7 @@ dvec3 positionAt(const DepthReconstruction& rec, int x, int y, double z) { retur
 
 double aoFinishVisibility(double occlusion, double contrast) { return std::pow(std::max(0.0, 1.0 - occlusion), contrast); }
 
-std::vector<AoTap> aoTaps(const AoConfig& c, const DepthReconstruction& rec, uint32_t w, uint32_t h, uint32_t x, uint32_t y,
-                          double z) {
+std::vector<AoTap> aoTaps(const AoConfig& c, const DepthReconstruction& rec, uint32_t w, uint32_t h, uint32_t x, uint32_t y, double z) {
     std::vector<AoTap> taps;
     const int rotation = sh::aoRotationIndex(int(x), int(y));
     // The float values the shader receives: AoParams' radius and pixels per unit, the depth texel.
@@ -112,9 +109,7 @@ double aoOcclusionFromSum(const AoConfig& c, double sum, double z) {
     return 0.0;
 }
 
-glm::dvec3 viewPosition(const AoInput& in, uint32_t x, uint32_t y) {
-    return positionAt(in.reconstruction, int(x), int(y), in.linearDepth.at(x, y));
-}
+glm::dvec3 viewPosition(const AoInput& in, uint32_t x, uint32_t y) { return positionAt(in.reconstruction, int(x), int(y), in.linearDepth.at(x, y)); }
 
 namespace {
 
@@ -207,8 +202,9 @@ Grid blurOfPass(const Grid& raw, const Grid& d, double maxDepth, const AoConfig&
     Grid moderate = bilateralBlurPass(bilateralBlurPass(raw, d, maxDepth, rm, 1, 0), d, maxDepth, rm, 0, 1);
     Grid out(raw.width, raw.height, 1.0);
     for (size_t i = 0; i < out.values.size(); ++i) {
-        const double occ = 0.5 * (double(shared::SFX_AO_CREASE_WIDE_GAIN) * (1.0 - wide.values[i]) +
-                                  double(shared::SFX_AO_CREASE_MODERATE_GAIN) * (1.0 - moderate.values[i]));
+        const double occ = 0.5 *
+            (double(shared::SFX_AO_CREASE_WIDE_GAIN) * (1.0 - wide.values[i]) +
+             double(shared::SFX_AO_CREASE_MODERATE_GAIN) * (1.0 - moderate.values[i]));
         out.values[i] = saturate(1.0 - occ);
     }
     return out;

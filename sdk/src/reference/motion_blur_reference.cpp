@@ -49,8 +49,8 @@ double roundToHalf(double value) {
     return std::fabs(out) > 65504.0 ? std::copysign(INFINITY, value) : out;
 }
 
-MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearDepth, const VelocityGrid& velocityPx,
-                                     const MotionBlurParams& p, double maxDepth) {
+MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearDepth, const VelocityGrid& velocityPx, const MotionBlurParams& p,
+                                     double maxDepth) {
     const uint32_t w = color.width, h = color.height;
     const double k = double(p.radiusPx);
     MotionBlurReferenceResult r;
@@ -216,8 +216,7 @@ std::vector<bool> movingSilhouetteMask(const SceneFrame& frame, const MotionScen
             const int a = frame.layer[size_t(y) * w + x];
             const int right = x + 1 < w ? frame.layer[size_t(y) * w + x + 1] : a;
             const int down = y + 1 < h ? frame.layer[size_t(y + 1) * w + x] : a;
-            if ((a != right && (moving(a) || moving(right))) || (a != down && (moving(a) || moving(down))))
-                edge[size_t(y) * w + x] = true;
+            if ((a != right && (moving(a) || moving(right))) || (a != down && (moving(a) || moving(down)))) edge[size_t(y) * w + x] = true;
         }
     const int r = int(radius);
     for (int y = 0; y < int(h); ++y)

@@ -31,8 +31,7 @@ struct Occluder {
 
 // getAO of Algorithm 1 for the technique (Alchemy or Scalable), from the shared header.
 double occlusionOf(const AoConfig& c, double vv, double vn, double z, double exteriorWeight, double occluderAlpha) {
-    if (c.technique == AoTechnique::Alchemy)
-        return sh::oitAlchemyOcclusion(vv, vn, z, c.radius, c.bias, c.epsilon, exteriorWeight, occluderAlpha);
+    if (c.technique == AoTechnique::Alchemy) return sh::oitAlchemyOcclusion(vv, vn, z, c.radius, c.bias, c.epsilon, exteriorWeight, occluderAlpha);
     return sh::oitScalableOcclusion(vv, vn, c.radius, c.bias, c.epsilon, exteriorWeight, occluderAlpha);
 }
 
@@ -51,9 +50,7 @@ std::vector<OitFragment> sortedFragments(const std::vector<OitFragment>& fragmen
     return out;
 }
 
-glm::dvec3 compositeExact(const std::vector<OitFragment>& fragments, const OpaqueSurface& opaque) {
-    return compositeKept(fragments, opaque, 0);
-}
+glm::dvec3 compositeExact(const std::vector<OitFragment>& fragments, const OpaqueSurface& opaque) { return compositeKept(fragments, opaque, 0); }
 
 glm::dvec3 compositeKept(const std::vector<OitFragment>& fragments, const OpaqueSurface& opaque, uint32_t maxLayers) {
     const std::vector<OitFragment> sorted = sortedFragments(fragments, opaque.depth);
@@ -73,8 +70,8 @@ std::vector<glm::dvec3> compositeImage(const FragmentImage& image, uint32_t maxL
     return out;
 }
 
-std::vector<CompressedNode> compressList(const std::vector<OitFragment>& fragments, const OpaqueSurface& opaque,
-                                         double maxDepth, const CompressionConfig& config) {
+std::vector<CompressedNode> compressList(const std::vector<OitFragment>& fragments, const OpaqueSurface& opaque, double maxDepth,
+                                         const CompressionConfig& config) {
     const int m = std::clamp(int(config.nodes), 1, int(sh::SFX_OIT_MAX_COMPRESSED_NODES));
     double depth[kCompressedArray], opacity[kCompressedArray];
     std::fill(depth, depth + kCompressedArray, 1.0);
@@ -96,8 +93,7 @@ std::vector<CompressedNode> quantizeCompressed(const std::vector<CompressedNode>
     const glm::uvec4 texel(sh::oitPackCompressedDepths(n[0].depth, n[1].depth), sh::oitPackCompressedDepths(n[2].depth, n[3].depth),
                            sh::oitPackCompressedOpacities(n[0].opacity, n[1].opacity, n[2].opacity, n[3].opacity), 0u);
     std::vector<CompressedNode> out(size_t(sh::SFX_OIT_COMPRESSED_NODES));
-    for (int i = 0; i < sh::SFX_OIT_COMPRESSED_NODES; ++i)
-        out[size_t(i)] = {sh::oitCompressedDepth(texel, i), sh::oitCompressedOpacity(texel, i)};
+    for (int i = 0; i < sh::SFX_OIT_COMPRESSED_NODES; ++i) out[size_t(i)] = {sh::oitCompressedDepth(texel, i), sh::oitCompressedOpacity(texel, i)};
     return out;
 }
 

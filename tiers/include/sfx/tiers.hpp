@@ -21,7 +21,6 @@ struct Requirement {
     bool (*met)(const DeviceCaps&);
 };
 
-
 struct TierRow {
     Tier tier = Tier::Current;
     std::string summary;                    // one line: what class of device it is for

@@ -53,7 +53,6 @@ AoScore summarise(const std::vector<truth::Comparison>& errors) {
     return s;
 }
 
-
 Status AoEvaluator::prepare(const std::vector<TradeView>& views) {
     Result<tiers::TierChoice> choice = tiers::choose(dev_.caps(), tier_);
     if (!choice) return choice.status();

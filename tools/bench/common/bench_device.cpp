@@ -22,21 +22,19 @@ Status forEachDevice(const std::vector<std::string>& backends, const std::vector
     for (const std::string& backend : backends)
         for (Tier tier : tierList) {
             BackendConfig config;
-            if (!parseBackendConfig(backend, &config)) return invalidArgument("--backends", "'" + backend + "'", "vulkan, gles, gl, gl-egl, gl-osmesa");
+            if (!parseBackendConfig(backend, &config))
+                return invalidArgument("--backends", "'" + backend + "'", "vulkan, gles, gl, gl-egl, gl-osmesa");
             Result<std::unique_ptr<Device>> dev = openForTier(config, tier);
             if (!dev) {
                 std::cout << program << ": skipping " << backend << "/" << toString(tier) << ": " << dev.status().toString() << std::endl;
                 continue;
             }
-            if (Status st = run(*dev.value(), backend, tier); !st)
-                return Status{st.code(), backend + "/" + toString(tier) + ": " + st.message()};
+            if (Status st = run(*dev.value(), backend, tier); !st) return Status{st.code(), backend + "/" + toString(tier) + ": " + st.message()};
         }
     return Status::ok();
 }
 
-Format aoOutputFormat(const Device& device) {
-    return device.caps().renderableFormat[size_t(Format::R32F)] ? Format::R32F : Format::RGBA8;
-}
+Format aoOutputFormat(const Device& device) { return device.caps().renderableFormat[size_t(Format::R32F)] ? Format::R32F : Format::RGBA8; }
 
 Result<reference::Grid> readVisibility(Device& dev, TextureHandle texture, Format format, uint32_t w, uint32_t h) {
     const size_t n = size_t(w) * h;

@@ -107,5 +107,4 @@ Result<std::unique_ptr<CopyPass>> makeCopyPass(Device& dev, Tier tier, uint32_t 
     return copy;
 }
 
-
 }  // namespace sfx::tools

@@ -12,8 +12,10 @@ Status replaceMarkdownSection(const std::string& path, const std::string& name, 
     std::string text;
     if (std::ifstream in(path); in) text.assign(std::istreambuf_iterator<char>(in), {});
     const size_t b = text.find(begin), e = text.find(end);
-    if (b == std::string::npos || e == std::string::npos || e < b) text += "\n" + begin + table + end + "\n";
-    else text = text.substr(0, b + begin.size()) + table + text.substr(e);
+    if (b == std::string::npos || e == std::string::npos || e < b)
+        text += "\n" + begin + table + end + "\n";
+    else
+        text = text.substr(0, b + begin.size()) + table + text.substr(e);
     std::ofstream out(path);
     out << text;
     return out ? Status::ok() : Status{StatusCode::FileError, path + ": cannot write"};

@@ -22,10 +22,14 @@ std::string num(double v) {
 std::string escape(const std::string& text) {
     std::string out;
     for (char c : text) {
-        if (c == '<') out += "&lt;";
-        else if (c == '>') out += "&gt;";
-        else if (c == '&') out += "&amp;";
-        else out += c;
+        if (c == '<')
+            out += "&lt;";
+        else if (c == '>')
+            out += "&gt;";
+        else if (c == '&')
+            out += "&amp;";
+        else
+            out += c;
     }
     return out;
 }
@@ -43,9 +47,8 @@ double tickStep(double span, int count) {
 std::vector<size_t> paretoFront(const std::vector<PlotPoint>& points) {
     std::vector<size_t> order(points.size());
     for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-        return points[a].x != points[b].x ? points[a].x < points[b].x : points[a].y > points[b].y;
-    });
+    std::sort(order.begin(), order.end(),
+              [&](size_t a, size_t b) { return points[a].x != points[b].x ? points[a].x < points[b].x : points[a].y > points[b].y; });
     std::vector<size_t> front;
     double bestY = -INFINITY;
     for (size_t i : order)
@@ -82,11 +85,11 @@ std::string renderSvg(const Plot& plot) {
     svg << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << pw << "\" height=\"" << ph << "\" fill=\"none\" stroke=\"#444\"/>\n";
     const double xs = tickStep(x1 - x0, 8), ys = tickStep(y1 - y0, 6);
     for (double x = std::ceil(x0 / xs) * xs; x <= x1; x += xs)
-        svg << "<line x1=\"" << num(sx(x)) << "\" y1=\"" << kTop << "\" x2=\"" << num(sx(x)) << "\" y2=\"" << kTop + ph << "\" stroke=\"#ddd\"/><text x=\""
-            << num(sx(x)) << "\" y=\"" << kTop + ph + 15 << "\" text-anchor=\"middle\">" << x << "</text>\n";
+        svg << "<line x1=\"" << num(sx(x)) << "\" y1=\"" << kTop << "\" x2=\"" << num(sx(x)) << "\" y2=\"" << kTop + ph
+            << "\" stroke=\"#ddd\"/><text x=\"" << num(sx(x)) << "\" y=\"" << kTop + ph + 15 << "\" text-anchor=\"middle\">" << x << "</text>\n";
     for (double y = std::ceil(y0 / ys) * ys; y <= y1; y += ys)
-        svg << "<line x1=\"" << kLeft << "\" y1=\"" << num(sy(y)) << "\" x2=\"" << kLeft + pw << "\" y2=\"" << num(sy(y)) << "\" stroke=\"#ddd\"/><text x=\""
-            << kLeft - 6 << "\" y=\"" << num(sy(y) + 4) << "\" text-anchor=\"end\">" << y << "</text>\n";
+        svg << "<line x1=\"" << kLeft << "\" y1=\"" << num(sy(y)) << "\" x2=\"" << kLeft + pw << "\" y2=\"" << num(sy(y))
+            << "\" stroke=\"#ddd\"/><text x=\"" << kLeft - 6 << "\" y=\"" << num(sy(y) + 4) << "\" text-anchor=\"end\">" << y << "</text>\n";
     svg << "<text x=\"" << kLeft + pw / 2 << "\" y=\"" << kHeight - 18 << "\" text-anchor=\"middle\">" << escape(plot.xLabel) << "</text>\n";
     svg << "<text transform=\"translate(18," << kTop + ph / 2 << ") rotate(-90)\" text-anchor=\"middle\">" << escape(plot.yLabel) << "</text>\n";
     const std::vector<size_t> front = paretoFront(plot.points);
@@ -103,12 +106,13 @@ std::string renderSvg(const Plot& plot) {
             << num(sx(p.x) + 6) << "\" y=\"" << num(sy(p.y) - 5) << "\" font-size=\"9\" fill=\"#333\">" << escape(p.label) << "</text>\n";
     // A hollow diamond of half-diagonal 6 at (cx, cy).
     auto diamond = [&](double cx, double cy) {
-        svg << "<polygon points=\"" << num(cx) << "," << num(cy - 6) << " " << num(cx + 6) << "," << num(cy) << " " << num(cx) << "," << num(cy + 6) << " "
-            << num(cx - 6) << "," << num(cy) << "\" fill=\"none\" stroke=\"#000\" stroke-width=\"1.5\"/>";
+        svg << "<polygon points=\"" << num(cx) << "," << num(cy - 6) << " " << num(cx + 6) << "," << num(cy) << " " << num(cx) << "," << num(cy + 6)
+            << " " << num(cx - 6) << "," << num(cy) << "\" fill=\"none\" stroke=\"#000\" stroke-width=\"1.5\"/>";
     };
     for (const PlotPoint& p : plot.anchors) {
         diamond(sx(p.x), sy(p.y));
-        svg << "<text x=\"" << num(sx(p.x) + 8) << "\" y=\"" << num(sy(p.y) + 12) << "\" font-size=\"9\" fill=\"#000\">" << escape(p.label) << "</text>\n";
+        svg << "<text x=\"" << num(sx(p.x) + 8) << "\" y=\"" << num(sy(p.y) + 12) << "\" font-size=\"9\" fill=\"#000\">" << escape(p.label)
+            << "</text>\n";
     }
     double ly = kTop + 10;
     for (const auto& [series, colour] : colours) {

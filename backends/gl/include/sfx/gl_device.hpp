@@ -28,8 +28,7 @@ using GetProcAddressFn = void* (*)(const char* name);
 // the last pass's. The host re-establishes its own state after calling the SDK. The SDK does
 // not install a debug callback on a host context (the host's stays), and GL errors pending from
 // the host's own calls are cleared, not reported as the SDK call's failure.
-Result<std::unique_ptr<Device>> wrapCurrentContext(GetProcAddressFn getProcAddress, Api api,
-                                                   const DeviceOptions& options);
+Result<std::unique_ptr<Device>> wrapCurrentContext(GetProcAddressFn getProcAddress, Api api, const DeviceOptions& options);
 
 // ---- Host textures in, SDK textures out (docs/integration.md, "Host images and the state contract")
 
@@ -37,16 +36,16 @@ Result<std::unique_ptr<Device>> wrapCurrentContext(GetProcAddressFn getProcAddre
 // an effect's output. It must be a complete GL_TEXTURE_2D of the device's context (or one
 // sharing with it), with immutable storage (glTexStorage2D) of `mipLevels` levels or more.
 struct ExternalTexture {
-    uint32_t name = 0;          // the GL texture name
-    uint32_t target = 0x0DE1;   // GL_TEXTURE_2D, the only target the SDK binds
+    uint32_t name = 0;         // the GL texture name
+    uint32_t target = 0x0DE1;  // GL_TEXTURE_2D, the only target the SDK binds
     // Its format: either as sfx::Format or as the sized internal format it was made with (the
     // GL formats of the Formats: GL_R8, GL_RGBA8, GL_R16F, GL_RG16F, GL_RGBA16F, GL_R32F,
     // GL_RG32F, GL_RGBA32F, GL_R32UI, GL_DEPTH_COMPONENT16, GL_DEPTH24_STENCIL8,
     // GL_DEPTH_COMPONENT32F); when both are set they must name the same format.
     Format format = Format::Undefined;
     uint32_t internalFormat = 0;
-    uint32_t width = 0, height = 0;  // of level 0
-    uint32_t mipLevels = 1;          // the SDK uses levels [0, mipLevels)
+    uint32_t width = 0, height = 0;    // of level 0
+    uint32_t mipLevels = 1;            // the SDK uses levels [0, mipLevels)
     uint32_t usage = kTextureSampled;  // TextureUsage bits: what the SDK may do with it
     const char* debugName = "";
 };
@@ -60,7 +59,7 @@ Result<TextureHandle> importTexture(Device& device, const ExternalTexture& textu
 // The GL objects of a texture, imported or the SDK's own.
 struct NativeTexture {
     uint32_t name = 0;
-    uint32_t target = 0x0DE1;   // GL_TEXTURE_2D
+    uint32_t target = 0x0DE1;  // GL_TEXTURE_2D
     uint32_t internalFormat = 0;
 };
 Result<NativeTexture> nativeTexture(Device& device, TextureHandle texture);

@@ -77,9 +77,9 @@ struct ExternalImage {
     VkFormat vkFormat = VK_FORMAT_UNDEFINED;
     uint32_t width = 0, height = 0;  // of the host's mip baseMip
     uint32_t baseMip = 0;
-    uint32_t mipLevels = 1;          // the SDK sees [baseMip, baseMip + mipLevels)
-    uint32_t layer = 0;              // a 2D image or one layer of an array (must be < the image's layers)
-    VkImageUsageFlags vkUsage = 0;   // what the image was created with
+    uint32_t mipLevels = 1;         // the SDK sees [baseMip, baseMip + mipLevels)
+    uint32_t layer = 0;             // a 2D image or one layer of an array (must be < the image's layers)
+    VkImageUsageFlags vkUsage = 0;  // what the image was created with
     // What the SDK may do with it (TextureUsage bits), each needing its Vulkan usage:
     // kTextureSampled SAMPLED, kTextureStorage STORAGE, kTextureRenderTarget COLOR_ATTACHMENT
     // or DEPTH_STENCIL_ATTACHMENT. readTexture / writeTexture need TRANSFER_SRC / TRANSFER_DST.

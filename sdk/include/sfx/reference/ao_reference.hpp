@@ -36,8 +36,8 @@ struct AoTap {
 };
 // The taps of config's pattern (Alchemy disk, Scalable spiral, Crease diamond) around pixel
 // (x, y) of a w x h image whose centre is at linear depth z, in the shaders' order.
-std::vector<AoTap> aoTaps(const AoConfig& config, const DepthReconstruction& reconstruction, uint32_t w, uint32_t h,
-                          uint32_t x, uint32_t y, double z);
+std::vector<AoTap> aoTaps(const AoConfig& config, const DepthReconstruction& reconstruction, uint32_t w, uint32_t h, uint32_t x, uint32_t y,
+                          double z);
 // The technique's per-tap term (sfx_shared_ao.h) for v = tap - centre: vv = dot(v, v), vn = dot(v, n).
 double aoTapTerm(const AoConfig& config, double vv, double vn, double z);
 // The summed per-tap terms of one pixel as occlusion (the technique's normalisation), and the

@@ -37,14 +37,14 @@ struct VelocityGrid {
 double roundToHalf(double value);
 
 struct MotionBlurReferenceResult {
-    ColorGrid color;             // the reconstruction
-    VelocityGrid radiusPx;       // pass 1: the blur radius per pixel after exposure and clamp (decoded)
-    VelocityGrid tileMax;        // pass 2, decoded pixels, one per tile
-    VelocityGrid neighborMax;    // pass 3, decoded pixels
+    ColorGrid color;           // the reconstruction
+    VelocityGrid radiusPx;     // pass 1: the blur radius per pixel after exposure and clamp (decoded)
+    VelocityGrid tileMax;      // pass 2, decoded pixels, one per tile
+    VelocityGrid neighborMax;  // pass 3, decoded pixels
     // What the reconstruction did, for property tests.
-    double maxSampleOffsetPx = 0;   // longest centre -> sample distance read
-    uint64_t samplesOutside = 0;    // sample positions that needed clamping into the image
-    uint64_t stillPixels = 0;       // pixels returned unchanged by the velocity branch
+    double maxSampleOffsetPx = 0;  // longest centre -> sample distance read
+    uint64_t samplesOutside = 0;   // sample positions that needed clamping into the image
+    uint64_t stillPixels = 0;      // pixels returned unchanged by the velocity branch
 };
 
 // SFX_SKY_DEPTH of sfx_shared.h (the .cpp asserts they are equal): an infinite projection's maxDepth.
@@ -54,8 +54,8 @@ inline constexpr double kSkyDepth = 1.0e8;
 // (maxDepth: the far plane of the depth's reconstruction, or SFX_SKY_DEPTH); velocityPx: the
 // host's velocity, pixels across the shutter interval. Sizes must match (asserted by the caller).
 // Hostile values follow the rules of sfx_shared.h / sfx_shared_mb.h, as on the GPU.
-MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearDepth, const VelocityGrid& velocityPx,
-                                     const MotionBlurParams& params, double maxDepth = kSkyDepth);
+MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearDepth, const VelocityGrid& velocityPx, const MotionBlurParams& params,
+                                     double maxDepth = kSkyDepth);
 
 // Camera-only velocity (pixels across the shutter, current minus previous position) for
 // linear depth under `projection`, as mb_pack.frag computes it.

@@ -26,11 +26,11 @@ namespace sfx::reference {
 
 // One rasterised translucent fragment.
 struct OitFragment {
-    glm::dvec3 color{0.0};            // straight (not premultiplied) linear RGB
-    double alpha = 1.0;               // coverage in [0, 1]
-    double depth = 1.0;               // positive linear view depth
-    glm::dvec3 normal{0.0, 0.0, 1.0}; // the triangle's authored view-space unit normal (not flipped)
-    bool frontFacing = true;          // the authored normal faces the camera: dot(normal, position) < 0
+    glm::dvec3 color{0.0};                    // straight (not premultiplied) linear RGB
+    double alpha = 1.0;                       // coverage in [0, 1]
+    double depth = 1.0;                       // positive linear view depth
+    glm::dvec3 normal{0.0, 0.0, 1.0};         // the triangle's authored view-space unit normal (not flipped)
+    bool frontFacing = true;                  // the authored normal faces the camera: dot(normal, position) < 0
     uint32_t drawIndex = 0, primitiveId = 0;  // orders fragments at equal depth
 };
 
@@ -72,14 +72,14 @@ struct CompressedNode {
     double opacity = 0.0;
 };
 struct CompressionConfig {
-    uint32_t nodes = 4;         // M in [1, SFX_OIT_MAX_COMPRESSED_NODES]
-    bool backHalfOnly = true;   // drop only from the back half: the front half is always kept
+    uint32_t nodes = 4;        // M in [1, SFX_OIT_MAX_COMPRESSED_NODES]
+    bool backHalfOnly = true;  // drop only from the back half: the front half is always kept
     double zNear = 0.1, zFar = 100.0;
 };
 // The pixel's sorted fragments, then its opaque surface (opacity 1, unless sky), inserted into
 // M nodes; nodes beyond the count stay empty (depth 1, opacity 0). Exact, not quantised.
-std::vector<CompressedNode> compressList(const std::vector<OitFragment>& fragments, const OpaqueSurface& opaque,
-                                         double maxDepth, const CompressionConfig& config);
+std::vector<CompressedNode> compressList(const std::vector<OitFragment>& fragments, const OpaqueSurface& opaque, double maxDepth,
+                                         const CompressionConfig& config);
 // The same nodes after the 24-byte texel's quantisation (16-bit depth, 8-bit opacity), as the
 // AO pass reads them; M = 4 only, as the texel layout holds 4.
 std::vector<CompressedNode> quantizeCompressed(const std::vector<CompressedNode>& nodes);

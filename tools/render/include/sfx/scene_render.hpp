@@ -30,13 +30,13 @@ inline constexpr double kAmbient = 0.5;
 inline constexpr double kDirect = 0.6;
 
 struct RenderOptions {
-    uint32_t width = 0, height = 0;  // 0: the scene's; else [1, scene::kMaxSceneSize]
+    uint32_t width = 0, height = 0;                         // 0: the scene's; else [1, scene::kMaxSceneSize]
     std::optional<AoTechnique> ao = AoTechnique::Scalable;  // nullopt: AO off
-    float aoRadius = 0.5f;           // AoSettings.radius
-    uint32_t aoLayers = 1;           // opaque depth layers AO tests; 1 = single-layer AO
-    bool oit = true;                 // false: transparent objects are not drawn (--oit off)
-    uint32_t maxLayers = 16;         // K: fragments kept exact per pixel by the A-buffer resolve: 16 or 32
-    uint32_t nodes = 4;              // M: nodes of a compressed list
+    float aoRadius = 0.5f;                                  // AoSettings.radius
+    uint32_t aoLayers = 1;                                  // opaque depth layers AO tests; 1 = single-layer AO
+    bool oit = true;                                        // false: transparent objects are not drawn (--oit off)
+    uint32_t maxLayers = 16;                                // K: fragments kept exact per pixel by the A-buffer resolve: 16 or 32
+    uint32_t nodes = 4;                                     // M: nodes of a compressed list
     // The order the translucent objects are drawn in: a permutation of 0..N-1 over the scene's
     // N translucent objects in file order; empty = file order. Each keeps its draw id (its index
     // in the file), so on the high tier the picture does not depend on it (the tests check).
@@ -74,15 +74,15 @@ struct RenderStats {
 };
 
 struct RenderResult {
-    io::Image color;               // linear RGB, row 0 = top
-    std::optional<io::Image> ao;   // visibility in [0, 1], 1 channel, when AO ran
+    io::Image color;              // linear RGB, row 0 = top
+    std::optional<io::Image> ao;  // visibility in [0, 1], 1 channel, when AO ran
     FramePlan plan;
     RenderStats stats;
     std::vector<std::string> warnings;  // printable: what was asked but not drawn
     // With RenderOptions::keepOpaqueInputs and a transparency step: its inputs, row 0 = top.
     struct OpaqueInputs {
-        io::Image color;                // linear RGB exactly as the effect read it (RGBA16F halves)
-        std::vector<float> storedDepth; // the D32F depth attachment the draws were tested against
+        io::Image color;                 // linear RGB exactly as the effect read it (RGBA16F halves)
+        std::vector<float> storedDepth;  // the D32F depth attachment the draws were tested against
         glm::dmat4 view{1.0}, projection{1.0};
         ClipDepthRange clipDepth = ClipDepthRange::ZeroToOne;
     };
@@ -92,8 +92,8 @@ struct RenderResult {
 class SceneRender {
 public:
     // Uploads the scene and creates exactly the passes the options need; errors name the option.
-    static Result<std::unique_ptr<SceneRender>> create(Device& device, const tiers::TierChoice& tier,
-                                                       const scene::Scene& scene, const RenderOptions& options);
+    static Result<std::unique_ptr<SceneRender>> create(Device& device, const tiers::TierChoice& tier, const scene::Scene& scene,
+                                                       const RenderOptions& options);
     ~SceneRender();
     SceneRender(const SceneRender&) = delete;
     SceneRender& operator=(const SceneRender&) = delete;

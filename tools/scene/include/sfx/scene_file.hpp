@@ -43,8 +43,8 @@ struct SceneCamera {
 };
 
 struct SceneObject {
-    std::string mesh;       // "quad", "box", "sphere", or the OBJ path as written in the file
-    size_t meshIndex = 0;   // into Scene::meshes (objects naming the same mesh share it)
+    std::string mesh;      // "quad", "box", "sphere", or the OBJ path as written in the file
+    size_t meshIndex = 0;  // into Scene::meshes (objects naming the same mesh share it)
     glm::dvec3 position{0.0};
     glm::dvec3 rotationDegrees{0.0};
     glm::dvec3 scale{1.0};

@@ -28,8 +28,7 @@ bool stageFromPath(const std::string& path, ShaderStage* out);
 
 // Compiles every stage to SPIR-V and every GL dialect and merges the stages' reflection.
 // ShaderError with "file:line: message" lines when the source does not compile or validate.
-Result<CompiledProgram> compileProgram(const std::string& name, const std::vector<StageSource>& stages,
-                                       const CompileOptions& options);
+Result<CompiledProgram> compileProgram(const std::string& name, const std::vector<StageSource>& stages, const CompileOptions& options);
 
 // One program of shader_src/programs.txt.
 struct ManifestEntry {
@@ -52,8 +51,7 @@ struct EmbeddingDesc {
 
 // C++ that embeds the programs (sfx::<cppNamespace>::find) and the header with binding
 // constants (sfx::gen::<program>::<resource>). Bindings must agree across a program's tiers.
-Result<std::pair<std::string, std::string>> generateEmbedding(const std::vector<CompiledProgram>& programs,
-                                                              const EmbeddingDesc& desc);
+Result<std::pair<std::string, std::string>> generateEmbedding(const std::vector<CompiledProgram>& programs, const EmbeddingDesc& desc);
 
 Result<std::string> readTextFile(const std::string& path);
 

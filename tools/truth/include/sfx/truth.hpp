@@ -33,10 +33,10 @@ struct Camera {
 };
 
 struct Settings {
-    double radius = 0.5;         // world units, > 0
-    uint32_t samples = 256;      // a square number >= 256: sqrt(samples)^2 cosine-weighted strata
-    uint32_t seed = 0;           // selects the per-pixel rotation and jitter (deterministic)
-    uint32_t threads = 0;        // 0 = all hardware threads; the result does not depend on it
+    double radius = 0.5;     // world units, > 0
+    uint32_t samples = 256;  // a square number >= 256: sqrt(samples)^2 cosine-weighted strata
+    uint32_t seed = 0;       // selects the per-pixel rotation and jitter (deterministic)
+    uint32_t threads = 0;    // 0 = all hardware threads; the result does not depend on it
 };
 
 // Rays start this far from the surface along its normal, times max(1, primary hit distance),
@@ -72,8 +72,7 @@ public:
     // Visibility at one surface point with its unit normal (already facing the viewer); pixelKey
     // picks the per-pixel rotation and jitter exactly as trace() does for pixel (x, y); the
     // origin offset is kOriginOffset * max(1, |point|) (the tests' points lie near the origin).
-    double visibilityAt(const glm::dvec3& point, const glm::dvec3& normal, const Settings& settings, uint32_t x = 0,
-                        uint32_t y = 0) const;
+    double visibilityAt(const glm::dvec3& point, const glm::dvec3& normal, const Settings& settings, uint32_t x = 0, uint32_t y = 0) const;
 
 private:
     struct Impl;

@@ -14,12 +14,12 @@ namespace sfx::truth {
 inline constexpr double kOccludedBelow = 0.95;
 
 struct Comparison {
-    double psnr = 0;              // dB, peak 1, over every pixel (sky included); +inf when exact
-    double psnrOccluded = 0;      // dB over surface pixels with truth < kOccludedBelow; +inf when exact or none
+    double psnr = 0;          // dB, peak 1, over every pixel (sky included); +inf when exact
+    double psnrOccluded = 0;  // dB over surface pixels with truth < kOccludedBelow; +inf when exact or none
     size_t occludedPixels = 0;
-    double meanSignedError = 0;   // mean of estimate - truth over the frame: > 0 too bright, < 0 too dark
+    double meanSignedError = 0;  // mean of estimate - truth over the frame: > 0 too bright, < 0 too dark
     double meanSignedErrorOccluded = 0;
-    double worstError = 0;        // largest |estimate - truth|
+    double worstError = 0;  // largest |estimate - truth|
     uint32_t worstX = 0, worstY = 0;
 };
 
