@@ -1,7 +1,8 @@
 // A project that uses an installed ScalableFX (find_package(ScalableFX CONFIG)) or the source
 // tree (add_subdirectory), as an engine would. The region between the sfx-readme markers is
 // README.md's "Using it from an engine" code character for character
-// (tests/check_readme_snippet.sh compares them); main() below runs it on a GL ES device and
+// (tests/check_readme_snippet.sh compares them; laid out by hand for the page, so clang-format
+// leaves it alone); main() below runs it on a GL ES device and
 // checks the AO it computes, so the README's code cannot rot.
 #include <algorithm>
 #include <cmath>
@@ -13,10 +14,11 @@
 #include "sfx/backends.hpp"
 #include "sfx/budget.hpp"
 
+// clang-format off
 // sfx-readme-begin
 #include "sfx/ao.hpp"
 #include "sfx/tiers.hpp"
-#include "sfx/vulkan_device.hpp"  // or sfx/gl_device.hpp: sfx::gl::wrapCurrentContext(...)
+#include "sfx/vulkan_device.hpp"   // or sfx/gl_device.hpp: sfx::gl::wrapCurrentContext(...)
 
 namespace engine {
 
@@ -41,34 +43,37 @@ sfx::Result<std::unique_ptr<sfx::Device>> wrapHostDevice(const HostVulkan& host)
     sfx::DeviceOptions options;
     options.validation = false;  // true while developing: Khronos layer / GL error checks
     options.log = [](sfx::LogSeverity, std::string_view message) { std::cerr << message << "\n"; };
-    return sfx::vulkan::wrapDevice({host.instance, host.physicalDevice, host.device, host.queue, host.queueFamily, host.getInstanceProcAddr},
-                                   options);
+    return sfx::vulkan::wrapDevice({host.instance, host.physicalDevice, host.device, host.queue,
+                                    host.queueFamily, host.getInstanceProcAddr}, options);
 }
 
 // Once per size and settings: the effect allocates what it needs here, not per frame.
-sfx::Result<std::unique_ptr<sfx::AmbientObscurance>> createAo(sfx::Device& device, uint32_t width, uint32_t height, sfx::DepthKind depthKind) {
-    auto tier = sfx::tiers::choose(device.caps());  // or force sfx::Tier::Current
-    if (!tier) return tier.status();                // names the unmet requirement
-    std::cout << tier->reason << "\n";              // why this tier
+sfx::Result<std::unique_ptr<sfx::AmbientObscurance>> createAo(sfx::Device& device, uint32_t width, uint32_t height,
+                                                              sfx::DepthKind depthKind) {
+    auto tier = sfx::tiers::choose(device.caps());                // or force sfx::Tier::Current
+    if (!tier) return tier.status();                              // names the unmet requirement
+    std::cout << tier->reason << "\n";                            // why this tier
 
-    sfx::AoSettings settings;           // ranges: docs/settings.md; bad
-    settings.radius = 0.5f;             // values are named errors, not clamps
-    settings.intensity = std::nullopt;  // unset: the tier's calibrated value
+    sfx::AoSettings settings;                                     // ranges: docs/settings.md; bad
+    settings.radius = 0.5f;                                       // values are named errors, not clamps
+    settings.intensity = std::nullopt;                            // unset: the tier's calibrated value
     auto ao = sfx::AmbientObscurance::create(device, {width, height, tier->profile, settings, depthKind});
-    if (ao) std::cout << ao.value()->plan().describe();  // passes and bytes it holds
+    if (ao) std::cout << ao.value()->plan().describe();           // passes and bytes it holds
     return ao;
 }
 
 // Every frame: record into your frame's command buffer (Vulkan), or the current context (GL).
-sfx::Status renderAo(sfx::Device& device, sfx::AmbientObscurance& ao, VkCommandBuffer frameCommandBuffer, const FrameTextures& frame,
-                     const glm::dmat4& projection) {
-    if (device.caps().backend == sfx::BackendKind::Vulkan) SFX_TRY(sfx::vulkan::setCommandBuffer(device, frameCommandBuffer));
+sfx::Status renderAo(sfx::Device& device, sfx::AmbientObscurance& ao, VkCommandBuffer frameCommandBuffer,
+                     const FrameTextures& frame, const glm::dmat4& projection) {
+    if (device.caps().backend == sfx::BackendKind::Vulkan)
+        SFX_TRY(sfx::vulkan::setCommandBuffer(device, frameCommandBuffer));
     sfx::CameraProjection camera{projection, sfx::ClipDepthRange::ZeroToOne};
     return ao.dispatch({{frame.depth, frame.depthKind, camera}, frame.normals, frame.ao});
 }
 
 }  // namespace engine
 // sfx-readme-end
+// clang-format on
 
 // ---- The consumer test: the code above on a GL ES device, on a tiny synthetic G-buffer ----
 
