@@ -24,6 +24,7 @@
 #include "bench_args.hpp"
 #include "bench_device.hpp"
 #include "copy_pass.hpp"
+#include "pass_profile.hpp"
 #include "scene.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/backends.hpp"
@@ -34,6 +35,7 @@
 
 using namespace sfx;
 using tools::median;
+using tools::PassCost;
 using tools::splitList;
 
 namespace {
@@ -90,34 +92,6 @@ bool parseOptions(int argc, char** argv, Options* o) {
 }
 
 bool contains(const std::vector<std::string>& list, const std::string& item) { return std::find(list.begin(), list.end(), item) != list.end(); }
-
-// One median per planned pass, from the effect's own profiling (plan() order).
-struct PassCost {
-    std::string name;
-    double ms = 0;
-};
-
-Result<std::vector<PassCost>> profilePasses(Device& dev, AmbientObscurance& ao, const AoInputs& in, uint32_t runs) {
-    SFX_TRY(ao.setProfiling(true));
-    std::vector<std::vector<double>> samples;
-    std::vector<std::string> names;
-    for (uint32_t i = 0; i < runs + 1; ++i) {
-        SFX_TRY(ao.dispatch(in));
-        SFX_TRY(dev.flush());
-        Result<std::vector<PassTiming>> timings = ao.passTimings();
-        if (!timings) return timings.status();
-        if (i == 0) {  // warm-up
-            samples.assign(timings->size(), {});
-            for (const PassTiming& t : timings.value()) names.push_back(t.name);
-            continue;
-        }
-        for (size_t p = 0; p < timings->size(); ++p) samples[p].push_back(timings.value()[p].reading.milliseconds);
-    }
-    SFX_TRY(ao.setProfiling(false));
-    std::vector<PassCost> out;
-    for (size_t p = 0; p < names.size(); ++p) out.push_back({names[p], median(samples[p])});
-    return out;
-}
 
 // The reference's input from what the device rendered: D32F depth linearised on the CPU by
 // the reference's own formula, normals exactly as the GPU reads them (half floats).
@@ -391,14 +365,15 @@ int main(int argc, char** argv) {
                         }
                         const AoInputs in{DepthSource{g->depth, DepthKind::Hardware, g->camera}, g->normals, outTex.value()};
                         Result<tools::CopyPass::Interleaved> total = copy.value()->timeAgainst(o.runs, [&] { return ao.value()->dispatch(in); });
-                        Result<std::vector<PassCost>> passes = total ? profilePasses(dev, *ao.value(), in, o.runs)
-                                                                     : Result<std::vector<PassCost>>(total.status());
+                        Result<tools::DispatchCost> passes = total ? tools::profilePasses(
+                                                                         dev, *ao.value(), [&] { return ao.value()->dispatch(in); }, o.runs)
+                                                                   : Result<tools::DispatchCost>(total.status());
                         if (!passes) {
                             std::cout << "  error: " << passes.status().toString() << std::endl;
                             continue;
                         }
                         Row r{backendName,     toString(tier), toString(techniques[t]), scene.name,   toString(dev.caps().timing), radius,
-                              total->effectMs, total->ratio,   passes.value(),          total->copyMs};
+                              total->effectMs, total->ratio,   passes->passes,          total->copyMs};
                         if (radius == kErrorRadius) {
                             // The last profiled dispatch left its output: identical to an unprofiled one (conformance).
                             Result<reference::Grid> gpu = tools::readVisibility(dev, outTex.value(), outFormat, o.width, o.height);

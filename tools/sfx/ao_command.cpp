@@ -1,10 +1,12 @@
 // sfx ao: ambient obscurance on G-buffer files, with any technique, tier and backend.
-// Writes visibility in [0, 1] (1 = unoccluded) to --out (.pfm or .exr) and a PNG beside it.
+// Writes visibility in [0, 1] (1 = unoccluded) to --out (.pfm or .exr) and a PNG beside it;
+// --preset picks one of the tier's presets, --runs prices the dispatch.
 #include <iostream>
 #include <optional>
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "pass_profile.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/settings_ranges.hpp"
 
@@ -18,6 +20,8 @@ struct AoFlags {
     std::string resolution = "tier";
     std::string normalsPath;
     std::string outPath;
+    std::string preset = kDefaultPreset;  // one of the tier's presets (sfx info --rules)
+    uint32_t runs = 0;                    // > 0: time the dispatch, median of runs after a warm-up
     float radius = 0.5f;
     std::optional<float> intensity, contrast, bias, sumExponent;  // unset: the tier's calibrated look
     std::optional<uint32_t> samples, blurRadius;                  // unset: the tier's
@@ -33,7 +37,26 @@ Status checkFlags(const AoFlags& f) {
     if (f.bias) SFX_TRY(checkSetting(Setting::AoBias, *f.bias, "--bias"));
     if (f.sumExponent) SFX_TRY(checkSetting(Setting::AoSumExponent, *f.sumExponent, "--sum-exponent"));
     if (f.blurRadius) SFX_TRY(checkSetting(Setting::AoBlurRadius, *f.blurRadius, "--blur-radius"));
+    if (f.runs > tools::kMaxTimedRuns)
+        return invalidArgument("--runs", std::to_string(f.runs), "0 (not timed) to " + std::to_string(tools::kMaxTimedRuns));
     return Status::ok();
+}
+
+// The tier's preset of that name; InvalidArgument listing the tier's presets otherwise.
+Result<TierProfile> presetProfile(Tier tier, const std::string& name) {
+    std::string names;
+    for (const Preset& p : tiers::row(tier).presets) {
+        if (p.name == name) return p.params;
+        names += (names.empty() ? "" : ", ") + p.name;
+    }
+    return invalidArgument("--preset", "'" + name + "'", std::string("a preset of the ") + toString(tier) + " tier: " + names);
+}
+
+// "time: <median> ms" first, so a script reads the price of a configuration from one line.
+void printCost(const tools::DispatchCost& cost) {
+    std::printf("time: %.3f ms\n", cost.totalMs);
+    std::printf("  median of %u dispatches after a warm-up, %s; per pass:\n", cost.runs, toString(cost.source));
+    for (const tools::PassCost& p : cost.passes) std::printf("    %.3f ms  %s\n", p.ms, p.name.c_str());
 }
 
 int runAo(const AoFlags& f) {
@@ -89,7 +112,9 @@ int runAo(const AoFlags& f) {
         if (Status st = dev.writeTexture(normals, 0, px.data(), px.size() * sizeof(float)); !st) return fail(cmd, st);
     }
 
-    Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev, {w, h, opened->tier.profile, s, depth->source.kind});
+    Result<TierProfile> profile = presetProfile(opened->tier.tier, f.preset);
+    if (!profile) return fail(cmd, profile.status());
+    Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev, {w, h, profile.value(), s, depth->source.kind});
     if (!ao) return fail(cmd, ao.status());
     const bool r32 = dev.caps().renderableFormat[size_t(Format::R32F)];
     const Format outFormat = r32 ? Format::R32F : Format::RGBA8;
@@ -101,6 +126,14 @@ int runAo(const AoFlags& f) {
     in.output = out.value();
     if (Status st = ao.value()->dispatch(in); !st) return fail(cmd, st);
     if (Status st = dev.flush(); !st) return fail(cmd, st);
+    std::optional<tools::DispatchCost> cost;
+    if (f.runs > 0) {
+        // The timed dispatches write the same output again: profiling changes no pixel (conformance).
+        Result<tools::DispatchCost> c = tools::profilePasses(
+            dev, *ao.value(), [&] { return ao.value()->dispatch(in); }, f.runs);
+        if (!c) return fail(cmd, c.status());
+        cost = c.value();
+    }
 
     io::Image image(w, h, 1);
     if (r32) {
@@ -114,10 +147,12 @@ int runAo(const AoFlags& f) {
     if (Status st = io::writeImage(f.outPath, image); !st) return fail(cmd, st);
     Result<std::string> png = writePngBeside(f.outPath, image);
     if (!png) return fail(cmd, png.status());
-    std::cout << "sfx ao: " << toString(s.technique) << " on " << dev.caps().summary() << ", tier " << toString(opened->tier.tier) << ", " << w << "x"
-              << h << ", AO at " << (ao.value()->config().halfResolution ? "half" : "full") << " resolution -> " << f.outPath << " and "
-              << png.value() << "\n";
+    std::cout << "sfx ao: " << toString(s.technique) << " on " << dev.caps().summary() << ", tier " << toString(opened->tier.tier) << " preset "
+              << f.preset << ", " << w << "x" << h << ", AO at " << (ao.value()->config().halfResolution ? "half" : "full") << " resolution -> "
+              << f.outPath << " and " << png.value() << "\n";
     if (f.showPlan) std::cout << ao.value()->plan().describe();
+    std::cout.flush();
+    if (cost) printCost(*cost);
     return 0;
 }
 
@@ -147,6 +182,11 @@ Command addAoCommand(CLI::App& app) {
     c.app->add_option("--samples", flags->samples, settingHelp(Setting::AoSamples) + "; not given: the tier's");
     c.app->add_option("--blur-radius", flags->blurRadius, settingHelp(Setting::AoBlurRadius) + "; not given: the tier's");
     c.app->add_flag("--no-blur", flags->noBlur, "skip the bilateral blur");
+    c.app->add_option("--preset", flags->preset, "one of the tier's presets (sfx info --rules lists them); explicit flags override it")
+        ->capture_default_str();
+    c.app->add_option("--runs", flags->runs,
+                      "time the dispatch: prints 'time: <median> ms' over N dispatches after a warm-up (GPU timestamps on Vulkan, "
+                      "glFinish on GL), per pass beside it; 0 = not timed");
     c.app->add_flag("--plan", flags->showPlan, "print the passes and memory");
     c.app->add_option("--out", flags->outPath, "output visibility, .pfm or .exr (a .png is written beside it)")->required();
     c.run = [flags] { return runAo(*flags); };
