@@ -107,21 +107,27 @@ Status GlDevice::init(CapabilityCeiling ceiling) {
     // device under the ES 3.0 ceiling) have them only through EXT_color_buffer_float.
     const bool colorBufferFloat = !es || extensions_.count("GL_EXT_color_buffer_float") || (v >= 32 && ceiling == CapabilityCeiling::None);
     const bool colorBufferHalf = colorBufferFloat || extensions_.count("GL_EXT_color_buffer_half_float");
-    float32Filterable_ = !es || extensions_.count("GL_OES_texture_float_linear");
+    const bool float32Filterable = !es || extensions_.count("GL_OES_texture_float_linear");
+    // Desktop GL blends 32-bit float targets (core since 3.0); GL ES only with EXT_float_blend,
+    // which a desktop context under the ES 3.0 ceiling does not list, as a phone might not.
+    const bool float32Blendable = (!es && ceiling == CapabilityCeiling::None) || extensions_.count("GL_EXT_float_blend");
     for (size_t f = 1; f < size_t(Format::Count); ++f) {
         const Format format = Format(f);
+        const bool colour = !isDepthFormat(format), integer = isIntegerFormat(format), float32 = isFloat32Format(format);
         c.sampledFormat[f] = true;
-        c.renderableFormat[f] = isHalfFormat(format) ? colorBufferHalf : isFloat32Format(format) ? colorBufferFloat : true;
+        c.renderableFormat[f] = isHalfFormat(format) ? colorBufferHalf : float32 ? colorBufferFloat : true;
+        // Depth textures filter only through comparison samplers, which the HAL does not make.
+        c.filterableFormat[f] = colour && !integer && (!float32 || float32Filterable);
+        c.blendableFormat[f] = c.renderableFormat[f] && colour && !integer && (!float32 || float32Blendable);
+        c.storageFormat[f] = c.storageImages && colour && (!es || isEs31ImageFormat(format));
     }
     c.floatRenderTargets = c.renderableFormat[size_t(Format::R32F)] && c.renderableFormat[size_t(Format::RG16F)] &&
         c.renderableFormat[size_t(Format::RGBA16F)];
-    c.float32Filterable = float32Filterable_;
 
     // Not on a host's context, which keeps its own callback (see enableDebugOutput).
     if (options_.validation && haveDebug && !hostContext()) enableDebugOutput();
 
-    // The sampler for unfiltered formats (integer, depth, unfilterable float) and for
-    // bindings without one: nearest within the binding's mips, clamped.
+    // The sampler of bindings without one: nearest within the binding's mips, clamped.
     GL(glGenSamplers, 1, &nearestSampler_);
     setSamplerState(nearestSampler_, SamplerDesc{});
     GL(glGenVertexArrays, 1, &emptyVao_);

@@ -7,19 +7,14 @@
 
 namespace sfx::gl {
 
-bool GlDevice::filterable(Format f) const {
-    if (isIntegerFormat(f) || isDepthFormat(f)) return false;
-    return !isFloat32Format(f) || float32Filterable_;
-}
-
 // Binds resources the shared validation accepted. Textures show the shader only the binding's mips
 // (BASE_LEVEL/MAX_LEVEL), which also makes rendering into a mip outside them legal.
 void GlDevice::bindResources(const BindingSet& b) {
     for (const TextureBinding& tb : b.textures) {
         const GlTexture& t = textures_.get(tb.texture);
-        GLuint sampler = nearestSampler_;
-        // Unfilterable formats would make the texture incomplete under a linear sampler.
-        if (!tb.sampler.isNull() && filterable(t.desc.format)) sampler = samplers_.get(tb.sampler).name;
+        // The checks refused a Linear filter on a format the device cannot filter
+        // (caps.filterableFormat), which would leave the texture incomplete.
+        const GLuint sampler = tb.sampler.isNull() ? nearestSampler_ : samplers_.get(tb.sampler).name;
         GL(glActiveTexture, GL_TEXTURE0 + tb.binding);
         GL(glBindTexture, GL_TEXTURE_2D, t.name);
         GL(glTexParameteri, GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, GLint(tb.baseMip));

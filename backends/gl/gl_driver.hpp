@@ -180,7 +180,6 @@ private:
     // The attachments of a render pass the shared validation accepted, and their one extent.
     // Filled into `out` (cleared first: the device's passTargets_ keeps its capacity).
     void passTargets(const RenderPassDesc& pass, PassTargets& out) const;
-    bool filterable(Format f) const;
     void bindResources(const BindingSet& b);
     void unbindResources(const BindingSet& b);
     Status encodeRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws, const PassTargets& targets);
@@ -203,7 +202,6 @@ private:
     bool loaded_ = false;
     DeviceCaps caps_;
     std::set<std::string> extensions_;
-    bool float32Filterable_ = false;
     bool debugOutput_ = false;
     std::vector<std::string> messages_;
     std::string pendingError_;  // the first GL error since the current call began

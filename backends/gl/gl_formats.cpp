@@ -23,6 +23,9 @@ GlFormat glFormat(Format f) {
 
 bool isHalfFormat(Format f) { return f == Format::R16F || f == Format::RG16F || f == Format::RGBA16F; }
 bool isFloat32Format(Format f) { return f == Format::R32F || f == Format::RG32F || f == Format::RGBA32F; }
+bool isEs31ImageFormat(Format f) {
+    return f == Format::RGBA32F || f == Format::RGBA16F || f == Format::R32F || f == Format::RGBA8 || f == Format::R32UI;
+}
 
 GLenum compareFunc(CompareOp op) {
     switch (op) {

@@ -15,6 +15,9 @@ struct NullTexture {
     TextureDesc desc;
     std::vector<std::vector<uint8_t>> mips;
 };
+struct NullSampler {
+    SamplerDesc desc;
+};
 struct NullBuffer {
     BufferDesc desc;
     std::vector<uint8_t> bytes;
@@ -91,7 +94,7 @@ private:
         return Status::ok();
     }
 
-    Result<SamplerHandle> doCreateSampler(const SamplerDesc& desc) override { return samplers_.insert(desc); }
+    Result<SamplerHandle> doCreateSampler(const SamplerDesc& desc) override { return samplers_.insert(NullSampler{desc}); }
     Status doDestroySampler(SamplerHandle h) override {
         samplers_.remove(h);
         return Status::ok();
@@ -144,7 +147,7 @@ private:
     uint16_t serial_;
     HandlePool<TextureTag, NullTexture> textures_;
     HandlePool<BufferTag, NullBuffer> buffers_;
-    HandlePool<SamplerTag, SamplerDesc> samplers_;
+    HandlePool<SamplerTag, NullSampler> samplers_;
     HandlePool<ProgramTag, NullProgram> programs_;
     HandlePool<PipelineTag, NullPipeline> pipelines_;
     HandlePool<TimerTag, NullTimer> timers_;
@@ -172,7 +175,6 @@ DeviceCaps defaultCaps(CapabilityCeiling ceiling) {
     c.storageImages = full;
     c.fragmentStoresAndAtomics = full;
     c.floatRenderTargets = true;
-    c.float32Filterable = true;
     c.timing = TimingSource::WallClockAfterFinish;
     c.limits.maxTextureSize = 16384;
     c.limits.maxRenderTargetWidth = c.limits.maxRenderTargetHeight = 16384;
@@ -187,9 +189,15 @@ DeviceCaps defaultCaps(CapabilityCeiling ceiling) {
     // The largest alignment common hardware asks for, so code that passes here passes there.
     c.limits.minUniformBufferOffsetAlignment = 256;
     c.limits.minStorageBufferOffsetAlignment = 256;
+    // Every format as far as the APIs allow any device: depth and integer formats do not filter
+    // or blend, depth formats are no storage images.
     for (size_t f = 1; f < size_t(Format::Count); ++f) {
+        const bool colour = !isDepthFormat(Format(f)), integer = isIntegerFormat(Format(f));
         c.sampledFormat[f] = true;
         c.renderableFormat[f] = true;
+        c.filterableFormat[f] = colour && !integer;
+        c.blendableFormat[f] = colour && !integer;
+        c.storageFormat[f] = full && colour;
     }
     return c;
 }

@@ -55,7 +55,9 @@ void VulkanDevice::fillCaps(const DeviceOptions& options) {
         c.sampledFormat[i] = transfers && (feats & VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT);
         c.renderableFormat[i] = transfers &&
             (feats & (isDepthFormat(f) ? VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT : VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT));
-        if (f == Format::R32F) c.float32Filterable = (feats & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0;
+        c.filterableFormat[i] = c.sampledFormat[i] && (feats & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT);
+        c.blendableFormat[i] = c.renderableFormat[i] && !isDepthFormat(f) && (feats & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT);
+        c.storageFormat[i] = transfers && fullFeatures_ && (feats & VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT);
     }
     c.floatRenderTargets = c.renderableFormat[size_t(Format::R32F)] && c.renderableFormat[size_t(Format::RG16F)] &&
         c.renderableFormat[size_t(Format::RGBA16F)];

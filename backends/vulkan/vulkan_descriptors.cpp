@@ -43,7 +43,7 @@ Status VulkanDevice::resolveBindings(const BindingSet& set, const VulkanPipeline
     };
     for (const TextureBinding& tb : set.textures) {
         VulkanTexture& t = textures_.get(tb.texture);
-        const VkSampler sampler = tb.sampler.isNull() ? defaultSampler_ : samplers_.get(tb.sampler);
+        const VkSampler sampler = tb.sampler.isNull() ? defaultSampler_ : samplers_.get(tb.sampler).sampler;
         Result<VkImageView> view = sampledView(t, tb.baseMip, tb.mipCount);
         if (!view) return view.status();
         out.images.push_back({sampler, view.value(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});

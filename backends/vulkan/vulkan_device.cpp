@@ -38,7 +38,7 @@ Result<SamplerHandle> VulkanDevice::doCreateSampler(const SamplerDesc& desc) { r
 
 Status VulkanDevice::doDestroySampler(SamplerHandle h) {
     clearSetCache();
-    currentGarbage().samplers.push_back(samplers_.remove(h));
+    currentGarbage().samplers.push_back(samplers_.remove(h).sampler);
     releaseIdleGarbage();
     return Status::ok();
 }

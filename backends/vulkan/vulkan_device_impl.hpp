@@ -247,7 +247,7 @@ private:
     uint16_t serial_;
     HandlePool<TextureTag, VulkanTexture> textures_;
     HandlePool<BufferTag, VulkanBuffer> buffers_;
-    HandlePool<SamplerTag, VkSampler> samplers_;
+    HandlePool<SamplerTag, VulkanSampler> samplers_;
     HandlePool<ProgramTag, VulkanProgram> programs_;
     HandlePool<PipelineTag, VulkanPipeline> pipelines_;
     HandlePool<TimerTag, VulkanTimer> timers_;

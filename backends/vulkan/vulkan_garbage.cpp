@@ -78,7 +78,7 @@ void VulkanDevice::shutdown() {
         clearSetCache();
         textures_.forEachAlive([&](VulkanTexture& t) { retire(t); });
         buffers_.forEachAlive([&](VulkanBuffer& b) { retire(b, pending_); });
-        samplers_.forEachAlive([&](VkSampler& s) { pending_.samplers.push_back(s); });
+        samplers_.forEachAlive([&](VulkanSampler& s) { pending_.samplers.push_back(s.sampler); });
         pipelines_.forEachAlive([&](VulkanPipeline& p) { retire(p); });
         programs_.forEachAlive([&](VulkanProgram& p) {
             for (auto& m : p.modules) pending_.modules.push_back(m.second);

@@ -43,6 +43,11 @@ struct AccessState {
 // The same tracked access, the recording marks aside.
 bool sameState(const AccessState& a, const AccessState& b);
 
+struct VulkanSampler {
+    SamplerDesc desc;
+    VkSampler sampler = VK_NULL_HANDLE;
+};
+
 struct VulkanBuffer {
     BufferDesc desc;
     VkBuffer buffer = VK_NULL_HANDLE;

@@ -146,7 +146,7 @@ Result<SamplerHandle> VulkanDevice::makeSampler(const SamplerDesc& desc) {
     sci.maxLod = VK_LOD_CLAMP_NONE;
     VkSampler s;
     SFX_VK(vk_.vkCreateSampler(device_, &sci, nullptr, &s));
-    return samplers_.insert(s);
+    return samplers_.insert(VulkanSampler{desc, s});
 }
 
 }  // namespace sfx::vulkan

@@ -73,7 +73,7 @@ Result<SamplerHandle> Device::createSampler(const SamplerDesc& desc) {
 }
 
 Status Device::destroySampler(SamplerHandle sampler) {
-    SFX_TRY(objects().sampler(sampler, "sampler"));
+    SFX_TRY(objects().sampler(sampler, "sampler").status());
     return doDestroySampler(sampler);
 }
 

@@ -30,6 +30,8 @@ Status textureDesc(const TextureDesc& d, const DeviceCaps& caps) {
     if (d.usage & kTextureStorage) {
         if (!caps.storageImages) return fail(Error::TextureStorageUnsupported, {underCeiling(caps)});
         if (isDepthFormat(d.format)) return fail(Error::TextureStorageDepth, {toString(d.format)});
+        if (!caps.storageFormat[size_t(d.format)])
+            return fail(Error::TextureFormatNotStorage, {toString(d.format), formatList([&](Format f) { return caps.storageFormat[size_t(f)]; })});
     }
     return Status::ok();
 }
@@ -135,7 +137,7 @@ Status graphicsPipelineShape(const GraphicsPipelineDesc& d, const DeviceCaps& ca
     return Status::ok();
 }
 
-Status graphicsPipelineState(const GraphicsPipelineDesc& d, const DeviceCaps&) {
+Status graphicsPipelineState(const GraphicsPipelineDesc& d, const DeviceCaps& caps) {
     if (uint32_t(d.cull) > uint32_t(CullMode::Front)) return fail(Error::PipelineCull, {str(uint32_t(d.cull))});
     if (uint32_t(d.depth.compare) > uint32_t(CompareOp::Always)) return fail(Error::PipelineDepthCompare, {str(uint32_t(d.depth.compare))});
     if (uint32_t(d.blend.src) > uint32_t(BlendFactor::OneMinusDstAlpha)) return fail(Error::PipelineBlendFactor, {"src", str(uint32_t(d.blend.src))});
@@ -149,6 +151,11 @@ Status graphicsPipelineState(const GraphicsPipelineDesc& d, const DeviceCaps&) {
         for (size_t i = 0; i < d.colorFormats.size(); ++i)
             if (knownFormat(d.colorFormats[i]) && isIntegerFormat(d.colorFormats[i]))
                 return fail(Error::PipelineBlendInteger, {toString(d.colorFormats[i]), str(i)});
+    if (d.blend.enable)
+        for (size_t i = 0; i < d.colorFormats.size(); ++i)
+            if (knownFormat(d.colorFormats[i]) && !caps.blendableFormat[size_t(d.colorFormats[i])])
+                return fail(Error::PipelineBlendFormat,
+                            {str(i), toString(d.colorFormats[i]), formatList([&](Format f) { return caps.blendableFormat[size_t(f)]; })});
     return Status::ok();
 }
 

@@ -164,8 +164,18 @@ Status bindings(const BindingSet& set, const PipelineInfo& pipeline, const Arg& 
         if (!r) return r.status();
         Result<const TextureDesc*> t = named(arg.then(".texture"), [&](const std::string& name) { return objects.texture(tb.texture, name); });
         if (!t) return t.status();
-        if (!tb.sampler.isNull()) SFX_TRY(named(arg.then(".sampler"), [&](const std::string& name) { return objects.sampler(tb.sampler, name); }));
+        const SamplerDesc* sampler = nullptr;
+        if (!tb.sampler.isNull()) {
+            Result<const SamplerDesc*> s = named(arg.then(".sampler"), [&](const std::string& name) { return objects.sampler(tb.sampler, name); });
+            if (!s) return s.status();
+            sampler = s.value();
+        }
         const TextureDesc& desc = *t.value();
+        const bool linear = sampler &&
+            (sampler->minFilter == Filter::Linear || sampler->magFilter == Filter::Linear || sampler->mipFilter == Filter::Linear);
+        if (linear && !caps.filterableFormat[size_t(desc.format)])
+            return fail(Error::BindingNotFilterable,
+                        {arg.str(), toString(desc.format), formatList([&](Format f) { return caps.filterableFormat[size_t(f)]; })});
         if (!(desc.usage & kTextureSampled))
             return fail(Error::ResourceUsage, {arg.then(".texture").str(), textureUsageNames(desc.usage), "texture", "sampled"});
         // baseMip + mipCount in 32 bits wraps (1 + 0xFFFFFFFF = 0); compare without adding.

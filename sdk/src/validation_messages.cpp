@@ -36,6 +36,8 @@ constexpr ErrorEntry kTable[] = {
      "TextureDesc.usage includes storage, but this device has no storage images{}"},
     {E::TextureStorageDepth, C::UnsupportedFormat, "TextureStorageDepth",
      "TextureDesc.format is {}, a depth format, which cannot be a storage image; allowed a colour format with usage storage"},
+    {E::TextureFormatNotStorage, C::UnsupportedFormat, "TextureFormatNotStorage",
+     "TextureDesc.format is {}, which this device cannot use as a storage image; allowed with usage storage: {}"},
     {E::BufferSize, C::InvalidArgument, "BufferSize", "BufferDesc.size is {}; allowed [1, {}]"},
     {E::BufferUsage, C::InvalidArgument, "BufferUsage",
      "BufferDesc.usage is {}; allowed a non-empty combination of uniform, storage, vertex and index"},
@@ -93,6 +95,9 @@ constexpr ErrorEntry kTable[] = {
      "GraphicsPipelineDesc.blend.{} is {}; allowed Zero, One, SrcAlpha, OneMinusSrcAlpha, DstAlpha or OneMinusDstAlpha"},
     {E::PipelineBlendInteger, C::InvalidArgument, "PipelineBlendInteger",
      "GraphicsPipelineDesc.blend.enable is true with the integer format {} in colorFormats[{}]; allowed false, as integer targets do not blend"},
+    {E::PipelineBlendFormat, C::UnsupportedFormat, "PipelineBlendFormat",
+     "GraphicsPipelineDesc.blend.enable is true with colorFormats[{}] = {}, which this device cannot blend; allowed blend.enable "
+     "false, or a blendable format: {}"},
     {E::SpecializationConstantIdTwice, C::InvalidArgument, "SpecializationConstantIdTwice",
      "{}.constants[{}].id is {}, which constants[{}] also has; allowed an id no other constant uses"},
 
@@ -136,6 +141,9 @@ constexpr ErrorEntry kTable[] = {
     {E::BindingKind, C::InvalidArgument, "BindingKind", "{}: binding {} of program '{}' is {} '{}'; allowed it in BindingSet.{}"},
     {E::BindingMissing, C::InvalidArgument, "BindingMissing", "{}.{} has nothing at binding {}; program '{}' needs {} '{}' there"},
     {E::BindingMips, C::InvalidArgument, "BindingMips", "{}: baseMip+mipCount is {}+{}; allowed a non-empty range inside the texture's {} mips"},
+    {E::BindingNotFilterable, C::UnsupportedFormat, "BindingNotFilterable",
+     "{}: a sampler with a Linear filter on the texture's format {}, which this device cannot filter; allowed a Nearest sampler, "
+     "or a filterable format: {}"},
     {E::ResourceUsage, C::InvalidArgument, "ResourceUsage", "{} has usage {}; allowed a {} with usage {}"},
     {E::BufferBindingAlignment, C::InvalidArgument, "BufferBindingAlignment", "{}.offset is {}; allowed a multiple of {}, this device's {}"},
     {E::BufferBindingMaxRange, C::InvalidArgument, "BufferBindingMaxRange", "{} binds {} bytes; allowed at most {}, this device's {}"},

@@ -34,6 +34,14 @@ BufferHandle Objects::buffer(uint64_t size, uint32_t usage) {
     return b.value();
 }
 
+SamplerHandle Objects::sampler(const SamplerDesc& desc) {
+    Result<SamplerHandle> s = dev.createSampler(desc);
+    INFO("createSampler: " << s.status().toString());
+    REQUIRE(s.isOk());
+    undo_.push_back([this, h = s.value()] { (void)dev.destroySampler(h); });
+    return s.value();
+}
+
 ProgramHandle Objects::program(const CompiledProgram& p) {
     Result<ProgramHandle> h = dev.createProgram(p);
     INFO("createProgram " << p.name << ": " << h.status().toString());
@@ -84,6 +92,15 @@ Status tryProgram(Objects& o, const CompiledProgram& p) {
 
 VertexLayout meshLayout() { return {28, {{0, VertexFormat::Float3, 0}, {1, VertexFormat::Float4, 12}}}; }
 
+Format firstLackingWhere(const std::array<bool, size_t(Format::Count)>& has, const std::function<bool(Format)>& eligible) {
+    for (uint32_t f = 1; f < uint32_t(Format::Count); ++f)
+        if (!has[f] && eligible(Format(f))) return Format(f);
+    return Format::Undefined;
+}
+Format firstNonBlendableTarget(const DeviceCaps& c) {
+    return firstLackingWhere(c.blendableFormat, [&](Format f) { return !isDepthFormat(f) && !isIntegerFormat(f) && c.renderableFormat[size_t(f)]; });
+}
+
 namespace {
 
 using validation::Error;
@@ -92,9 +109,11 @@ using Caps = DeviceCaps;
 bool noCompute(const Caps& c) { return !c.computeShaders; }
 // The first format the device cannot sample (render to); Undefined when it has none.
 Format firstLacking(const std::array<bool, size_t(Format::Count)>& has) {
-    for (uint32_t f = 1; f < uint32_t(Format::Count); ++f)
-        if (!has[f]) return Format(f);
-    return Format::Undefined;
+    return firstLackingWhere(has, [](Format) { return true; });
+}
+// A colour format the device lacks storage for.
+Format firstNonStorageColour(const DeviceCaps& c) {
+    return firstLackingWhere(c.storageFormat, [](Format f) { return !isDepthFormat(f); });
 }
 CompiledProgram copyProgram() { return shaderProgram("copy", Tier::Current); }
 
@@ -224,6 +243,17 @@ std::vector<ValidationCase> makeCases() {
               "storage"),
         [](Objects& o) {
             return o.dev.createTexture({4, 4, 1, Format::D32F, kTextureStorage}).status();
+        });
+    add(
+        "storage texture of a format without storage", Error::TextureFormatNotStorage,
+        [](const Caps& c) { return c.storageImages && firstNonStorageColour(c) != Format::Undefined; },
+        [](const Caps& c) {
+            return std::string("TextureDesc.format is ") + toString(firstNonStorageColour(c)) +
+                ", which this device cannot use as a storage image; allowed with usage storage: " +
+                formatList([&](Format f) { return c.storageFormat[size_t(f)]; });
+        },
+        [](Objects& o) {
+            return o.dev.createTexture({4, 4, 1, firstNonStorageColour(o.dev.caps()), kTextureStorage}).status();
         });
     add(
         "empty buffer", Error::BufferSize, {}, [](const Caps& c) { return "BufferDesc.size is 0; allowed [1, " + str(c.limits.maxBufferSize) + "]"; },
@@ -428,6 +458,8 @@ std::vector<DeviceCaps> craftedNullCaps() {
     lacking.sampledFormat[size_t(Format::RG32F)] = false;
     lacking.renderableFormat[size_t(Format::RG32F)] = false;
     lacking.limits.maxRenderTargetWidth = lacking.limits.maxRenderTargetHeight = 8192;  // SwiftShader's framebuffer limit
+    lacking.blendableFormat[size_t(Format::RGBA32F)] = false;                           // GL ES without EXT_float_blend
+    lacking.storageFormat[size_t(Format::RG16F)] = false;                               // GL ES 3.1's image formats
     DeviceCaps vulkanLike = null::defaultCaps();
     vulkanLike.dialect = ShaderDialect::Spirv;
     vulkanLike.limits.maxStorageBufferSize = 1u << 20;  // below maxBufferSize, as on real devices

@@ -23,6 +23,7 @@ public:
 
     TextureHandle texture(uint32_t w, uint32_t h, Format f, uint32_t usage, uint32_t mips = 1);
     BufferHandle buffer(uint64_t size, uint32_t usage);
+    SamplerHandle sampler(const SamplerDesc& desc);
     ProgramHandle program(const CompiledProgram& p);
     ProgramHandle program(const char* name, Tier tier);
     PipelineHandle graphics(const char* name, std::vector<Format> colors, Format depth = Format::Undefined, VertexLayout layout = {},
@@ -66,6 +67,11 @@ std::set<validation::Error> runValidationCases(Device& device, bool withTwin);
 std::vector<DeviceCaps> craftedNullCaps();
 // Every row of the table has a case, and every shared rule is in `exercised`.
 void checkEveryRuleExercised(const std::set<validation::Error>& exercised);
+
+// The first format lacking in `has` for which `eligible` holds (Undefined: none).
+Format firstLackingWhere(const std::array<bool, size_t(Format::Count)>& has, const std::function<bool(Format)>& eligible);
+// A colour format the device renders to but cannot blend (Undefined: none).
+Format firstNonBlendableTarget(const DeviceCaps& c);
 
 // Words the expected messages share.
 inline std::string str(uint64_t v) { return std::to_string(v); }

@@ -158,6 +158,20 @@ std::vector<ValidationCase> pipelineAndCommandCases() {
                                    d.blend = {true, BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha};
                                }));
         });
+    add(
+        "blending a target the device cannot blend", Error::PipelineBlendFormat,
+        [](const Caps& c) { return firstNonBlendableTarget(c) != Format::Undefined; },
+        [](const Caps& c) {
+            return std::string("GraphicsPipelineDesc.blend.enable is true with colorFormats[0] = ") + toString(firstNonBlendableTarget(c)) +
+                ", which this device cannot blend; allowed blend.enable false, or a blendable format: " +
+                formatList([&](Format f) { return c.blendableFormat[size_t(f)]; });
+        },
+        [](Objects& o) {
+            return tryPipeline(o, withState([&](auto& d) {
+                                   d.colorFormats = {firstNonBlendableTarget(o.dev.caps())};
+                                   d.blend = {true, BlendFactor::One, BlendFactor::One};
+                               }));
+        });
     add("specialisation constant id twice", Error::SpecializationConstantIdTwice, {},
         fixed("GraphicsPipelineDesc.constants[2].id is 3, which constants[0] also has; allowed an id no other constant uses"), [](Objects& o) {
             return tryPipeline(o, withState([](auto& d) { d.constants = {{3, 1}, {4, 2}, {3, 5}}; }));
@@ -353,6 +367,20 @@ std::vector<ValidationCase> pipelineAndCommandCases() {
         [](Objects& o) {
             DrawDesc d = copyDraw(o);
             d.bindings.textures = {{gen::copy::uSource, o.texture(8, 8, Format::RGBA8, kTextureSampled, 2), 1, 0xFFFFFFFFu}};
+            return drawOnce(o, d);
+        });
+    // Integer formats filter nowhere: the rule applies on every device.
+    add(
+        "linear sampler on an integer texture", Error::BindingNotFilterable, {},
+        [](const Caps& c) {
+            return "DrawDesc.bindings.textures[0]: a sampler with a Linear filter on the texture's format R32UI, which this device cannot "
+                   "filter; allowed a Nearest sampler, or a filterable format: " +
+                formatList([&](Format f) { return c.filterableFormat[size_t(f)]; });
+        },
+        [](Objects& o) {
+            DrawDesc d = copyDraw(o);
+            d.bindings.textures[0].texture = o.texture(8, 8, Format::R32UI, kTextureSampled);
+            d.bindings.textures[0].sampler = o.sampler({Filter::Nearest, Filter::Nearest, Filter::Linear});
             return drawOnce(o, d);
         });
     add("texture without sampled", Error::ResourceUsage, {},

@@ -131,12 +131,15 @@ void printLimitsAndFormats(std::ostream& out, const DeviceCaps& caps) {
         << l.maxUniformBlockSize << " bytes, storage buffers " << l.maxStorageBufferSize << " bytes, compute work groups "
         << l.maxComputeWorkGroupInvocations << " invocations and " << l.maxComputeWorkGroupCount[0] << "x" << l.maxComputeWorkGroupCount[1] << "x"
         << l.maxComputeWorkGroupCount[2] << " groups, " << l.maxTextureBindings << " texture bindings\n";
-    std::string sampled, renderable;
-    for (size_t f = 1; f < size_t(Format::Count); ++f) {
-        if (caps.sampledFormat[f]) sampled += std::string(sampled.empty() ? "" : " ") + toString(Format(f));
-        if (caps.renderableFormat[f]) renderable += std::string(renderable.empty() ? "" : " ") + toString(Format(f));
-    }
-    out << "  formats sampled: " << sampled << "; render targets: " << renderable << "\n";
+    auto formats = [](const std::array<bool, size_t(Format::Count)>& has) {
+        std::string list;
+        for (size_t f = 1; f < size_t(Format::Count); ++f)
+            if (has[f]) list += std::string(list.empty() ? "" : " ") + toString(Format(f));
+        return list.empty() ? std::string("none") : list;
+    };
+    out << "  formats sampled: " << formats(caps.sampledFormat) << "; render targets: " << formats(caps.renderableFormat)
+        << "; filterable: " << formats(caps.filterableFormat) << "; blendable: " << formats(caps.blendableFormat)
+        << "; storage: " << formats(caps.storageFormat) << "\n";
 }
 
 struct BudgetFlags {

@@ -281,7 +281,6 @@ struct DeviceCaps {
     // earlier commands' storage writes: a later pass sees what an earlier one wrote.
     bool fragmentStoresAndAtomics = false;
     bool floatRenderTargets = false;  // R32F, RG16F, RGBA16F colour-renderable
-    bool float32Filterable = false;
     TimingSource timing = TimingSource::WallClockAfterFinish;
     // Device::beginRecording / beginReplay work (Vulkan, unless DeviceOptions::reuseRecordings is
     // off); elsewhere they report UnsupportedFeature and effects record their commands each frame.
@@ -291,9 +290,18 @@ struct DeviceCaps {
     FramebufferOrigin origin = FramebufferOrigin::UpperLeft;
 
     DeviceLimits limits;
-    // For each Format: usable as a sampled texture / as a render target on this device.
+    // For each Format, what this device supports (Vulkan: the format's optimal-tiling features;
+    // GL: the API version's and extensions' format tables). The checks refuse anything else:
+    // sampledFormat / renderableFormat / storageFormat: TextureDesc.usage sampled / render-target /
+    // storage; filterableFormat: a binding with a Linear filter in its sampler (GL ES 3.0 filters
+    // 32-bit floats only with OES_texture_float_linear, and no depth or integer format);
+    // blendableFormat: a colour format of a pipeline with blend.enable (32-bit floats need
+    // EXT_float_blend on GL ES; integer formats never blend).
     std::array<bool, size_t(Format::Count)> sampledFormat{};
     std::array<bool, size_t(Format::Count)> renderableFormat{};
+    std::array<bool, size_t(Format::Count)> filterableFormat{};
+    std::array<bool, size_t(Format::Count)> blendableFormat{};
+    std::array<bool, size_t(Format::Count)> storageFormat{};
 
     std::string summary() const;  // one line for logs: backend, API, device, ceiling
 };

@@ -82,7 +82,7 @@ public:
     virtual ~ObjectLookup() = default;
     virtual Result<const TextureDesc*> texture(TextureHandle h, const std::string& argument) const = 0;
     virtual Result<const BufferDesc*> buffer(BufferHandle h, const std::string& argument) const = 0;
-    virtual Status sampler(SamplerHandle h, const std::string& argument) const = 0;
+    virtual Result<const SamplerDesc*> sampler(SamplerHandle h, const std::string& argument) const = 0;
     virtual Result<const ProgramInfo*> program(ProgramHandle h, const std::string& argument) const = 0;
     virtual Result<const PipelineInfo*> pipeline(PipelineHandle h, const std::string& argument) const = 0;
     virtual Status timer(TimerHandle h, const std::string& argument) const = 0;
@@ -103,7 +103,10 @@ public:
         SFX_TRY(buffers_.check(h, argument));
         return &buffers_.get(h).desc;
     }
-    Status sampler(SamplerHandle h, const std::string& argument) const override { return samplers_.check(h, argument); }
+    Result<const SamplerDesc*> sampler(SamplerHandle h, const std::string& argument) const override {
+        SFX_TRY(samplers_.check(h, argument));
+        return &samplers_.get(h).desc;
+    }
     Result<const ProgramInfo*> program(ProgramHandle h, const std::string& argument) const override {
         SFX_TRY(programs_.check(h, argument));
         return &programs_.get(h).info;

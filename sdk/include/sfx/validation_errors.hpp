@@ -31,6 +31,7 @@ enum class Error : uint32_t {
     TextureFormatNotRenderable,
     TextureStorageUnsupported,
     TextureStorageDepth,
+    TextureFormatNotStorage,
     BufferSize,
     BufferUsage,
     BufferStorageUnsupported,
@@ -65,6 +66,7 @@ enum class Error : uint32_t {
     PipelineDepthCompare,
     PipelineBlendFactor,
     PipelineBlendInteger,
+    PipelineBlendFormat,
     SpecializationConstantIdTwice,
     // Reads and writes.
     MipOutOfRange,
@@ -98,6 +100,7 @@ enum class Error : uint32_t {
     BindingKind,
     BindingMissing,
     BindingMips,
+    BindingNotFilterable,
     ResourceUsage,
     BufferBindingAlignment,
     BufferBindingMaxRange,

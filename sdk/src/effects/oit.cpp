@@ -68,8 +68,8 @@ Result<std::unique_ptr<Transparency>> Transparency::create(Device& device, const
                           "TransparencyDesc.profile is the high tier (A-buffer); the device has no fragment stores and atomics "
                           "or no compute shaders (use the current tier's profile)"};
         t->abuffer_ = true;
-    } else if (!caps.renderableFormat[size_t(Format::RGBA16F)]) {
-        return Status{StatusCode::UnsupportedFormat, "weighted blended OIT needs RGBA16F render targets; the device has none"};
+    } else if (!caps.blendableFormat[size_t(Format::RGBA16F)]) {
+        return Status{StatusCode::UnsupportedFormat, "weighted blended OIT needs blendable RGBA16F render targets; the device has none"};
     }
     return t;
 }
