@@ -16,6 +16,7 @@ HARNESS=${XEGTAO_HARNESS:-../shared/peers/xegtao}
 PRESETS="low medium high ultra"
 RUN="$PWD/$BUILD_DIR/xegtao/xegtao_run"
 
+rm -f "$DIR"/*.xegtao-*.pfm "$DIR/xegtao_cost.txt"  # no stale outputs scored when the peer is not measured
 if [ ! -x "$HARNESS/build.sh" ]; then
   echo "run_xegtao: no XeGTAO harness at $HARNESS: the peer is not measured"
   exit 0
@@ -24,7 +25,6 @@ if ! BUILD_DIR="$PWD/$BUILD_DIR/xegtao" "$HARNESS/build.sh" >"$DIR/xegtao_build.
   echo "run_xegtao: the XeGTAO harness did not build (see $DIR/xegtao_build.log): the peer is not measured"
   exit 0
 fi
-: >"$DIR/xegtao_cost.txt"
 while read -r name width height fov radius; do
   for q in $PRESETS; do
     args=(--depth "$DIR/$name.depth.pfm" --normals "$DIR/$name.normals.pfm" --fov-y "$fov" --radius "$radius" --quality "$q")
