@@ -86,9 +86,15 @@ struct Mean {
         if (std::isfinite(e.psnr)) psnr += e.psnr, ++n;
         if (std::isfinite(e.psnrOccluded)) psnrOccluded += e.psnrOccluded, signedOccluded += e.meanSignedErrorOccluded, ++nOccluded;
     }
+    // PSNR over the frame and where occluded, minus `base`'s, dB.
+    std::string gainOver(const Mean& base) const {
+        auto mean = [](double sum, int n) { return sum / std::max(n, 1); };
+        return fixed(mean(psnr, n) - mean(base.psnr, base.n), 2) + " / " +
+            fixed(mean(psnrOccluded, nOccluded) - mean(base.psnrOccluded, base.nOccluded), 2);
+    }
     std::string cell() const {
-        return fixed(psnr / std::max(n, 1), 2) + " / " + fixed(psnrOccluded / std::max(nOccluded, 1), 2) + " / " +
-            (signedOccluded >= 0 ? "+" : "") + fixed(signedOccluded / std::max(nOccluded, 1), 3);
+        return fixed(psnr / std::max(n, 1), 2) + " / " + fixed(psnrOccluded / std::max(nOccluded, 1), 2) + " / " + (signedOccluded >= 0 ? "+" : "") +
+            fixed(signedOccluded / std::max(nOccluded, 1), 3);
     }
 };
 
@@ -105,11 +111,15 @@ std::string markdown(const Options& o, const std::vector<tools::TradeView>& view
             if (v.family == f.name) md << " `" << v.name() << "`: " << tools::describeCamera(v) << ";";
         md << " |\n";
     }
+    std::map<bool, Mean> none;  // held out? -> no AO's mean
+    for (const Row& r : rows)
+        for (const tools::SceneFamily& f : families)
+            if (r.technique == "none" && f.name == views[r.view].family) none[f.heldOut].add(r.error);
     const std::string first = o.backends.empty() ? "" : o.backends[0];
     for (const std::string& backend : {first, std::string("peer")}) {
         std::vector<std::string> keys;
         std::map<std::string, std::map<std::string, Mean>> cells;  // configuration -> family -> mean
-        std::map<std::string, std::map<bool, Mean>> split;          // configuration -> held out? -> mean
+        std::map<std::string, std::map<bool, Mean>> split;         // configuration -> held out? -> mean
         for (const Row& r : rows) {
             const bool peer = r.measuredWith != "sdk";
             if (peer != (backend == "peer") || (!peer && r.backend != backend && r.technique != "none")) continue;
@@ -121,22 +131,25 @@ std::string markdown(const Options& o, const std::vector<tools::TradeView>& view
         }
         if (keys.empty()) continue;
         md << "\n"
-           << (backend == "peer" ? "Measured with the peer (XeGTAO, Intel's unmodified shaders, GL 4.5 compute on llvmpipe; the same PFM inputs, the same truth)"
-                                 : "Backend " + backend + " (and no AO)")
+           << (backend == "peer"
+                   ? "Measured with the peer (XeGTAO, Intel's unmodified shaders, GL 4.5 compute on llvmpipe; the same PFM inputs, the same truth)"
+                   : "Backend " + backend + " (and no AO)")
            << ": mean over each family's views of PSNR over the frame / PSNR where the truth < 0.95 (dB) / mean signed error there:\n\n";
         md << "| technique | tier |";
         for (const tools::SceneFamily& f : families) md << " " << f.name << (f.heldOut ? " (held out)" : "") << " |";
-        md << " training families | held-out families |\n| --- | --- |";
-        for (size_t i = 0; i < families.size() + 2; ++i) md << " --- |";
+        md << " training families | held-out families | gain over no AO, training: frame / occluded | held out |\n| --- | --- |";
+        for (size_t i = 0; i < families.size() + 4; ++i) md << " --- |";
         for (const std::string& key : keys) {
             md << "\n| " << key << " |";
             for (const tools::SceneFamily& f : families) md << " " << (cells[key].count(f.name) ? cells[key][f.name].cell() : "-") << " |";
             md << " " << split[key][false].cell() << " | " << split[key][true].cell() << " |";
+            for (bool heldOut : {false, true}) md << " " << split[key][heldOut].gainOver(none[heldOut]) << " |";
         }
         md << "\n";
     }
     if (!costs.empty()) {
-        md << "\nCost at " << o.costWidth << "x" << o.costHeight << " on `" << o.costView << "` at its radius, this machine, one run of tools/run_trade.sh: the SDK's effect dispatch timed by the HAL (median of " << o.runs
+        md << "\nCost at " << o.costWidth << "x" << o.costHeight << " on `" << o.costView
+           << "` at its radius, this machine, one run of tools/run_trade.sh: the SDK's effect dispatch timed by the HAL (median of " << o.runs
            << " runs, each beside a copy pass of the same size, whose median is given: load moves both), the peer's three passes timed "
               "with glFinish around each (median of its runs, minutes earlier in the same run):\n\n"
               "| measured with | backend | tier | technique | ms | copy pass ms |\n| --- | --- | --- | --- | --- | --- |\n";
@@ -162,7 +175,8 @@ Status timeDefaults(Device& dev, const std::string& backend, Tier tier, const Op
     if (!copy) return copy.status();
     Result<std::unique_ptr<tools::ViewInputs>> in = tools::ViewInputs::create(dev, tier, *view, o.costWidth, o.costHeight);
     if (!in) return in.status();
-    Result<TextureHandle> out = dev.createTexture({o.costWidth, o.costHeight, 1, format, kTextureSampled | kTextureRenderTarget, "families-cost-out"});
+    Result<TextureHandle> out = dev.createTexture(
+        {o.costWidth, o.costHeight, 1, format, kTextureSampled | kTextureRenderTarget, "families-cost-out"});
     if (!out) return out.status();
     Status status = Status::ok();
     for (AoTechnique technique : tools::allAoTechniques()) {
@@ -170,8 +184,8 @@ Status timeDefaults(Device& dev, const std::string& backend, Tier tier, const Op
         s.technique = technique;
         s.normals = AoNormals::FromTexture;
         s.radius = float(view->radius);
-        Result<std::unique_ptr<AmbientObscurance>> ao =
-            AmbientObscurance::create(dev, {o.costWidth, o.costHeight, choice->profile, s, in.value()->depthKind()});
+        Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(
+            dev, {o.costWidth, o.costHeight, choice->profile, s, in.value()->depthKind()});
         if (!ao) {
             status = ao.status();
             break;
@@ -206,7 +220,8 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
         for (size_t c = 0; c < cases.size(); ++c) {
             rows.push_back({cases[c].view, backend, toString(tier), toString(technique), "sdk", errors.value()[c]});
             const tools::TradeView& v = views[cases[c].view];
-            if (pictures && v.index == 0) (*pictures)[v.family].labels.push_back(toString(technique)), (*pictures)[v.family].images.push_back(outputs[c]);
+            if (pictures && v.index == 0)
+                (*pictures)[v.family].labels.push_back(toString(technique)), (*pictures)[v.family].images.push_back(outputs[c]);
         }
         Mean all;
         for (const truth::Comparison& e : errors.value()) all.add(e);
@@ -241,10 +256,11 @@ int main(int argc, char** argv) {
 
     const std::vector<tools::TradeView> views = tools::allFamilyViews();
     if (!o.writeInputs.empty()) {
-        const tools::PeerInputs inputs{o.writeInputs, o.backends.empty() ? "vulkan" : o.backends[0], o.width, o.height, o.costView, o.costWidth, o.costHeight};
+        const tools::PeerInputs inputs{o.writeInputs, o.backends.empty() ? "vulkan" : o.backends[0], o.width, o.height, o.costView, o.costWidth,
+                                       o.costHeight};
         if (Status st = tools::writePeerInputs(inputs, views); !st) return fail(st);
-        std::cout << "bench_families: the inputs of " << views.size() << " views and the cost view -> " << o.writeInputs << " in " << elapsed() << " s"
-                  << std::endl;
+        std::cout << "bench_families: the inputs of " << views.size() << " views and the cost view -> " << o.writeInputs << " in " << elapsed()
+                  << " s" << std::endl;
         return 0;
     }
     const auto progress = [&](const std::string& line) { std::cout << "[" << elapsed() << " s] " << line << std::endl; };
@@ -258,12 +274,13 @@ int main(int argc, char** argv) {
         if (views[c.view].index == 0) pictures[views[c.view].family] = {{"truth"}, {truthGrid(c.truth)}};
     }
     std::string machine;
-    const Status run = tools::forEachDevice(o.backends, {Tier::High, Tier::Current}, "bench_families", [&](Device& dev, const std::string& backend, Tier tier) {
-        if (machine.empty()) machine = dev.caps().deviceName;
-        std::cout << "[" << elapsed() << " s] " << dev.caps().summary() << ", tier " << toString(tier) << std::endl;
-        const bool pictured = backend == o.backends[0] && tier == Tier::High;
-        return runDevice(dev, backend, tier, o, views, cases.value(), rows, costs, pictured ? &pictures : nullptr);
-    });
+    const Status run = tools::forEachDevice(
+        o.backends, {Tier::High, Tier::Current}, "bench_families", [&](Device& dev, const std::string& backend, Tier tier) {
+            if (machine.empty()) machine = dev.caps().deviceName;
+            std::cout << "[" << elapsed() << " s] " << dev.caps().summary() << ", tier " << toString(tier) << std::endl;
+            const bool pictured = backend == o.backends[0] && tier == Tier::High;
+            return runDevice(dev, backend, tier, o, views, cases.value(), rows, costs, pictured ? &pictures : nullptr);
+        });
     if (!run) return fail(run);
     if (!o.peerDir.empty()) {
         size_t found = 0;
@@ -288,8 +305,8 @@ int main(int argc, char** argv) {
             }
         const std::vector<tools::PeerCost> peerCosts = tools::readPeerCosts(o.peerDir);
         for (const tools::PeerCost& c : peerCosts) costs.push_back({"peer", "gl4.5-llvmpipe", "-", "xegtao-" + c.preset, c.totalMs, 0});
-        std::cout << "[" << elapsed() << " s] peer: " << found << " outputs scored from " << o.peerDir << ", " << peerCosts.size()
-                  << " timed presets" << std::endl;
+        std::cout << "[" << elapsed() << " s] peer: " << found << " outputs scored from " << o.peerDir << ", " << peerCosts.size() << " timed presets"
+                  << std::endl;
     }
     std::filesystem::create_directories(o.outDir + "/images");
     std::ofstream csv(o.outDir + "/ao_families.csv");
@@ -300,8 +317,8 @@ int main(int argc, char** argv) {
         const tools::TradeView& v = views[r.view];
         bool heldOut = false;
         for (const tools::SceneFamily& f : families) heldOut |= f.name == v.family && f.heldOut;
-        csv << v.family << "," << (heldOut ? 1 : 0) << "," << v.name() << "," << o.width << "," << o.height << "," << v.radius << "," << o.samples << ","
-            << r.measuredWith << "," << r.backend << "," << r.tier << "," << r.technique << "," << fixed(r.error.psnr, 3) << ","
+        csv << v.family << "," << (heldOut ? 1 : 0) << "," << v.name() << "," << o.width << "," << o.height << "," << v.radius << "," << o.samples
+            << "," << r.measuredWith << "," << r.backend << "," << r.tier << "," << r.technique << "," << fixed(r.error.psnr, 3) << ","
             << fixed(r.error.psnrOccluded, 3) << "," << r.error.occludedPixels << "," << fixed(r.error.meanSignedError, 5) << ","
             << fixed(r.error.meanSignedErrorOccluded, 5) << "\n";
     }

@@ -41,6 +41,7 @@ struct ViewSpec {
     double elevation, azimuth, distance, eyeHeight, fovY, radius;
 };
 
+// clang-format off
 const ViewSpec kViews[] = {
     {"blocks", "s11", 11, {-0.5, 0.3, -1.2}, 5, 20, 4.0, 0, 50, 0.5},
     {"blocks", "s12", 12, {-0.5, 0.3, -1.2}, 30, -20, 4.0, 0, 60, 1.0},
@@ -59,6 +60,7 @@ const ViewSpec kViews[] = {
     {"independent", "box", 0, {0, 0.3, -0.8}, 0, 0, 3.0, 1.6, 60, 0.5},
     {"independent", "sphere", 0, {0, 0.3, 0}, 0, 0, 3.0, 1.6, 60, 0.5},
 };
+// clang-format on
 
 const ViewSpec* findView(const TradeView& view) {
     for (const ViewSpec& v : kViews)
@@ -66,9 +68,7 @@ const ViewSpec* findView(const TradeView& view) {
     return nullptr;
 }
 
-double elevationOf(const ViewSpec& v) {
-    return v.eyeHeight > 0 ? std::asin((v.eyeHeight - v.target.y) / v.distance) / kDegrees : v.elevation;
-}
+double elevationOf(const ViewSpec& v) { return v.eyeHeight > 0 ? std::asin((v.eyeHeight - v.target.y) / v.distance) / kDegrees : v.elevation; }
 
 Mesh floorQuad(float halfSize, float y = 0.0f) {
     Mesh m;
@@ -174,8 +174,7 @@ RasterScene thinScene(uint32_t seed) {
     RasterScene s;
     s.meshes = {floorQuad(8.0f)};
     const uint32_t posts = 3 + rng.below(3);
-    for (uint32_t i = 0; i < posts; ++i)
-        s.meshes.push_back(post({rng.in(-2.0, 2.0), 0, rng.in(-2.0, 0.0)}, rng.in(0.025, 0.05), rng.in(0.8, 1.4)));
+    for (uint32_t i = 0; i < posts; ++i) s.meshes.push_back(post({rng.in(-2.0, 2.0), 0, rng.in(-2.0, 0.0)}, rng.in(0.025, 0.05), rng.in(0.8, 1.4)));
     const double x0 = rng.in(-2.0, -1.0), length = rng.in(2.0, 3.0), z = rng.in(-1.6, -0.6);
     for (double x = x0; x <= x0 + length + 1e-9; x += 0.5) s.meshes.push_back(post({x, 0, z}, 0.03, 1.0));
     s.meshes.push_back(box({x0, 0.97, z - 0.025}, {x0 + length, 1.02, z + 0.025}));
@@ -224,9 +223,9 @@ Result<RasterScene> meshScene(const std::string& variant) {
     Result<scene::TriangleMesh> model = variant == "bunny" ? scene::loadObjMesh(dir + "bunny.obj") : loadModelMesh(dir + variant + ".3ds");
     if (!model) return model.status();
     // The cat is modelled z-up, the horse rolled 60 degrees about its length (z); the bunny is y-up.
-    const glm::dmat4 upright = variant == "cat"     ? glm::rotate(glm::dmat4(1.0), -kPi / 2, glm::dvec3(1, 0, 0))
-                               : variant == "horse" ? glm::rotate(glm::dmat4(1.0), -kPi / 3, glm::dvec3(0, 0, 1))
-                                                    : glm::dmat4(1.0);
+    const glm::dmat4 upright = variant == "cat" ? glm::rotate(glm::dmat4(1.0), -kPi / 2, glm::dvec3(1, 0, 0))
+        : variant == "horse"                    ? glm::rotate(glm::dmat4(1.0), -kPi / 3, glm::dvec3(0, 0, 1))
+                                                : glm::dmat4(1.0);
     glm::dvec3 lo(1e30), hi(-1e30);
     for (const Vertex& v : model->vertices) {
         const glm::dvec3 p(upright * glm::dvec4(glm::dvec3(v.position), 1.0));
@@ -236,7 +235,7 @@ Result<RasterScene> meshScene(const std::string& variant) {
     const glm::dvec3 place(0, 0, wall + 0.15 + scale * (hi.z - lo.z) / 2);
     Mesh m(std::move(model.value()));
     m.model = glm::translate(glm::dmat4(1.0), place) * glm::scale(glm::dmat4(1.0), glm::dvec3(scale)) *
-              glm::translate(glm::dmat4(1.0), -glm::dvec3((lo.x + hi.x) / 2, lo.y, (lo.z + hi.z) / 2)) * upright;
+        glm::translate(glm::dmat4(1.0), -glm::dvec3((lo.x + hi.x) / 2, lo.y, (lo.z + hi.z) / 2)) * upright;
     RasterScene s;
     s.meshes = {floorQuad(6.0f), wallZ(float(wall), -6, 6, 3)};
     s.meshes.push_back(std::move(m));
@@ -262,7 +261,8 @@ RasterScene independentScene(const std::string& variant) {
 std::vector<SceneFamily> sceneFamilies() {
     return {
         {"blocks", false, "7-9 boxes, spheres and capped cylinders from a seed, on a floor, against a wall, in a corner and stacked"},
-        {"interior", false, "a hall with two rows of columns carrying arcades of semicircular arches and arches across the nave, benches from a seed"},
+        {"interior", false,
+         "a hall with two rows of columns carrying arcades of semicircular arches and arches across the nave, benches from a seed"},
         {"thin", true, "posts, a railing and a thin sheet on legs above an open floor, sizes and places from a seed"},
         {"meshes", true, "glmark2's horse, cat and bunny (Debian glmark2-data) standing on a floor before a wall"},
         {"independent", true, "a 90-degree corner, a box on a floor before a wall, a sphere resting on a floor; eye height 1.6, fov-y 60, r 0.5"},
