@@ -15,6 +15,7 @@ PACKAGES=(
   libpng-dev libopenexr-dev       # PNG and EXR image files
   libcli11-dev                    # CLI parsing for sfx and sfxc
   libtinyobjloader-dev glmark2-data  # OBJ loading, the Stanford bunny
+  libassimp-dev                   # glmark2's 3DS horse and cat (the AO scene families)
   libembree-dev                   # CPU ray tracing: the ambient-occlusion ground truth
   nlohmann-json3-dev              # scene files (sfx render)
   clang-14 libclang-rt-14-dev     # sanitizer builds and libFuzzer targets

@@ -1,14 +1,18 @@
 #!/usr/bin/env bash
-# Regenerates the trade page (docs/trade.md) from a checkout: builds the three programs,
-# then
-#   1. fit_ao        - refits each technique's look per tier on the training views, starting from
-#                      the tier table's look, and scores the held-out ones (docs/ao_fit.csv, the
-#                      fit table of docs/trade.md); three refinement levels, as it starts
-#                      where the last adopted fit ended;
+# Regenerates the trade page (docs/trade.md) and the scene families' page (docs/ao_families.md)
+# from a checkout: builds the programs, then
+#   1. fit_ao        - refits each technique's look per tier on the training scene families,
+#                      starting from the tier table's look, and scores the held-out families
+#                      (docs/ao_fit.csv, the fit table of docs/trade.md); three refinement levels,
+#                      as it starts where the last adopted fit ended;
 #   2. bench_trade   - every technique x tier x blur x backend at its defaults against the truth
 #                      (docs/trade.csv, the error tables);
 #   3. trade_presets - cost and accuracy of every tier preset, AO and motion blur, and the Pareto
-#                      plots (docs/trade_presets.csv, docs/images/pareto_*.svg, the preset table).
+#                      plots (docs/trade_presets.csv, docs/images/pareto_*.svg, the preset table);
+#   4. bench_families - every technique x tier x backend at its defaults per scene family, and the
+#                      peer XeGTAO on the same inputs (tools/run_xegtao.sh, when its harness
+#                      builds) against the same truth (docs/ao_families.md, .csv, _cost.csv,
+#                      docs/images/ao_family_*.png).
 # Truth images are traced once and cached by scene, view, size, radius, sample count and seed
 # under $SFX_TRUTH_CACHE (default build/truth-cache): a second run only renders the effects.
 # The fitted looks are data of the tier table: fit_ao prints them, and adopting them is an edit of
@@ -24,13 +28,20 @@ start=$(date +%s)
 step() { echo "== [$(( $(date +%s) - start )) s] $*"; }
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
 
-step "configure and build bench_trade, fit_ao, trade_presets"
+step "configure and build bench_trade, fit_ao, trade_presets, bench_families"
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build "$BUILD_DIR" -j"$(nproc)" --target bench_trade fit_ao trade_presets sfx_cli >/dev/null
-step "fit_ao: the looks, fitted on the training views, scored on the held-out ones"
+cmake --build "$BUILD_DIR" -j"$(nproc)" --target bench_trade fit_ao trade_presets bench_families sfx_cli >/dev/null
+step "fit_ao: the looks, fitted on the training families, scored on the held-out ones"
 "$BUILD_DIR"/tools/bench/fit_ao --start tier --refinements 3 --cache-dir "$CACHE" --out-dir docs --backend "${BACKENDS%%,*}"
 step "bench_trade: the defaults against the truth, every backend"
 "$BUILD_DIR"/tools/bench/bench_trade --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS"
 step "trade_presets: cost and accuracy of every preset, Pareto plots"
 "$BUILD_DIR"/tools/bench/trade_presets --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS"
-step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg"
+PEER_DIR=$BUILD_DIR/families-peer
+step "bench_families: each family view's depth and normals for the peer"
+"$BUILD_DIR"/tools/bench/bench_families --write-inputs "$PEER_DIR" --backends "${BACKENDS%%,*}"
+step "XeGTAO (the peer, measured beside the project) on the same inputs"
+tools/run_xegtao.sh "$PEER_DIR"
+step "bench_families: the defaults and the peer against the truth, per scene family"
+"$BUILD_DIR"/tools/bench/bench_families --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS" --peer-dir "$PEER_DIR"
+step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg, docs/ao_families.*"

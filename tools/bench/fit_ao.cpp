@@ -1,9 +1,10 @@
 // fit_ao: calibrates the AO techniques' default settings against ray-traced ground truth.
 // For each tier x technique it searches intensity and contrast (and Alchemy's and
 // Scalable's bias and sum exponent, crease's range and bias) coarse to fine, maximising the mean PSNR over the
-// frame plus the mean PSNR where the truth is below 0.95, on the TRAINING views
-// (tools/scenes/trade_views.*) at radii 0.25-2 with the blur on (the default); then it scores
-// the fitted settings and today's defaults on HELD-OUT views the search never saw. Writes
+// frame plus the mean PSNR where the truth is below 0.95, on the views of the TRAINING scene
+// families (tools/scenes/scene_families.*) at each view's radius with the blur on (the
+// default); then it scores the fitted settings and today's defaults on the HELD-OUT families,
+// whose kind of geometry the search never saw, each family on its own as well. Writes
 // <out-dir>/ao_fit.csv and the tables into <out-dir>/trade.md between its markers. The truth
 // comes from the same cache as bench_trade. A program, not a test.
 #include <CLI/CLI.hpp>
@@ -23,6 +24,7 @@
 #include "ao_scoring.hpp"
 #include "bench_device.hpp"
 #include "markdown_section.hpp"
+#include "scene_families.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/tiers.hpp"
 #include "sfx/truth_metrics.hpp"
@@ -36,8 +38,7 @@ using tools::fixed;
 
 struct Options {
     uint32_t width = 320, height = 180, samples = 256;
-    std::vector<double> trainingRadii{0.25, 0.7, 2.0};
-    std::vector<double> heldOutRadii{0.25, 0.5, 1.0, 2.0};
+    std::vector<double> trainingRadii, heldOutRadii;  // none: each view's own
     std::string backend = "vulkan";
     std::vector<std::string> techniques{"alchemy", "scalable", "crease"};
     std::string cacheDir = "build/truth-cache", outDir = "docs";
@@ -216,7 +217,20 @@ struct FitRow {
     std::string tier, technique, fitted;
     AoSettings settings;
     tools::AoScore before, trainingScore, heldOut;
+    std::map<std::string, tools::AoScore> heldOutFamilies;  // the fitted settings on each held-out family
 };
+
+// The fitted settings' score on each held-out family's cases.
+Result<std::map<std::string, tools::AoScore>> scoreByFamily(tools::AoEvaluator& ev, const AoSettings& settings,
+                                                            const std::vector<tools::AoCase>& cases, const std::vector<tools::TradeView>& views) {
+    Result<std::vector<truth::Comparison>> errors = ev.run(settings, cases);
+    if (!errors) return errors.status();
+    std::map<std::string, std::vector<truth::Comparison>> byFamily;
+    for (size_t i = 0; i < cases.size(); ++i) byFamily[views[cases[i].view].family].push_back(errors.value()[i]);
+    std::map<std::string, tools::AoScore> scores;
+    for (const auto& [family, e] : byFamily) scores[family] = tools::summarise(e);
+    return scores;
+}
 
 std::string markdown(const Options& o, const std::vector<FitRow>& rows, const std::map<std::string, tools::AoScore>& none,
                      const std::vector<tools::TradeView>& training, const std::vector<tools::TradeView>& heldOut, const std::string& machine) {
@@ -229,21 +243,28 @@ std::string markdown(const Options& o, const std::vector<FitRow>& rows, const st
     md << "Fitted by `build/tools/bench/fit_ao` on " << machine << "; " << o.width << "x" << o.height << ", blur on, G-buffer normals, truth "
        << o.samples << " directions per pixel.\n\nTraining views (radii";
     for (double r : o.trainingRadii) md << " " << r;
+    if (o.trainingRadii.empty()) md << " of each view, docs/ao_families.md";
     md << "): " << list(training) << ".\n\nHeld-out views (radii";
     for (double r : o.heldOutRadii) md << " " << r;
-    md << "; `scene@turn_distance_lift` is the camera turned about the target): " << list(heldOut) << ".\n\n";
+    if (o.heldOutRadii.empty()) md << " of each view";
+    md << "): " << list(heldOut) << ".\n\n";
     md << "| tier | technique | fitted defaults | training PSNR / occluded | held-out PSNR / occluded (before the fit) | held-out worst case "
-          "PSNR / occluded | held-out signed error occluded | gain over no AO, occluded |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n";
-    for (const FitRow& r : rows)
+          "PSNR / occluded | held-out signed error occluded | gain over no AO, occluded | per held-out family PSNR / occluded |\n| --- | --- | --- | "
+          "--- | --- | --- | --- | --- | --- |\n";
+    for (const FitRow& r : rows) {
         md << "| " << r.tier << " | " << r.technique << " | " << r.fitted << " | " << fixed(r.trainingScore.psnr, 2) << " / "
            << fixed(r.trainingScore.psnrOccluded, 2) << " | " << fixed(r.heldOut.psnr, 2) << " / " << fixed(r.heldOut.psnrOccluded, 2) << " ("
            << fixed(r.before.psnr, 2) << " / " << fixed(r.before.psnrOccluded, 2) << ") | " << fixed(r.heldOut.worstPsnr, 2) << " / "
            << fixed(r.heldOut.worstPsnrOccluded, 2) << " | " << fixed(r.heldOut.signedOccluded, 3) << " | "
-           << fixed(r.heldOut.psnrOccluded - none.at("held-out").psnrOccluded, 2) << " dB |\n";
+           << fixed(r.heldOut.psnrOccluded - none.at("held-out").psnrOccluded, 2) << " dB |";
+        for (const auto& [family, score] : r.heldOutFamilies)
+            md << " " << family << " " << fixed(score.psnr, 2) << " / " << fixed(score.psnrOccluded, 2) << ";";
+        md << " |\n";
+    }
     md << "| - | none | visibility 1 | " << fixed(none.at("training").psnr, 2) << " / " << fixed(none.at("training").psnrOccluded, 2) << " | "
        << fixed(none.at("held-out").psnr, 2) << " / " << fixed(none.at("held-out").psnrOccluded, 2) << " | "
        << fixed(none.at("held-out").worstPsnr, 2) << " / " << fixed(none.at("held-out").worstPsnrOccluded, 2) << " | "
-       << fixed(none.at("held-out").signedOccluded, 3) << " | 0 |\n";
+       << fixed(none.at("held-out").signedOccluded, 3) << " | 0 | - |\n";
     return md.str();
 }
 
@@ -255,10 +276,12 @@ int main(int argc, char** argv) {
     app.add_option("--width", o.width, "pixels")->capture_default_str();
     app.add_option("--height", o.height, "pixels")->capture_default_str();
     app.add_option("--samples", o.samples, "truth directions per pixel (a square >= 256)")->capture_default_str();
-    app.add_option("--training-radii", o.trainingRadii, "comma-separated world-space radii of the training views")
+    app.add_option("--training-radii", o.trainingRadii, "comma-separated world-space radii of the training views (none: each view's own)")
         ->delimiter(',')
         ->capture_default_str();
-    app.add_option("--held-out-radii", o.heldOutRadii, "comma-separated radii of the held-out views")->delimiter(',')->capture_default_str();
+    app.add_option("--held-out-radii", o.heldOutRadii, "comma-separated radii of the held-out views (none: each view's own)")
+        ->delimiter(',')
+        ->capture_default_str();
     app.add_option("--backend", o.backend, "vulkan, gles, gl, gl-egl, gl-osmesa (the backends agree)")->capture_default_str();
     app.add_option("--techniques", o.techniques, "comma-separated: alchemy, scalable, crease")->delimiter(',')->capture_default_str();
     app.add_option("--refinements", o.refinements, "halvings of the fine search's step")->capture_default_str();
@@ -273,7 +296,7 @@ int main(int argc, char** argv) {
     const auto started = std::chrono::steady_clock::now();
     auto elapsed = [&] { return fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(), 1); };
 
-    const std::vector<tools::TradeView> trainingViews = tools::trainingViews(), heldOutViews = tools::heldOutViews();
+    const std::vector<tools::TradeView> trainingViews = tools::familyViews(false), heldOutViews = tools::familyViews(true);
     std::vector<tools::TradeView> views = trainingViews;
     views.insert(views.end(), heldOutViews.begin(), heldOutViews.end());
     auto progress = [&](const std::string& line) { std::cout << "[" << elapsed() << " s] " << line << std::endl; };
@@ -333,7 +356,13 @@ int main(int argc, char** argv) {
                 std::cerr << "fit_ao: " << label << ": " << held.status().toString() << "\n";
                 return 1;
             }
-            rows.push_back({toString(tier), name, describe(fitted.value()), fitted.value(), before.value(), trained.value(), held.value()});
+            Result<std::map<std::string, tools::AoScore>> families = scoreByFamily(ev, fitted.value(), heldOut.value(), views);
+            if (!families) {
+                std::cerr << "fit_ao: " << label << ": " << families.status().toString() << "\n";
+                return 1;
+            }
+            rows.push_back(
+                {toString(tier), name, describe(fitted.value()), fitted.value(), before.value(), trained.value(), held.value(), families.value()});
             std::cout << "[" << elapsed() << " s] " << label << ": " << rows.back().fitted << "; held out " << fixed(held->psnr, 2)
                       << " dB, occluded " << fixed(held->psnrOccluded, 2) << " dB (before the fit " << fixed(before->psnr, 2) << " / "
                       << fixed(before->psnrOccluded, 2) << "; no AO " << fixed(none["held-out"].psnr, 2) << " / "

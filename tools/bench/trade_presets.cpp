@@ -315,7 +315,7 @@ int main(int argc, char** argv) {
     auto elapsed = [&] { return fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(), 1); };
 
     AccuracyCases cases;
-    cases.views = tools::heldOutViews();
+    cases.views = tools::presetViews();
     for (const tools::TradeView& v : cases.views)
         if (v.analytic) cases.analyticViews.push_back(v);
     const auto progress = [&](const std::string& line) { std::cout << "[" << elapsed() << " s] " << line << std::endl; };

@@ -59,6 +59,38 @@ TriangleMesh sphereMesh(glm::vec3 centre, float radius, int slices, int stacks) 
     return m;
 }
 
+TriangleMesh cylinderMesh(glm::vec3 base, float radius, float height, int slices, bool capped) {
+    TriangleMesh m;
+    for (int j = 0; j <= slices; ++j) {
+        const double theta = 2.0 * kPi * j / slices;
+        const glm::vec3 n(float(std::cos(theta)), 0.0f, float(std::sin(theta)));
+        m.vertices.push_back({base + radius * n, n});
+        m.vertices.push_back({base + radius * n + glm::vec3(0, height, 0), n});
+    }
+    for (int j = 0; j < slices; ++j) {
+        const uint32_t a = uint32_t(2 * j);
+        m.indices.insert(m.indices.end(), {a, a + 1, a + 2, a + 1, a + 3, a + 2});
+    }
+    if (!capped) return m;
+    for (const float y : {0.0f, height}) {
+        const glm::vec3 n(0.0f, y > 0 ? 1.0f : -1.0f, 0.0f);
+        const uint32_t centre = uint32_t(m.vertices.size());
+        m.vertices.push_back({base + glm::vec3(0, y, 0), n});
+        for (int j = 0; j <= slices; ++j) {
+            const double theta = 2.0 * kPi * j / slices;
+            m.vertices.push_back({base + glm::vec3(float(radius * std::cos(theta)), y, float(radius * std::sin(theta))), n});
+        }
+        for (int j = 0; j < slices; ++j) {
+            const uint32_t a = centre + 1 + uint32_t(j);
+            if (y > 0)
+                m.indices.insert(m.indices.end(), {centre, a + 1, a});
+            else
+                m.indices.insert(m.indices.end(), {centre, a, a + 1});
+        }
+    }
+    return m;
+}
+
 Result<TriangleMesh> parseObjMesh(const std::string& path, const std::string& text) {
     tinyobj::ObjReader reader;
     tinyobj::ObjReaderConfig config;

@@ -26,20 +26,7 @@ Mesh floorPlane(float halfSize, float y = 0.0f) {
 
 Mesh sphere(glm::vec3 centre, float radius) { return scene::sphereMesh(centre, radius); }
 
-Mesh cylinder(glm::vec3 base, float radius, float height, int slices = 32) {
-    Mesh m;
-    for (int j = 0; j <= slices; ++j) {
-        const double theta = 2.0 * kPi * j / slices;
-        const glm::vec3 n(float(std::cos(theta)), 0.0f, float(std::sin(theta)));
-        m.vertices.push_back({base + radius * n, n});
-        m.vertices.push_back({base + radius * n + glm::vec3(0, height, 0), n});
-    }
-    for (int j = 0; j < slices; ++j) {
-        const uint32_t a = uint32_t(2 * j);
-        m.indices.insert(m.indices.end(), {a, a + 1, a + 2, a + 1, a + 3, a + 2});
-    }
-    return m;
-}
+Mesh cylinder(glm::vec3 base, float radius, float height) { return scene::cylinderMesh(base, radius, height); }
 
 Result<Mesh> loadObj(const std::string& path) {
     Result<scene::TriangleMesh> mesh = scene::loadObjMesh(path);

@@ -3,10 +3,13 @@
 #include <cmath>
 #include <cstdio>
 
+#include "scene_families.hpp"
+
 namespace sfx::tools {
 
 std::string TradeView::name() const {
     if (analytic) return "analytic-" + scene;
+    if (!family.empty()) return family + "." + scene;
     char buf[64];
     if (distanceScale == 1 && lift == 0)
         std::snprintf(buf, sizeof buf, "@%g", turnDegrees);
@@ -15,19 +18,9 @@ std::string TradeView::name() const {
     return scene + buf;
 }
 
-// Training: three scenes, each from its own camera and one turned the other way round.
-std::vector<TradeView> trainingViews() {
-    std::vector<TradeView> v;
-    for (const char* s : {"corner", "steps", "columns"}) {
-        v.push_back({s, false, 0, 1, 0});
-        v.push_back({s, false, -30, 0.8, 0});
-    }
-    return v;
-}
-
-// Held out: the training scenes from a third camera, two scenes the fit never saw from three
-// cameras each, and the analytic scenes that have occlusion (exact depth, spheres, sky).
-std::vector<TradeView> heldOutViews() {
+// Five sample scenes from cameras turned about their targets, and the analytic scenes that have
+// occlusion (exact depth, spheres, sky).
+std::vector<TradeView> presetViews() {
     std::vector<TradeView> v;
     for (const char* s : {"corner", "steps", "columns"}) v.push_back({s, false, 20, 1.25, 0.4});
     for (const char* s : {"contact", "bunny"}) {
@@ -41,6 +34,7 @@ std::vector<TradeView> heldOutViews() {
 
 Result<RasterScene> viewScene(const TradeView& view) {
     if (view.analytic) return invalidArgument("view", "'" + view.name() + "'", "a rasterised sample scene's view");
+    if (!view.family.empty()) return familyScene(view);
     Result<RasterScene> scene = makeScene(view.scene);
     if (!scene) return scene.status();
     const double a = view.turnDegrees * 3.14159265358979323846 / 180.0;

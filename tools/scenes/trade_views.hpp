@@ -1,7 +1,7 @@
-// The views the trade's fit and report score AO on: the sample scenes from their own
-// cameras and from cameras moved about their targets, and the analytic scenes. The fit of the
-// techniques' defaults sees only the training views; the report scores held-out views the fit
-// never saw (other cameras of the training scenes, whole scenes it never saw, analytic scenes).
+// The views the trade scores AO on: the scene families' views (scene_families.hpp: fit_ao
+// trains on the training families and scores the held-out ones), and the sample scenes from
+// their own cameras and from cameras moved about their targets with the analytic scenes, which
+// trade_presets scores its presets on.
 #pragma once
 
 #include <memory>
@@ -20,13 +20,18 @@ struct TradeView {
     double turnDegrees = 0;    // the eye turned about the vertical through the target
     double distanceScale = 1;  // and moved along its line of sight toward (< 1) or away from the target
     double lift = 0;           // and raised, world units
-    std::string name() const;  // "corner@0", "corner@-30_0.8_0", "analytic-contact"
+    std::string family;        // set: a scene family's view, `scene` names its variant (scene_families.hpp)
+    uint32_t index = 0;        // the view's number in its family
+    double radius = 0;         // the view's AO radius; 0: the caller's radii
+    // "corner@0", "corner@-30_0.8_0", "analytic-contact", "blocks.s11"
+    std::string name() const;
 };
 
-std::vector<TradeView> trainingViews();
-std::vector<TradeView> heldOutViews();
+// The sample scenes from three cameras each and the analytic scenes that have occlusion.
+std::vector<TradeView> presetViews();
 
-// The sample scene with its eye moved as the view says. InvalidArgument for an analytic view.
+// The sample scene with its eye moved as the view says, or the family view's scene.
+// InvalidArgument for an analytic view.
 Result<RasterScene> viewScene(const TradeView& view);
 // The geometry and camera the truth traces for the view (its name is view.name()).
 Result<TruthScene> viewTruthScene(const TradeView& view, uint32_t width, uint32_t height);

@@ -16,7 +16,7 @@ Result<std::vector<AoCase>> loadCases(const std::vector<TradeView>& views, size_
     for (size_t v = first; v < last; ++v) {
         Result<TruthScene> scene = viewTruthScene(views[v], settings.width, settings.height);
         if (!scene) return Status{scene.status().code(), views[v].name() + ": " + scene.status().message()};
-        for (double radius : radii) {
+        for (double radius : radii.empty() ? std::vector<double>{views[v].radius} : radii) {
             truth::Settings ts;
             ts.radius = radius;
             ts.samples = settings.samples;
@@ -74,7 +74,13 @@ AoEvaluator::~AoEvaluator() {
     if (!out_.isNull()) (void)dev_.destroyTexture(out_);
 }
 
-Result<std::vector<truth::Comparison>> AoEvaluator::run(AoSettings s, const std::vector<AoCase>& cases) {
+std::vector<AoTechnique> allAoTechniques() {
+    std::vector<AoTechnique> all;
+    for (uint32_t i = 0; std::string(toString(AoTechnique(i))) != "unknown"; ++i) all.push_back(AoTechnique(i));
+    return all;
+}
+
+Result<std::vector<truth::Comparison>> AoEvaluator::run(AoSettings s, const std::vector<AoCase>& cases, std::vector<reference::Grid>* visibilities) {
     std::vector<truth::Comparison> errors;
     for (const AoCase& c : cases) {
         const ViewInputs& in = *inputs_[c.view];
@@ -88,6 +94,7 @@ Result<std::vector<truth::Comparison>> AoEvaluator::run(AoSettings s, const std:
         Result<truth::Comparison> e = truth::compare(c.truth, vis->values);
         if (!e) return e.status();
         errors.push_back(e.value());
+        if (visibilities) visibilities->push_back(std::move(vis.value()));
     }
     ++evaluations_;
     return errors;

@@ -27,8 +27,8 @@ struct TruthSettings {
     std::string cacheDir = "build/truth-cache";
 };
 
-// The cases of views[first, last) at every radius, truth from the cache or traced; progress
-// gets one line per truth.
+// The cases of views[first, last) at every radius (none: each view's own), truth from the cache
+// or traced; progress gets one line per truth.
 Result<std::vector<AoCase>> loadCases(const std::vector<TradeView>& views, size_t first, size_t last, const std::vector<double>& radii,
                                       const TruthSettings& settings, const std::function<void(const std::string&)>& progress);
 
@@ -43,6 +43,9 @@ struct AoScore {
 AoScore summarise(const std::vector<truth::Comparison>& errors);
 // The score of "no AO" (visibility 1 everywhere).
 AoScore noAoScore(const std::vector<AoCase>& cases);
+// Every technique the SDK names (AoTechnique's values in order), so that a benchmark scores a
+// technique the moment it exists.
+std::vector<AoTechnique> allAoTechniques();
 
 // Renders and scores settings on one tier's device (a preset's profile, default the tier's),
 // every case of a set.
@@ -54,11 +57,14 @@ public:
     AoEvaluator& operator=(const AoEvaluator&) = delete;
     Status prepare(const std::vector<TradeView>& views);
     void setProfile(const TierProfile& profile) { profile_ = profile; }
-    // Each case with settings.radius = the case's radius.
-    Result<std::vector<truth::Comparison>> run(AoSettings settings, const std::vector<AoCase>& cases);
+    // Each case with settings.radius = the case's radius; visibilities, when given, receives each
+    // case's output.
+    Result<std::vector<truth::Comparison>> run(AoSettings settings, const std::vector<AoCase>& cases,
+                                               std::vector<reference::Grid>* visibilities = nullptr);
     Result<AoScore> score(const AoSettings& settings, const std::vector<AoCase>& cases);
     size_t evaluations() const { return evaluations_; }
     Device& device() const { return dev_; }
+    const ViewInputs& inputs(size_t view) const { return *inputs_[view]; }
 
 private:
     Device& dev_;

@@ -1,4 +1,4 @@
-// Triangle meshes for scenes: the primitives a scene file names (quad, box, sphere) and OBJ
+// Triangle meshes for scenes: the primitives a scene file names (quad, box, sphere), cylinders for the sample scenes, and OBJ
 // files through tinyobjloader, with vertex normals. Shared by the scene-file loader and the
 // sample scenes.
 #pragma once
@@ -32,6 +32,8 @@ TriangleMesh quadMesh();
 TriangleMesh boxMesh(glm::vec3 lo, glm::vec3 hi);
 // A UV sphere, smooth normals.
 TriangleMesh sphereMesh(glm::vec3 centre, float radius, int slices = 48, int stacks = 24);
+// A vertical cylinder standing on `base`, smooth side normals; capped: closed by flat discs.
+TriangleMesh cylinderMesh(glm::vec3 base, float radius, float height, int slices = 32, bool capped = false);
 // An OBJ file (faces triangulated), smooth area-weighted normals from its faces. FileError naming
 // the path when it does not exist, does not parse, has no triangles, an index out of range or a
 // coordinate that is not finite.
