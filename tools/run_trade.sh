@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the trade page (docs/trade.md) from a checkout: builds the three programs,
+# Regenerates the trade page (docs/trade.md) from a checkout: builds the four programs,
 # then
 #   1. fit_ao        - refits each technique's look per tier on the training views, starting from
 #                      the tier table's look, and scores the held-out ones (docs/ao_fit.csv, the
@@ -8,7 +8,9 @@
 #   2. bench_trade   - every technique x tier x blur x backend at its defaults against the truth
 #                      (docs/trade.csv, the error tables);
 #   3. trade_presets - cost and accuracy of every tier preset, AO and motion blur, and the Pareto
-#                      plots (docs/trade_presets.csv, docs/images/pareto_*.svg, the preset table).
+#                      plots (docs/trade_presets.csv, docs/images/pareto_*.svg, the preset table);
+#   4. bench_mb_families - motion blur per scene family, speed, tier and backend against its
+#                      truth (docs/mb_families.csv, the family tables of docs/motion_blur.md).
 # Truth images are traced once and cached by scene, view, size, radius, sample count and seed
 # under $SFX_TRUTH_CACHE (default build/truth-cache): a second run only renders the effects.
 # The fitted looks are data of the tier table: fit_ao prints them, and adopting them is an edit of
@@ -26,11 +28,13 @@ export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
 
 step "configure and build bench_trade, fit_ao, trade_presets"
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build "$BUILD_DIR" -j"$(nproc)" --target bench_trade fit_ao trade_presets sfx_cli >/dev/null
+cmake --build "$BUILD_DIR" -j"$(nproc)" --target bench_trade fit_ao trade_presets bench_mb_families sfx_cli >/dev/null
 step "fit_ao: the looks, fitted on the training views, scored on the held-out ones"
 "$BUILD_DIR"/tools/bench/fit_ao --start tier --refinements 3 --cache-dir "$CACHE" --out-dir docs --backend "${BACKENDS%%,*}"
 step "bench_trade: the defaults against the truth, every backend"
 "$BUILD_DIR"/tools/bench/bench_trade --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS"
 step "trade_presets: cost and accuracy of every preset, Pareto plots"
 "$BUILD_DIR"/tools/bench/trade_presets --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS"
-step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg"
+step "bench_mb_families: motion blur on the held-out scene families"
+"$BUILD_DIR"/tools/bench/bench_mb_families --csv docs/mb_families.csv --backends "$BACKENDS"
+step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg, docs/mb_families.csv"
