@@ -1,6 +1,7 @@
 #version 450
-// Motion blur pass 3: the largest tile velocity in the 3x3 tiles around each tile, a
-// conservative bound on what can blur over any pixel of the tile. Row-major scan, first wins ties.
+// Motion blur pass 3: the largest tile velocity in the 3x3 tiles around each tile, among the
+// tiles whose velocity can reach it (mbNeighborReaches): a bound on what can blur over any pixel
+// of the tile. Row-major scan, first wins ties.
 #include "sfx_shared.h"
 #include "sfx_shared_mb.h"
 
@@ -19,6 +20,7 @@ void main() {
             if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) continue;
             vec2 e = sfxTexel(uTileMax, q, 0).xy;
             vec2 d = e - 0.5;
+            if (!mbNeighborReaches(dx, dy, d)) continue;
             float len2 = dot(d, d);
             if (len2 > bestLen2) {
                 bestLen2 = len2;

@@ -1,9 +1,8 @@
 #version 450
 // Motion blur pass 4: gather reconstruction (docs/algorithms.md). Samples in mirrored pairs
-// along the neighbourhood velocity v_N and, for odd pairs, the centre velocity v_C; each sample weighted
-// by the soft depth comparison, the background / foreground cones and the both-moving test of
-// sfx_shared_mb.h; weights summed and normalised. Pixels with nothing moving near them return
-// their colour untouched.
+// along the neighbourhood velocity v_N or the centre velocity v_C; each sample weighted by the
+// soft depth comparison and the spread tests of sfx_shared_mb.h, the centre taking what the
+// samples leave. Pixels with nothing moving near them return their colour untouched.
 #define SFX_WANT_MB_RECONSTRUCT_PARAMS 1
 #include "sfx_shared.h"
 #include "sfx_shared_mb.h"
@@ -38,28 +37,33 @@ void main() {
     vec2 vC = decodeVelocity(packedC.xy);
     float zC = packedC.z + packedC.w;
     float speedC = length(vC);
+    float speedN = length(vN);
     float jitter = mbJitter(p.x, p.y, kJitterSize);
+    int pairs = mbActivePairs(speedN, kPairs);
 
-    float wC = mbCentreWeight(params.centreWeight, speedC);
-    vec4 sum = colorC * wC;
-    float total = wC;
-    float perSample = mbSampleScale(kPairs);
+    vec4 sum = vec4(0.0);
+    float total = 0.0;
     for (int i = 0; i < kPairs; ++i) {
-        vec2 v = mbPairUsesCentre(i, speedC) ? vC : vN;
+        if (i >= pairs) break;
+        vec2 v = mbPairUsesCentre(i, speedC, speedN) ? vC : vN;
+        float speedV = length(v);
         for (int s = 0; s < 2; ++s) {
-            vec2 off = roundAway(mbSampleT(i, kPairs, jitter, s == 0 ? 1.0 : -1.0) * v);
+            vec2 off = roundAway(mbSampleT(i, pairs, jitter, s == 0 ? 1.0 : -1.0, speedV) * v);
             // Clamped to the image: a sample never leaves it, however large the velocity.
             ivec2 q = clamp(p + ivec2(off), ivec2(0), size - 1);
             float dist = length(vec2(q - p));
             vec4 packedS = sfxTexel(uPacked, q, 0);
             float speedS = length(decodeVelocity(packedS.xy));
             float zS = packedS.z + packedS.w;
-            float w = mbSampleWeight(zC, zS, speedC, speedS, dist, params.softExtent) * perSample;
+            float w = mbSampleWeight(zC, zS, speedC, speedS, dist, params.softExtent);
             vec4 colorS = sfxTexel(uColor, q, 0);
             if (!sfxColorIsFinite(colorS)) continue;  // a non-finite sample is left out (sfx_shared.h)
             sum += sfxColor(colorS) * w;
             total += w;
         }
     }
+    float wC = mbCentreShare(params.centreWeight, total, pairs);
+    sum += colorC * wC;
+    total += wC;
     outColor = sum / total;
 }

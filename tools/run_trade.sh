@@ -13,6 +13,8 @@
 #                      peer XeGTAO on the same inputs (tools/run_xegtao.sh, when its harness
 #                      builds) against the same truth (docs/ao_families.md, .csv, _cost.csv,
 #                      docs/images/ao_family_*.png).
+#   5. bench_mb_families - motion blur per scene family, speed, tier and backend against its
+#                      truth (docs/mb_families.csv, the family tables of docs/motion_blur.md).
 # Truth images are traced once and cached by scene, view, size, radius, sample count and seed
 # under $SFX_TRUTH_CACHE (default build/truth-cache): a second run only renders the effects.
 # The fitted looks are data of the tier table: fit_ao prints them, and adopting them is an edit of
@@ -28,9 +30,9 @@ start=$(date +%s)
 step() { echo "== [$(( $(date +%s) - start )) s] $*"; }
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
 
-step "configure and build bench_trade, fit_ao, trade_presets, bench_families"
+step "configure and build bench_trade, fit_ao, trade_presets, bench_families, bench_mb_families"
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build "$BUILD_DIR" -j"$(nproc)" --target bench_trade fit_ao trade_presets bench_families sfx_cli >/dev/null
+cmake --build "$BUILD_DIR" -j"$(nproc)" --target bench_trade fit_ao trade_presets bench_families bench_mb_families sfx_cli >/dev/null
 step "fit_ao: the looks, fitted on the training families, scored on the held-out ones"
 "$BUILD_DIR"/tools/bench/fit_ao --start tier --refinements 3 --cache-dir "$CACHE" --out-dir docs --backend "${BACKENDS%%,*}"
 step "bench_trade: the defaults against the truth, every backend"
@@ -44,4 +46,6 @@ step "XeGTAO (the peer, measured beside the project) on the same inputs"
 tools/run_xegtao.sh "$PEER_DIR"
 step "bench_families: the defaults and the peer against the truth, per scene family"
 "$BUILD_DIR"/tools/bench/bench_families --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS" --peer-dir "$PEER_DIR"
-step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg, docs/ao_families.*"
+step "bench_mb_families: motion blur on the held-out scene families"
+"$BUILD_DIR"/tools/bench/bench_mb_families --csv docs/mb_families.csv --backends "$BACKENDS"
+step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg, docs/mb_families.csv, docs/ao_families.*"

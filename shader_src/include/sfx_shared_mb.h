@@ -26,6 +26,7 @@
 namespace sfx::shared {
 using glm::length;
 using std::abs;
+using std::ceil;
 using std::clamp;
 using std::floor;
 using std::isinf;
@@ -132,61 +133,77 @@ SFX_MB_FN SFX_MB_REAL mbQuantizeVelocityCode(SFX_MB_REAL e) {
     return clamp(floor(e * steps + 0.5), 0.0, steps) * (1.0 / steps);
 }
 
-// Samples come in pairs along one velocity: pair i of `pairs` sits at +t and -t' with
-//   t = (i + 0.5 + jitter) / pairs,   t' = (i + 0.5 - jitter) / pairs,   both in (0, 1].
-// That is the stratified symmetric pattern shifted by jitter / pairs along the velocity, so the
-// two checkerboard jitters (+-0.25) are mirror images and the kernel is symmetric on average.
-// (Mirroring t itself would make both checkerboard pixels read texels of one parity whenever
-// the sample spacing is an even number of texels: a visible bias.) `side` is +1 or -1; the
-// offset is side * t times the chosen velocity, rounded half away from zero to a texel.
-SFX_MB_FN SFX_MB_REAL mbSampleT(int i, int pairs, SFX_MB_REAL jitter, SFX_MB_REAL side) {
-    return side * (SFX_MB_REAL(i) + 0.5 + side * jitter) / SFX_MB_REAL(pairs);
+// The reconstruction after Jimenez, "Next Generation Post Processing in Call of Duty: Advanced
+// Warfare" (2014), and Guertin, McGuire, Nowrouzezahrai, "A Fast and Stable Feature-Aware Motion
+// Blur Filter" (2014); docs/algorithms.md restates it. Each sample's weight is the fraction of
+// the shutter it stands for (at most 1), the output their average over the pair count with the
+// centre filling what the samples leave, so a uniformly moving area gets a box filter over its
+// blur length, the shape of the truth, and a still pixel beside a moving edge keeps the share of
+// the shutter in which it is not covered.
+
+// Sample pairs used at a pixel: enough for one texel between samples along the neighbourhood
+// velocity (|v_N| rounded up), at most the tier's. More pairs than texels along the blur would
+// read some texels twice and weight them double. The 0.01 px keeps an exact integer length, on
+// the velocity grid, away from the rounding's step in float and double alike.
+SFX_MB_FN int mbActivePairs(SFX_MB_REAL speedN, int pairs) { return clamp(int(ceil(speedN - 0.01)), 1, pairs); }
+
+// Pair i of `pairs` sits at +t and -t' along one velocity of length `speed`:
+//   t = (i + 1 + jitter * s) / pairs,   t' = (i + 1 - jitter * s) / pairs,   both at most 1.
+// Without jitter the samples end on the blur's ends (t = 1), so with one texel between samples
+// they read every texel of the blur once and the box filter is exact. Jitter only hides the
+// steps between texels the samples skip, so its share s grows from 0 at one texel per sample to
+// 1 at two or more: s = clamp(speed / pairs - 1, 0, 1). `side` is +1 or -1; the offset is
+// side * t times the velocity, rounded half away from zero to a texel.
+SFX_MB_FN SFX_MB_REAL mbSampleT(int i, int pairs, SFX_MB_REAL jitter, SFX_MB_REAL side, SFX_MB_REAL speed) {
+    SFX_MB_REAL share = clamp(speed / SFX_MB_REAL(pairs) - 1.0, 0.0, 1.0);
+    return side * min((SFX_MB_REAL(i) + 1.0 + side * jitter * share) / SFX_MB_REAL(pairs), 1.0);
 }
-// Even pairs follow the neighbourhood velocity v_N, odd pairs the centre velocity v_C (the
-// course's alternation, hiding tile edges); a still centre gives its pairs to v_N as well.
-SFX_MB_FN bool mbPairUsesCentre(int i, SFX_MB_REAL centreSpeed) {
-    return (i & 1) == 1 && centreSpeed >= SFX_MB_REAL(SFX_MB_STILL_PX);
+// Which velocity a pair follows. Odd pairs follow the centre's own velocity v_C, even ones the
+// neighbourhood's v_N (the course's alternation, hiding tile edges), except that a centre moving
+// at least half as fast as v_N sends every pair along v_C: sampling along only the dominant
+// direction misses the centre's own blur where objects cross. A still centre uses v_N only.
+SFX_MB_FN bool mbPairUsesCentre(int i, SFX_MB_REAL centreSpeed, SFX_MB_REAL neighbourSpeed) {
+    if (centreSpeed < SFX_MB_REAL(SFX_MB_STILL_PX)) return false;
+    return (i & 1) == 1 || centreSpeed >= 0.5 * neighbourSpeed;
 }
 
-// Soft depth step: 1 when za <= zb, falling to 0 when za - zb reaches `extent`.
-//   background weight of S: mbSoftDepth(z_C, z_S)   (1 when S is behind C or level with it)
-//   foreground weight of S: mbSoftDepth(z_S, z_C)   (1 when S is in front of C or level)
-SFX_MB_FN SFX_MB_REAL mbSoftDepth(SFX_MB_REAL za, SFX_MB_REAL zb, SFX_MB_REAL extent) {
-    return clamp(1.0 - (za - zb) / extent, 0.0, 1.0);
+// Soft depth comparison: the share of sample S that is background to centre C, 1/2 when level,
+// 1 when S is farther by half the extent or more, 0 when nearer by as much; the foreground share
+// is one minus it, so the two always sum to 1.
+SFX_MB_FN SFX_MB_REAL mbBackgroundShare(SFX_MB_REAL zC, SFX_MB_REAL zS, SFX_MB_REAL extent) {
+    return clamp(0.5 + (zS - zC) / extent, 0.0, 1.0);
 }
-// Cone: a pixel moving at `speed` covers points up to `speed` away, fading linearly.
-SFX_MB_FN SFX_MB_REAL mbCone(SFX_MB_REAL dist, SFX_MB_REAL speed) {
-    return clamp(1.0 - dist / max(speed, 1.0e-4), 0.0, 1.0);
-}
-// Cylinder: the course's "both moving" overlap test (speed >= dist), softened to a 1 px linear
-// ramp centred on speed == dist. A sample whose rounded offset is the velocity itself sits
-// exactly at dist == speed, and a hard step there flips with the last bit of the fp16 velocity
-// (GPUs may round it to nearest or toward zero): the ramp makes the weight continuous.
-SFX_MB_FN SFX_MB_REAL mbCylinder(SFX_MB_REAL dist, SFX_MB_REAL speed) { return clamp(speed - dist + 0.5, 0.0, 1.0); }
+// Spread: whether a point moving at `speed` (blur radius) reaches `dist` pixels away, with a
+// 1 px linear ramp centred on speed == dist. Offsets are whole texels and a texel's centre
+// reaches the next texel's centre half a pixel before the edge between them does, so the ramp
+// is centred there; it also keeps the weight continuous in the last bit of the fp16 velocity.
+SFX_MB_FN SFX_MB_REAL mbSpread(SFX_MB_REAL dist, SFX_MB_REAL speed) { return clamp(speed - dist + 0.5, 0.0, 1.0); }
 
-// Weight of sample S at distance `dist` from centre C (the course's three cases, not exclusive):
-//   background estimate  mbSoftDepth(z_C, z_S) * cone(dist, |v_C|)
-//   foreground over C    mbSoftDepth(z_S, z_C) * cone(dist, |v_S|)
-//   both moving          cylinder(dist, |v_S|) * cylinder(dist, |v_C|)
-SFX_MB_FN SFX_MB_REAL mbSampleWeight(SFX_MB_REAL zC, SFX_MB_REAL zS, SFX_MB_REAL speedC, SFX_MB_REAL speedS,
-                                     SFX_MB_REAL dist, SFX_MB_REAL softExtent) {
-    SFX_MB_REAL background = mbSoftDepth(zC, zS, softExtent) * mbCone(dist, speedC);
-    SFX_MB_REAL foreground = mbSoftDepth(zS, zC, softExtent) * mbCone(dist, speedS);
-    return background + foreground + mbCylinder(dist, speedS) * mbCylinder(dist, speedC);
+// Weight of sample S at distance `dist` from centre C, at most 1: as background (behind C) it
+// shows where C's own blur reaches; as foreground (in front of C) where its own blur reaches.
+SFX_MB_FN SFX_MB_REAL mbSampleWeight(SFX_MB_REAL zC, SFX_MB_REAL zS, SFX_MB_REAL speedC, SFX_MB_REAL speedS, SFX_MB_REAL dist,
+                                     SFX_MB_REAL softExtent) {
+    SFX_MB_REAL background = mbBackgroundShare(zC, zS, softExtent);
+    return background * mbSpread(dist, speedC) + (1.0 - background) * mbSpread(dist, speedS);
 }
 
-// Sample weights are summed as if there were SFX_MB_WEIGHT_SAMPLES samples (each scaled by
-// SFX_MB_WEIGHT_SAMPLES / samples), so more taps refine the blur without thickening it; 6 is
-// the current tier's count, where the scale is 1.
-SFX_CONST(float, SFX_MB_WEIGHT_SAMPLES, 6.0)
-SFX_MB_FN SFX_MB_REAL mbSampleScale(int pairs) { return SFX_MB_REAL(SFX_MB_WEIGHT_SAMPLES) / SFX_MB_REAL(2 * pairs); }
+// The centre's weight: what the samples leave of the 2 * activePairs they stand for (never
+// negative: each weighs at most 1), times MotionBlurSettings.centreWeight (1 = exactly the
+// remainder; larger keeps more of the pixel's own colour). Output = (sum of w * colour +
+// this * centre colour) / (sum of w + this).
+SFX_MB_FN SFX_MB_REAL mbCentreShare(SFX_MB_REAL centreWeight, SFX_MB_REAL sampleWeights, int activePairs) {
+    return max(2.0 * SFX_MB_REAL(activePairs) - sampleWeights, 0.0) * centreWeight;
+}
 
-// Centre weight against those summed sample weights: centreWeight / max(|v_C|, 1 px). A fast
-// centre gives way to its neighbours (a uniformly moving area reads as a box-like blur over
-// about 2|v_C| + 1 texels); a still one keeps its colour against samples that blur over it,
-// so a moving edge covers a still background by about the right fraction.
-SFX_MB_FN SFX_MB_REAL mbCentreWeight(SFX_MB_REAL centreWeight, SFX_MB_REAL centreSpeed) {
-    return centreWeight / max(centreSpeed, 1.0);
+// Neighbour max keeps a neighbouring tile only if its velocity can carry its blur into the
+// centre tile (after Guertin et al.): a side neighbour needs motion along that side's axis, a
+// diagonal one motion along that diagonal. `d` is the tile's velocity or anything of its sign
+// (the centred code). Keeps the dominant velocity from being one that never reaches the pixels.
+SFX_MB_FN bool mbNeighborReaches(int dx, int dy, SFX_MB_VEC2 d) {
+    if (dx == 0 && dy == 0) return true;
+    if (dx == 0) return d.y != 0.0;
+    if (dy == 0) return d.x != 0.0;
+    return SFX_MB_REAL(dx * dy) * d.x * d.y > 0.0;
 }
 
 // ---- Specialisation constants of the motion blur passes (branches and loop counts) -----------

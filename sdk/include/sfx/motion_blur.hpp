@@ -50,8 +50,8 @@ struct MotionBlurSettings {
     // Depth difference (linear depth units) over which a sample turns from "level with the
     // centre" to "in front of / behind it".
     float softDepthExtent = 0.1f;
-    // The centre's weight against one averaged sample, divided by max(|v_C|, 1 px): larger keeps
-    // more of the pixel's own colour.
+    // Scales the centre's weight, the share of the shutter its samples leave (1 = exactly that):
+    // larger keeps more of the pixel's own colour.
     float centreWeight = 1.0f;
     float exposure = 1.0f;  // scales the velocity's time span; 0 = no blur
 };

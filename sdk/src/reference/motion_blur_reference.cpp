@@ -9,7 +9,8 @@
 namespace sfx::reference {
 namespace {
 
-using shared::mbCentreWeight;
+using shared::mbActivePairs;
+using shared::mbCentreShare;
 using shared::mbDecodeVelocity;
 using shared::mbEncodeVelocity;
 using shared::mbJitter;
@@ -87,7 +88,7 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
         }
     }
 
-    // Pass 3: neighbour max over 3 x 3 tiles (clipped at the grid's edge).
+    // Pass 3: neighbour max over the 3 x 3 tiles whose velocity reaches the centre tile (clipped at the grid's edge).
     r.neighborMax = VelocityGrid(tw, th);
     for (int ty = 0; ty < int(th); ++ty) {
         for (int tx = 0; tx < int(tw); ++tx) {
@@ -96,7 +97,8 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
                 for (int dx = -1; dx <= 1; ++dx) {
                     const int qx = tx + dx, qy = ty + dy;
                     if (qx < 0 || qy < 0 || qx >= int(tw) || qy >= int(th)) continue;
-                    m.offer(r.tileMax.at(uint32_t(qx), uint32_t(qy)));
+                    const std::array<double, 2>& v = r.tileMax.at(uint32_t(qx), uint32_t(qy));
+                    if (shared::mbNeighborReaches(dx, dy, glm::dvec2(v[0], v[1]))) m.offer(v);
                 }
             r.neighborMax.at(uint32_t(tx), uint32_t(ty)) = m.best;
         }
@@ -104,7 +106,6 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
 
     // Pass 4: reconstruction.
     r.color = ColorGrid(w, h);
-    const double perSample = shared::mbSampleScale(int(p.pairs));
     for (int y = 0; y < int(h); ++y) {
         for (int x = 0; x < int(w); ++x) {
             const std::array<double, 4> colorC = shared::sfxColor(color.at(uint32_t(x), uint32_t(y)));  // sfx_shared.h
@@ -117,15 +118,16 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
             const std::array<double, 2> vC = r.radiusPx.at(uint32_t(x), uint32_t(y));
             const double zC = depth.at(uint32_t(x), uint32_t(y));
             const double speedC = std::sqrt(length2(vC));
+            const double speedN = std::sqrt(length2(vN));
             const double jitter = mbJitter(x, y, int(p.jitterSize));
-            const double wC = mbCentreWeight(p.centreWeight, speedC);
+            const int pairs = mbActivePairs(speedN, int(p.pairs));
             std::array<double, 4> sum{};
-            for (int c = 0; c < 4; ++c) sum[c] = colorC[c] * wC;
-            double total = wC;
-            for (int i = 0; i < int(p.pairs); ++i) {
-                const std::array<double, 2> v = mbPairUsesCentre(i, speedC) ? vC : vN;
+            double total = 0;
+            for (int i = 0; i < pairs; ++i) {
+                const std::array<double, 2> v = mbPairUsesCentre(i, speedC, speedN) ? vC : vN;
+                const double speedV = std::sqrt(length2(v));
                 for (double side : {1.0, -1.0}) {
-                    const double t = mbSampleT(i, int(p.pairs), jitter, side);
+                    const double t = mbSampleT(i, pairs, jitter, side, speedV);
                     const int ox = int(roundAway(t * v[0])), oy = int(roundAway(t * v[1]));
                     const int qx = std::clamp(x + ox, 0, int(w) - 1), qy = std::clamp(y + oy, 0, int(h) - 1);
                     if (qx != x + ox || qy != y + oy) ++r.samplesOutside;
@@ -133,7 +135,7 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
                     r.maxSampleOffsetPx = std::max(r.maxSampleOffsetPx, dist);
                     const double speedS = std::sqrt(length2(r.radiusPx.at(uint32_t(qx), uint32_t(qy))));
                     const double zS = depth.at(uint32_t(qx), uint32_t(qy));
-                    const double wS = mbSampleWeight(zC, zS, speedC, speedS, dist, p.softDepthExtent) * perSample;
+                    const double wS = mbSampleWeight(zC, zS, speedC, speedS, dist, p.softDepthExtent);
                     const std::array<double, 4>& rawS = color.at(uint32_t(qx), uint32_t(qy));
                     if (!shared::sfxColorIsFinite(rawS)) continue;  // never spread (sfx_shared.h)
                     const std::array<double, 4> colorS = shared::sfxColor(rawS);
@@ -141,6 +143,9 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
                     total += wS;
                 }
             }
+            const double wC = mbCentreShare(p.centreWeight, total, pairs);
+            for (int c = 0; c < 4; ++c) sum[c] += colorC[c] * wC;
+            total += wC;
             std::array<double, 4>& out = r.color.at(uint32_t(x), uint32_t(y));
             for (int c = 0; c < 4; ++c) out[c] = sum[c] / total;
         }
