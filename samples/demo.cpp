@@ -158,7 +158,7 @@ int main(int argc, char** argv) {
 
     // 2. Ambient obscurance, every technique, at the tier's defaults. Each context owns only
     //    what it needs: the depth MIP pyramid exists only for the high tier's scalable AO.
-    const AoTechnique techniques[] = {AoTechnique::Scalable, AoTechnique::Alchemy, AoTechnique::Crease};
+    const AoTechnique techniques[] = {AoTechnique::Scalable, AoTechnique::Alchemy, AoTechnique::Crease, AoTechnique::Horizon};
     std::vector<std::unique_ptr<AmbientObscurance>> contexts;
     EffectPlan plan;
     for (AoTechnique technique : techniques) {

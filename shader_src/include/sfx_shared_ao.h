@@ -375,7 +375,7 @@ float aoUnpackDepthKey(vec2 ba, float keyBase, float maxDepth) {
 // Every loop count and branch that is constant for an effect instance is one, never a uniform:
 // lavapipe inlines uniforms that decide control flow and recompiles the shader each time they
 // are bound (megabytes of resident memory per frame). Ids as plain macros, for both languages.
-// The obscurance passes (ao_alchemy/ao_scalable/ao_crease.frag):
+// The obscurance passes (ao_alchemy/ao_scalable/ao_crease/ao_horizon.frag):
 #define SFX_AO_SC_SAMPLES 0        // taps (Alchemy, Scalable)
 #define SFX_AO_SC_MIRRORED 1       // 1: Scalable taps come in mirrored pairs
 #define SFX_AO_SC_MIP_LEVELS 2     // depth MIP levels Scalable reads (1: full resolution only)
@@ -384,6 +384,7 @@ float aoUnpackDepthKey(vec2 ba, float keyBase, float maxDepth) {
 #define SFX_AO_SC_CLAMP_RADIUS 5   // 1: the screen radius is clamped to maxRadiusPx
 #define SFX_AO_SC_HALF_RES 6       // 1: half-size pass: positions and normals at aoFullResPixel
 #define SFX_AO_SC_DEPTH_LAYERS 7   // opaque depth layers each tap tests (1: the first visible one only)
+#define SFX_AO_SC_HORIZON_STEPS 8  // Horizon: depth samples per side of a slice (kAoSamples: its slices)
 // The bilateral blur (ao_blur.frag):
 #define SFX_AO_SC_BLUR_RADIUS 0           // taps each side
 #define SFX_AO_SC_BLUR_MODERATE_RADIUS 1  // Crease's second, moderate blur
@@ -412,7 +413,7 @@ float aoUnpackDepthKey(vec2 ba, float keyBase, float maxDepth) {
                                        // decoded as the blur decodes it
 
 // ---- Uniform blocks of the AO passes (SFX_BLOCK: one declaration for GLSL and C++) ----------
-// The obscurance passes (ao_alchemy/ao_scalable/ao_crease.frag), filled by AmbientObscurance.
+// The obscurance passes (ao_alchemy/ao_scalable/ao_crease/ao_horizon.frag), filled by AmbientObscurance.
 #if defined(__cplusplus) || defined(SFX_AO_PASS)
 SFX_BLOCK(AoParams, 2)
     SFX_M_VEC4(projInfo)
@@ -422,7 +423,7 @@ SFX_BLOCK(AoParams, 2)
     SFX_M_INT(creaseStride) SFX_M_INT(pad5)  // crease: pass pixels between diamond taps; counts: constants above
     SFX_M_INT(spiralHalfStepQ16) SFX_M_FLOAT(keyBase) SFX_M_FLOAT(pad2) SFX_M_FLOAT(sumExponent)
     SFX_M_FLOAT(creaseRange) SFX_M_FLOAT(creaseBias) SFX_M_FLOAT(creaseAverager) SFX_M_FLOAT(creaseMinimum)
-    SFX_M_FLOAT(fadeStart) SFX_M_FLOAT(invFadeRange) SFX_M_FLOAT(pad0) SFX_M_FLOAT(pad1)
+    SFX_M_FLOAT(fadeStart) SFX_M_FLOAT(invFadeRange) SFX_M_FLOAT(horizonThickness) SFX_M_FLOAT(horizonInvFalloffWidth)
 SFX_BLOCK_END(params)
 #endif
 // The separable bilateral blur (ao_blur.frag, one direction per pass).
@@ -443,7 +444,7 @@ SFX_BLOCK_END(params)
 #endif
 #ifdef __cplusplus
 static_assert(sizeof(AoParams) == 112 && offsetof(AoParams, radius) == 16 && offsetof(AoParams, maxDepth) == 44 &&
-              offsetof(AoParams, spiralHalfStepQ16) == 64 && offsetof(AoParams, fadeStart) == 96);
+              offsetof(AoParams, spiralHalfStepQ16) == 64 && offsetof(AoParams, fadeStart) == 96 && offsetof(AoParams, horizonThickness) == 104);
 static_assert(sizeof(BlurParams) == 48 && offsetof(BlurParams, direction) == 0 && offsetof(BlurParams, maxDepth) == 32);
 static_assert(sizeof(UpsampleParams) == 32);
 #endif
@@ -467,6 +468,7 @@ layout(constant_id = SFX_AO_SC_PACK_DEPTH) const int kAoPackDepth = 0;
 layout(constant_id = SFX_AO_SC_CLAMP_RADIUS) const int kAoClampRadius = 0;
 layout(constant_id = SFX_AO_SC_HALF_RES) const int kAoHalfRes = 0;
 layout(constant_id = SFX_AO_SC_DEPTH_LAYERS) const int kAoDepthLayers = 1;
+layout(constant_id = SFX_AO_SC_HORIZON_STEPS) const int kAoHorizonSteps = 1;
 
 // uDepth may be the host's linear depth itself (LinearDepth passing through): clamp on fetch.
 // With a pyramid the level varies from pixel to pixel, and lavapipe samples at a per-pixel lod

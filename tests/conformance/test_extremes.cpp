@@ -63,7 +63,7 @@ std::vector<std::pair<uint32_t, uint32_t>> pokeSites(size_t values, uint32_t spa
 
 // ---- Ambient obscurance ---------------------------------------------------------------------
 
-const AoTechnique kTechniques[] = {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease};
+const AoTechnique kTechniques[] = {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease, AoTechnique::Horizon};
 // Per-pixel bound of the AO conformance test (its pixelTol, docs/ao.md): float-vs-double taps.
 double aoPixelTolerance() { return test::tier() == Tier::High ? 0.03 : 0.05; }
 

@@ -127,7 +127,7 @@ TEST_CASE("fault injection: AO of each technique fails cleanly at every creation
         bool profiling;  // per-pass timers: the timer creations are faulted too
     };
     for (Variant v : {Variant{AoTechnique::Alchemy, false}, Variant{AoTechnique::Scalable, false}, Variant{AoTechnique::Crease, false},
-                      Variant{AoTechnique::Scalable, true}}) {
+                      Variant{AoTechnique::Horizon, false}, Variant{AoTechnique::Scalable, true}}) {
         const AoSettings settings = test::aoTestSettings(v.technique);
         // Hardware depth in the desc: the linearisation pass (and on the high tier the MIP) runs too.
         checkEveryFault(std::string("ao ") + toString(v.technique) + (v.profiling ? " profiled" : ""),

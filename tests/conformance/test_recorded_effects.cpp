@@ -53,7 +53,7 @@ TEST_CASE("recordings: replayed AO frames equal a fresh effect's after the depth
     TextureHandle depth = dev.createTexture({kWidth, kHeight, 1, Format::R32F, kTextureSampled, "replay-depth"}).value();
     const Format outFormat = dev.caps().renderableFormat[size_t(Format::R16F)] ? Format::R16F : Format::RGBA8;
     TextureHandle out = dev.createTexture({kWidth, kHeight, 1, outFormat, kTextureSampled | kTextureRenderTarget, "replay-ao"}).value();
-    for (AoTechnique technique : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}) {
+    for (AoTechnique technique : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease, AoTechnique::Horizon}) {
         INFO(test::label() << " " << toString(technique));
         AoSettings settings;
         settings.technique = technique;

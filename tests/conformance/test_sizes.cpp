@@ -40,7 +40,7 @@ TEST_CASE("sizes: AO at 1x1, one row, one column and odd sizes matches the refer
     // 1% of pixels may exceed (none at all below 100 pixels).
     const double worstBound = test::tier() == Tier::High ? 0.03 : 0.05;
     for (const Size& sz : kSmallSizes)
-        for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}) {
+        for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease, AoTechnique::Horizon}) {
             INFO(test::label() << " " << sz.w << "x" << sz.h << " " << toString(t));
             const tools::AnalyticScene scene = tools::cornerScene(sz.w, sz.h, 1.0);
             AoSettings s = test::aoTestSettings(t);
@@ -169,7 +169,8 @@ TEST_CASE("sizes: large and odd sizes run every effect with finite output", "[si
         Size size;
         std::vector<AoTechnique> techniques;
     };
-    const Run runs[] = {{{641, 359}, {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}}, {{3840, 2160}, {AoTechnique::Scalable}}};
+    const Run runs[] = {{{641, 359}, {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease, AoTechnique::Horizon}},
+                        {{3840, 2160}, {AoTechnique::Scalable}}};
     for (const Run& r : runs) {
         const uint32_t w = r.size.w, h = r.size.h;
         INFO(test::label() << " " << w << "x" << h);

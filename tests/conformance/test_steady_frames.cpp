@@ -61,7 +61,7 @@ TEST_CASE("steady frames: AO of each technique makes no object and keeps memory 
     SFX_REQUIRE_OK(dev.writeTexture(depthTex, 0, depth.data(), depth.size() * sizeof(float)));
     const Format outFormat = dev.caps().renderableFormat[size_t(Format::R16F)] ? Format::R16F : Format::RGBA8;
     TextureHandle outTex = dev.createTexture({kWidth, kHeight, 1, outFormat, kTextureSampled | kTextureRenderTarget, "steady-ao"}).value();
-    for (AoTechnique technique : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}) {
+    for (AoTechnique technique : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease, AoTechnique::Horizon}) {
         AoSettings settings;
         settings.technique = technique;
         // Hardware depth in the desc: the linearisation pass (and on the high tier the MIP) runs too.
@@ -212,7 +212,7 @@ TEST_CASE("resize: AO and motion blur rebuild textures, never programs or pipeli
     Device& dev = test::device();
     constexpr uint32_t kW2 = 200, kH2 = 120;  // the same depth MIP level count as 160x90
     const SizedInputs a = makeInputs(kWidth, kHeight), b = makeInputs(kW2, kH2);
-    for (AoTechnique technique : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}) {
+    for (AoTechnique technique : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease, AoTechnique::Horizon}) {
         AoSettings settings;
         settings.technique = technique;
         Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(

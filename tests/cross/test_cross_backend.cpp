@@ -113,7 +113,7 @@ void compareAo(Tier tier) {
     // Both resolutions, each named: at half resolution the scene is twice the size so that the
     // obscurance pass sees the same 96x64 texels and the same occlusion to agree on.
     for (AoResolution resolution : {AoResolution::Full, AoResolution::Half})
-        for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease})
+        for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease, AoTechnique::Horizon})
             for (bool blur : {false, true}) {
                 const int scale = resolution == AoResolution::Half ? 2 : 1;
                 const tools::AnalyticScene scene = tools::columnsScene(96 * scale, 64 * scale, 1.0);

@@ -1,18 +1,19 @@
 // validateAoSettings / resolveAoConfig on settings and profiles from fuzzer bytes: a named
 // InvalidArgument or a config inside the documented ranges (finite numbers, 1..64 samples,
-// blur radius <= SFX_AO_MAX_BLUR_RADIUS, at least one depth MIP level read).
+// blur radius <= SFX_AO_MAX_BLUR_RADIUS, at least one depth MIP level read, horizon's slices and
+// steps within the shader's limits).
 #include <cstdlib>
 
 #include "fuzz_values.hpp"
 #include "sfx/ao.hpp"
-#include "sfx_shared_ao.h"
+#include "sfx_shared_ao_horizon.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     using namespace sfx;
     FuzzedDataProvider in(data, size);
     const TierProfile profile = fuzz::hostileProfile(in);
     AoSettings s;
-    s.technique = AoTechnique(in.ConsumeIntegralInRange<uint32_t>(0, 4));
+    s.technique = AoTechnique(in.ConsumeIntegralInRange<uint32_t>(0, kAoTechniqueCount));
     s.radius = fuzz::hostileFloat(in);
     s.intensity = fuzz::hostileOptionalFloat(in);
     s.contrast = fuzz::hostileOptionalFloat(in);
@@ -31,6 +32,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const uint32_t mipLevelsAllowed = in.ConsumeIntegralInRange<uint32_t>(1, 16);
     const uint32_t outputRows = in.ConsumeIntegralInRange<uint32_t>(1, 16384);  // a context's height
     s.sumExponent = fuzz::hostileOptionalFloat(in);
+    s.horizon.slices = fuzz::hostileOptionalCount(in);
+    s.horizon.steps = fuzz::hostileOptionalCount(in);
+    s.horizon.thickness = fuzz::hostileOptionalFloat(in);
+    s.horizon.falloff = fuzz::hostileOptionalFloat(in);
 
     const Status valid = validateAoSettings(s, profile);
     Result<AoConfig> config = resolveAoConfig(s, profile, mipLevelsAllowed, outputRows);
@@ -50,5 +55,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     // what 16384 rows scale it to.
     if (c.creaseStride < 1 || c.creaseStride > 2048) std::abort();
     if (c.maxRadiusPx < 0) std::abort();
+    // Horizon's loops are specialisation constants the shader is built for; its thickness and
+    // falloff make a finite blend and a finite 1 / (falloff * radius).
+    const AoHorizonConfig& h = c.horizon;
+    if (h.slices < 1 || h.slices > uint32_t(shared::SFX_AO_HORIZON_MAX_SLICES) || h.steps < 1 || h.steps > uint32_t(shared::SFX_AO_HORIZON_MAX_STEPS))
+        std::abort();
+    if (!(h.thickness >= 0 && h.thickness <= 1) || !(h.falloff > 0 && h.falloff <= 1) || !std::isfinite(1.0 / (h.falloff * c.radius))) std::abort();
     return 0;
 }

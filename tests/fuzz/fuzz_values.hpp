@@ -79,6 +79,10 @@ inline TierProfile hostileProfile(FuzzedDataProvider& in) {
     p.aoAlchemySamples = hostileCount(in);
     p.aoBlurRadiusPx = hostileCount(in);
     p.aoCreaseTaps = hostileCount(in);
+    p.aoHorizonSlices = hostileCount(in);
+    p.aoHorizonSteps = hostileCount(in);
+    p.aoHorizonThickness = hostileFloat(in);
+    p.aoHorizonFalloff = hostileFloat(in);
     p.aoPackedDepthTarget = in.ConsumeBool();
     p.mbTaps = hostileCount(in);
     p.mbMaxRadiusPx = hostileFloat(in);

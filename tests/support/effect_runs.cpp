@@ -82,7 +82,7 @@ AoSettings aoTestSettings(AoTechnique t, double scale) {
     // The papers' look, not the tier's calibrated one, which would move the analytic expectations.
     s.intensity = t == AoTechnique::Scalable ? 2.0f : 1.0f;
     s.contrast = 1.0f;
-    if (t != AoTechnique::Crease) s.bias = t == AoTechnique::Alchemy ? kAoAlchemyDefaultBias : kAoScalableDefaultBias;
+    if (t == AoTechnique::Alchemy || t == AoTechnique::Scalable) s.bias = t == AoTechnique::Alchemy ? kAoAlchemyDefaultBias : kAoScalableDefaultBias;
     s.crease.bias = 0.25f;
     s.crease.range = float(scale);
     s.crease.fadeStart = float(50 * scale);

@@ -239,7 +239,7 @@ TEST_CASE("vulkan: steady frames in a host command buffer make nothing", "[vulka
             test::checkResidentFlat(d.caps().backend, growth);
             hostvk::checkNoMessages(d, host);
         };
-        for (AoTechnique technique : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}) {
+        for (AoTechnique technique : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease, AoTechnique::Horizon}) {
             AoSettings settings;
             settings.technique = technique;
             Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(d, {w, h, profile, settings, DepthKind::Hardware});

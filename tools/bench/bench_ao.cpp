@@ -130,7 +130,8 @@ AoConfig convergedConfig(const AoSettings& settings, uint32_t samples, uint32_t 
     AoSettings s = settings;
     s.blur = false;
     AoConfig c = resolveAoConfig(s, tiers::profile(Tier::High), 1, rows).value();
-    if (c.technique != AoTechnique::Crease) c.samples = samples;  // Crease's 24-tap pattern is fixed
+    if (c.technique == AoTechnique::Alchemy || c.technique == AoTechnique::Scalable) c.samples = samples;  // Crease's 24-tap pattern is fixed
+    if (c.technique == AoTechnique::Horizon) c.horizon = {16, 32, c.horizon.thickness, c.horizon.falloff}, c.samples = 16;
     c.depthMipLevels = 1;
     c.maxRadiusPx = 0;
     return c;
@@ -283,7 +284,7 @@ int main(int argc, char** argv) {
         }
         scenes.push_back(std::move(scene.value()));
     }
-    const AoTechnique techniques[] = {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease};
+    const AoTechnique techniques[] = {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease, AoTechnique::Horizon};
     std::cout << "bench_ao: " << o.width << "x" << o.height << ", " << o.runs << " runs, scenes";
     for (const std::string& s : o.scenes) std::cout << " " << s;
     std::cout << "; backends";

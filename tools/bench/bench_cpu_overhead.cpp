@@ -299,7 +299,7 @@ Status runBackend(const std::string& backend, const Options& o, bool reuseRecord
         return Status::ok();
     };
 
-    const AoTechnique techniques[] = {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease};
+    const AoTechnique techniques[] = {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease, AoTechnique::Horizon};
     for (AoTechnique t : techniques) {
         AoSettings settings;
         settings.technique = t;

@@ -107,7 +107,7 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
         SFX_TRY(renderer.value()->load(scene.value()));
         Result<tools::GBuffer> g = renderer.value()->render(scene.value(), o.width, o.height);
         if (!g) return g.status();
-        for (AoTechnique technique : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease})
+        for (AoTechnique technique : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease, AoTechnique::Horizon})
             for (bool blur : {true, false}) {
                 AoSettings s;
                 s.technique = technique;

@@ -187,9 +187,17 @@ Status diagnose(tools::AoEvaluator& ev, Tier tier, AoTechnique technique, const 
         {"blur off", [](AoSettings& s, TierProfile&) { s.blur = false; }},
         {"4x taps",
          [&](AoSettings& s, TierProfile& p) {
-             if (technique != AoTechnique::Crease)
+             if (technique == AoTechnique::Horizon) {
+                 s.horizon.slices = 2 * p.aoHorizonSlices, s.horizon.steps = 2 * p.aoHorizonSteps;
+             } else if (technique != AoTechnique::Crease) {
                  s.samples = std::min(64u, 4 * (technique == AoTechnique::Alchemy ? p.aoAlchemySamples : p.aoScalableTaps));
+             }
          }},
+        {"horizon slices +1", [](AoSettings&, TierProfile& p) { p.aoHorizonSlices += 1; }},
+        {"horizon steps x2", [](AoSettings&, TierProfile& p) { p.aoHorizonSteps *= 2; }},
+        {"horizon thickness 0.8", [](AoSettings&, TierProfile& p) { p.aoHorizonThickness = 0.8f; }},
+        {"horizon falloff 0.1", [](AoSettings&, TierProfile& p) { p.aoHorizonFalloff = 0.1f; }},
+        {"horizon falloff 0.4", [](AoSettings&, TierProfile& p) { p.aoHorizonFalloff = 0.4f; }},
         {"full resolution", [](AoSettings& s, TierProfile&) { s.resolution = AoResolution::Full; }},
         {"no radius clamp", [](AoSettings&, TierProfile& p) { p.aoScalableMaxRadiusPx = 0; }},
         {"radius clamp doubled", [](AoSettings&, TierProfile& p) { p.aoScalableMaxRadiusPx *= 2; }},
@@ -283,7 +291,9 @@ int main(int argc, char** argv) {
         ->delimiter(',')
         ->capture_default_str();
     app.add_option("--backend", o.backend, "vulkan, gles, gl, gl-egl, gl-osmesa (the backends agree)")->capture_default_str();
-    app.add_option("--techniques", o.techniques, "comma-separated: alchemy, scalable, crease")->delimiter(',')->capture_default_str();
+    app.add_option("--techniques", o.techniques, "comma-separated: alchemy, scalable, crease, horizon (horizon: --diagnose only)")
+        ->delimiter(',')
+        ->capture_default_str();
     app.add_option("--refinements", o.refinements, "halvings of the fine search's step")->capture_default_str();
     app.add_option("--tiers", o.tiers, "comma-separated: high, current")->delimiter(',')->capture_default_str();
     app.add_option("--start", o.start, "where the search starts: paper (the papers' look) or tier (the tier table's)")

@@ -45,7 +45,7 @@ struct Size {
 };
 const std::vector<Size> kSizes = {{1, 1}, {160, 90}, {33, 17}, {1, 64}, {64, 1}, {320, 180}, {97, 61}};
 constexpr int kFramesPerChange = 10;
-const AoTechnique kTechniques[] = {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease};
+const AoTechnique kTechniques[] = {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease, AoTechnique::Horizon};
 
 double residentMiB() {
     std::ifstream statm("/proc/self/statm");

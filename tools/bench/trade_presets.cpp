@@ -107,6 +107,7 @@ std::vector<std::string> xeGtaoDominance(const Options& o, const std::vector<Row
 }
 
 uint32_t aoTaps(const TierProfile& p, AoTechnique t) {
+    if (t == AoTechnique::Horizon) return 2 * p.aoHorizonSlices * p.aoHorizonSteps;  // both sides of every slice
     return t == AoTechnique::Alchemy ? p.aoAlchemySamples : t == AoTechnique::Scalable ? p.aoScalableTaps : p.aoCreaseTaps;
 }
 
@@ -132,7 +133,7 @@ Result<std::map<std::string, AoAccuracy>> aoAccuracy(Device& dev, Tier tier, con
     SFX_TRY(anchorEv.prepare(cases.analyticViews));
     std::map<std::string, AoAccuracy> out;
     for (const Preset& preset : tiers::row(tier).presets)
-        for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}) {
+        for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease, AoTechnique::Horizon}) {
             ev.setProfile(preset.params);
             anchorEv.setProfile(preset.params);
             AoSettings s;
@@ -192,7 +193,7 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
     if (!out) return out.status();
     Status status = Status::ok();
     for (const Preset& preset : tiers::row(tier).presets) {
-        for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease}) {
+        for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease, AoTechnique::Horizon}) {
             AoSettings s;
             s.technique = t;
             s.normals = AoNormals::FromTexture;

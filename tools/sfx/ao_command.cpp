@@ -25,6 +25,8 @@ struct AoFlags {
     float radius = 0.5f;
     std::optional<float> intensity, contrast, bias, sumExponent;  // unset: the tier's calibrated look
     std::optional<uint32_t> samples, blurRadius;                  // unset: the tier's
+    std::optional<uint32_t> slices, steps;                        // horizon; unset: the tier's
+    std::optional<float> thickness, falloff;                      // horizon; unset: the tier's
     bool noBlur = false;
     bool showPlan = false;
 };
@@ -37,6 +39,10 @@ Status checkFlags(const AoFlags& f) {
     if (f.bias) SFX_TRY(checkSetting(Setting::AoBias, *f.bias, "--bias"));
     if (f.sumExponent) SFX_TRY(checkSetting(Setting::AoSumExponent, *f.sumExponent, "--sum-exponent"));
     if (f.blurRadius) SFX_TRY(checkSetting(Setting::AoBlurRadius, *f.blurRadius, "--blur-radius"));
+    if (f.slices) SFX_TRY(checkSetting(Setting::AoHorizonSlices, *f.slices, "--slices"));
+    if (f.steps) SFX_TRY(checkSetting(Setting::AoHorizonSteps, *f.steps, "--steps"));
+    if (f.thickness) SFX_TRY(checkSetting(Setting::AoHorizonThickness, *f.thickness, "--thickness"));
+    if (f.falloff) SFX_TRY(checkSetting(Setting::AoHorizonFalloff, *f.falloff, "--falloff"));
     if (f.runs > tools::kMaxTimedRuns)
         return invalidArgument("--runs", std::to_string(f.runs), "0 (not timed) to " + std::to_string(tools::kMaxTimedRuns));
     return Status::ok();
@@ -66,7 +72,7 @@ int runAo(const AoFlags& f) {
     if (Status st = checkFlags(f); !st) return fail(cmd, st);
     AoSettings s;
     if (!parseAoTechnique(f.technique, &s.technique))
-        return fail(cmd, invalidArgument("--technique", "'" + f.technique + "'", "alchemy, scalable or crease"));
+        return fail(cmd, invalidArgument("--technique", "'" + f.technique + "'", "alchemy, scalable, crease or horizon"));
     if (!parseAoResolution(f.resolution, &s.resolution))
         return fail(cmd, invalidArgument("--resolution", "'" + f.resolution + "'", "tier, full or half"));
     s.radius = f.radius;
@@ -77,6 +83,7 @@ int runAo(const AoFlags& f) {
     s.samples = f.samples;
     s.blur = !f.noBlur;
     s.blurRadius = f.blurRadius;
+    s.horizon = {f.slices, f.steps, f.thickness, f.falloff};
     s.normals = f.normalsPath.empty() ? AoNormals::FromDepth : AoNormals::FromTexture;
 
     // Files first, each read once: a malformed or mismatched file is named before any device is opened.
@@ -165,7 +172,7 @@ Command addAoCommand(CLI::App& app) {
     c.app->footer(kInputValuesHelp);
     flags->device.add(*c.app);
     flags->camera.add(*c.app);
-    c.app->add_option("--technique", flags->technique, "alchemy | scalable | crease")->capture_default_str();
+    c.app->add_option("--technique", flags->technique, "alchemy | scalable | crease | horizon")->capture_default_str();
     c.app
         ->add_option("--resolution", flags->resolution,
                      "tier | full | half: where obscurance and blur run; half = half size, then a depth-aware upsample; "
@@ -181,6 +188,10 @@ Command addAoCommand(CLI::App& app) {
     c.app->add_option("--sum-exponent", flags->sumExponent, settingHelp(Setting::AoSumExponent) + tier);
     c.app->add_option("--samples", flags->samples, settingHelp(Setting::AoSamples) + "; not given: the tier's");
     c.app->add_option("--blur-radius", flags->blurRadius, settingHelp(Setting::AoBlurRadius) + "; not given: the tier's");
+    c.app->add_option("--slices", flags->slices, settingHelp(Setting::AoHorizonSlices) + "; not given: the tier's");
+    c.app->add_option("--steps", flags->steps, settingHelp(Setting::AoHorizonSteps) + "; not given: the tier's");
+    c.app->add_option("--thickness", flags->thickness, settingHelp(Setting::AoHorizonThickness) + "; not given: the tier's");
+    c.app->add_option("--falloff", flags->falloff, settingHelp(Setting::AoHorizonFalloff) + "; not given: the tier's");
     c.app->add_flag("--no-blur", flags->noBlur, "skip the bilateral blur");
     c.app->add_option("--preset", flags->preset, "one of the tier's presets (sfx info --rules lists them); explicit flags override it")
         ->capture_default_str();

@@ -43,6 +43,10 @@ const ParameterRow kParameterRows[] = {
          return std::string(p.aoCreaseTaps == 24 ? "24 (the 11x11 stippled diamond)" : "12 (half the diamond, by checkerboard)");
      }},
     {"crease AO tap spacing (px at 720 rows)", [](const TierProfile& p) { return std::to_string(int(p.aoCreaseSpacingPx)); }},
+    {"horizon AO slices x steps per side",
+     [](const TierProfile& p) { return std::to_string(p.aoHorizonSlices) + " x " + std::to_string(p.aoHorizonSteps); }},
+    {"horizon AO thickness, falloff (share of the radius)",
+     [](const TierProfile& p) { return formatSettingNumber(p.aoHorizonThickness) + ", " + formatSettingNumber(p.aoHorizonFalloff); }},
     {"AO resolution (obscurance and blur)",
      [](const TierProfile& p) { return std::string(p.aoHalfResolution ? "half, depth-aware upsample" : "full"); }},
     {"AO depth layers at most (multilayer AO)",

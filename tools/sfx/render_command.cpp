@@ -33,7 +33,7 @@ Result<render::RenderOptions> parseOptions(const RenderFlags& f) {
         o.ao.reset();
     } else {
         AoTechnique t;
-        if (!parseAoTechnique(f.ao, &t)) return invalidArgument("--ao", "'" + f.ao + "'", "off, alchemy, scalable or crease");
+        if (!parseAoTechnique(f.ao, &t)) return invalidArgument("--ao", "'" + f.ao + "'", "off, alchemy, scalable, crease or horizon");
         o.ao = t;
     }
     o.aoRadius = f.aoRadius;
@@ -49,7 +49,8 @@ Result<render::RenderOptions> parseOptions(const RenderFlags& f) {
         if (ext != ".pfm" && ext != ".exr" && ext != ".png")
             return invalidArgument(flag, "'" + *path + "'", "a .pfm, .exr (linear) or .png (sRGB) file");
     }
-    if (!f.aoOutPath.empty() && !o.ao) return invalidArgument("--ao-out", "'" + f.aoOutPath + "' with --ao off", "--ao alchemy, scalable or crease");
+    if (!f.aoOutPath.empty() && !o.ao)
+        return invalidArgument("--ao-out", "'" + f.aoOutPath + "' with --ao off", "--ao alchemy, scalable, crease or horizon");
     return o;
 }
 
@@ -91,7 +92,7 @@ Command addRenderCommand(CLI::App& app) {
     flags->device.add(*c.app);
     c.app->add_option("--width", flags->width, "width in pixels; 0 = the scene's")->capture_default_str();
     c.app->add_option("--height", flags->height, "height in pixels; 0 = the scene's")->capture_default_str();
-    c.app->add_option("--ao", flags->ao, "off | alchemy | scalable | crease")->capture_default_str();
+    c.app->add_option("--ao", flags->ao, "off | alchemy | scalable | crease | horizon")->capture_default_str();
     c.app->add_option("--ao-radius", flags->aoRadius, "AO " + settingHelp(Setting::AoRadius))->capture_default_str();
     c.app->add_option("--ao-out", flags->aoOutPath, "also write the AO visibility buffer (.pfm, .exr or .png; values as they are, no sRGB)");
     c.app->add_option("--ao-layers", flags->aoLayers, "opaque depth layers AO tests, [1, 4]; 1 = the visible layer, more = depth peeling (high tier)")

@@ -1,4 +1,4 @@
-// Ambient obscurance: Alchemy AO, Scalable AO and crease shading, with a depth-aware
+// Ambient obscurance: Alchemy AO, Scalable AO, crease shading and horizon-based AO, with a depth-aware
 // bilateral blur. Same shape as every effect: create / dispatch / resize / destroy (RAII),
 // status returns, and a plan of the passes and bytes it holds.
 //
@@ -20,8 +20,12 @@ enum class AoTechnique : uint32_t {
     Alchemy,   // McGuire et al. 2011: samples uniform in the projected world-space disk
     Scalable,  // Bukowski et al. 2012: few spiral taps with falloff, squared sum; depth MIP on high
     Crease,    // Fox & Compton 2007: 24 taps on the 11x11 stippled diamond, artist-tuned
+    // Jimenez et al. 2016 (GTAO): per slice the two horizons, the cosine-weighted visible arc in
+    // closed form; estimates the visibility itself rather than an obscurance with a falloff
+    Horizon,
 };
-const char* toString(AoTechnique technique);  // "alchemy", "scalable", "crease"
+inline constexpr uint32_t kAoTechniqueCount = 4;
+const char* toString(AoTechnique technique);  // "alchemy", "scalable", "crease", "horizon"
 bool parseAoTechnique(const std::string& text, AoTechnique* out);
 
 enum class AoNormals : uint32_t {
@@ -58,6 +62,16 @@ struct AoCreaseSettings {
     float fadeEnd = 100.0f;      // (fadeStart, inf] linear depth where crease shading is gone
 };
 
+// The horizon technique's own settings; unset takes the tier's (TierProfile::aoHorizon*).
+struct AoHorizonSettings {
+    std::optional<uint32_t> slices;  // screen directions per pixel, each marched both ways
+    std::optional<uint32_t> steps;   // depth samples per side of a slice
+    // How far a lower sample seen past an occluder pulls the horizon back: 1 keeps the highest
+    // (every occluder solid behind its face), lower values let thin occluders through.
+    std::optional<float> thickness;
+    std::optional<float> falloff;  // share of the radius, at its edge, over which a sample fades out
+};
+
 struct AoSettings {
     AoTechnique technique = AoTechnique::Scalable;
     float radius = 0.5f;             // world-space sampling radius (Alchemy, Scalable)
@@ -79,6 +93,7 @@ struct AoSettings {
     AoResolution resolution = AoResolution::Tier;
     AoNormals normals = AoNormals::FromDepth;
     AoCreaseSettings crease;
+    AoHorizonSettings horizon;
     // Multilayer AO: opaque depth layers each tap tests, AoInputs.depth included; [1,
     // TierProfile::aoMaxDepthLayers]. Above 1 a tap keeps its largest term over the layers, so
     // surfaces behind the first visible one still occlude; runs at full resolution without a
@@ -96,6 +111,12 @@ struct AoCreaseConfig {
     float range = 1.0f, bias = 0.25f, averager = 10.0f, minimumCrease = 0.3f, fadeStart = 50.0f, fadeEnd = 100.0f;
 };
 
+// Horizon's resolved settings.
+struct AoHorizonConfig {
+    uint32_t slices = 2, steps = 4;
+    double thickness = 1.0, falloff = 0.2;
+};
+
 // What a dispatch computes once settings and tier are resolved: the numbers the shaders get
 // and the CPU reference (sfx/reference/ao_reference.hpp) consumes. Benchmarks may edit a
 // resolved config (e.g. many samples, no MIP) to build a converged reference.
@@ -105,16 +126,17 @@ struct AoConfig {
     double sumExponent = 2;  // Scalable: occlusion = (2 sigma / N * sum)^sumExponent
     // Every pixel count below is in the obscurance pass's pixels: at half resolution half-size ones.
     bool halfResolution = false;  // obscurance + blur at half size, then the depth-aware upsample
-    uint32_t samples = 4;         // taps per pixel (Scalable mirrored: total, both signs)
+    uint32_t samples = 4;         // taps per pixel (Scalable mirrored: total, both signs); Horizon: its slices
     bool mirrored = false;        // Scalable: samples / 2 offsets, each also negated
     double spiralTurns = 7;       // Scalable spiral turns
     double maxRadiusPx = 0;       // Scalable: screen radius clamp, 0 = none
     uint32_t creaseStride = 1;    // Crease: pixels between neighbouring taps of the diamond
-    uint32_t depthMipLevels = 1;  // Scalable: depth MIP levels read, from the pass's size (1 = that size only)
+    uint32_t depthMipLevels = 1;  // Scalable, Horizon: depth MIP levels read, from the pass's size (1 = that size only)
     uint32_t depthLayers = 1;     // multilayer AO: layers each tap tests (AoSettings.depthLayers)
     uint32_t blurRadius = 0;      // 0 = no blur
     AoNormals normals = AoNormals::FromDepth;
     AoCreaseConfig crease;
+    AoHorizonConfig horizon;
 };
 
 // InvalidArgument naming the first field out of range.

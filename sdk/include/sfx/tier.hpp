@@ -66,7 +66,13 @@ struct TierProfile {
     // scaled with the output's rows: the diamond covers the same share of the image at every
     // size (AoConfig::creaseStride is it in the pass's pixels, at least 1).
     float aoCreaseSpacingPx = 12;
-    AoLook aoLook[3];  // per technique, indexed by AoTechnique (alchemy, scalable, crease)
+    // Horizon: slices per pixel, steps per side, the thickness heuristic and the edge falloff
+    // (AoHorizonSettings); it reads the depth MIP where aoUsesDepthMip says, as Scalable does.
+    uint32_t aoHorizonSlices = 2;
+    uint32_t aoHorizonSteps = 4;
+    float aoHorizonThickness = 1.0f;
+    float aoHorizonFalloff = 0.2f;
+    AoLook aoLook[4];  // per technique, indexed by AoTechnique (alchemy, scalable, crease, horizon)
     // Where the blur finds each pixel's depth: true (current tier), a 16-bit key packed in an
     // RGBA8 AO target; false (high), the linear depth in a float target (RG32F; RGBA32F for
     // crease). Either way one fetch per tap. Becomes SFX_AO_PACKED_DEPTH_TARGET.
@@ -91,8 +97,8 @@ struct TierProfile {
 // (docs/trade.md): the settings-by-budget API (sfx/budget.hpp) picks the most accurate preset
 // whose cost, measured on the device, fits. 0 = not measured.
 struct PresetAccuracy {
-    double aoPsnrDb[3] = {0, 0, 0};  // per AO technique (AoTechnique order), held-out views, radii 0.25-2
-    double motionBlurPsnrDb = 0;     // against temporally supersampled truth
+    double aoPsnrDb[4] = {0, 0, 0, 0};  // per AO technique (AoTechnique order), held-out views, radii 0.25-2
+    double motionBlurPsnrDb = 0;        // against temporally supersampled truth
 };
 
 struct Preset {

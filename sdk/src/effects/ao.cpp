@@ -27,6 +27,7 @@ const char* programName(AoTechnique t) {
         case AoTechnique::Alchemy: return gen::ao_alchemy::kName;
         case AoTechnique::Scalable: return gen::ao_scalable::kName;
         case AoTechnique::Crease: return gen::ao_crease::kName;
+        case AoTechnique::Horizon: return gen::ao_horizon::kName;
     }
     return gen::ao_scalable::kName;
 }
@@ -319,6 +320,8 @@ Status AmbientObscurance::recordPasses(const AoInputs& in, const TextureDesc& ou
     p.creaseMinimum = config_.crease.minimumCrease;
     p.fadeStart = config_.crease.fadeStart;
     p.invFadeRange = std::isinf(config_.crease.fadeEnd) ? 0.0f : float(1.0 / (double(config_.crease.fadeEnd) - config_.crease.fadeStart));
+    p.horizonThickness = float(config_.horizon.thickness);
+    p.horizonInvFalloffWidth = float(1.0 / (config_.horizon.falloff * config_.radius));
     SFX_TRY(uniforms_->write(device_, aoParams_, p));
 
     // Obscurance: straight into the output at full resolution without blur.
@@ -333,6 +336,7 @@ Status AmbientObscurance::recordPasses(const AoInputs& in, const TextureDesc& ou
         {SFX_AO_SC_CLAMP_RADIUS, config_.maxRadiusPx > 0.0 ? 1 : 0},
         {SFX_AO_SC_HALF_RES, half ? 1 : 0},
         {SFX_AO_SC_DEPTH_LAYERS, int32_t(config_.depthLayers)},
+        {SFX_AO_SC_HORIZON_STEPS, int32_t(config_.horizon.steps)},
     };
     Result<PipelineHandle> aoPipeline = pipelines_->get(aoProgram_, direct ? out.format : targetFormat_, aoConstants, "sfx-ao");
     if (!aoPipeline) return aoPipeline.status();

@@ -17,7 +17,7 @@ inline Format aoTargetFormat(const TierProfile& profile, AoTechnique technique) 
     return technique == AoTechnique::Crease ? Format::RGBA32F : Format::RG32F;
 }
 
-// At half resolution, whether depth MIP level 1 is the half-size depth: high-tier Scalable,
+// At half resolution, whether depth MIP level 1 is the half-size depth: high-tier Scalable or Horizon,
 // whose pyramid exists anyway, on a target large enough for a second level. Otherwise the
 // ao_half_depth pass makes the same rotated-grid sample into a texture of its own.
 // Where the obscurance pass writes the depth its readers need (SFX_AO_DEPTH_IN_*, sfx_shared_ao.h):
@@ -29,8 +29,8 @@ inline int aoDepthInTarget(const TierProfile& profile, AoTechnique technique, bo
 }
 
 inline bool mipGivesHalfDepth(const AoConfig& config, const TierProfile& profile, uint32_t width, uint32_t height) {
-    return config.halfResolution && config.technique == AoTechnique::Scalable && profile.aoUsesDepthMip &&
-        std::min(profile.aoDepthMipLevels, maxMipLevels(width, height)) >= 2;
+    return config.halfResolution && (config.technique == AoTechnique::Scalable || config.technique == AoTechnique::Horizon) &&
+        profile.aoUsesDepthMip && std::min(profile.aoDepthMipLevels, maxMipLevels(width, height)) >= 2;
 }
 
 // Multilayer AO (ao_multilayer.cpp): named errors for AoInputs.depthLayers the config needs,

@@ -6,6 +6,7 @@
 #include "sfx/ao.hpp"
 #include "sfx/settings_ranges.hpp"
 #include "sfx_shared_ao.h"
+#include "sfx_shared_ao_horizon.h"
 
 namespace sfx {
 namespace {
@@ -37,12 +38,13 @@ const char* toString(AoTechnique technique) {
         case AoTechnique::Alchemy: return "alchemy";
         case AoTechnique::Scalable: return "scalable";
         case AoTechnique::Crease: return "crease";
+        case AoTechnique::Horizon: return "horizon";
     }
     return "unknown";
 }
 
 bool parseAoTechnique(const std::string& text, AoTechnique* out) {
-    for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease})
+    for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease, AoTechnique::Horizon})
         if (text == toString(t)) {
             *out = t;
             return true;
@@ -81,11 +83,15 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
         (profile.aoScalableMirrored && profile.aoScalableTaps % 2 != 0) || profile.aoBlurRadiusPx > uint32_t(shared::SFX_AO_MAX_BLUR_RADIUS) ||
         !(profile.aoScalableMaxRadiusPx >= 0.0f) ||
         (profile.aoCreaseTaps != kCreaseHalfTaps && profile.aoCreaseTaps != uint32_t(shared::SFX_AO_CREASE_TAPS)) ||
-        std::isinf(profile.aoScalableMaxRadiusPx) || !(profile.aoCreaseSpacingPx > 0.0f && profile.aoCreaseSpacingPx <= kMaxCreaseSpacingPx))
+        std::isinf(profile.aoScalableMaxRadiusPx) || !(profile.aoCreaseSpacingPx > 0.0f && profile.aoCreaseSpacingPx <= kMaxCreaseSpacingPx) ||
+        !inRange(settingRange(Setting::AoHorizonSlices), profile.aoHorizonSlices) ||
+        !inRange(settingRange(Setting::AoHorizonSteps), profile.aoHorizonSteps) ||
+        !inRange(settingRange(Setting::AoHorizonThickness), profile.aoHorizonThickness) ||
+        !inRange(settingRange(Setting::AoHorizonFalloff), profile.aoHorizonFalloff))
         return invalidArgument("AoDesc.profile", "a tier profile with counts outside the shaders' limits",
                                "tiers::profile(tier) or tiers::choose(caps)->profile");
-    if (uint32_t(s.technique) > 2)
-        return invalidArgument("AoSettings.technique", std::to_string(uint32_t(s.technique)), "Alchemy, Scalable or Crease");
+    if (uint32_t(s.technique) >= kAoTechniqueCount)
+        return invalidArgument("AoSettings.technique", std::to_string(uint32_t(s.technique)), "Alchemy, Scalable, Crease or Horizon");
     SFX_TRY(checkSetting(Setting::AoRadius, s.radius));
     const AoLook& look = profile.aoLook[uint32_t(s.technique)];
     SFX_TRY(checkLookField(Setting::AoIntensity, s.intensity, "AoDesc.profile.aoLook.intensity", look.intensity));
@@ -93,7 +99,10 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
     SFX_TRY(checkLookField(Setting::AoBias, s.bias, "AoDesc.profile.aoLook.bias", look.bias));
     SFX_TRY(checkLookField(Setting::AoSumExponent, s.sumExponent, "AoDesc.profile.aoLook.sumExponent", look.sumExponent));
     SFX_TRY(checkSetting(Setting::AoEpsilon, s.epsilon));
-    if (s.samples && s.technique == AoTechnique::Crease) {
+    if (s.samples && s.technique == AoTechnique::Horizon) {
+        return invalidArgument("AoSettings.samples", std::to_string(*s.samples),
+                               "unset for Horizon (its taps are AoSettings.horizon.slices and .steps)");
+    } else if (s.samples && s.technique == AoTechnique::Crease) {
         if (*s.samples != kCreaseHalfTaps && *s.samples != uint32_t(shared::SFX_AO_CREASE_TAPS))
             return invalidArgument("AoSettings.samples", std::to_string(*s.samples),
                                    "12 (half the diamond per pixel) or 24 (the whole 11x11 stippled diamond) for Crease");
@@ -116,6 +125,13 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
     if (s.depthLayers > 1 && s.resolution == AoResolution::Half)
         return invalidArgument("AoSettings.resolution", "Half with depthLayers " + std::to_string(s.depthLayers),
                                "Full or Tier (multilayer AO runs at full resolution: the layers are full size)");
+    if (s.depthLayers > 1 && s.technique == AoTechnique::Horizon)
+        return invalidArgument("AoSettings.depthLayers", std::to_string(s.depthLayers), "1 for Horizon (its horizons read the first visible layer)");
+    const AoHorizonSettings& hz = s.horizon;
+    if (hz.slices) SFX_TRY(checkSetting(Setting::AoHorizonSlices, *hz.slices));
+    if (hz.steps) SFX_TRY(checkSetting(Setting::AoHorizonSteps, *hz.steps));
+    if (hz.thickness) SFX_TRY(checkSetting(Setting::AoHorizonThickness, *hz.thickness));
+    if (hz.falloff) SFX_TRY(checkSetting(Setting::AoHorizonFalloff, *hz.falloff));
     const AoCreaseSettings& c = s.crease;
     if (c.range) SFX_TRY(checkSetting(Setting::AoCreaseRange, *c.range));
     if (c.bias) SFX_TRY(checkSetting(Setting::AoCreaseBias, *c.bias));
@@ -177,6 +193,17 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
             c.samples = s.samples.value_or(profile.aoCreaseTaps);
             c.creaseStride = uint32_t(std::max(1.0, std::round(double(profile.aoCreaseSpacingPx) * passPxPerReferencePx)));
             break;
+        case AoTechnique::Horizon: {
+            c.bias = 0;
+            const AoHorizonSettings& hs = s.horizon;
+            c.horizon = {hs.slices.value_or(profile.aoHorizonSlices), hs.steps.value_or(profile.aoHorizonSteps),
+                         double(hs.thickness.value_or(profile.aoHorizonThickness)), double(hs.falloff.value_or(profile.aoHorizonFalloff))};
+            c.samples = c.horizon.slices;
+            // Far steps read the depth MIP as Scalable's taps do (one level fewer at half size).
+            c.depthMipLevels = profile.aoUsesDepthMip ? std::max(1u, std::min(profile.aoDepthMipLevels, mipLevelsAllowed)) : 1;
+            if (c.halfResolution) c.depthMipLevels = std::max(1u, c.depthMipLevels - 1);
+            break;
+        }
     }
     return c;
 }

@@ -8,6 +8,7 @@
 #include "sfx/ao.hpp"
 #include "sfx/motion_blur.hpp"
 #include "sfx_shared_ao.h"
+#include "sfx_shared_ao_horizon.h"
 #include "sfx_shared_mb.h"
 #include "sfx_shared_oit.h"
 
@@ -21,7 +22,8 @@ constexpr bool kOpen = true, kClosed = false;
 // kMbMinSoftDepthExtent say why their minimums are what they are. The epsilon's minimum is the
 // float nearest 1e-8, so the documented minimum can be set.
 const SettingRange kRows[] = {
-    {S::AoRadius, "AoSettings.radius", kAoMinRadius, 1000, kClosed, kClosed, "world units", "world-space sampling radius (Alchemy, Scalable)"},
+    {S::AoRadius, "AoSettings.radius", kAoMinRadius, 1000, kClosed, kClosed, "world units",
+     "world-space sampling radius (Alchemy, Scalable, Horizon)"},
     {S::AoIntensity, "AoSettings.intensity", 0, 100, kClosed, kClosed, "", "sigma: scales occlusion"},
     {S::AoContrast, "AoSettings.contrast", 0.1, 10, kClosed, kClosed, "", "k: visibility = max(0, 1 - occlusion)^k"},
     {S::AoBias, "AoSettings.bias", 0, 1, kClosed, kClosed, "", "Alchemy: beta per unit of depth; Scalable: subtracted from each tap's cosine"},
@@ -36,6 +38,14 @@ const SettingRange kRows[] = {
     {S::AoCreaseBias, "AoSettings.crease.bias", 0, 100, kOpen, kClosed, "", "Crease: scales (cos - minimumCrease) before saturating"},
     {S::AoCreaseAverager, "AoSettings.crease.averager", 0, 1000, kOpen, kClosed, "", "Crease: divisor of the tap sum"},
     {S::AoCreaseMinimumCrease, "AoSettings.crease.minimumCrease", -1, 1, kClosed, kOpen, "", "Crease: cosine below which a tap adds nothing"},
+    {S::AoHorizonSlices, "AoSettings.horizon.slices", 1, shared::SFX_AO_HORIZON_MAX_SLICES, kClosed, kClosed, "slices",
+     "Horizon: screen directions per pixel, each marched both ways"},
+    {S::AoHorizonSteps, "AoSettings.horizon.steps", 1, shared::SFX_AO_HORIZON_MAX_STEPS, kClosed, kClosed, "taps",
+     "Horizon: depth samples per side of a slice"},
+    {S::AoHorizonThickness, "AoSettings.horizon.thickness", 0, 1, kClosed, kClosed, "",
+     "Horizon: share of the horizon a lower sample past an occluder leaves (1 = solid occluders)"},
+    {S::AoHorizonFalloff, "AoSettings.horizon.falloff", 0, 1, kOpen, kClosed, "radius",
+     "Horizon: share of the radius, at its edge, over which a sample fades out"},
     {S::MbMaxRadiusPx, "MotionBlurSettings.maxRadiusPx", 0, shared::SFX_MB_MAX_RADIUS_LIMIT_PX, kOpen, kClosed, "px",
      "maximum blur radius at referenceRows rows (scaled to the output's height)"},
     {S::MbReferenceRows, "MotionBlurSettings.referenceRows", 0, 16384, kClosed, kClosed, "rows", "rows maxRadiusPx is defined at; 0 = no scaling"},

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sfx_shared_ao.h"
+#include "ao_horizon_reference.hpp"
+#include "sfx_shared_ao_horizon.h"
 
 namespace sfx::reference {
 namespace {
@@ -77,6 +78,24 @@ std::vector<AoTap> aoTaps(const AoConfig& c, const DepthReconstruction& rec, uin
                     taps.push_back({std::clamp(int(x) + o.x * s, 0, int(w) - 1), std::clamp(int(y) + o.y * s, 0, int(h) - 1), 0});
                 }
             break;
+        case AoTechnique::Horizon: {
+            // Per slice, per step, the + side's sample then the - side's (ao_horizon.frag's order).
+            const int slices = int(c.horizon.slices), steps = int(c.horizon.steps);
+            const uint32_t hash = sh::aoRotationHash(int(x), int(y));
+            for (int i = 0; i < slices; ++i) {
+                const sh::vec2 d = sh::aoTapDirection(sh::aoHorizonSliceTurnsQ16(i, slices), rotation);
+                const int jitter = sh::aoHorizonJitterIndex(hash, i);
+                for (int j = 0; j < steps; ++j) {
+                    const float rho = sh::aoHorizonStepRadius(j, steps, jitter, screenRadius);
+                    int level = 0;
+                    if (c.depthMipLevels > 1)
+                        level = std::clamp(sh::aoFloorLog2(rho) - int(sh::SFX_AO_MIP_LEVEL_OFFSET), 0, int(c.depthMipLevels) - 1);
+                    taps.push_back(tapAt(x, y, rho, d, w, h, level));
+                    taps.push_back(tapAt(x, y, rho, sh::vec2{-d.x, -d.y}, w, h, level));
+                }
+            }
+            break;
+        }
     }
     return taps;
 }
@@ -89,6 +108,7 @@ double aoTapTerm(const AoConfig& c, double vv, double vn, double z) {
             const AoCreaseConfig& k = c.crease;
             return sh::aoCreaseTerm(vv, vn, double(k.range), double(k.minimumCrease), double(k.bias), c.epsilon);
         }
+        case AoTechnique::Horizon: return 0.0;  // horizons are not a sum of terms: reference::detail::horizonVisibility
     }
     return 0.0;
 }
@@ -105,6 +125,8 @@ double aoOcclusionFromSum(const AoConfig& c, double sum, double z) {
             const double fade = 1.0 - saturate((z - double(k.fadeStart)) * invFade);
             return sh::aoCreaseOcclusion(sum, int(c.samples), c.intensity, double(k.averager), fade);
         }
+        // The sum is the mean visibility over the slices.
+        case AoTechnique::Horizon: return c.intensity * (1.0 - sum);
     }
     return 0.0;
 }
@@ -168,7 +190,10 @@ Grid rawVisibilityOfPass(const Grid& d, const std::vector<dvec3>& hostNormals, c
                 if (n != dvec3(0.0)) normals[size_t(y) * d.width + x] = n;
             }
     std::vector<Grid> pyramid;
-    if (c.technique == AoTechnique::Scalable) pyramid = depthPyramid(d, std::max(c.depthMipLevels, 1u));
+    const bool readsMip = c.technique == AoTechnique::Scalable || c.technique == AoTechnique::Horizon;
+    if (readsMip) pyramid = depthPyramid(d, std::max(c.depthMipLevels, 1u));
+    const detail::HorizonPass horizonPass{c, pyramid, [&](int px, int py, double pz) { return positionAt(rec, map, px, py, pz); }, rec.projInfo,
+                                          float(rec.pixelsPerUnitAtUnitDepth)};
     Grid out(d.width, d.height, 1.0);
     for (uint32_t y = 0; y < d.height; ++y) {
         for (uint32_t x = 0; x < d.width; ++x) {
@@ -177,9 +202,14 @@ Grid rawVisibilityOfPass(const Grid& d, const std::vector<dvec3>& hostNormals, c
             const dvec3 C = positionAt(rec, map, int(x), int(y), z);
             const dvec3 n = normals[size_t(y) * d.width + x];
             double sum = 0;
+            if (c.technique == AoTechnique::Horizon) {
+                sum = detail::horizonVisibility(horizonPass, int(x), int(y), z, C, n);
+                out.at(x, y) = saturate(aoFinishVisibility(aoOcclusionFromSum(c, sum, z), c.contrast));
+                continue;
+            }
             for (const AoTap& t : aoTaps(c, rec, d.width, d.height, x, y, z)) {
                 // A Scalable tap may read a coarse level's depth; its position is its own pixel.
-                const Grid& g = c.technique == AoTechnique::Scalable ? pyramid[size_t(t.level)] : d;
+                const Grid& g = readsMip ? pyramid[size_t(t.level)] : d;
                 const uint32_t mx = std::min(uint32_t(t.x) >> t.level, g.width - 1);
                 const uint32_t my = std::min(uint32_t(t.y) >> t.level, g.height - 1);
                 const dvec3 v = positionAt(rec, map, t.x, t.y, g.at(mx, my)) - C;

@@ -1,0 +1,138 @@
+// Horizon-based ambient occlusion (after Jimenez, Wu, Pesce and Jarabo, "Practical Realtime
+// Strategies for Accurate Indirect Occlusion"): what ao_horizon.frag and the CPU reference
+// (sdk/src/reference/ao_horizon_reference.cpp) share. Same dialect rules as sfx_shared.h.
+//
+// Per pixel, `slices` screen directions spread over half a turn. Along each, both ways, `steps`
+// depth samples find the highest horizon (the largest elevation above the tangent plane of a
+// sample within the world radius). The cosine-weighted visible arc between the
+// two horizons, about the normal projected into the slice's plane, has a closed form; its mean
+// over the slices is the visibility, the quantity the ray-traced truth measures (docs/trade.md).
+// Which pixel a step reads is decided with the float operations of "Where a tap lands"
+// (sfx_shared_ao.h); acos, the one transcendental, appears only in the continuous arc
+// (docs/ao.md derives the conformance bound from its specified precision).
+#ifndef SFX_SHARED_AO_HORIZON_H
+#define SFX_SHARED_AO_HORIZON_H
+
+#include "sfx_shared_ao.h"
+
+#ifdef __cplusplus
+namespace sfx::shared {
+using std::acos;
+#endif
+
+// Most slices and steps per side the shader is built for (what settings validation allows).
+SFX_CONST(int, SFX_AO_HORIZON_MAX_SLICES, 16)
+SFX_CONST(int, SFX_AO_HORIZON_MAX_STEPS, 32)
+// The nearest step lies at least a pixel away: aoTapStep then never lands on the centre.
+SFX_CONST(float, SFX_AO_HORIZON_MIN_STEP_PX, 1.0)
+// Each slice's step jitter is the pixel's, advanced by this many 256ths of a step (0.617, near
+// the golden ratio's fraction) per slice, so the slices of one pixel sample different distances.
+SFX_CONST(int, SFX_AO_HORIZON_JITTER_PER_SLICE, 158)
+
+// Slice i of `slices`: (2i + 1) / (4 slices) of a turn in Q16, so the slices split half a turn
+// evenly (each is marched both ways); the pixel's rotation turns them all (aoTapDirection).
+SFX_FN int aoHorizonSliceTurnsQ16(int i, int slices) { return ((2 * i + 1) * 16384) / slices; }
+// The step jitter of slice i, in 256ths of a step, from the pixel's hash bits 8..15 (bits 0..7
+// are its rotation, aoRotationIndex).
+SFX_FN int aoHorizonJitterIndex(SFX_UINT hash, int slice) {
+    return (int((hash >> 8u) & 255u) + slice * SFX_AO_HORIZON_JITTER_PER_SLICE) & 255;
+}
+// Step j of `steps` lies at ((j + jitter) / steps)^2 of the screen radius, jitter = (k + 0.5) /
+// 256: samples crowd toward the pixel, where a horizon changes fastest. Float in both languages
+// (a discrete decision follows: the pixel it reads).
+SFX_FN float aoHorizonStepRadius(int j, int steps, int jitterIndex, float screenRadius) {
+    SFX_PRECISE float jitter = (float(jitterIndex) + 0.5f) * 0.00390625f;
+    SFX_PRECISE float t = (float(j) + jitter) / float(steps);
+    SFX_PRECISE float rho = t * t * screenRadius;
+    return max(rho, SFX_AO_HORIZON_MIN_STEP_PX);
+}
+
+// The unit vector from view position C toward the eye.
+SFX_FN SFX_AO_VEC3 aoHorizonViewVector(SFX_AO_VEC3 C) {
+    SFX_REAL len = length(C);
+    return len > 0.0 ? -C / len : SFX_AO_VEC3(0.0, 0.0, 1.0);
+}
+
+// The slice's in-plane direction u: the view-space direction of screen direction (dx, dy) (a
+// screen step of (dx, dy) moves a point at depth z by z * (dx * projInfo.x, dy * projInfo.y, 0))
+// made orthogonal to the view vector V. Its unit vector is the slice's tangent t, + side.
+SFX_FN SFX_AO_VEC3 aoHorizonSliceDirection(SFX_REAL dx, SFX_REAL dy, SFX_REAL projX, SFX_REAL projY, SFX_AO_VEC3 V) {
+    SFX_AO_VEC3 d = SFX_AO_VEC3(dx * projX, dy * projY, 0.0);
+    return d - V * dot(d, V);
+}
+SFX_FN SFX_AO_VEC3 aoHorizonSliceTangent(SFX_AO_VEC3 u) {
+    SFX_REAL len = length(u);
+    return len > 0.0 ? u / len : SFX_AO_VEC3(1.0, 0.0, 0.0);
+}
+// The slice's weight in the mean: the visibility integral runs over slice planes evenly spread
+// in azimuth about V, but the slices are spread evenly in screen angle, and off the image's
+// centre the two differ (up to 10% of the visibility at a 60-degree field of view's corner).
+// The azimuth's rate of turn per screen angle is |projX projY V.z| / |u|^2 for unit (dx, dy);
+// the factor common to a pixel's slices cancels in the weighted mean, leaving 1 / |u|^2.
+SFX_FN SFX_REAL aoHorizonSliceWeight(SFX_AO_VEC3 u) {
+    SFX_REAL uu = dot(u, u);
+    return uu > 0.0 ? 1.0 / uu : 0.0;
+}
+// The normal n projected into the plane of V and t: (its length, cos and sin of its angle from
+// V, positive toward t). A normal along the slice's axis projects to length 0, and the slice
+// then adds nothing (the cosine weight of every direction in it is 0).
+SFX_FN SFX_AO_VEC3 aoHorizonProjectedNormal(SFX_AO_VEC3 n, SFX_AO_VEC3 V, SFX_AO_VEC3 t) {
+    SFX_REAL c = dot(n, V);
+    SFX_REAL s = dot(n, t);
+    SFX_REAL len = sqrt(c * c + s * s);
+    if (!(len > 1.0e-6)) return SFX_AO_VEC3(0.0, 1.0, 0.0);
+    return SFX_AO_VEC3(len, c / len, s / len);
+}
+// One sample's horizon, as the sine of its elevation above the tangent plane within the slice:
+// dot(v, n) / |v| over the projected normal's length (invProjectedLength), so that a sample in
+// the slice's plane gives exactly the sine of its angle above the plane's trace there. Measured
+// from the tangent plane, a tap that lands off the slice's line (taps read pixel centres) still
+// reads 0 on a plane of any tilt; measured from the view vector it would read a horizon above
+// the plane. Inside the radius a sample counts fully up to the last `falloff` share of it, then
+// fades linearly to 0 at the radius (invFalloffWidth = 1 / (falloff * radius)). A sample on the
+// centre (|v|^2 within epsilon r^2) has no direction and reads 0.
+SFX_FN SFX_REAL aoHorizonSampleSin(SFX_AO_VEC3 v, SFX_AO_VEC3 n, SFX_REAL invProjectedLength, SFX_REAL radius, SFX_REAL invFalloffWidth,
+                                   SFX_REAL epsilon) {
+    SFX_REAL vv = dot(v, v);
+    if (!(vv > epsilon * radius * radius)) return 0.0;
+    SFX_REAL len = sqrt(vv);
+    SFX_REAL w = clamp((radius - len) * invFalloffWidth, 0.0, 1.0);
+    return clamp(dot(v, n) / len * invProjectedLength, -1.0, 1.0) * w;
+}
+// The thickness heuristic: a higher sample raises the horizon; a lower one, seen past an
+// occluder, means the occluder may be thin, and pulls the horizon (1 - thickness) of the way
+// down to it (thickness 1: every occluder is solid behind its visible face).
+SFX_FN SFX_REAL aoHorizonUpdate(SFX_REAL horizonSin, SFX_REAL sampleSin, SFX_REAL thickness) {
+    return sampleSin > horizonSin ? sampleSin : sampleSin + (horizonSin - sampleSin) * thickness;
+}
+
+// The cosine-weighted visible arc from the view vector to the horizon on one side (side +1 or
+// -1), about the normal at angle nAngle (cosN, sinN) from the view vector in the slice. The
+// horizon lies at h = nAngle + side * alpha, alpha = acos(s) for elevation sine s; the arc is
+// 1/4 (cos n + 2 h sin n - cos(2 h - n)), with cos(2 h - n) expanded in s (cos 2 alpha =
+// 2 s^2 - 1), so acos is the only transcendental. A horizon past the view vector (h on the other
+// side: possible only for a tap off the slice's line) leaves that side nothing.
+SFX_FN SFX_REAL aoHorizonArc(SFX_REAL s, SFX_REAL side, SFX_REAL nAngle, SFX_REAL cosN, SFX_REAL sinN) {
+    SFX_REAL e = clamp(s, 0.0, 1.0);
+    SFX_REAL h = nAngle + side * acos(e);
+    if (!(side * h > 0.0)) return 0.0;
+    SFX_REAL cos2a = 2.0 * e * e - 1.0;
+    SFX_REAL sin2a = side * 2.0 * e * sqrt(max(1.0 - e * e, 0.0));
+    SFX_REAL cos2hn = cos2a * cosN - sin2a * sinN;
+    return 0.25 * (cosN + 2.0 * h * sinN - cos2hn);
+}
+// One slice's visibility from the two sides' horizons (elevation sines, the + side toward t)
+// and its projected normal (length, cos, sin): the arcs of both sides times the projected
+// length. Its mean over slices evenly spread is 1 for an unoccluded pixel.
+SFX_FN SFX_REAL aoHorizonSliceVisibility(SFX_REAL plusSin, SFX_REAL minusSin, SFX_AO_VEC3 projected) {
+    SFX_REAL cosN = projected.y, sinN = projected.z;
+    SFX_REAL nAngle = acos(clamp(cosN, -1.0, 1.0));
+    if (sinN < 0.0) nAngle = -nAngle;
+    return projected.x * (aoHorizonArc(plusSin, 1.0, nAngle, cosN, sinN) + aoHorizonArc(minusSin, -1.0, nAngle, cosN, sinN));
+}
+
+#ifdef __cplusplus
+}  // namespace sfx::shared
+#endif
+
+#endif  // SFX_SHARED_AO_HORIZON_H
