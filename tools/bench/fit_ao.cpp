@@ -175,14 +175,15 @@ Result<AoSettings> fit(tools::AoEvaluator& ev, const AoSettings& start, const st
 // Where a technique's error at the tier's defaults comes from: the held-out score of the default
 // and of variants that each change one thing (no blur: how much noise the blur hides; 4x the
 // taps: the noise left; full resolution: what half resolution costs; no screen-radius clamp).
-Status diagnose(tools::AoEvaluator& ev, Tier tier, AoTechnique technique, const std::vector<tools::AoCase>& heldOut) {
+Status diagnose(tools::AoEvaluator& ev, Tier tier, AoTechnique technique, const std::vector<tools::AoCase>& training,
+                const std::vector<tools::AoCase>& heldOut) {
     const TierProfile base = tiers::choose(ev.device().caps(), tier)->profile;
     const tools::AoScore none = tools::noAoScore(heldOut);  // the baseline of the 4 dB accuracy goal
     struct Variant {
-        const char* name;
+        std::string name;
         std::function<void(AoSettings&, TierProfile&)> apply;
     };
-    const std::vector<Variant> variants{
+    std::vector<Variant> variants{
         {"default", [](AoSettings&, TierProfile&) {}},
         {"blur off", [](AoSettings& s, TierProfile&) { s.blur = false; }},
         {"4x taps",
@@ -204,6 +205,15 @@ Status diagnose(tools::AoEvaluator& ev, Tier tier, AoTechnique technique, const 
         {"crease spacing x1.5", [](AoSettings&, TierProfile& p) { p.aoCreaseSpacingPx *= 1.5f; }},
         {"crease spacing doubled", [](AoSettings&, TierProfile& p) { p.aoCreaseSpacingPx *= 2; }},
     };
+    // Horizon's counts and falloff as a grid: its defaults are chosen on the training score.
+    if (technique == AoTechnique::Horizon)
+        for (uint32_t slices : {base.aoHorizonSlices, base.aoHorizonSlices + 1})
+            for (uint32_t steps : {base.aoHorizonSteps, base.aoHorizonSteps * 3 / 2, base.aoHorizonSteps * 2})
+                for (float falloff : {0.2f, 0.1f, 0.05f}) {
+                    variants.push_back(
+                        {"grid " + std::to_string(slices) + "x" + std::to_string(steps) + " falloff " + fixed(falloff, 2),
+                         [=](AoSettings&, TierProfile& p) { p.aoHorizonSlices = slices, p.aoHorizonSteps = steps, p.aoHorizonFalloff = falloff; }});
+                }
     for (const Variant& v : variants) {
         AoSettings s;
         s.technique = technique;
@@ -211,10 +221,13 @@ Status diagnose(tools::AoEvaluator& ev, Tier tier, AoTechnique technique, const 
         TierProfile p = base;
         v.apply(s, p);
         ev.setProfile(p);
+        Result<tools::AoScore> t = ev.score(s, training);
+        if (!t) return t.status();
         Result<tools::AoScore> r = ev.score(s, heldOut);
         if (!r) return r.status();
-        std::cout << "  diagnose " << toString(tier) << "/" << toString(technique) << " " << v.name << ": held out " << fixed(r->psnr, 2) << " / "
-                  << fixed(r->psnrOccluded, 2) << " dB, signed error occluded " << fixed(r->signedOccluded, 3) << ", gain over no AO occluded "
+        std::cout << "  diagnose " << toString(tier) << "/" << toString(technique) << " " << v.name << ": training " << fixed(t->psnr, 2) << " / "
+                  << fixed(t->psnrOccluded, 2) << " dB, held out " << fixed(r->psnr, 2) << " / " << fixed(r->psnrOccluded, 2)
+                  << " dB, signed error occluded " << fixed(r->signedOccluded, 3) << ", gain over no AO occluded "
                   << fixed(r->psnrOccluded - none.psnrOccluded, 2) << " dB" << std::endl;
     }
     ev.setProfile(base);
@@ -299,7 +312,7 @@ int main(int argc, char** argv) {
     app.add_option("--start", o.start, "where the search starts: paper (the papers' look) or tier (the tier table's)")
         ->check(CLI::IsMember({"paper", "tier"}))
         ->capture_default_str();
-    app.add_flag("--diagnose", o.diagnose, "score variants of the tier defaults on the held-out views instead of fitting");
+    app.add_flag("--diagnose", o.diagnose, "score variants of the tier defaults on the training and the held-out views instead of fitting");
     app.add_option("--cache-dir", o.cacheDir, "where truth images are cached")->capture_default_str();
     app.add_option("--out-dir", o.outDir, "ao_fit.csv and trade.md (tables between its fit_ao markers)")->capture_default_str();
     CLI11_PARSE(app, argc, argv);
@@ -350,7 +363,7 @@ int main(int argc, char** argv) {
             }
             const std::string label = std::string(toString(tier)) + "/" + name;
             if (o.diagnose) {
-                if (Status st = diagnose(ev, tier, technique, heldOut.value()); !st) {
+                if (Status st = diagnose(ev, tier, technique, training.value(), heldOut.value()); !st) {
                     std::cerr << "fit_ao: " << label << ": " << st.toString() << "\n";
                     return 1;
                 }
