@@ -24,10 +24,7 @@ namespace {
 // plus float-vs-double taps; current, two
 // 8-bit roundings of the AO (before and after the blur, 2 x 1/510) on top of that.
 constexpr double kAoWorstPixelHigh = 0.005, kAoWorstPixelCurrent = 0.01;
-// Horizon's arc takes acos three times per slice (the normal's angle, each side's horizon), which
-// the Vulkan specification bounds to 4096 ulp (about 1e-3 radian for results up to pi); the arc
-// moves by at most half a radian's change per side and the normal's angle by one: 2e-3 more.
-constexpr double kAoHorizonTrigBound = 0.002;
+using test::kAoHorizonTrigBound;
 // The mean signed error over occluded pixels: rounding averages out; a biased term does not.
 constexpr double kAoOccludedBiasBound = 0.002;
 

@@ -29,11 +29,10 @@ namespace {
 // another pixel, a wrong MIP level or a missed blur weight moves a pixel by 1e-3 or more and
 // fails. (Measured: 1.8e-7, lavapipe vs llvmpipe.)
 constexpr double kAoPairWorst = 1e-5;
-// Horizon's arc takes acos, which the Vulkan specification bounds to 4096 ulp: each backend is
-// within 0.002 of the exact arc (docs/ao.md), so two are within twice that (measured 1.4e-4,
-// SwiftShader vs lavapipe). On the current tier the AO passes through 8-bit targets, where two
+// Horizon's arc takes acos: each backend is within kAoHorizonTrigBound of the exact arc
+// (docs/ao.md), so two are within twice that (measured 1.4e-4, SwiftShader vs lavapipe). On the current tier the AO passes through 8-bit targets, where two
 // floats that differ at all may round to neighbouring codes: one unorm8 step more.
-constexpr double kAoHorizonPairWorst = 2 * 0.002;
+constexpr double kAoHorizonPairWorst = 2 * test::kAoHorizonTrigBound;
 constexpr double kUnorm8Step = 1.0 / 255.0;
 // Motion blur: the output is fp16, so operation order can move a channel by one fp16 ulp
 // below 1 (2^-11); two ulps allowed. A different tap or weight decision moves it far more.

@@ -13,6 +13,12 @@
 
 namespace sfx::test {
 
+// Horizon's arc takes acos three times per slice (the normal's angle, each side's horizon), which
+// the Vulkan specification bounds to 4096 ulp (about 1e-3 radian for results up to pi); the arc
+// moves by at most half a radian's change per side and the normal's angle by one: 2e-3 more than
+// the tier's bound against the reference (docs/ao.md).
+inline constexpr double kAoHorizonTrigBound = 0.002;
+
 struct GpuAo {
     reference::Grid visibility;
     AoConfig config;

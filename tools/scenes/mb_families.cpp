@@ -88,13 +88,7 @@ SceneFrame FamilyScene::render(double t) const {
 }
 
 ColorGrid FamilyScene::truth(uint32_t instants) const {
-    ColorGrid sum(width, height);
-    for (uint32_t i = 0; i < instants; ++i) {
-        const SceneFrame f = render((i + 0.5) / instants - 0.5);
-        for (size_t p = 0; p < sum.values.size(); ++p)
-            for (int c = 0; c < 4; ++c) sum.values[p][c] += f.color.values[p][c] / instants;
-    }
-    return sum;
+    return reference::shutterAverage(width, height, instants, [this](double t) { return render(t); });
 }
 
 FamilyMasks familyMasks(const FamilyScene& scene, uint32_t instants) {

@@ -200,7 +200,7 @@ SceneFrame MotionScene::render(double t) const {
     return f;
 }
 
-ColorGrid MotionScene::groundTruth(uint32_t instants) const {
+ColorGrid shutterAverage(uint32_t width, uint32_t height, uint32_t instants, const std::function<SceneFrame(double)>& render) {
     ColorGrid sum(width, height);
     for (uint32_t i = 0; i < instants; ++i) {
         const SceneFrame f = render((i + 0.5) / instants - 0.5);
@@ -208,6 +208,10 @@ ColorGrid MotionScene::groundTruth(uint32_t instants) const {
             for (int c = 0; c < 4; ++c) sum.values[p][c] += f.color.values[p][c] / instants;
     }
     return sum;
+}
+
+ColorGrid MotionScene::groundTruth(uint32_t instants) const {
+    return shutterAverage(width, height, instants, [this](double t) { return render(t); });
 }
 
 std::vector<bool> movingSilhouetteMask(const SceneFrame& frame, const MotionScene& scene, uint32_t radius) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "sfx/motion_blur.hpp"
@@ -92,6 +93,10 @@ struct MotionScene {
     // The average of `instants` frames evenly spread over the shutter interval.
     ColorGrid groundTruth(uint32_t instants) const;
 };
+
+// The average of `instants` pictures render(t) at times evenly spread over the shutter interval
+// [-0.5, 0.5] (the truth of every motion scene, whatever draws it).
+ColorGrid shutterAverage(uint32_t width, uint32_t height, uint32_t instants, const std::function<SceneFrame(double)>& render);
 
 // Pixels within `radius` of a boundary between layers where at least one of them moves.
 std::vector<bool> movingSilhouetteMask(const SceneFrame& frame, const MotionScene& scene, uint32_t radius);
