@@ -9,7 +9,7 @@
 
 float horizonSampleSin(ivec2 p, float rho, vec2 d, int level, ivec2 size, vec3 C, vec3 n, float invProjectedLength) {
     ivec2 q = aoTap(p, rho, d, size);
-    ivec2 m = min(q >> level, textureSize(uDepth, level) - 1);
+    ivec2 m = aoMipTexel(q, level, size);
     vec3 v = aoPosition(q, aoDepthAt(m, level)) - C;
     return aoHorizonSampleSin(v, n, invProjectedLength, params.radius, params.horizonInvFalloffWidth, params.epsilon);
 }
@@ -26,7 +26,7 @@ void main() {
     float screenRadius = aoScreenRadius(params.radius, params.pixelsPerUnit, z);
     uint hash = aoRotationHash(p);
     int rotation = int(hash & 0xFFu);
-    float sum = 0.0, weights = 0.0;
+    float visibleSum = 0.0, openSum = 0.0;
     for (int i = 0; i < kAoSamples; ++i) {
         vec2 d = aoTapDirection(aoHorizonSliceTurnsQ16(i, kAoSamples), rotation);
         vec3 u = aoHorizonSliceDirection(d.x, d.y, params.projInfo.x, params.projInfo.y, V);
@@ -45,9 +45,10 @@ void main() {
             plusSin = aoHorizonUpdate(plusSin, horizonSampleSin(p, rho, d, level, size, C, n, invProjectedLength), params.horizonThickness);
             minusSin = aoHorizonUpdate(minusSin, horizonSampleSin(p, rho, -d, level, size, C, n, invProjectedLength), params.horizonThickness);
         }
-        sum += weight * aoHorizonSliceVisibility(plusSin, minusSin, projected);
-        weights += weight;
+        float nAngle = aoHorizonNormalAngle(projected);
+        visibleSum += weight * aoHorizonSliceVisibility(plusSin, minusSin, projected, nAngle);
+        openSum += weight * aoHorizonSliceVisibility(0.0, 0.0, projected, nAngle);
     }
-    float visibility = weights > 0.0 ? sum / weights : 1.0;
+    float visibility = aoHorizonRatio(visibleSum, openSum);
     aoWrite(sky ? 1.0 : aoFinish(params.intensity * (1.0 - visibility)), z, sky);
 }

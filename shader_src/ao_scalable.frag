@@ -8,7 +8,7 @@
 
 float scalableTap(ivec2 p, float h, vec2 d, int level, ivec2 size, vec3 C, vec3 n) {
     ivec2 q = aoTap(p, h, d, size);
-    ivec2 m = min(q >> level, textureSize(uDepth, level) - 1);
+    ivec2 m = aoMipTexel(q, level, size);
     vec3 v = aoPosition(q, aoDepthAt(m, level)) - C;
     float term = aoScalableTerm(dot(v, v), dot(v, n), params.radius, params.bias, params.epsilon);
 #ifdef SFX_AO_MULTILAYER

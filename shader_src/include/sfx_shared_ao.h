@@ -478,6 +478,10 @@ float aoDepthAt(ivec2 q, int level) {
     float d = kAoMipLevels > 1 ? texelFetch(uDepth, q, level).r : sfxTexel(uDepth, q, 0).r;
     return sfxLinearDepthOrFar(d, params.maxDepth);
 }
+// The texel of MIP `level` under level-0 pixel q (in 0..size-1): the level's extent is size >>
+// level, at least 1 (the Vulkan and GL rule), computed rather than queried: llvmpipe answers
+// textureSize(uDepth, level) with another SIMD lane's level when the level varies per pixel.
+ivec2 aoMipTexel(ivec2 q, int level, ivec2 size) { return min(q >> level, max(size >> level, ivec2(1)) - 1); }
 float aoDepth(ivec2 q) { return sfxLinearDepthOrFar(sfxTexel(uDepth, q, 0).r, params.maxDepth); }
 #ifdef SFX_AO_MULTILAYER  // generated from the tier table (TierProfile::aoMaxDepthLayers > 1)
 // Opaque depth layers 1..3 (AoInputs.depthLayers): R32F linear depth at the AO size, full

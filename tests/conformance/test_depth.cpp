@@ -129,7 +129,7 @@ TEST_CASE("depth pyramid levels are exact rotated-grid subsamples", "[depth][con
         return;
     }
     Device& device = test::device();
-    for (auto [W, H] : {std::pair<uint32_t, uint32_t>{61, 37}, {64, 32}, {17, 90}}) {
+    for (auto [W, H] : {std::pair<uint32_t, uint32_t>{61, 37}, {64, 32}, {17, 90}, {96, 360}}) {
         INFO(test::label() << " " << W << "x" << H);
         std::vector<float> linear(size_t(W) * H);
         for (size_t i = 0; i < linear.size(); ++i) linear[i] = 1.0f + float((i * 7919) % 1000) * 0.01f;

@@ -20,7 +20,7 @@ double horizonVisibility(const HorizonPass& pass, int x, int y, double z, const 
     const int rotation = int(hash & 0xFFu);
     const double invFalloffWidth = 1.0 / (c.horizon.falloff * c.radius);
     const glm::dvec3 V = sh::aoHorizonViewVector(C);
-    double sum = 0.0, weights = 0.0;
+    double visibleSum = 0.0, openSum = 0.0;
     for (int i = 0; i < slices; ++i) {
         const sh::vec2 d = sh::aoTapDirection(sh::aoHorizonSliceTurnsQ16(i, slices), rotation);
         const glm::dvec3 u = sh::aoHorizonSliceDirection(d.x, d.y, pass.projInfo[0], pass.projInfo[1], V);
@@ -44,10 +44,11 @@ double horizonVisibility(const HorizonPass& pass, int x, int y, double z, const 
                 horizon[side] = sh::aoHorizonUpdate(horizon[side], s, c.horizon.thickness);
             }
         }
-        sum += weight * sh::aoHorizonSliceVisibility(horizon[0], horizon[1], projected);
-        weights += weight;
+        const double nAngle = sh::aoHorizonNormalAngle(projected);
+        visibleSum += weight * sh::aoHorizonSliceVisibility(horizon[0], horizon[1], projected, nAngle);
+        openSum += weight * sh::aoHorizonSliceVisibility(0.0, 0.0, projected, nAngle);
     }
-    return weights > 0.0 ? sum / weights : 1.0;
+    return sh::aoHorizonRatio(visibleSum, openSum);
 }
 
 }  // namespace sfx::reference::detail
