@@ -13,10 +13,10 @@
 
 namespace sfx::test {
 
-// Horizon's arc takes acos three times per slice (the normal's angle, each side's horizon), which
-// the Vulkan specification bounds to 4096 ulp (about 1e-3 radian for results up to pi); the arc
-// moves by at most half a radian's change per side and the normal's angle by one: 2e-3 more than
-// the tier's bound against the reference (docs/ao.md).
+// Horizon's slices take acos five times (the normal's angle, each side's horizon, each side of
+// the open arc), which the Vulkan specification bounds to 4096 ulp (about 1e-3 radian for
+// results up to pi); the visibility, a ratio of arcs, then moves by less than 2e-3 more than
+// the tier's bound against the reference (docs/ao.md; test_ao_horizon_reference.cpp checks it).
 inline constexpr double kAoHorizonTrigBound = 0.002;
 
 struct GpuAo {

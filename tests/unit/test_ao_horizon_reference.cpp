@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "analytic_scenes.hpp"
+#include "effect_runs.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/reference/ao_reference.hpp"
 #include "sfx/tiers.hpp"
@@ -48,7 +49,49 @@ double sliceVisibility(double plusSin, double minusSin, const glm::dvec3& projec
     return sfx::shared::aoHorizonSliceVisibility(plusSin, minusSin, projected, sfx::shared::aoHorizonNormalAngle(projected));
 }
 
+// One side's arc with its horizon angle's acos result off by dAlpha radians (the shared
+// aoHorizonArc at dAlpha 0, which the test checks).
+double arcWithError(double e, double side, double nAngle, double cosN, double sinN, double dAlpha) {
+    const double h = nAngle + side * (std::acos(std::clamp(e, 0.0, 1.0)) + dAlpha);
+    if (!(side * h > 0.0)) return 0.0;
+    return 0.25 * (cosN + 2.0 * h * sinN - std::cos(2.0 * h - nAngle));
+}
+
 }  // namespace
+
+TEST_CASE("ao horizon: the conformance allowance covers the specified acos precision", "[ao][horizon]") {
+    // Vulkan bounds acos to 4096 ulp, within 1e-3 radian for results up to pi. The visibility is
+    // the mean of the slices' ratios r = visible / open weighted by their open arcs, so an error
+    // moves it by at most the largest change of one slice's ratio plus the largest relative
+    // change of one open arc (a weighted mean of values in [0, 1]). Every acos of a slice (the
+    // normal's angle, both horizons, both open sides) is pushed 1e-3 either way over normals
+    // facing the eye and horizons from the tangent plane to the normal.
+    namespace sh = sfx::shared;
+    const double err = 1e-3;
+    double worstRatio = 0, worstOpen = 0;
+    for (int gi = 0; gi <= 60; ++gi) {
+        const double g = -kPi / 2 + kPi * gi / 60.0;
+        const double c = std::cos(g), s = std::sin(g);
+        for (int pi = 0; pi <= 20; ++pi)
+            for (int mi = 0; mi <= 20; ++mi) {
+                const double ep = pi / 20.0, em = mi / 20.0;
+                const double visible = arcWithError(ep, 1, g, c, s, 0) + arcWithError(em, -1, g, c, s, 0);
+                const double open = arcWithError(0, 1, g, c, s, 0) + arcWithError(0, -1, g, c, s, 0);
+                CHECK(visible == Approx(sh::aoHorizonSliceVisibility(ep, em, glm::dvec3{1.0, c, s}, g)).margin(1e-12));
+                if (!(open > 1e-9)) continue;
+                for (int m = 0; m < 32; ++m) {
+                    auto d = [&](int bit) { return (m >> bit) & 1 ? err : -err; };
+                    const double n = g + d(0);
+                    const double v2 = arcWithError(ep, 1, n, c, s, d(1)) + arcWithError(em, -1, n, c, s, d(2));
+                    const double o2 = arcWithError(0, 1, n, c, s, d(3)) + arcWithError(0, -1, n, c, s, d(4));
+                    worstRatio = std::max(worstRatio, std::abs(v2 / o2 - visible / open));
+                    worstOpen = std::max(worstOpen, std::abs(o2 / open - 1.0));
+                }
+            }
+    }
+    INFO("slice ratio moves " << worstRatio << ", open arc " << worstOpen);
+    CHECK(worstRatio + worstOpen / (1.0 - worstOpen) <= test::kAoHorizonTrigBound);
+}
 
 TEST_CASE("ao horizon: the visible arc of an open slice integrates the cosine over the hemisphere", "[ao][horizon]") {
     namespace sh = sfx::shared;

@@ -82,11 +82,12 @@ TierProfile currentDefault() {
     // Crease fitted at half resolution, the default, with its 12 px tap spacing
     // (tools/bench/fit_ao --start tier; docs/trade.md has the held-out scores).
     p.aoLook[2] = {.intensity = 2.16482f, .contrast = 6.85391f, .bias = 0, .creaseRange = 0.834435f, .creaseBias = 0.165467f};  // crease
-    // Horizon: 2 slices of 4 steps a side at half size (16 fetches), its look the geometry's own.
+    // Horizon: 2 slices of 4 steps a side at half size (16 fetches), its look the geometry's own;
+    // chosen on the training families (tools/bench/fit_ao --diagnose, rule in docs/ao_families.md).
     p.aoHorizonSlices = 2;
     p.aoHorizonSteps = 4;
     p.aoHorizonThickness = 1.0f;
-    p.aoHorizonFalloff = 0.2f;
+    p.aoHorizonFalloff = 0.02f;
     p.aoLook[3] = {};              // horizon: intensity 1, contrast 1 (the visibility as estimated)
     p.aoPackedDepthTarget = true;  // ao_blur.frag reads the key packed in the RGBA8 AO target
     // Obscurance and blur at half size, a depth-aware upsample last, for the cost goal
@@ -117,11 +118,12 @@ TierProfile highDefault() {
     p.aoLook[1] = {.intensity = 0.187609f, .contrast = 7.36525f, .bias = 0.0468752f, .sumExponent = 0.707107f};  // scalable
     // Crease fitted at half resolution, the default (tools/bench/fit_ao --start tier).
     p.aoLook[2] = {.intensity = 13.7531f, .contrast = 1.2864f, .bias = 0, .creaseRange = 0.73699f, .creaseBias = 0.126689f};  // crease
-    // Horizon: 3 slices of 6 steps a side at half size, far steps from the depth MIP.
-    p.aoHorizonSlices = 3;
+    // Horizon: 2 slices of 6 steps a side at half size, far steps from the depth MIP; chosen on
+    // the training families as the current tier's row.
+    p.aoHorizonSlices = 2;
     p.aoHorizonSteps = 6;
     p.aoHorizonThickness = 1.0f;
-    p.aoHorizonFalloff = 0.2f;
+    p.aoHorizonFalloff = 0.02f;
     p.aoLook[3] = {};               // horizon: intensity 1, contrast 1
     p.aoPackedDepthTarget = false;  // float AO target carrying the linear depth (RG32F; RGBA32F crease)
     p.aoHalfResolution = true;      // as the current tier; the blur's 6 px become 3 half-size taps each side

@@ -205,11 +205,12 @@ Status diagnose(tools::AoEvaluator& ev, Tier tier, AoTechnique technique, const 
         {"crease spacing x1.5", [](AoSettings&, TierProfile& p) { p.aoCreaseSpacingPx *= 1.5f; }},
         {"crease spacing doubled", [](AoSettings&, TierProfile& p) { p.aoCreaseSpacingPx *= 2; }},
     };
-    // Horizon's counts and falloff as a grid: its defaults are chosen on the training score.
+    // Horizon's counts and falloff as a grid, the same on both tiers: its defaults are chosen on
+    // the training score (docs/ao_families.md states the rule).
     if (technique == AoTechnique::Horizon)
-        for (uint32_t slices : {base.aoHorizonSlices, base.aoHorizonSlices + 1})
-            for (uint32_t steps : {base.aoHorizonSteps, base.aoHorizonSteps * 3 / 2, base.aoHorizonSteps * 2})
-                for (float falloff : {0.2f, 0.1f, 0.05f}) {
+        for (uint32_t slices : {2u, 3u, 4u})
+            for (uint32_t steps : {4u, 6u, 8u, 12u})
+                for (float falloff : {0.2f, 0.1f, 0.05f, 0.02f}) {
                     variants.push_back(
                         {"grid " + std::to_string(slices) + "x" + std::to_string(steps) + " falloff " + fixed(falloff, 2),
                          [=](AoSettings&, TierProfile& p) { p.aoHorizonSlices = slices, p.aoHorizonSteps = steps, p.aoHorizonFalloff = falloff; }});
