@@ -86,10 +86,11 @@ TEST_CASE("budget: the candidates are every preset of the tier's row (x techniqu
     for (Tier tier : {Tier::Current, Tier::High}) {
         const std::vector<Preset>& presets = tiers::row(tier).presets;
         const std::vector<Candidate> ao = candidates(Effect::AmbientObscurance, presets);
-        REQUIRE(ao.size() == 3 * presets.size());
+        REQUIRE(ao.size() == 4 * presets.size());
         for (size_t i = 0; i < ao.size(); ++i) {
-            CHECK(ao[i].preset == presets[i / 3].name);
-            CHECK(ao[i].psnrDb == presets[i / 3].accuracy.aoPsnrDb[i % 3]);
+            CHECK(ao[i].preset == presets[i / 4].name);
+            CHECK(ao[i].technique == AoTechnique(i % 4));
+            CHECK(ao[i].psnrDb == presets[i / 4].accuracy.aoPsnrDb[i % 4]);
         }
         const std::vector<Candidate> mb = candidates(Effect::MotionBlur, presets);
         REQUIRE(mb.size() == presets.size());

@@ -135,36 +135,42 @@ TierProfile highDefault() {
     return p;
 }
 
-// A preset of a tier: its default with other tap counts, blur width (output pixels), AO at full
-// or half resolution and motion blur radius (uniforms and specialisation constants only: the
-// tier's shader defines, and so its programs, stay the default's).
+// A preset of a tier: its default with other tap counts (horizon's as slices x steps), blur
+// width (output pixels), AO at full or half resolution and motion blur radius (uniforms and
+// specialisation constants only: the tier's shader defines, and so its programs, stay the
+// default's).
 enum class AoRes { Full, Half };
-Preset variant(const char* name, TierProfile p, AoRes res, uint32_t alchemy, uint32_t scalable, uint32_t blur, uint32_t mbTaps, float mbRadius,
-               PresetAccuracy accuracy) {
+struct HorizonCounts {
+    uint32_t slices, steps;
+};
+Preset variant(const char* name, TierProfile p, AoRes res, uint32_t alchemy, uint32_t scalable, HorizonCounts horizon, uint32_t blur, uint32_t mbTaps,
+               float mbRadius, PresetAccuracy accuracy) {
     p.aoHalfResolution = res == AoRes::Half;
     p.aoAlchemySamples = alchemy, p.aoScalableTaps = scalable, p.aoBlurRadiusPx = blur;
+    p.aoHorizonSlices = horizon.slices, p.aoHorizonSteps = horizon.steps;
     p.mbTaps = mbTaps, p.mbMaxRadiusPx = mbRadius;
     return {name, p, accuracy};
 }
 
-// Accuracy: PSNR in dB of alchemy, scalable, crease AO and of motion blur, measured by
-// tools/bench/trade_presets (tools/run_trade.sh) on llvmpipe; the figures of docs/trade.md.
+// Accuracy: PSNR in dB of alchemy, scalable, crease and horizon AO on the held-out scene families
+// and of motion blur on the 2.5D scenes, measured by tools/bench/trade_presets
+// (tools/run_trade.sh) on llvmpipe; the figures of docs/trade.md.
 std::vector<Preset> currentPresets() {
     const TierProfile d = currentDefault();
-    return {{kDefaultPreset, d, {{26.97, 26.29, 24.69}, 31.04}},
-            variant("low", d, AoRes::Half, 3, 2, 1, 5, 8.0f, {{26.03, 25.26, 24.69}, 28.70}),
-            variant("medium", d, AoRes::Half, 6, 4, 2, 7, 10.0f, {{26.97, 26.29, 24.69}, 31.04}),
-            variant("high", d, AoRes::Half, 10, 6, 3, 9, 14.0f, {{27.26, 26.46, 24.69}, 33.79}),
-            variant("ultra", d, AoRes::Full, 16, 10, 4, 13, 18.0f, {{27.64, 27.63, 24.72}, 34.33})};
+    return {{kDefaultPreset, d, {{28.95, 28.41, 27.14, 28.86}, 35.12}},
+            variant("low", d, AoRes::Half, 3, 2, {2, 2}, 1, 5, 8.0f, {{27.67, 27.37, 27.14, 26.72}, 31.26}),
+            variant("medium", d, AoRes::Half, 6, 4, {2, 4}, 2, 7, 10.0f, {{28.95, 28.41, 27.14, 28.86}, 35.12}),
+            variant("high", d, AoRes::Half, 10, 6, {2, 8}, 3, 9, 14.0f, {{29.52, 29.28, 27.18, 30.83}, 38.21}),
+            variant("ultra", d, AoRes::Full, 16, 10, {2, 12}, 4, 13, 18.0f, {{29.99, 30.55, 26.35, 31.84}, 40.38})};
 }
 
 std::vector<Preset> highPresets() {
     const TierProfile d = highDefault();
-    return {{kDefaultPreset, d, {{27.22, 27.70, 24.33}, 34.38}},
-            variant("low", d, AoRes::Half, 4, 4, 2, 5, 10.0f, {{26.50, 26.38, 24.35}, 30.48}),
-            variant("medium", d, AoRes::Half, 8, 6, 4, 7, 14.0f, {{27.29, 26.95, 24.34}, 32.77}),
-            variant("high", d, AoRes::Half, 12, 9, 6, 9, 18.0f, {{27.22, 27.70, 24.33}, 34.38}),
-            variant("ultra", d, AoRes::Full, 24, 16, 8, 15, 24.0f, {{27.26, 27.79, 24.44}, 34.67})};
+    return {{kDefaultPreset, d, {{29.69, 29.95, 26.74, 30.16}, 39.21}},
+            variant("low", d, AoRes::Half, 4, 4, {2, 3}, 2, 5, 10.0f, {{28.26, 27.75, 26.66, 28.01}, 33.92}),
+            variant("medium", d, AoRes::Half, 8, 6, {2, 4}, 4, 7, 14.0f, {{29.56, 28.99, 26.70, 29.06}, 37.32}),
+            variant("high", d, AoRes::Half, 12, 9, {2, 6}, 6, 9, 18.0f, {{29.69, 29.95, 26.74, 30.16}, 39.21}),
+            variant("ultra", d, AoRes::Full, 24, 16, {2, 12}, 8, 15, 24.0f, {{30.02, 30.33, 26.45, 31.57}, 39.88})};
 }
 
 std::vector<TierRow> makeTable() {

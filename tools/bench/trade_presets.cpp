@@ -2,9 +2,9 @@
 // every backend x tier x preset of the tier table (x technique for AO):
 //   - cost at --cost-size (median of HAL-timed runs, as ms and as copy passes of that size on
 //     the same device): AO on the G-buffer of one sample view, motion blur on the "pan" scene;
-//   - accuracy: AO's PSNR against the ray-traced truth on the held-out views of fit_ao (radii
-//     0.25-2, 320x180; computed on the first backend, the backends agree) and on their analytic
-//     scenes alone at --anchor-size (1280x720, the size of the quoted XeGTAO figures), motion
+//   - accuracy: AO's PSNR against the ray-traced truth on the held-out scene families (each view
+//     at its own radius, 320x180; computed on the first backend, the backends agree) and on the
+//     analytic scenes alone at --anchor-size (1280x720, the size of the quoted XeGTAO figures), motion
 //     blur's PSNR against its temporally supersampled truth on the 2.5D scenes.
 // Writes <out-dir>/trade_presets.csv, one SVG Pareto plot per backend and effect under
 // <out-dir>/images/ and the tables into <out-dir>/trade.md between its markers. A program, not a test.
@@ -24,6 +24,7 @@
 #include "copy_pass.hpp"
 #include "markdown_section.hpp"
 #include "motion_cases.hpp"
+#include "scene_families.hpp"
 #include "sfx/budget.hpp"
 #include "sfx/tiers.hpp"
 #include "svg_plot.hpp"
@@ -37,7 +38,7 @@ using tools::fixed;
 struct Options {
     std::vector<std::string> backends{"vulkan", "gles"};
     uint32_t costWidth = 1280, costHeight = 720, runs = 11, instants = 64;
-    std::vector<double> radii{0.25, 0.5, 1.0, 2.0};
+    std::vector<double> radii{0.25, 0.5, 1.0, 2.0};  // the analytic scenes' (the families' views carry their own)
     tools::TruthSettings truth;
     // The analytic scenes' accuracy, compared with the XeGTAO anchors, at the anchors' size.
     uint32_t anchorWidth = 1280, anchorHeight = 720;
@@ -253,7 +254,7 @@ std::string markdown(const Options& o, const std::vector<Row>& rows, const std::
        << o.runs
        << " HAL-timed runs; copy passes = that cost over one full-screen copy of the same size on the same device: for AO the median ratio of runs "
           "timed interleaved with copies, for motion blur copies timed right after it); AO PSNR "
-          "over the held-out views of the fit at radii 0.25-2 ("
+          "over the held-out scene families at each view's radius (docs/ao_families.md, "
        << o.truth.width << "x" << o.truth.height << "), motion blur PSNR against " << o.instants << " supersampled instants on the 2.5D scenes.\n\n";
     for (const std::string& backend : o.backends) {
         md << "![Pareto plot, AO, " << backend << "](images/pareto_ao_" << backend << ".svg)\n\n";
@@ -316,11 +317,11 @@ int main(int argc, char** argv) {
     auto elapsed = [&] { return fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(), 1); };
 
     AccuracyCases cases;
-    cases.views = tools::presetViews();
-    for (const tools::TradeView& v : cases.views)
+    cases.views = tools::familyViews(true);
+    for (const tools::TradeView& v : tools::presetViews())
         if (v.analytic) cases.analyticViews.push_back(v);
     const auto progress = [&](const std::string& line) { std::cout << "[" << elapsed() << " s] " << line << std::endl; };
-    Result<std::vector<tools::AoCase>> heldOut = tools::loadCases(cases.views, 0, cases.views.size(), o.radii, o.truth, progress);
+    Result<std::vector<tools::AoCase>> heldOut = tools::loadCases(cases.views, 0, cases.views.size(), {}, o.truth, progress);
     Result<std::vector<tools::AoCase>> analytic = heldOut
         ? tools::loadCases(cases.analyticViews, 0, cases.analyticViews.size(), o.radii, o.anchorTruth(), progress)
         : Result<std::vector<tools::AoCase>>(heldOut.status());

@@ -97,7 +97,7 @@ struct TierProfile {
 // (docs/trade.md): the settings-by-budget API (sfx/budget.hpp) picks the most accurate preset
 // whose cost, measured on the device, fits. 0 = not measured.
 struct PresetAccuracy {
-    double aoPsnrDb[4] = {0, 0, 0, 0};  // per AO technique (AoTechnique order), held-out views, radii 0.25-2
+    double aoPsnrDb[4] = {0, 0, 0, 0};  // per AO technique (AoTechnique order), held-out scene families
     double motionBlurPsnrDb = 0;        // against temporally supersampled truth
 };
 

@@ -139,7 +139,7 @@ std::vector<Candidate> candidates(Effect effect, const std::vector<Preset>& pres
             out.push_back({effect, p.name, AoTechnique::Alchemy, p.accuracy.motionBlurPsnrDb});
             continue;
         }
-        for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease})
+        for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease, AoTechnique::Horizon})
             out.push_back({effect, p.name, t, p.accuracy.aoPsnrDb[size_t(t)]});
     }
     return out;
