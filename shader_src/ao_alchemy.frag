@@ -1,4 +1,5 @@
 #version 450
+#extension GL_EXT_control_flow_attributes : require
 // Alchemy ambient obscurance (McGuire et al. 2011, eq. 10): samples uniform in the projected
 // world-space disk, counted only inside the sphere of radius r. See docs/ao.md.
 #define SFX_AO_PASS 1
@@ -15,7 +16,7 @@ void main() {
     float screenRadius = aoScreenRadius(r, params.pixelsPerUnit, z);
     int rotation = aoRotationIndex(p);
     float sum = 0.0;
-    for (int i = 0; i < kAoSamples; ++i) {
+    [[unroll]] for (int i = 0; i < kAoSamples; ++i) {
         ivec2 q = aoTap(p, aoDiskTapRadius(i, kAoSamples, screenRadius), aoTapDirection(aoAlchemyTurnsQ16(i), rotation), size);
         vec3 v = aoPosition(q, aoDepth(q)) - C;
         float term = aoAlchemyTerm(dot(v, v), dot(v, n), z, r, params.bias, params.epsilon);

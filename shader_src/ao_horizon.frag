@@ -1,4 +1,5 @@
 #version 450
+#extension GL_EXT_control_flow_attributes : require
 // Horizon-based AO (Jimenez et al. 2016, GTAO) as a fragment pass: kAoSamples slices per pixel,
 // each marched both ways in kAoHorizonSteps steps crowding toward the pixel, the highest
 // horizon above the tangent plane per side kept (thickness heuristic, falloff at the radius's edge), then the
@@ -27,7 +28,7 @@ void main() {
     uint hash = aoRotationHash(p);
     int rotation = int(hash & 0xFFu);
     float visibleSum = 0.0, openSum = 0.0;
-    for (int i = 0; i < kAoSamples; ++i) {
+    [[unroll]] for (int i = 0; i < kAoSamples; ++i) {
         vec2 d = aoTapDirection(aoHorizonSliceTurnsQ16(i, kAoSamples), rotation);
         vec3 u = aoHorizonSliceDirection(d.x, d.y, params.projInfo.x, params.projInfo.y, V);
         vec3 t = aoHorizonSliceTangent(u);
@@ -36,7 +37,7 @@ void main() {
         int jitter = aoHorizonJitterIndex(hash, i);
         float invProjectedLength = 1.0 / projected.x;
         float plusSin = 0.0, minusSin = 0.0;  // both sides start at the tangent plane
-        for (int j = 0; j < kAoHorizonSteps; ++j) {
+        [[unroll]] for (int j = 0; j < kAoHorizonSteps; ++j) {
             float rho = aoHorizonStepRadius(j, kAoHorizonSteps, jitter, screenRadius);
             int level = 0;
 #ifdef SFX_AO_DEPTH_MIP  // generated from the tier table (TierProfile::aoUsesDepthMip)

@@ -1,4 +1,5 @@
 #version 450
+#extension GL_EXT_control_flow_attributes : require
 // Scalable AO (Bukowski et al. 2012): spiral taps with a linear distance falloff and a biased
 // cosine; the normalised sum raised to the look's exponent (the course squares it). Current
 // tier: mirrored pairs, radius clamp, full-resolution depth. High tier: 9 spiral taps, each
@@ -36,7 +37,7 @@ void main() {
     int rotation = aoRotationIndex(p);
     const int offsets = kAoMirrored != 0 ? kAoSamples / 2 : kAoSamples;
     float sum = 0.0;
-    for (int i = 0; i < offsets; ++i) {
+    [[unroll]] for (int i = 0; i < offsets; ++i) {
         float h = aoSpiralTapRadius(i, offsets, screenRadius);
         vec2 d = aoTapDirection(aoSpiralTurnsQ16(i, params.spiralHalfStepQ16), rotation);
         int level = 0;
