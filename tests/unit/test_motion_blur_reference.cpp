@@ -226,7 +226,7 @@ TEST_CASE("motion blur: settings out of range are named errors; tiers and scalin
     CHECK(cur->tileSizePx == 10);  // the tile is the radius on the current tier: 3 x 3 tiles
     Result<MotionBlurParams> high = resolveMotionBlur(tiers::profile(Tier::High), s, 1080);
     REQUIRE(high.isOk());
-    CHECK(high->taps == 9);
+    CHECK(high->taps == 13);
     CHECK(high->jitterSize == 4);
     CHECK(high->radiusPx == 27);                                                     // 18 px at 720 rows, scaled to 1080
     CHECK(resolveMotionBlur(tiers::profile(Tier::Current), s, 180)->radiusPx == 3);  // 2.5 rounds to 3

@@ -126,7 +126,10 @@ TierProfile highDefault() {
     p.aoPackedDepthTarget = false;  // float AO target carrying the linear depth (RG32F; RGBA32F crease)
     p.aoHalfResolution = true;      // as the current tier; the blur's 6 px become 3 half-size taps each side
     p.aoMaxDepthLayers = 4;         // multilayer AO: the first visible layer and 3 peeled ones (SFX_AO_MAX_DEPTH_LAYERS)
-    p.mbTaps = 9;                   // 8 samples + centre
+    // 12 samples + centre: its samples no farther apart than the current tier's (18 px / 6 pairs
+    // against 10 px / 3 pairs), so a thin feature is missed and a hidden background guessed from
+    // afar no more often on the tier with the longer blur (docs/motion_blur.md, scene families).
+    p.mbTaps = 13;
     p.mbMaxRadiusPx = 18.0f;
     p.mbJitterSize = 4;  // 4x4 randomised
     p.abufferOit = true;
@@ -161,7 +164,7 @@ std::vector<Preset> highPresets() {
     return {{kDefaultPreset, d, {{27.22, 27.70, 24.33}, 34.38}},
             variant("low", d, AoRes::Half, 4, 4, 2, 5, 10.0f, {{26.50, 26.38, 24.35}, 30.48}),
             variant("medium", d, AoRes::Half, 8, 6, 4, 7, 14.0f, {{27.29, 26.95, 24.34}, 32.77}),
-            variant("high", d, AoRes::Half, 12, 9, 6, 9, 18.0f, {{27.22, 27.70, 24.33}, 34.38}),
+            variant("high", d, AoRes::Half, 12, 9, 6, 13, 18.0f, {{27.22, 27.70, 24.33}, 34.38}),
             variant("ultra", d, AoRes::Full, 24, 16, 8, 15, 24.0f, {{27.26, 27.79, 24.44}, 34.67})};
 }
 
