@@ -149,11 +149,13 @@ SFX_MB_FN SFX_MB_REAL mbQuantizeVelocityCode(SFX_MB_REAL e) {
 // blur length, the shape of the truth, and a still pixel beside a moving edge keeps the share of
 // the shutter in which it is not covered.
 
-// Sample pairs used at a pixel: enough for one texel between samples along the neighbourhood
-// velocity (|v_N| rounded up), at most the tier's. More pairs than texels along the blur would
-// read some texels twice and weight them double. The 0.01 px keeps an exact integer length, on
-// the velocity grid, away from the rounding's step in float and double alike.
-SFX_MB_FN int mbActivePairs(SFX_MB_REAL speedN, int pairs) { return clamp(int(ceil(speedN - 0.01)), 1, pairs); }
+// Sample pairs used at a pixel: one per texel the blur along the neighbourhood velocity gives
+// weight to on each side (mbSpread: the texels nearer than |v_N| + 0.5, so |v_N| rounded to
+// nearest), at most the tier's. More pairs than those texels would read some texels twice and
+// weight them double (rounding up did, for every length just past an integer). The step sits
+// 0.01 px below the half: integer and half-integer lengths, on the velocity grid, stay away from
+// it in float and double alike (a half-integer length takes the pair whose end texel weighs 0).
+SFX_MB_FN int mbActivePairs(SFX_MB_REAL speedN, int pairs) { return clamp(int(ceil(speedN - 0.49)), 1, pairs); }
 
 // Pair i of `pairs` sits at +t and -t' along one velocity of length `speed`:
 //   t = (i + 1 + jitter * s) / pairs,   t' = (i + 1 - jitter * s) / pairs,   both at most 1.

@@ -211,6 +211,14 @@ TEST_CASE("motion blur reference: the jitter patterns and velocity encoding", "[
     CHECK(shared::mbEncodeVelocity(-10, 10) == 0.0);
     CHECK(shared::mbEncodeVelocity(10, 10) == 1.0);
     CHECK(shared::mbDecodeVelocity(shared::mbEncodeVelocity(3.5, 10), 10) == Approx(3.5));
+    // One pair per texel the blur weighs on each side (|v_N| rounded), at most the tier's: a
+    // length just past an integer takes no extra pair that would read a texel twice.
+    CHECK(shared::mbActivePairs(0.6, 6) == 1);
+    CHECK(shared::mbActivePairs(3.0, 6) == 3);
+    CHECK(shared::mbActivePairs(3.02, 6) == 3);
+    CHECK(shared::mbActivePairs(3.4, 6) == 3);
+    CHECK(shared::mbActivePairs(3.5, 6) == 4);
+    CHECK(shared::mbActivePairs(9.0, 6) == 6);
     CHECK(roundToHalf(1.0 / 3.0) == Approx(0.333251953125));
     CHECK(roundToHalf(65000.0) == 64992.0);  // fp16 steps by 32 there
 }
