@@ -1,5 +1,5 @@
 #version 450
-// Motion blur pass 2: per N x N tile (N = the maximum radius), the velocity of largest
+// Motion blur pass 2: per N x N tile (N = the tile edge, SFX_MB_TILE_PX scaled), the velocity of largest
 // magnitude. Magnitudes are compared on the decoded (centred) value, never on the [0,1] code.
 // Ties keep the first in row-major scan order, as the CPU reference does.
 #include "sfx_shared.h"

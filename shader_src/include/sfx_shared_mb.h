@@ -56,9 +56,17 @@ SFX_CONST(float, SFX_MB_STILL_PX, 0.5)
 SFX_CONST(float, SFX_MB_MAX_PACKED_DEPTH, 65000.0)
 // Reference resolution of the tier radii: TierProfile::mbMaxRadiusPx is pixels at 720 rows.
 SFX_CONST(float, SFX_MB_REFERENCE_ROWS, 720.0)
-// Largest radius (output pixels, after resolution scaling) the shaders loop over: tile max
-// reads N x N texels with N = radius, so this bounds its cost.
+// Largest radius (output pixels, after resolution scaling) the shaders loop over; with the
+// tile edge it bounds what tile max reads (N x N texels, N at most the radius).
 SFX_CONST(int, SFX_MB_MAX_RADIUS_LIMIT_PX, 64)
+// Tile edge N of tile max and neighbour max: output pixels at SFX_MB_REFERENCE_ROWS, scaled
+// with the rows as the radius is, at most the radius. The same on every tier: the tile is how
+// finely the dominant velocity v_N follows the picture, which has nothing to do with how long
+// a blur may be; a larger radius widens the neighbourhood (mbNeighborReachTiles) instead.
+SFX_CONST(float, SFX_MB_TILE_PX, 10.0)
+// Most tiles neighbour max looks out on each side; the tile is made larger where the radius
+// would need more (a user radius far beyond the tile).
+SFX_CONST(int, SFX_MB_MAX_NEIGHBOR_REACH, 4)
 // Largest tap count (centre included) the reconstruction loop allows.
 SFX_CONST(int, SFX_MB_MAX_TAPS, 31)
 
@@ -141,11 +149,13 @@ SFX_MB_FN SFX_MB_REAL mbQuantizeVelocityCode(SFX_MB_REAL e) {
 // blur length, the shape of the truth, and a still pixel beside a moving edge keeps the share of
 // the shutter in which it is not covered.
 
-// Sample pairs used at a pixel: enough for one texel between samples along the neighbourhood
-// velocity (|v_N| rounded up), at most the tier's. More pairs than texels along the blur would
-// read some texels twice and weight them double. The 0.01 px keeps an exact integer length, on
-// the velocity grid, away from the rounding's step in float and double alike.
-SFX_MB_FN int mbActivePairs(SFX_MB_REAL speedN, int pairs) { return clamp(int(ceil(speedN - 0.01)), 1, pairs); }
+// Sample pairs used at a pixel: one per texel the blur along the neighbourhood velocity gives
+// weight to on each side (mbSpread: the texels nearer than |v_N| + 0.5, so |v_N| rounded to
+// nearest), at most the tier's. More pairs than those texels would read some texels twice and
+// weight them double (rounding up did, for every length just past an integer). The step sits
+// 0.01 px below the half: integer and half-integer lengths, on the velocity grid, stay away from
+// it in float and double alike (a half-integer length takes the pair whose end texel weighs 0).
+SFX_MB_FN int mbActivePairs(SFX_MB_REAL speedN, int pairs) { return clamp(int(ceil(speedN - 0.49)), 1, pairs); }
 
 // Pair i of `pairs` sits at +t and -t' along one velocity of length `speed`:
 //   t = (i + 1 + jitter * s) / pairs,   t' = (i + 1 - jitter * s) / pairs,   both at most 1.
@@ -195,22 +205,31 @@ SFX_MB_FN SFX_MB_REAL mbCentreShare(SFX_MB_REAL centreWeight, SFX_MB_REAL sample
     return max(2.0 * SFX_MB_REAL(activePairs) - sampleWeights, 0.0) * centreWeight;
 }
 
-// Neighbour max keeps a neighbouring tile only if its velocity can carry its blur into the
-// centre tile (after Guertin et al.): a side neighbour needs motion along that side's axis, a
-// diagonal one motion along that diagonal. `d` is the tile's velocity or anything of its sign
-// (the centred code). Keeps the dominant velocity from being one that never reaches the pixels.
-SFX_MB_FN bool mbNeighborReaches(int dx, int dy, SFX_MB_VEC2 d) {
+// Tiles neighbour max looks out on each side: enough tiles of edge `tile` to cover `radius`
+// (1, the 3 x 3 of the course, when the tile is the radius).
+SFX_MB_FN int mbNeighborReachTiles(int radius, int tile) { return (radius + tile - 1) / tile; }
+
+// Neighbour max keeps a tile at (dx, dy) tiles from the centre tile only if its velocity `v`
+// (decoded, pixels) can carry its blur into the centre tile (after Guertin et al.): a tile in
+// line with it along a side needs motion along that axis, one off both axes motion along the
+// diagonal toward it; a tile beyond the adjacent ones also needs a radius that crosses the
+// pixels between the two tiles (Chebyshev; the 0.5 px of mbSpread's ramp). Keeps the dominant
+// velocity from being one that never reaches the pixels.
+SFX_MB_FN bool mbNeighborReaches(int dx, int dy, SFX_MB_VEC2 v, int tile) {
     if (dx == 0 && dy == 0) return true;
-    if (dx == 0) return d.y != 0.0;
-    if (dy == 0) return d.x != 0.0;
-    return SFX_MB_REAL(dx * dy) * d.x * d.y > 0.0;
+    int gap = (max(abs(dx), abs(dy)) - 1) * tile;
+    if (gap > 0 && length(v) < SFX_MB_REAL(gap) + 0.5) return false;
+    if (dx == 0) return v.y != 0.0;
+    if (dy == 0) return v.x != 0.0;
+    return SFX_MB_REAL(dx * dy) * v.x * v.y > 0.0;
 }
 
 // ---- Specialisation constants of the motion blur passes (branches and loop counts) -----------
 // Never uniforms: lavapipe recompiles a shader whose control flow reads uniform values each
 // time they are bound (see sfx_shared_ao.h). Ids as plain macros, for both languages.
 #define SFX_MB_SC_CAMERA_ONLY 0  // mb_pack: 1 = velocity from depth and the camera motion
-#define SFX_MB_SC_TILE_SIZE 0    // mb_tile_max: N, the tile edge (the blur radius in pixels)
+#define SFX_MB_SC_TILE_SIZE 0    // mb_tile_max and mb_neighbor_max: N, the tile edge in pixels
+#define SFX_MB_SC_RADIUS 1       // mb_neighbor_max: k, the blur radius in pixels
 #define SFX_MB_SC_PAIRS 0        // mb_reconstruct: sample pairs, (taps - 1) / 2
 #define SFX_MB_SC_JITTER_SIZE 1  // mb_reconstruct: 2 = checkerboard, 4 = 4x4 randomised
 
@@ -227,7 +246,8 @@ SFX_BLOCK(MbPackParams, 2)
     SFX_M_FLOAT(maxDepth)        // far plane, or SFX_SKY_DEPTH: out-of-range linear depth becomes this
 SFX_BLOCK_END(params)
 #endif
-// Pass 2, mb_tile_max.frag, has no uniforms (its tile size is SFX_MB_SC_TILE_SIZE).
+// Passes 2 and 3, mb_tile_max.frag and mb_neighbor_max.frag, have no uniforms (their tile size
+// and radius are the constants above).
 // Pass 4, mb_reconstruct.frag.
 #if defined(__cplusplus) || defined(SFX_WANT_MB_RECONSTRUCT_PARAMS)
 SFX_BLOCK(MbReconstructParams, 3)

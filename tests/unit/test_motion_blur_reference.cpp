@@ -211,6 +211,14 @@ TEST_CASE("motion blur reference: the jitter patterns and velocity encoding", "[
     CHECK(shared::mbEncodeVelocity(-10, 10) == 0.0);
     CHECK(shared::mbEncodeVelocity(10, 10) == 1.0);
     CHECK(shared::mbDecodeVelocity(shared::mbEncodeVelocity(3.5, 10), 10) == Approx(3.5));
+    // One pair per texel the blur weighs on each side (|v_N| rounded), at most the tier's: a
+    // length just past an integer takes no extra pair that would read a texel twice.
+    CHECK(shared::mbActivePairs(0.6, 6) == 1);
+    CHECK(shared::mbActivePairs(3.0, 6) == 3);
+    CHECK(shared::mbActivePairs(3.02, 6) == 3);
+    CHECK(shared::mbActivePairs(3.4, 6) == 3);
+    CHECK(shared::mbActivePairs(3.5, 6) == 4);
+    CHECK(shared::mbActivePairs(9.0, 6) == 6);
     CHECK(roundToHalf(1.0 / 3.0) == Approx(0.333251953125));
     CHECK(roundToHalf(65000.0) == 64992.0);  // fp16 steps by 32 there
 }
@@ -223,12 +231,32 @@ TEST_CASE("motion blur: settings out of range are named errors; tiers and scalin
     CHECK(cur->pairs == 3);
     CHECK(cur->jitterSize == 2);
     CHECK(cur->radiusPx == 10);
+    CHECK(cur->tileSizePx == 10);  // the tile is the radius on the current tier: 3 x 3 tiles
     Result<MotionBlurParams> high = resolveMotionBlur(tiers::profile(Tier::High), s, 1080);
     REQUIRE(high.isOk());
-    CHECK(high->taps == 9);
+    CHECK(high->taps == 13);
     CHECK(high->jitterSize == 4);
     CHECK(high->radiusPx == 27);                                                     // 18 px at 720 rows, scaled to 1080
     CHECK(resolveMotionBlur(tiers::profile(Tier::Current), s, 180)->radiusPx == 3);  // 2.5 rounds to 3
+    // The tile is the same pixels on every tier (10 at 720 rows), scaled as the radius is: the
+    // high tier's radius reaches 2 tiles out.
+    CHECK(high->tileSizePx == 15);
+    CHECK(resolveMotionBlur(tiers::profile(Tier::High), s, 240)->tileSizePx == 3);
+    CHECK(resolveMotionBlur(tiers::profile(Tier::Current), s, 240)->tileSizePx == 3);
+    // Never beyond the radius, and large enough that the reach stays within 4 tiles.
+    MotionBlurSettings small;
+    small.maxRadiusPx = 4;
+    CHECK(resolveMotionBlur(tiers::profile(Tier::High), small, 720)->tileSizePx == 4);
+    MotionBlurSettings wide;
+    wide.maxRadiusPx = 64;
+    Result<MotionBlurParams> w = resolveMotionBlur(tiers::profile(Tier::High), wide, 720);
+    CHECK(w->tileSizePx == 16);  // 10 px would need 7 tiles each side
+    CHECK(shared::mbNeighborReachTiles(int(w->radiusPx), int(w->tileSizePx)) == 4);
+    // A tile two out (3 px tiles: 3 px between them) counts only with a radius past those pixels.
+    CHECK_FALSE(shared::mbNeighborReaches(2, 0, glm::dvec2(3.0, 0.0), 3));
+    CHECK(shared::mbNeighborReaches(2, 0, glm::dvec2(4.0, 0.0), 3));
+    CHECK_FALSE(shared::mbNeighborReaches(2, 1, glm::dvec2(0.0, 6.0), 3));  // off the row, not along the diagonal
+    CHECK(shared::mbNeighborReaches(1, 0, glm::dvec2(0.6, 0.0), 3));        // adjacent: the direction only
 
     auto bad = [](MotionBlurSettings st, const char* field) {
         Result<MotionBlurParams> r = resolveMotionBlur(tiers::profile(Tier::High), st, 720);

@@ -97,7 +97,7 @@ TEST_CASE("tier table: the default presets hold the parameters the tiers always 
                    .aoCreaseTaps = 24,
                    .aoCreaseSpacingPx = 12.0f,
                    .aoPackedDepthTarget = false,
-                   .mbTaps = 9,
+                   .mbTaps = 13,
                    .mbMaxRadiusPx = 18.0f,
                    .mbJitterSize = 4,
                    .abufferOit = true};

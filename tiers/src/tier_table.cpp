@@ -128,7 +128,10 @@ TierProfile highDefault() {
     p.aoPackedDepthTarget = false;  // float AO target carrying the linear depth (RG32F; RGBA32F crease)
     p.aoHalfResolution = true;      // as the current tier; the blur's 6 px become 3 half-size taps each side
     p.aoMaxDepthLayers = 4;         // multilayer AO: the first visible layer and 3 peeled ones (SFX_AO_MAX_DEPTH_LAYERS)
-    p.mbTaps = 9;                   // 8 samples + centre
+    // 12 samples + centre: its samples no farther apart than the current tier's (18 px / 6 pairs
+    // against 10 px / 3 pairs), so a thin feature is missed and a hidden background guessed from
+    // afar no more often on the tier with the longer blur (docs/motion_blur.md, scene families).
+    p.mbTaps = 13;
     p.mbMaxRadiusPx = 18.0f;
     p.mbJitterSize = 4;  // 4x4 randomised
     p.abufferOit = true;
@@ -169,7 +172,7 @@ std::vector<Preset> highPresets() {
     return {{kDefaultPreset, d, {{29.69, 29.95, 26.74, 30.16}, 39.21}},
             variant("low", d, AoRes::Half, 4, 4, {2, 3}, 2, 5, 10.0f, {{28.26, 27.75, 26.66, 28.01}, 33.92}),
             variant("medium", d, AoRes::Half, 8, 6, {2, 4}, 4, 7, 14.0f, {{29.56, 28.99, 26.70, 29.06}, 37.32}),
-            variant("high", d, AoRes::Half, 12, 9, {2, 6}, 6, 9, 18.0f, {{29.69, 29.95, 26.74, 30.16}, 39.21}),
+            variant("high", d, AoRes::Half, 12, 9, {2, 6}, 6, 13, 18.0f, {{29.69, 29.95, 26.74, 30.16}, 39.21}),
             variant("ultra", d, AoRes::Full, 24, 16, {2, 12}, 8, 15, 24.0f, {{30.02, 30.33, 26.45, 31.57}, 39.88})};
 }
 

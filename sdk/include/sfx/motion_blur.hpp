@@ -17,7 +17,7 @@
 //
 // Passes: linear depth (sfx::LinearDepth) -> pack (velocity clamped to the radius and encoded
 // [-k, k] -> [0, 1], depth packed alongside, RGBA16F) -> tile max (N x N, N = radius, RG16F)
-// -> neighbour max (3 x 3 tiles, RG16F) -> reconstruction (the host colour's format).
+// -> neighbour max (the tiles within the radius, RG16F) -> reconstruction (the host colour's format).
 #pragma once
 
 #include <glm/glm.hpp>
@@ -62,7 +62,11 @@ struct MotionBlurParams {
     uint32_t taps = 0;        // centre included, odd
     uint32_t pairs = 0;       // (taps - 1) / 2 mirrored sample pairs
     uint32_t jitterSize = 0;  // 2 = checkerboard, 4 = 4x4 randomised
-    uint32_t radiusPx = 0;    // k: clamp radius and tile size, output pixels, [1, 64]
+    uint32_t radiusPx = 0;    // k: clamp radius, output pixels, [1, 64]
+    // N: tile edge of tile max and neighbour max, output pixels, [1, k] (SFX_MB_TILE_PX scaled
+    // as the radius is, made larger where the neighbourhood would reach past
+    // SFX_MB_MAX_NEIGHBOR_REACH tiles).
+    uint32_t tileSizePx = 0;
     // The tier-default radius scaled to the output height exceeded the 64 px limit and
     // radiusPx is that limit; scaledRadiusPx is the radius before the cap (0 when not capped).
     bool radiusCapped = false;
@@ -138,7 +142,7 @@ private:
     MotionBlur(Device& device, const MotionBlurDesc& desc);
     Status allocate();
     Status allocateTargets();
-    Status allocateTiles(uint32_t radiusPx);
+    Status allocateTiles(uint32_t tileSizePx);
     // Every pass of a dispatch whose inputs were checked, into `target`.
     Status recordPasses(const MotionBlurInputs& in, const MotionBlurParams& p, TextureHandle target);
     void release();
@@ -149,7 +153,7 @@ private:
     MotionBlurDesc desc_;
     std::unique_ptr<LinearDepth> depth_;
     TextureHandle packed_, tileMax_, neighborMax_, output_;
-    uint32_t tileRadius_ = 0;  // the radius the tile textures were sized for
+    uint32_t tileSize_ = 0;  // the tile edge the tile textures were sized for
     BufferHandle packParams_, reconstructParams_;
     ProgramHandle packProgram_, tileProgram_, neighborProgram_, reconstructProgram_;
     // Pipelines by specialisation constants (camera-only, tile size, taps); kept across resize.

@@ -42,7 +42,7 @@ Status checkProfile(const TierProfile& p) {
     return Status::ok();
 }
 
-uint32_t tilesFor(uint32_t size, uint32_t radius) { return (size + radius - 1) / radius; }
+uint32_t tilesFor(uint32_t size, uint32_t tile) { return (size + tile - 1) / tile; }
 
 }  // namespace
 
@@ -81,6 +81,12 @@ Result<MotionBlurParams> resolveMotionBlur(const TierProfile& profile, const Mot
                                std::to_string(*s.maxRadiusPx) + " (" + std::to_string(radius) + " px at " + std::to_string(height) + " rows)",
                                "a scaled radius <= 64 px");
     p.radiusPx = uint32_t(radius);
+    // The tile: the same pixels at referenceRows on every tier, never beyond the radius, and
+    // large enough that neighbour max reaches the radius within its limit of tiles.
+    const double tileBase = double(shared::SFX_MB_TILE_PX);
+    const double tile = std::round(s.referenceRows == 0 ? tileBase : tileBase * double(height) / double(s.referenceRows));
+    const double fewestTiles = std::ceil(radius / double(shared::SFX_MB_MAX_NEIGHBOR_REACH));
+    p.tileSizePx = uint32_t(std::clamp(std::max(tile, fewestTiles), 1.0, radius));
     p.softDepthExtent = s.softDepthExtent;
     p.centreWeight = s.centreWeight;
     p.exposure = s.exposure;
@@ -158,18 +164,18 @@ void MotionBlur::releaseTargets() {
     }
 }
 
-Status MotionBlur::allocateTiles(uint32_t radiusPx) {
-    if (radiusPx == tileRadius_ && !tileMax_.isNull()) return Status::ok();
+Status MotionBlur::allocateTiles(uint32_t tileSizePx) {
+    if (tileSizePx == tileSize_ && !tileMax_.isNull()) return Status::ok();
     releaseTiles();
     const uint32_t rt = kTextureSampled | kTextureRenderTarget;
-    const uint32_t tw = tilesFor(desc_.width, radiusPx), th = tilesFor(desc_.height, radiusPx);
+    const uint32_t tw = tilesFor(desc_.width, tileSizePx), th = tilesFor(desc_.height, tileSizePx);
     Result<TextureHandle> tile = device_.createTexture({tw, th, 1, Format::RG16F, rt, "sfx-mb-tile-max"});
     if (!tile) return tile.status();
     tileMax_ = tile.value();
     Result<TextureHandle> neighbor = device_.createTexture({tw, th, 1, Format::RG16F, rt, "sfx-mb-neighbor-max"});
     if (!neighbor) return neighbor.status();
     neighborMax_ = neighbor.value();
-    tileRadius_ = radiusPx;
+    tileSize_ = tileSizePx;
     return Status::ok();
 }
 
@@ -178,7 +184,7 @@ void MotionBlur::releaseTiles() {
     if (!neighborMax_.isNull()) (void)device_.destroyTexture(neighborMax_);
     tileMax_ = {};
     neighborMax_ = {};
-    tileRadius_ = 0;
+    tileSize_ = 0;
 }
 
 void MotionBlur::release() {
@@ -263,7 +269,7 @@ Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings
     }
 
     // Before the passes: a new tile size makes textures, which no recording may span.
-    SFX_TRY(allocateTiles(p.radiusPx));
+    SFX_TRY(allocateTiles(p.tileSizePx));
     const uint64_t key = detail::RecordedPasses::key({in.color.bits, in.depth.texture.bits, in.velocity.bits, target.bits});
     return recorded_->run(key, [&] { return recordPasses(in, p, target); });
 }
@@ -296,7 +302,7 @@ Status MotionBlur::recordPasses(const MotionBlurInputs& in, const MotionBlurPara
     rec.radius = float(p.radiusPx);
     rec.softExtent = float(p.softDepthExtent);
     rec.centreWeight = float(p.centreWeight);
-    rec.tileSize = int32_t(p.radiusPx);
+    rec.tileSize = int32_t(p.tileSizePx);
     SFX_TRY(uniforms_->write(device_, reconstructParams_, rec));
 
     // Branches and loop counts: specialisation constants, one pipeline per combination seen.
@@ -305,10 +311,12 @@ Status MotionBlur::recordPasses(const MotionBlurInputs& in, const MotionBlurPara
     };
     Result<PipelineHandle> packPipeline = pipeline(packProgram_, Format::RGBA16F, {{SFX_MB_SC_CAMERA_ONLY, cameraOnly ? 1 : 0}}, gen::mb_pack::kName);
     if (!packPipeline) return packPipeline.status();
-    Result<PipelineHandle> tilePipeline = pipeline(tileProgram_, Format::RG16F, {{SFX_MB_SC_TILE_SIZE, int32_t(p.radiusPx)}},
+    Result<PipelineHandle> tilePipeline = pipeline(tileProgram_, Format::RG16F, {{SFX_MB_SC_TILE_SIZE, int32_t(p.tileSizePx)}},
                                                    gen::mb_tile_max::kName);
     if (!tilePipeline) return tilePipeline.status();
-    Result<PipelineHandle> neighborPipeline = pipeline(neighborProgram_, Format::RG16F, {}, gen::mb_neighbor_max::kName);
+    Result<PipelineHandle> neighborPipeline = pipeline(neighborProgram_, Format::RG16F,
+                                                       {{SFX_MB_SC_TILE_SIZE, int32_t(p.tileSizePx)}, {SFX_MB_SC_RADIUS, int32_t(p.radiusPx)}},
+                                                       gen::mb_neighbor_max::kName);
     if (!neighborPipeline) return neighborPipeline.status();
     Result<PipelineHandle> reconstructPipeline = pipeline(reconstructProgram_, desc_.colorFormat,
                                                           {{SFX_MB_SC_PAIRS, int32_t(p.pairs)}, {SFX_MB_SC_JITTER_SIZE, int32_t(p.jitterSize)}},
@@ -352,16 +360,17 @@ EffectPlan MotionBlur::plan(const MotionBlurSettings& settings) const {
     EffectPlan plan;
     if (depth_) plan.append(depth_->plan());
     Result<MotionBlurParams> resolved = resolveMotionBlur(desc_.profile, settings, std::max(desc_.height, 1u));
-    const uint32_t radius = resolved ? resolved->radiusPx : 1;
-    const uint32_t tw = tilesFor(desc_.width, radius), th = tilesFor(desc_.height, radius);
-    std::string tile = " (" + std::to_string(radius) + "x" + std::to_string(radius) + " tiles";
+    const uint32_t tileSize = resolved ? resolved->tileSizePx : 1;
+    const uint32_t tw = tilesFor(desc_.width, tileSize), th = tilesFor(desc_.height, tileSize);
+    const int span = 2 * shared::mbNeighborReachTiles(int(resolved ? resolved->radiusPx : 1), int(tileSize)) + 1;
+    std::string tile = " (" + std::to_string(tileSize) + "x" + std::to_string(tileSize) + " tiles";
     if (resolved && resolved->radiusCapped)
         tile += "; the tier's default radius, " + num(resolved->scaledRadiusPx) + " px at " + std::to_string(desc_.height) +
             " rows, capped at the shaders' 64 px limit";
     tile += ")";
     plan.passes.push_back({"motion_blur", "pack velocity + depth", desc_.width, desc_.height});
     plan.passes.push_back({"motion_blur", "tile max" + tile, tw, th});
-    plan.passes.push_back({"motion_blur", "neighbour max 3x3", tw, th});
+    plan.passes.push_back({"motion_blur", "neighbour max " + std::to_string(span) + "x" + std::to_string(span), tw, th});
     plan.passes.push_back({"motion_blur", "reconstruct " + std::to_string(resolved ? resolved->taps : 0) + " taps", desc_.width, desc_.height});
     const uint32_t rt = kTextureSampled | kTextureRenderTarget;
     plan.resources.push_back(plannedTexture("motion_blur", "packed velocity + depth", {desc_.width, desc_.height, 1, Format::RGBA16F, rt}));

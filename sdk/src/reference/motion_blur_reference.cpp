@@ -75,8 +75,8 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
         }
     }
 
-    // Pass 2: tile max over N x N, N = k.
-    const uint32_t n = p.radiusPx;
+    // Pass 2: tile max over N x N, N = the tile edge.
+    const uint32_t n = p.tileSizePx;
     const uint32_t tw = (w + n - 1) / n, th = (h + n - 1) / n;
     r.tileMax = VelocityGrid(tw, th);
     for (uint32_t ty = 0; ty < th; ++ty) {
@@ -88,17 +88,19 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
         }
     }
 
-    // Pass 3: neighbour max over the 3 x 3 tiles whose velocity reaches the centre tile (clipped at the grid's edge).
+    // Pass 3: neighbour max over the tiles within the radius whose velocity reaches the centre
+    // tile (clipped at the grid's edge).
     r.neighborMax = VelocityGrid(tw, th);
+    const int reach = shared::mbNeighborReachTiles(int(p.radiusPx), int(n));
     for (int ty = 0; ty < int(th); ++ty) {
         for (int tx = 0; tx < int(tw); ++tx) {
             MaxTracker m;
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) {
+            for (int dy = -reach; dy <= reach; ++dy)
+                for (int dx = -reach; dx <= reach; ++dx) {
                     const int qx = tx + dx, qy = ty + dy;
                     if (qx < 0 || qy < 0 || qx >= int(tw) || qy >= int(th)) continue;
                     const std::array<double, 2>& v = r.tileMax.at(uint32_t(qx), uint32_t(qy));
-                    if (shared::mbNeighborReaches(dx, dy, glm::dvec2(v[0], v[1]))) m.offer(v);
+                    if (shared::mbNeighborReaches(dx, dy, glm::dvec2(v[0], v[1]), int(n))) m.offer(v);
                 }
             r.neighborMax.at(uint32_t(tx), uint32_t(ty)) = m.best;
         }
