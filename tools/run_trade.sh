@@ -7,13 +7,16 @@
 #                      as it starts where the last adopted fit ended;
 #   2. bench_trade   - every technique x tier x blur x backend at its defaults against the truth
 #                      (docs/trade.csv, the error tables);
-#   3. trade_presets - cost and accuracy of every tier preset, AO and motion blur, and the Pareto
-#                      plots (docs/trade_presets.csv, docs/images/pareto_*.svg, the preset table);
-#   4. bench_families - every technique x tier x backend at its defaults per scene family, and the
-#                      peer XeGTAO on the same inputs (tools/run_xegtao.sh, when its harness
-#                      builds) against the same truth (docs/ao_families.md, .csv, _cost.csv,
-#                      docs/images/ao_family_*.png).
-#   5. bench_mb_families - motion blur per scene family, speed, tier and backend against its
+#   3. the peer      - every scene family view's depth and normals written for XeGTAO, which
+#                      tools/run_xegtao.sh runs on them and times at 1280x720 (when its harness
+#                      builds; the project never links it);
+#   4. trade_presets - cost and accuracy of every tier preset (AO on the held-out families, motion
+#                      blur), XeGTAO's presets beside them, and the Pareto plots
+#                      (docs/trade_presets.csv, docs/images/pareto_*.svg, the preset table);
+#   5. bench_families - every technique x tier x backend at its defaults per scene family, and the
+#                      peer on the same inputs against the same truth (docs/ao_families.md, .csv,
+#                      _cost.csv, docs/images/ao_family_*.png).
+#   6. bench_mb_families - motion blur per scene family, speed, tier and backend against its
 #                      truth (docs/mb_families.csv, the family tables of docs/motion_blur.md).
 # Truth images are traced once and cached by scene, view, size, radius, sample count and seed
 # under $SFX_TRUTH_CACHE (default build/truth-cache): a second run only renders the effects.
@@ -37,13 +40,13 @@ step "fit_ao: the looks, fitted on the training families, scored on the held-out
 "$BUILD_DIR"/tools/bench/fit_ao --start tier --refinements 3 --cache-dir "$CACHE" --out-dir docs --backend "${BACKENDS%%,*}"
 step "bench_trade: the defaults against the truth, every backend"
 "$BUILD_DIR"/tools/bench/bench_trade --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS"
-step "trade_presets: cost and accuracy of every preset, Pareto plots"
-"$BUILD_DIR"/tools/bench/trade_presets --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS"
 PEER_DIR=$BUILD_DIR/families-peer
 step "bench_families: each family view's depth and normals for the peer"
 "$BUILD_DIR"/tools/bench/bench_families --write-inputs "$PEER_DIR" --backends "${BACKENDS%%,*}"
 step "XeGTAO (the peer, measured beside the project) on the same inputs"
 tools/run_xegtao.sh "$PEER_DIR"
+step "trade_presets: cost and accuracy of every preset and of the peer, Pareto plots"
+"$BUILD_DIR"/tools/bench/trade_presets --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS" --peer-dir "$PEER_DIR"
 step "bench_families: the defaults and the peer against the truth, per scene family"
 "$BUILD_DIR"/tools/bench/bench_families --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS" --peer-dir "$PEER_DIR"
 step "bench_mb_families: motion blur on the held-out scene families"

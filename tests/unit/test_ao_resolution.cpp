@@ -1,6 +1,6 @@
 // AO at different output sizes: the tier's pixel extents defined at SFX_AO_REFERENCE_ROWS
 // (Scalable's radius clamp, crease's tap spacing) follow the output's rows, so a look fitted at
-// one size holds at another (docs/trade.md, "Resolution").
+// one size holds at another (docs/trade.md, "The looks").
 #include <catch2/catch.hpp>
 
 #include <algorithm>

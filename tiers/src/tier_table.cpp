@@ -163,17 +163,17 @@ std::vector<Preset> currentPresets() {
     return {{kDefaultPreset, d, {{28.95, 28.41, 27.14, 28.86}, 35.12}},
             variant("low", d, AoRes::Half, 3, 2, {2, 2}, 1, 5, 8.0f, {{27.67, 27.37, 27.14, 26.72}, 31.26}),
             variant("medium", d, AoRes::Half, 6, 4, {2, 4}, 2, 7, 10.0f, {{28.95, 28.41, 27.14, 28.86}, 35.12}),
-            variant("high", d, AoRes::Half, 10, 6, {2, 8}, 3, 9, 14.0f, {{29.52, 29.28, 27.18, 30.83}, 38.21}),
+            variant("high", d, AoRes::Half, 10, 6, {2, 8}, 3, 9, 14.0f, {{29.52, 29.28, 27.18, 30.83}, 38.20}),
             variant("ultra", d, AoRes::Full, 16, 10, {2, 12}, 4, 13, 18.0f, {{29.99, 30.55, 26.35, 31.84}, 40.38})};
 }
 
 std::vector<Preset> highPresets() {
     const TierProfile d = highDefault();
-    return {{kDefaultPreset, d, {{29.69, 29.95, 26.74, 30.16}, 39.21}},
+    return {{kDefaultPreset, d, {{29.69, 29.95, 26.74, 30.16}, 40.38}},
             variant("low", d, AoRes::Half, 4, 4, {2, 3}, 2, 5, 10.0f, {{28.26, 27.75, 26.66, 28.01}, 33.92}),
-            variant("medium", d, AoRes::Half, 8, 6, {2, 4}, 4, 7, 14.0f, {{29.56, 28.99, 26.70, 29.06}, 37.32}),
-            variant("high", d, AoRes::Half, 12, 9, {2, 6}, 6, 13, 18.0f, {{29.69, 29.95, 26.74, 30.16}, 39.21}),
-            variant("ultra", d, AoRes::Full, 24, 16, {2, 12}, 8, 15, 24.0f, {{30.02, 30.33, 26.45, 31.57}, 39.88})};
+            variant("medium", d, AoRes::Half, 8, 6, {2, 4}, 4, 7, 14.0f, {{29.56, 28.99, 26.70, 29.06}, 37.31}),
+            variant("high", d, AoRes::Half, 12, 9, {2, 6}, 6, 13, 18.0f, {{29.69, 29.95, 26.74, 30.16}, 40.38}),
+            variant("ultra", d, AoRes::Full, 24, 16, {2, 12}, 8, 15, 24.0f, {{30.02, 30.33, 26.45, 31.57}, 40.52})};
 }
 
 std::vector<TierRow> makeTable() {

@@ -286,21 +286,16 @@ int main(int argc, char** argv) {
         size_t found = 0;
         for (const tools::AoCase& c : cases.value())
             for (const std::string& preset : tools::kPeerPresets) {
-                Result<std::vector<double>> out = tools::readPeerOutput(o.peerDir, views[c.view].name(), preset);
-                if (!out) continue;
-                // The peer shades sky pixels (infinite depth) too; a renderer never composites AO
-                // there and the SDK leaves them at 1, so they count as the truth's 1.
-                for (size_t i = 0; i < out->size() && i < c.truth.surface.size(); ++i)
-                    if (!c.truth.isSurface(i)) (*out)[i] = 1.0;
-                Result<truth::Comparison> e = truth::compare(c.truth, out.value());
+                Result<tools::PeerScore> e = tools::scorePeerOutput(o.peerDir, views[c.view].name(), preset, c.truth);
+                if (!e && e.status().code() == StatusCode::FileError) continue;  // not measured
                 if (!e) return fail(e.status());
-                rows.push_back({c.view, "gl4.5-llvmpipe", "-", "xegtao-" + preset, "peer", e.value()});
+                rows.push_back({c.view, "gl4.5-llvmpipe", "-", "xegtao-" + preset, "peer", e->comparison});
                 ++found;
                 if (preset == "high" && views[c.view].index == 0) {
                     Panels& p = pictures[views[c.view].family];
                     p.labels.push_back("xegtao-high");
                     p.images.push_back(reference::Grid(c.truth.width, c.truth.height));
-                    p.images.back().values = out.value();
+                    p.images.back().values = e->visibility;
                 }
             }
         const std::vector<tools::PeerCost> peerCosts = tools::readPeerCosts(o.peerDir);

@@ -3,13 +3,13 @@
 //   - cost at --cost-size (median of HAL-timed runs, as ms and as copy passes of that size on
 //     the same device): AO on the G-buffer of one sample view, motion blur on the "pan" scene;
 //   - accuracy: AO's PSNR against the ray-traced truth on the held-out scene families (each view
-//     at its own radius, 320x180; computed on the first backend, the backends agree) and on the
-//     analytic scenes alone at --anchor-size (1280x720, the size of the quoted XeGTAO figures), motion
+//     at its own radius, 320x180; computed on the first backend, the backends agree), motion
 //     blur's PSNR against its temporally supersampled truth on the 2.5D scenes.
 // Writes <out-dir>/trade_presets.csv, one SVG Pareto plot per backend and effect under
 // <out-dir>/images/ and the tables into <out-dir>/trade.md between its markers. A program, not a test.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -24,6 +24,7 @@
 #include "copy_pass.hpp"
 #include "markdown_section.hpp"
 #include "motion_cases.hpp"
+#include "peer_files.hpp"
 #include "scene_families.hpp"
 #include "sfx/budget.hpp"
 #include "sfx/tiers.hpp"
@@ -38,13 +39,10 @@ using tools::fixed;
 struct Options {
     std::vector<std::string> backends{"vulkan", "gles"};
     uint32_t costWidth = 1280, costHeight = 720, runs = 11, instants = 64;
-    std::vector<double> radii{0.25, 0.5, 1.0, 2.0};  // the analytic scenes' (the families' views carry their own)
     tools::TruthSettings truth;
-    // The analytic scenes' accuracy, compared with the XeGTAO anchors, at the anchors' size.
-    uint32_t anchorWidth = 1280, anchorHeight = 720;
-    tools::TruthSettings anchorTruth() const { return {anchorWidth, anchorHeight, truth.samples, truth.cacheDir}; }
     std::string costView = "contact";
     std::string outDir = "docs";
+    std::string peerDir;  // the peer's outputs on the held-out views and its cost (tools/run_xegtao.sh); empty: none
 };
 
 struct Row {
@@ -52,58 +50,66 @@ struct Row {
     std::string resolution = "-";                          // AO: "full" or "half"
     uint32_t taps = 0, blurOrRadius = 0;                   // AO: taps, blur half-width; MB: taps, max radius px
     double ms = 0, copyPasses = 0, psnr = 0, psnrOccluded = 0;
-    double psnrAnalytic = 0;  // AO: over the held-out analytic scenes only (the anchors' kind), at the anchors' size
 };
 
-// Intel's XeGTAO as the project's cost goal quotes it: on this machine's llvmpipe at 1280x720 against
-// ray-traced truth, its Medium preset about 26 dB for about 13 copy passes, its High preset about
-// 29 dB for 23-29 copy passes. Quoted figures, not run here (no XeGTAO code is in the
-// project); High is placed at the low end of its cost range, the stricter test of dominance.
-const char* const kXeGtaoSeries = "XeGTAO Medium/High (quoted figures, not run here)";
-std::vector<tools::PlotPoint> xeGtaoAnchors() { return {{13.0, 26.0, "XeGTAO Medium", kXeGtaoSeries}, {23.0, 29.0, "XeGTAO High", kXeGtaoSeries}}; }
+// The peer (Intel's XeGTAO through tools/run_xegtao.sh, beside the project, never part of it) at
+// one of its presets: its PSNR on the same held-out views against the same truth, and its cost at
+// the cost size (its three passes timed with glFinish on llvmpipe's GL 4.5, minutes from the SDK's).
+struct PeerPoint {
+    std::string preset;
+    tools::AoScore score;
+    double ms = 0;
+};
 
-// The high tier's AO presets of a backend as plot points (cost in copy passes, PSNR over the
-// held-out views, or over their analytic scenes only).
-std::vector<tools::PlotPoint> highTierAoPoints(const std::vector<Row>& rows, const std::string& backend, bool analytic) {
-    std::vector<tools::PlotPoint> points;
-    for (const Row& r : rows)
-        if (r.backend == backend && r.effect == "ao" && r.tier == "high") {
-            const double y = analytic ? r.psnrAnalytic : r.psnr;
-            points.push_back(
-                {r.copyPasses, y, r.preset + " " + r.technique + " (" + fixed(r.copyPasses, 1) + " copy passes, " + fixed(y, 2) + " dB)", ""});
+// Every peer preset whose outputs and cost were all found in o.peerDir (none without one).
+Result<std::vector<PeerPoint>> peerPoints(const Options& o, const std::vector<tools::TradeView>& views, const std::vector<tools::AoCase>& cases) {
+    std::vector<PeerPoint> out;
+    if (o.peerDir.empty()) return out;
+    const std::vector<tools::PeerCost> costs = tools::readPeerCosts(o.peerDir);
+    for (const std::string& preset : tools::kPeerPresets) {
+        const auto cost = std::find_if(costs.begin(), costs.end(), [&](const tools::PeerCost& c) { return c.preset == preset; });
+        std::vector<truth::Comparison> errors;
+        for (const tools::AoCase& c : cases) {
+            Result<tools::PeerScore> e = tools::scorePeerOutput(o.peerDir, views[c.view].name(), preset, c.truth);
+            if (!e && e.status().code() == StatusCode::FileError) break;  // not measured
+            if (!e) return e.status();
+            errors.push_back(e->comparison);
         }
-    return points;
+        if (cost == costs.end() || errors.size() != cases.size()) continue;
+        out.push_back({preset, tools::summarise(errors), cost->totalMs});
+    }
+    return out;
 }
 
-// One line per backend, accuracy measure and anchor: which high-tier presets dominate it (at
-// least as accurate for no more cost), or that none does and what falls short. The quoted figures
-// score XeGTAO on analytic scenes, so the analytic-scene PSNR is the like-for-like comparison; the
-// held-out views (rasterised scenes too) are the stricter one.
-std::vector<std::string> xeGtaoDominance(const Options& o, const std::vector<Row>& rows) {
+std::string peerLabel(const PeerPoint& p) { return "XeGTAO " + p.preset; }
+const char* const kPeerSeries = "XeGTAO (measured here: GL 4.5 compute on llvmpipe)";
+
+std::string describe(const Row& r) {
+    return r.tier + "/" + r.preset + " " + r.technique + " (" + fixed(r.psnr, 2) + " dB, " + fixed(r.ms, 1) + " ms)";
+}
+
+// One line per backend and peer preset: among the SDK's AO presets (either tier, any technique),
+// the cheapest at least as accurate on the held-out views and the most accurate in no more
+// milliseconds; then each tier's default horizon beside them.
+std::vector<std::string> peerDominance(const Options& o, const std::vector<Row>& rows, const std::vector<PeerPoint>& peers) {
     std::vector<std::string> lines;
-    for (const std::string& backend : o.backends)
-        for (bool analytic : {true, false}) {
-            const std::vector<tools::PlotPoint> points = highTierAoPoints(rows, backend, analytic);
-            if (points.empty()) continue;
-            for (const tools::PlotPoint& anchor : xeGtaoAnchors()) {
-                std::string line = backend + ", " + (analytic ? "analytic scenes" : "all held-out views") + ", " + anchor.label + " (" +
-                    fixed(anchor.y, 0) + " dB, " + fixed(anchor.x, 0) + " copy passes): ";
-                const std::vector<size_t> d = tools::dominating(points, anchor);
-                if (d.empty()) {
-                    double bestY = -1e9, cheapest = 1e9;
-                    for (const tools::PlotPoint& p : points) {
-                        bestY = std::max(bestY, p.y);
-                        if (p.y >= anchor.y) cheapest = std::min(cheapest, p.x);
-                    }
-                    line += "no high-tier preset dominates it; the most accurate reaches " + fixed(bestY, 2) + " dB" +
-                        (cheapest < 1e9 ? ", the cheapest at least as accurate costs " + fixed(cheapest, 1) + " copy passes" : "");
-                } else {
-                    line += "dominated by";
-                    for (size_t k = 0; k < d.size(); ++k) line += (k ? "; " : " ") + points[d[k]].label;
-                }
-                lines.push_back(line);
+    for (const std::string& backend : o.backends) {
+        for (const PeerPoint& peer : peers) {
+            const Row *cheapest = nullptr, *best = nullptr;
+            for (const Row& r : rows) {
+                if (r.backend != backend || r.effect != "ao") continue;
+                if (r.psnr >= peer.score.psnr && (!cheapest || r.ms < cheapest->ms)) cheapest = &r;
+                if (r.ms <= peer.ms && (!best || r.psnr > best->psnr)) best = &r;
             }
+            lines.push_back(backend + ", " + peerLabel(peer) + " (" + fixed(peer.score.psnr, 2) + " dB, " + fixed(peer.ms, 1) +
+                            " ms): the cheapest preset at least as accurate " + (cheapest ? describe(*cheapest) : std::string("none")) +
+                            "; the most accurate in no more time " + (best ? describe(*best) : std::string("none")));
         }
+        std::string line = backend + ", each tier's default horizon:";
+        for (const Row& r : rows)
+            if (r.backend == backend && r.effect == "ao" && r.preset == kDefaultPreset && r.technique == "horizon") line += " " + describe(r) + ";";
+        if (!peers.empty()) lines.push_back(line);
+    }
     return lines;
 }
 
@@ -112,43 +118,25 @@ uint32_t aoTaps(const TierProfile& p, AoTechnique t) {
     return t == AoTechnique::Alchemy ? p.aoAlchemySamples : t == AoTechnique::Scalable ? p.aoScalableTaps : p.aoCreaseTaps;
 }
 
-// A preset x technique's AO accuracy: over all held-out cases, and over their analytic scenes
-// only, rendered and traced at the anchors' size.
-struct AoAccuracy {
-    tools::AoScore heldOut, analytic;
-};
-
-// The held-out cases at the truth's size, and those of the analytic views again at the anchors' size.
-struct AccuracyCases {
-    std::vector<tools::TradeView> views, analyticViews;
-    std::vector<tools::AoCase> heldOut, analytic;  // AoCase::view indexes views, analyticViews
-};
-
-// AO accuracy of every preset x technique of a tier on the held-out views: key "preset/technique".
-
-Result<std::map<std::string, AoAccuracy>> aoAccuracy(Device& dev, Tier tier, const Options& o, const AccuracyCases& cases) {
-    if (cases.analytic.empty()) return invalidArgument("views", "no analytic scene among the held-out views", "at least one analytic view");
+// AO accuracy of every preset x technique of a tier on the held-out views (AoCase::view indexes
+// `views`): key "preset/technique".
+Result<std::map<std::string, tools::AoScore>> aoAccuracy(Device& dev, Tier tier, const Options& o, const std::vector<tools::TradeView>& views,
+                                                         const std::vector<tools::AoCase>& cases) {
     tools::AoEvaluator ev(dev, tier, o.truth.width, o.truth.height);
-    SFX_TRY(ev.prepare(cases.views));
-    tools::AoEvaluator anchorEv(dev, tier, o.anchorWidth, o.anchorHeight);
-    SFX_TRY(anchorEv.prepare(cases.analyticViews));
-    std::map<std::string, AoAccuracy> out;
+    SFX_TRY(ev.prepare(views));
+    std::map<std::string, tools::AoScore> out;
     for (const Preset& preset : tiers::row(tier).presets)
         for (AoTechnique t : {AoTechnique::Alchemy, AoTechnique::Scalable, AoTechnique::Crease, AoTechnique::Horizon}) {
             ev.setProfile(preset.params);
-            anchorEv.setProfile(preset.params);
             AoSettings s;
             s.technique = t;
             s.normals = AoNormals::FromTexture;
-            Result<std::vector<truth::Comparison>> errors = ev.run(s, cases.heldOut);
+            Result<std::vector<truth::Comparison>> errors = ev.run(s, cases);
             if (!errors) return errors.status();
-            Result<std::vector<truth::Comparison>> analytic = anchorEv.run(s, cases.analytic);
-            if (!analytic) return analytic.status();
-            const AoAccuracy a{tools::summarise(errors.value()), tools::summarise(analytic.value())};
+            const tools::AoScore a = tools::summarise(errors.value());
             out[preset.name + "/" + toString(t)] = a;
-            std::cout << "  " << toString(tier) << "/" << preset.name << "/" << toString(t) << ": held-out PSNR " << fixed(a.heldOut.psnr, 2)
-                      << " dB, occluded " << fixed(a.heldOut.psnrOccluded, 2) << " dB; analytic scenes at " << o.anchorWidth << "x" << o.anchorHeight
-                      << " " << fixed(a.analytic.psnr, 2) << " dB" << std::endl;
+            std::cout << "  " << toString(tier) << "/" << preset.name << "/" << toString(t) << ": held-out PSNR " << fixed(a.psnr, 2)
+                      << " dB, occluded " << fixed(a.psnrOccluded, 2) << " dB" << std::endl;
         }
     return out;
 }
@@ -172,13 +160,19 @@ Result<std::map<std::string, double>> motionAccuracy(Device& dev, Tier tier, con
     return out;
 }
 
+// The held-out views and their cases (AoCase::view indexes views).
+struct AccuracyCases {
+    std::vector<tools::TradeView> views;
+    std::vector<tools::AoCase> heldOut;
+};
+
 Status runDevice(Device& dev, const std::string& backend, Tier tier, const Options& o, const AccuracyCases& cases,
-                 std::map<std::string, AoAccuracy>& aoScores, std::map<std::string, double>& mbScores, std::vector<Row>& rows) {
+                 std::map<std::string, tools::AoScore>& aoScores, std::map<std::string, double>& mbScores, std::vector<Row>& rows) {
     const Format outFormat = tools::aoOutputFormat(dev);
     Result<std::unique_ptr<tools::CopyPass>> copy = tools::makeCopyPass(dev, tier, o.costWidth, o.costHeight, outFormat);
     if (!copy) return copy.status();
     if (aoScores.empty()) {  // accuracy from the first backend: the backends compute the same shaders
-        Result<std::map<std::string, AoAccuracy>> a = aoAccuracy(dev, tier, o, cases);
+        Result<std::map<std::string, tools::AoScore>> a = aoAccuracy(dev, tier, o, cases.views, cases.heldOut);
         if (!a) return a.status();
         aoScores = a.value();
         Result<std::map<std::string, double>> m = motionAccuracy(dev, tier, o);
@@ -212,11 +206,9 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
                 break;
             }
             const double copyMsNow = r->copyMs;
-            const AoAccuracy& accuracy = aoScores.at(preset.name + "/" + toString(t));
-            const tools::AoScore& score = accuracy.heldOut;
+            const tools::AoScore& score = aoScores.at(preset.name + "/" + toString(t));
             rows.push_back({backend, toString(tier), preset.name, "ao", toString(t), preset.params.aoHalfResolution ? "half" : "full",
-                            aoTaps(preset.params, t), preset.params.aoBlurRadiusPx, r->effectMs, r->ratio, score.psnr, score.psnrOccluded,
-                            accuracy.analytic.psnr});
+                            aoTaps(preset.params, t), preset.params.aoBlurRadiusPx, r->effectMs, r->ratio, score.psnr, score.psnrOccluded});
             std::cout << "  " << backend << "/" << toString(tier) << "/" << preset.name << "/" << toString(t) << ": " << fixed(r->effectMs, 2)
                       << " ms = " << fixed(rows.back().copyPasses, 1) << " copy passes (copy " << fixed(copyMsNow, 3) << " ms), PSNR "
                       << fixed(score.psnr, 2) << " dB" << std::endl;
@@ -239,7 +231,7 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
         }
         const MotionBlurParams p = resolveMotionBlur(preset.params, {}, o.costHeight).value();
         rows.push_back({backend, toString(tier), preset.name, "motion-blur", "-", "-", p.taps, p.radiusPx, mb->medianMs,
-                        mb->medianMs / copyAfter.value(), mbScores.at(preset.name), 0, 0});
+                        mb->medianMs / copyAfter.value(), mbScores.at(preset.name), 0});
         std::cout << "  " << backend << "/" << toString(tier) << "/" << preset.name << "/motion blur: " << fixed(mb->medianMs, 2)
                   << " ms = " << fixed(rows.back().copyPasses, 1) << " copy passes, PSNR " << fixed(mbScores.at(preset.name), 2) << " dB"
                   << std::endl;
@@ -248,7 +240,7 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
     return status;
 }
 
-std::string markdown(const Options& o, const std::vector<Row>& rows, const std::string& machine) {
+std::string markdown(const Options& o, const std::vector<Row>& rows, const std::vector<PeerPoint>& peers, const std::string& machine) {
     std::ostringstream md;
     md << "Measured by `build/tools/bench/trade_presets` on " << machine << ". Cost at " << o.costWidth << "x" << o.costHeight << " (median of "
        << o.runs
@@ -260,39 +252,43 @@ std::string markdown(const Options& o, const std::vector<Row>& rows, const std::
         md << "![Pareto plot, AO, " << backend << "](images/pareto_ao_" << backend << ".svg)\n\n";
         md << "![Pareto plot, motion blur, " << backend << "](images/pareto_mb_" << backend << ".svg)\n\n";
     }
-    md << "XeGTAO anchors (the quoted figures for Intel's XeGTAO on this machine's llvmpipe at 1280x720, not run here; "
-          "High at the low end of its 23-29 copy passes) against the high tier's presets of this run, with the presets' PSNR over the held-out "
-          "analytic scenes (the kind the quoted figures score XeGTAO on), rendered and traced at "
-       << o.anchorWidth << "x" << o.anchorHeight << ", and over all held-out views at " << o.truth.width << "x" << o.truth.height
-       << ". The costs are this run's:\n\n";
-    for (const std::string& line : xeGtaoDominance(o, rows)) md << "- " << line << "\n";
-    md << "\n";
+    if (peers.empty()) {
+        md << "The peer (XeGTAO) was not measured in this run (no --peer-dir, or its harness did not build).\n\n";
+    } else {
+        md << "XeGTAO, measured beside the project in the same run of tools/run_trade.sh (Intel's unmodified shaders on llvmpipe's GL 4.5, its "
+              "three passes timed with glFinish, minutes from the SDK's runs) on the same held-out views against the same truth:\n\n"
+              "| XeGTAO preset | PSNR | PSNR occluded | signed error occluded | ms |\n| --- | --- | --- | --- | --- |\n";
+        for (const PeerPoint& p : peers)
+            md << "| " << p.preset << " | " << fixed(p.score.psnr, 2) << " | " << fixed(p.score.psnrOccluded, 2) << " | "
+               << fixed(p.score.signedOccluded, 3) << " | " << fixed(p.ms, 1) << " |\n";
+        md << "\n";
+        for (const std::string& line : peerDominance(o, rows, peers)) md << "- " << line << "\n";
+        md << "\n";
+    }
     md << "| backend | tier | preset | effect | technique | AO resolution | taps | blur px / max radius px | ms | copy passes | PSNR | PSNR occluded "
-          "| PSNR analytic scenes at "
-       << o.anchorWidth << "x" << o.anchorHeight
-       << " |\n"
-          "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+          "|\n"
+          "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const Row& r : rows)
         md << "| " << r.backend << " | " << r.tier << " | " << r.preset << " | " << r.effect << " | " << r.technique << " | " << r.resolution << " | "
            << r.taps << " | " << r.blurOrRadius << " | " << fixed(r.ms, 2) << " | " << fixed(r.copyPasses, 1) << " | " << fixed(r.psnr, 2) << " | "
-           << (r.effect == "ao" ? fixed(r.psnrOccluded, 2) : "-") << " | " << (r.effect == "ao" ? fixed(r.psnrAnalytic, 2) : "-") << " |\n";
+           << (r.effect == "ao" ? fixed(r.psnrOccluded, 2) : "-") << " |\n";
     return md.str();
 }
 
-Status writePlots(const Options& o, const std::vector<Row>& rows) {
+Status writePlots(const Options& o, const std::vector<Row>& rows, const std::vector<PeerPoint>& peers) {
     std::filesystem::create_directories(o.outDir + "/images");
     for (const std::string& backend : o.backends)
         for (const std::string effect : {"ao", "motion-blur"}) {
             tools::Plot plot;
             plot.title = (effect == "ao" ? "AO" : "Motion blur") + std::string(" presets on ") + backend + " at " + std::to_string(o.costWidth) +
                 "x" + std::to_string(o.costHeight);
-            plot.xLabel = "cost, copy passes";
+            plot.xLabel = "cost, ms (this run)";
             plot.yLabel = effect == "ao" ? "PSNR against ray-traced truth, dB (held-out views)" : "PSNR against supersampled truth, dB";
             for (const Row& r : rows)
                 if (r.backend == backend && r.effect == effect)
-                    plot.points.push_back(
-                        {r.copyPasses, r.psnr, r.tier + "/" + r.preset, effect == "ao" ? r.technique + " (" + r.tier + ")" : r.tier});
-            if (effect == "ao") plot.anchors = xeGtaoAnchors();
+                    plot.points.push_back({r.ms, r.psnr, r.tier + "/" + r.preset, effect == "ao" ? r.technique + " (" + r.tier + ")" : r.tier});
+            if (effect == "ao")
+                for (const PeerPoint& p : peers) plot.anchors.push_back({p.ms, p.score.psnr, peerLabel(p), kPeerSeries});
             SFX_TRY(tools::writeSvg(o.outDir + "/images/pareto_" + (effect == "ao" ? "ao_" : "mb_") + backend + ".svg", plot));
         }
     return Status::ok();
@@ -309,8 +305,7 @@ int main(int argc, char** argv) {
     app.add_option("--runs", o.runs, "timed runs per configuration (median)")->capture_default_str();
     app.add_option("--instants", o.instants, "instants of the motion blur truth")->capture_default_str();
     app.add_option("--cache-dir", o.truth.cacheDir, "where truth images are cached")->capture_default_str();
-    app.add_option("--anchor-width", o.anchorWidth, "pixels of the analytic scenes' accuracy (the XeGTAO anchors' size)")->capture_default_str();
-    app.add_option("--anchor-height", o.anchorHeight, "pixels of the analytic scenes' accuracy")->capture_default_str();
+    app.add_option("--peer-dir", o.peerDir, "the peer's outputs on the held-out views and its cost (tools/run_xegtao.sh): plotted and compared");
     app.add_option("--out-dir", o.outDir, "trade_presets.csv, images/pareto_*.svg and trade.md")->capture_default_str();
     CLI11_PARSE(app, argc, argv);
     const auto started = std::chrono::steady_clock::now();
@@ -318,20 +313,16 @@ int main(int argc, char** argv) {
 
     AccuracyCases cases;
     cases.views = tools::familyViews(true);
-    for (const tools::TradeView& v : tools::presetViews())
-        if (v.analytic) cases.analyticViews.push_back(v);
     const auto progress = [&](const std::string& line) { std::cout << "[" << elapsed() << " s] " << line << std::endl; };
     Result<std::vector<tools::AoCase>> heldOut = tools::loadCases(cases.views, 0, cases.views.size(), {}, o.truth, progress);
-    Result<std::vector<tools::AoCase>> analytic = heldOut
-        ? tools::loadCases(cases.analyticViews, 0, cases.analyticViews.size(), o.radii, o.anchorTruth(), progress)
-        : Result<std::vector<tools::AoCase>>(heldOut.status());
-    if (!analytic) {
-        std::cerr << "trade_presets: " << analytic.status().toString() << "\n";
+    Result<std::vector<PeerPoint>> peers = heldOut ? peerPoints(o, cases.views, heldOut.value()) : Result<std::vector<PeerPoint>>(heldOut.status());
+    if (!peers) {
+        std::cerr << "trade_presets: " << peers.status().toString() << "\n";
         return 1;
     }
+    if (!o.peerDir.empty()) progress(std::to_string(peers->size()) + " peer presets measured in " + o.peerDir);
     cases.heldOut = std::move(heldOut.value());
-    cases.analytic = std::move(analytic.value());
-    std::map<Tier, std::map<std::string, AoAccuracy>> aoScores;
+    std::map<Tier, std::map<std::string, tools::AoScore>> aoScores;
     std::map<Tier, std::map<std::string, double>> mbScores;
     std::vector<Row> rows;
     std::string machine;
@@ -348,15 +339,19 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(o.outDir);
     std::ofstream csv(o.outDir + "/trade_presets.csv");
     csv << "backend,tier,preset,effect,technique,ao_resolution,taps,blur_or_max_radius_px,cost_width,cost_height,ms,copy_passes,psnr_db,psnr_"
-           "occluded_db,psnr_analytic_db,analytic_width,analytic_height\n";
+           "occluded_db\n";
     for (const Row& r : rows)
         csv << r.backend << "," << r.tier << "," << r.preset << "," << r.effect << "," << r.technique << "," << r.resolution << "," << r.taps << ","
             << r.blurOrRadius << "," << o.costWidth << "," << o.costHeight << "," << fixed(r.ms, 3) << "," << fixed(r.copyPasses, 2) << ","
-            << fixed(r.psnr, 3) << "," << fixed(r.psnrOccluded, 3) << "," << fixed(r.psnrAnalytic, 3) << "," << o.anchorWidth << "," << o.anchorHeight
-            << "\n";
-    for (const std::string& line : xeGtaoDominance(o, rows)) std::cout << "dominance: " << line << std::endl;
-    Status st = writePlots(o, rows);
-    if (st) st = tools::replaceMarkdownSection(o.outDir + "/trade.md", "trade_presets", markdown(o, rows, machine.empty() ? "no device" : machine));
+            << fixed(r.psnr, 3) << "," << fixed(r.psnrOccluded, 3) << "\n";
+    for (const PeerPoint& p : peers.value())
+        csv << "peer,-," << p.preset << ",ao,xegtao,-,-,-," << o.costWidth << "," << o.costHeight << "," << fixed(p.ms, 3) << ",-,"
+            << fixed(p.score.psnr, 3) << "," << fixed(p.score.psnrOccluded, 3) << "\n";
+    for (const std::string& line : peerDominance(o, rows, peers.value())) std::cout << "versus the peer: " << line << std::endl;
+    Status st = writePlots(o, rows, peers.value());
+    if (st)
+        st = tools::replaceMarkdownSection(o.outDir + "/trade.md", "trade_presets",
+                                           markdown(o, rows, peers.value(), machine.empty() ? "no device" : machine));
     if (!st) {
         std::cerr << "trade_presets: " << st.toString() << "\n";
         return 1;

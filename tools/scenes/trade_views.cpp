@@ -18,20 +18,6 @@ std::string TradeView::name() const {
     return scene + buf;
 }
 
-// Five sample scenes from cameras turned about their targets, and the analytic scenes that have
-// occlusion (exact depth, spheres, sky).
-std::vector<TradeView> presetViews() {
-    std::vector<TradeView> v;
-    for (const char* s : {"corner", "steps", "columns"}) v.push_back({s, false, 20, 1.25, 0.4});
-    for (const char* s : {"contact", "bunny"}) {
-        v.push_back({s, false, 0, 1, 0});
-        v.push_back({s, false, -30, 0.8, 0});
-        v.push_back({s, false, 20, 1.25, 0.4});
-    }
-    for (const char* s : {"corner", "contact", "columns"}) v.push_back({s, true, 0, 1, 0});
-    return v;
-}
-
 Result<RasterScene> viewScene(const TradeView& view) {
     if (view.analytic) return invalidArgument("view", "'" + view.name() + "'", "a rasterised sample scene's view");
     if (!view.family.empty()) return familyScene(view);

@@ -27,9 +27,6 @@ struct TradeView {
     std::string name() const;
 };
 
-// The sample scenes from three cameras each and the analytic scenes that have occlusion.
-std::vector<TradeView> presetViews();
-
 // The sample scene with its eye moved as the view says, or the family view's scene.
 // InvalidArgument for an analytic view.
 Result<RasterScene> viewScene(const TradeView& view);

@@ -72,6 +72,16 @@ Result<std::vector<double>> readPeerOutput(const std::string& dir, const std::st
     return out;
 }
 
+Result<PeerScore> scorePeerOutput(const std::string& dir, const std::string& view, const std::string& preset, const truth::Image& truth) {
+    Result<std::vector<double>> out = readPeerOutput(dir, view, preset);
+    if (!out) return out.status();
+    for (size_t i = 0; i < out->size() && i < truth.surface.size(); ++i)
+        if (!truth.isSurface(i)) (*out)[i] = 1.0;
+    Result<truth::Comparison> e = truth::compare(truth, out.value());
+    if (!e) return e.status();
+    return PeerScore{std::move(out.value()), e.value()};
+}
+
 std::vector<PeerCost> readPeerCosts(const std::string& dir) {
     std::vector<PeerCost> costs;
     std::ifstream in(dir + "/xegtao_cost.txt");

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "sfx/truth_metrics.hpp"
 #include "trade_views.hpp"
 
 namespace sfx::tools {
@@ -28,6 +29,16 @@ Status writePeerInputs(const PeerInputs& inputs, const std::vector<TradeView>& v
 // <dir>/<view>.xegtao-<preset>.pfm as visibility, row 0 = top; FileError when it is missing or
 // unreadable.
 Result<std::vector<double>> readPeerOutput(const std::string& dir, const std::string& view, const std::string& preset);
+
+// That output scored against the view's truth. The peer shades sky pixels (infinite depth) too;
+// a renderer never composites AO there and the SDK leaves them at 1, so they count as the
+// truth's 1 (in `visibility` as well). FileError when the output is missing; the comparison's
+// errors otherwise.
+struct PeerScore {
+    std::vector<double> visibility;
+    truth::Comparison comparison;
+};
+Result<PeerScore> scorePeerOutput(const std::string& dir, const std::string& view, const std::string& preset, const truth::Image& truth);
 
 struct PeerCost {
     std::string preset;

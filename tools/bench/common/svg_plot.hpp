@@ -19,9 +19,9 @@ struct PlotPoint {
 struct Plot {
     std::string title, xLabel, yLabel;
     std::vector<PlotPoint> points;
-    // Reference points from elsewhere (figures quoted, not measured in this run): drawn as
-    // hollow black diamonds under their own legend entry (their series), inside the axes' range,
-    // never part of the non-dominated line.
+    // Reference points (a peer measured beside the project): drawn as hollow black diamonds
+    // under their own legend entry (their series), inside the axes' range, never part of the
+    // non-dominated line.
     std::vector<PlotPoint> anchors;
 };
 
