@@ -6,6 +6,7 @@
 #include <string>
 #include <tuple>
 
+#include "sfx/ao.hpp"
 #include "sfx/tiers.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared.h"
@@ -63,6 +64,41 @@ TEST_CASE("tier table: a row per tier, in order, each with its default preset fi
     Result<TierProfile> unknown = tiers::preset(Tier::Current, "no-such-preset");
     CHECK(unknown.status().code() == StatusCode::InvalidArgument);
     CHECK(unknown.status().message().find(kDefaultPreset) != std::string::npos);
+}
+
+TEST_CASE("tier table: each preset names its AO technique, and no two presets of a tier are alike", "[tiers][ao]") {
+    for (Tier tier : {Tier::Current, Tier::High}) {
+        const std::vector<Preset>& presets = tiers::row(tier).presets;
+        // The default runs Scalable, the front's best at the tier's default time; the presets
+        // above it buy horizon's accuracy (docs/trade.md).
+        CHECK(presets.front().params.aoTechnique == AoTechnique::Scalable);
+        for (const char* name : {"high", "ultra"}) CHECK(tiers::preset(tier, name)->aoTechnique == AoTechnique::Horizon);
+        for (const Preset& p : presets) {
+            INFO(toString(tier) << "/" << p.name);
+            CHECK(uint32_t(p.params.aoTechnique) < kAoTechniqueCount);
+            CHECK(p.accuracy.aoPsnrDb[uint32_t(p.params.aoTechnique)] > 0);
+            // An AoSettings without a technique runs the preset's.
+            Result<AoConfig> c = resolveAoConfig(AoSettings{}, p.params, 1, 720);
+            REQUIRE(c.isOk());
+            CHECK(c->technique == p.params.aoTechnique);
+            AoSettings explicitAlchemy;
+            explicitAlchemy.technique = AoTechnique::Alchemy;
+            CHECK(resolveAoConfig(explicitAlchemy, p.params, 1, 720)->technique == AoTechnique::Alchemy);
+        }
+        // No two presets alike: each differs from every other in technique or in a count.
+        for (size_t i = 0; i < presets.size(); ++i)
+            for (size_t j = i + 1; j < presets.size(); ++j) {
+                const TierProfile &a = presets[i].params, &b = presets[j].params;
+                INFO(presets[i].name << " vs " << presets[j].name);
+                CHECK((a.aoTechnique != b.aoTechnique || a.aoAlchemySamples != b.aoAlchemySamples || a.aoScalableTaps != b.aoScalableTaps ||
+                       a.aoHorizonSteps != b.aoHorizonSteps || a.aoHalfResolution != b.aoHalfResolution));
+            }
+    }
+    TierProfile bad = tiers::profile(Tier::High);
+    bad.aoTechnique = AoTechnique(9);
+    Status st = resolveAoConfig(AoSettings{}, bad, 1, 720).status();
+    CHECK(st.code() == StatusCode::InvalidArgument);
+    CHECK(st.message().find("AoDesc.profile.aoTechnique") != std::string::npos);
 }
 
 TEST_CASE("tier table: the default presets hold the parameters the tiers always had", "[tiers]") {

@@ -82,6 +82,9 @@ TierProfile currentDefault() {
     // Crease fitted at half resolution, the default, with its 12 px tap spacing
     // (tools/bench/fit_ao --start tier; docs/trade.md has the held-out scores).
     p.aoLook[2] = {.intensity = 2.16482f, .contrast = 6.85391f, .bias = 0, .creaseRange = 0.834435f, .creaseBias = 0.165467f};  // crease
+    // Scalable at the default preset: the front's most accurate point at the tier's default time
+    // on both backends (docs/trade.md).
+    p.aoTechnique = AoTechnique::Scalable;
     // Horizon: 2 slices of 4 steps a side at half size (16 fetches), its look the geometry's own;
     // chosen on the training families (tools/bench/fit_ao --diagnose, rule in docs/ao_families.md).
     p.aoHorizonSlices = 2;
@@ -118,6 +121,9 @@ TierProfile highDefault() {
     p.aoLook[1] = {.intensity = 0.187609f, .contrast = 7.36525f, .bias = 0.0468752f, .sumExponent = 0.707107f};  // scalable
     // Crease fitted at half resolution, the default (tools/bench/fit_ao --start tier).
     p.aoLook[2] = {.intensity = 13.7531f, .contrast = 1.2864f, .bias = 0, .creaseRange = 0.73699f, .creaseBias = 0.126689f};  // crease
+    // Scalable at the default preset: the front's most accurate point at the tier's default time
+    // on both backends (docs/trade.md).
+    p.aoTechnique = AoTechnique::Scalable;
     // Horizon: 2 slices of 6 steps a side at half size, far steps from the depth MIP; chosen on
     // the training families as the current tier's row.
     p.aoHorizonSlices = 2;
@@ -138,16 +144,17 @@ TierProfile highDefault() {
     return p;
 }
 
-// A preset of a tier: its default with other tap counts (horizon's as slices x steps), blur
-// width (output pixels), AO at full or half resolution and motion blur radius (uniforms and
-// specialisation constants only: the tier's shader defines, and so its programs, stay the
-// default's).
+// A preset of a tier: its default with another AO technique (its point of the measured front,
+// docs/trade.md), other tap counts (horizon's as slices x steps), blur width (output pixels), AO
+// at full or half resolution and motion blur radius (uniforms and specialisation constants only:
+// the tier's shader defines, and so its programs, stay the default's).
 enum class AoRes { Full, Half };
 struct HorizonCounts {
     uint32_t slices, steps;
 };
-Preset variant(const char* name, TierProfile p, AoRes res, uint32_t alchemy, uint32_t scalable, HorizonCounts horizon, uint32_t blur, uint32_t mbTaps,
-               float mbRadius, PresetAccuracy accuracy) {
+Preset variant(const char* name, TierProfile p, AoTechnique technique, AoRes res, uint32_t alchemy, uint32_t scalable, HorizonCounts horizon,
+               uint32_t blur, uint32_t mbTaps, float mbRadius, PresetAccuracy accuracy) {
+    p.aoTechnique = technique;
     p.aoHalfResolution = res == AoRes::Half;
     p.aoAlchemySamples = alchemy, p.aoScalableTaps = scalable, p.aoBlurRadiusPx = blur;
     p.aoHorizonSlices = horizon.slices, p.aoHorizonSteps = horizon.steps;
@@ -161,19 +168,19 @@ Preset variant(const char* name, TierProfile p, AoRes res, uint32_t alchemy, uin
 std::vector<Preset> currentPresets() {
     const TierProfile d = currentDefault();
     return {{kDefaultPreset, d, {{28.95, 28.41, 27.14, 28.86}, 35.12}},
-            variant("low", d, AoRes::Half, 3, 2, {2, 2}, 1, 5, 8.0f, {{27.67, 27.37, 27.14, 26.72}, 31.26}),
-            variant("medium", d, AoRes::Half, 6, 4, {2, 4}, 2, 7, 10.0f, {{28.95, 28.41, 27.14, 28.86}, 35.12}),
-            variant("high", d, AoRes::Half, 10, 6, {2, 8}, 3, 9, 14.0f, {{29.52, 29.28, 27.18, 30.83}, 38.20}),
-            variant("ultra", d, AoRes::Full, 16, 10, {2, 12}, 4, 13, 18.0f, {{29.99, 30.55, 26.35, 31.84}, 40.38})};
+            variant("low", d, AoTechnique::Scalable, AoRes::Half, 3, 2, {2, 2}, 1, 5, 8.0f, {{27.67, 27.37, 27.14, 26.72}, 31.26}),
+            variant("medium", d, AoTechnique::Alchemy, AoRes::Half, 6, 4, {2, 4}, 2, 7, 10.0f, {{28.95, 28.41, 27.14, 28.86}, 35.12}),
+            variant("high", d, AoTechnique::Horizon, AoRes::Half, 10, 6, {2, 8}, 3, 9, 14.0f, {{29.52, 29.28, 27.18, 30.83}, 38.20}),
+            variant("ultra", d, AoTechnique::Horizon, AoRes::Full, 16, 10, {2, 12}, 4, 13, 18.0f, {{29.99, 30.55, 26.35, 31.84}, 40.38})};
 }
 
 std::vector<Preset> highPresets() {
     const TierProfile d = highDefault();
     return {{kDefaultPreset, d, {{29.69, 29.95, 26.74, 30.16}, 40.38}},
-            variant("low", d, AoRes::Half, 4, 4, {2, 3}, 2, 5, 10.0f, {{28.26, 27.75, 26.66, 28.01}, 33.92}),
-            variant("medium", d, AoRes::Half, 8, 6, {2, 4}, 4, 7, 14.0f, {{29.56, 28.99, 26.70, 29.06}, 37.31}),
-            variant("high", d, AoRes::Half, 12, 9, {2, 6}, 6, 13, 18.0f, {{29.69, 29.95, 26.74, 30.16}, 40.38}),
-            variant("ultra", d, AoRes::Full, 24, 16, {2, 12}, 8, 15, 24.0f, {{30.02, 30.33, 26.45, 31.57}, 40.52})};
+            variant("low", d, AoTechnique::Scalable, AoRes::Half, 4, 4, {2, 3}, 2, 5, 10.0f, {{28.26, 27.75, 26.66, 28.01}, 33.92}),
+            variant("medium", d, AoTechnique::Scalable, AoRes::Half, 8, 6, {2, 4}, 4, 7, 14.0f, {{29.56, 28.99, 26.70, 29.06}, 37.31}),
+            variant("high", d, AoTechnique::Horizon, AoRes::Half, 12, 9, {2, 8}, 6, 13, 18.0f, {{29.69, 29.95, 26.74, 30.83}, 40.38}),
+            variant("ultra", d, AoTechnique::Horizon, AoRes::Full, 24, 16, {2, 12}, 8, 15, 24.0f, {{30.02, 30.33, 26.45, 31.57}, 40.52})};
 }
 
 std::vector<TierRow> makeTable() {

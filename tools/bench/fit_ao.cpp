@@ -107,7 +107,7 @@ AoSettings tierSettings(AoTechnique t, const TierProfile& profile) {
 
 std::string describe(const AoSettings& s) {
     std::ostringstream o;
-    for (const Parameter& p : parametersOf(s.technique)) o << (o.tellp() ? ", " : "") << p.name << " " << p.of(s);
+    for (const Parameter& p : parametersOf(s.technique.value())) o << (o.tellp() ? ", " : "") << p.name << " " << p.of(s);
     return o.str();
 }
 
@@ -117,7 +117,7 @@ std::string describe(const AoSettings& s) {
 // intensity-contrast ridge is diagonal), the step halving from 1/8 of the range each level.
 Result<AoSettings> fit(tools::AoEvaluator& ev, const AoSettings& start, const std::vector<tools::AoCase>& training, const Options& o,
                        const std::string& label) {
-    const std::vector<Parameter> params = parametersOf(start.technique);
+    const std::vector<Parameter> params = parametersOf(start.technique.value());
     auto settingsAt = [&](const std::vector<double>& u) {
         AoSettings s = start;
         for (size_t i = 0; i < params.size(); ++i) params[i].of(s) = float(params[i].fromUnit(u[i]));

@@ -50,6 +50,7 @@ struct Row {
     std::string resolution = "-";                          // AO: "full" or "half"
     uint32_t taps = 0, blurOrRadius = 0;                   // AO: taps, blur half-width; MB: taps, max radius px
     double ms = 0, copyPasses = 0, psnr = 0, psnrOccluded = 0;
+    bool presetsTechnique = false;  // AO: the technique the preset names (what an AoSettings without one runs)
 };
 
 // The peer (Intel's XeGTAO through tools/run_xegtao.sh, beside the project, never part of it) at
@@ -208,7 +209,8 @@ Status runDevice(Device& dev, const std::string& backend, Tier tier, const Optio
             const double copyMsNow = r->copyMs;
             const tools::AoScore& score = aoScores.at(preset.name + "/" + toString(t));
             rows.push_back({backend, toString(tier), preset.name, "ao", toString(t), preset.params.aoHalfResolution ? "half" : "full",
-                            aoTaps(preset.params, t), preset.params.aoBlurRadiusPx, r->effectMs, r->ratio, score.psnr, score.psnrOccluded});
+                            aoTaps(preset.params, t), preset.params.aoBlurRadiusPx, r->effectMs, r->ratio, score.psnr, score.psnrOccluded,
+                            t == preset.params.aoTechnique});
             std::cout << "  " << backend << "/" << toString(tier) << "/" << preset.name << "/" << toString(t) << ": " << fixed(r->effectMs, 2)
                       << " ms = " << fixed(rows.back().copyPasses, 1) << " copy passes (copy " << fixed(copyMsNow, 3) << " ms), PSNR "
                       << fixed(score.psnr, 2) << " dB" << std::endl;
@@ -265,13 +267,14 @@ std::string markdown(const Options& o, const std::vector<Row>& rows, const std::
         for (const std::string& line : peerDominance(o, rows, peers)) md << "- " << line << "\n";
         md << "\n";
     }
+    md << "Each preset names the AO technique an `AoSettings` without one runs; its row is marked *.\n\n";
     md << "| backend | tier | preset | effect | technique | AO resolution | taps | blur px / max radius px | ms | copy passes | PSNR | PSNR occluded "
           "|\n"
           "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const Row& r : rows)
-        md << "| " << r.backend << " | " << r.tier << " | " << r.preset << " | " << r.effect << " | " << r.technique << " | " << r.resolution << " | "
-           << r.taps << " | " << r.blurOrRadius << " | " << fixed(r.ms, 2) << " | " << fixed(r.copyPasses, 1) << " | " << fixed(r.psnr, 2) << " | "
-           << (r.effect == "ao" ? fixed(r.psnrOccluded, 2) : "-") << " |\n";
+        md << "| " << r.backend << " | " << r.tier << " | " << r.preset << " | " << r.effect << " | " << r.technique
+           << (r.presetsTechnique ? " *" : "") << " | " << r.resolution << " | " << r.taps << " | " << r.blurOrRadius << " | " << fixed(r.ms, 2)
+           << " | " << fixed(r.copyPasses, 1) << " | " << fixed(r.psnr, 2) << " | " << (r.effect == "ao" ? fixed(r.psnrOccluded, 2) : "-") << " |\n";
     return md.str();
 }
 
@@ -286,7 +289,8 @@ Status writePlots(const Options& o, const std::vector<Row>& rows, const std::vec
             plot.yLabel = effect == "ao" ? "PSNR against ray-traced truth, dB (held-out views)" : "PSNR against supersampled truth, dB";
             for (const Row& r : rows)
                 if (r.backend == backend && r.effect == effect)
-                    plot.points.push_back({r.ms, r.psnr, r.tier + "/" + r.preset, effect == "ao" ? r.technique + " (" + r.tier + ")" : r.tier});
+                    plot.points.push_back({r.ms, r.psnr, r.tier + "/" + r.preset + (r.presetsTechnique ? "*" : ""),
+                                           effect == "ao" ? r.technique + " (" + r.tier + ")" : r.tier});
             if (effect == "ao")
                 for (const PeerPoint& p : peers) plot.anchors.push_back({p.ms, p.score.psnr, peerLabel(p), kPeerSeries});
             SFX_TRY(tools::writeSvg(o.outDir + "/images/pareto_" + (effect == "ao" ? "ao_" : "mb_") + backend + ".svg", plot));
@@ -339,14 +343,14 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(o.outDir);
     std::ofstream csv(o.outDir + "/trade_presets.csv");
     csv << "backend,tier,preset,effect,technique,ao_resolution,taps,blur_or_max_radius_px,cost_width,cost_height,ms,copy_passes,psnr_db,psnr_"
-           "occluded_db\n";
+           "occluded_db,presets_technique\n";
     for (const Row& r : rows)
         csv << r.backend << "," << r.tier << "," << r.preset << "," << r.effect << "," << r.technique << "," << r.resolution << "," << r.taps << ","
             << r.blurOrRadius << "," << o.costWidth << "," << o.costHeight << "," << fixed(r.ms, 3) << "," << fixed(r.copyPasses, 2) << ","
-            << fixed(r.psnr, 3) << "," << fixed(r.psnrOccluded, 3) << "\n";
+            << fixed(r.psnr, 3) << "," << fixed(r.psnrOccluded, 3) << "," << (r.presetsTechnique ? 1 : 0) << "\n";
     for (const PeerPoint& p : peers.value())
         csv << "peer,-," << p.preset << ",ao,xegtao,-,-,-," << o.costWidth << "," << o.costHeight << "," << fixed(p.ms, 3) << ",-,"
-            << fixed(p.score.psnr, 3) << "," << fixed(p.score.psnrOccluded, 3) << "\n";
+            << fixed(p.score.psnr, 3) << "," << fixed(p.score.psnrOccluded, 3) << ",-\n";
     for (const std::string& line : peerDominance(o, rows, peers.value())) std::cout << "versus the peer: " << line << std::endl;
     Status st = writePlots(o, rows, peers.value());
     if (st)

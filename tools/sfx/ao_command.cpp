@@ -16,7 +16,7 @@ namespace {
 struct AoFlags {
     DeviceFlags device;
     CameraFlags camera;
-    std::string technique = "scalable";
+    std::string technique;  // empty: the preset's
     std::string resolution = "tier";
     std::string normalsPath;
     std::string outPath;
@@ -71,8 +71,12 @@ int runAo(const AoFlags& f) {
     if (ext != ".pfm" && ext != ".exr") return fail(cmd, invalidArgument("--out", "'" + f.outPath + "'", "a .pfm or .exr file"));
     if (Status st = checkFlags(f); !st) return fail(cmd, st);
     AoSettings s;
-    if (!parseAoTechnique(f.technique, &s.technique))
-        return fail(cmd, invalidArgument("--technique", "'" + f.technique + "'", "alchemy, scalable, crease or horizon"));
+    if (!f.technique.empty()) {
+        AoTechnique technique;
+        if (!parseAoTechnique(f.technique, &technique))
+            return fail(cmd, invalidArgument("--technique", "'" + f.technique + "'", "alchemy, scalable, crease or horizon"));
+        s.technique = technique;
+    }
     if (!parseAoResolution(f.resolution, &s.resolution))
         return fail(cmd, invalidArgument("--resolution", "'" + f.resolution + "'", "tier, full or half"));
     s.radius = f.radius;
@@ -154,9 +158,9 @@ int runAo(const AoFlags& f) {
     if (Status st = io::writeImage(f.outPath, image); !st) return fail(cmd, st);
     Result<std::string> png = writePngBeside(f.outPath, image);
     if (!png) return fail(cmd, png.status());
-    std::cout << "sfx ao: " << toString(s.technique) << " on " << dev.caps().summary() << ", tier " << toString(opened->tier.tier) << " preset "
-              << f.preset << ", " << w << "x" << h << ", AO at " << (ao.value()->config().halfResolution ? "half" : "full") << " resolution -> "
-              << f.outPath << " and " << png.value() << "\n";
+    std::cout << "sfx ao: " << toString(ao.value()->config().technique) << " on " << dev.caps().summary() << ", tier " << toString(opened->tier.tier)
+              << " preset " << f.preset << ", " << w << "x" << h << ", AO at " << (ao.value()->config().halfResolution ? "half" : "full")
+              << " resolution -> " << f.outPath << " and " << png.value() << "\n";
     if (f.showPlan) std::cout << ao.value()->plan().describe();
     std::cout.flush();
     if (cost) printCost(*cost);
@@ -172,7 +176,7 @@ Command addAoCommand(CLI::App& app) {
     c.app->footer(kInputValuesHelp);
     flags->device.add(*c.app);
     flags->camera.add(*c.app);
-    c.app->add_option("--technique", flags->technique, "alchemy | scalable | crease | horizon")->capture_default_str();
+    c.app->add_option("--technique", flags->technique, "alchemy | scalable | crease | horizon; not given: the preset's (sfx info --rules)");
     c.app
         ->add_option("--resolution", flags->resolution,
                      "tier | full | half: where obscurance and blur run; half = half size, then a depth-aware upsample; "

@@ -32,6 +32,7 @@ struct ParameterRow {
     std::string (*value)(const TierProfile&);
 };
 const ParameterRow kParameterRows[] = {
+    {"AO technique (an AoSettings without one)", [](const TierProfile& p) { return std::string(toString(p.aoTechnique)); }},
     {"scalable AO taps", [](const TierProfile& p) { return std::to_string(p.aoScalableTaps); }},
     {"scalable AO mirrored pairs", [](const TierProfile& p) { return yesNo(p.aoScalableMirrored); }},
     {"scalable AO radius clamp (px at 720 rows)",

@@ -10,23 +10,12 @@
 #include <memory>
 #include <optional>
 
+#include "sfx/ao_technique.hpp"
 #include "sfx/depth.hpp"
 #include "sfx/plan.hpp"
 #include "sfx/tier.hpp"
 
 namespace sfx {
-
-enum class AoTechnique : uint32_t {
-    Alchemy,   // McGuire et al. 2011: samples uniform in the projected world-space disk
-    Scalable,  // Bukowski et al. 2012: few spiral taps with falloff, squared sum; depth MIP on high
-    Crease,    // Fox & Compton 2007: 24 taps on the 11x11 stippled diamond, artist-tuned
-    // Jimenez et al. 2016 (GTAO): per slice the two horizons, the cosine-weighted visible arc in
-    // closed form; estimates the visibility itself rather than an obscurance with a falloff
-    Horizon,
-};
-inline constexpr uint32_t kAoTechniqueCount = 4;
-const char* toString(AoTechnique technique);  // "alchemy", "scalable", "crease", "horizon"
-bool parseAoTechnique(const std::string& text, AoTechnique* out);
 
 enum class AoNormals : uint32_t {
     FromDepth,    // derived from linear depth (smaller-difference neighbour on each axis)
@@ -73,10 +62,10 @@ struct AoHorizonSettings {
 };
 
 struct AoSettings {
-    AoTechnique technique = AoTechnique::Scalable;
-    float radius = 0.5f;             // world-space sampling radius (Alchemy, Scalable)
-    std::optional<float> intensity;  // sigma, scales occlusion (all techniques)
-    std::optional<float> contrast;   // k: visibility = max(0, 1 - occlusion)^k
+    std::optional<AoTechnique> technique;  // unset: the tier preset's (TierProfile::aoTechnique)
+    float radius = 0.5f;                   // world-space sampling radius (Alchemy, Scalable)
+    std::optional<float> intensity;        // sigma, scales occlusion (all techniques)
+    std::optional<float> contrast;         // k: visibility = max(0, 1 - occlusion)^k
     // Alchemy: beta, a distance per unit of depth (the paper's kAoAlchemyDefaultBias).
     // Scalable: subtracted from each tap's cosine (the paper's kAoScalableDefaultBias).
     std::optional<float> bias;

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <string>
 
+#include "sfx/ao_technique.hpp"
+
 namespace sfx {
 
 // Every tier, lowest first: X(enumerator, name). Adding a tier is a line here plus its row in
@@ -49,6 +51,9 @@ struct AoLook {
 struct TierProfile {
     Tier tier = Tier::Current;
     // Ambient obscurance
+    // The technique an AoSettings without one runs: each preset's point of the measured front
+    // (docs/trade.md).
+    AoTechnique aoTechnique = AoTechnique::Scalable;
     uint32_t aoScalableTaps = 0;      // 4 (mirrored) or 9 (spiral)
     bool aoScalableMirrored = false;  // current tier: each offset also used negated
     // Scalable's screen-space clamp of the AO radius (0 = none), in output pixels at

@@ -90,25 +90,28 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
         !inRange(settingRange(Setting::AoHorizonFalloff), profile.aoHorizonFalloff))
         return invalidArgument("AoDesc.profile", "a tier profile with counts outside the shaders' limits",
                                "tiers::profile(tier) or tiers::choose(caps)->profile");
-    if (uint32_t(s.technique) >= kAoTechniqueCount)
-        return invalidArgument("AoSettings.technique", std::to_string(uint32_t(s.technique)), "Alchemy, Scalable, Crease or Horizon");
+    if (uint32_t(profile.aoTechnique) >= kAoTechniqueCount)
+        return invalidArgument("AoDesc.profile.aoTechnique", std::to_string(uint32_t(profile.aoTechnique)), "Alchemy, Scalable, Crease or Horizon");
+    const AoTechnique technique = s.technique.value_or(profile.aoTechnique);
+    if (uint32_t(technique) >= kAoTechniqueCount)
+        return invalidArgument("AoSettings.technique", std::to_string(uint32_t(technique)), "Alchemy, Scalable, Crease or Horizon");
     SFX_TRY(checkSetting(Setting::AoRadius, s.radius));
-    const AoLook& look = profile.aoLook[uint32_t(s.technique)];
+    const AoLook& look = profile.aoLook[uint32_t(technique)];
     SFX_TRY(checkLookField(Setting::AoIntensity, s.intensity, "AoDesc.profile.aoLook.intensity", look.intensity));
     SFX_TRY(checkLookField(Setting::AoContrast, s.contrast, "AoDesc.profile.aoLook.contrast", look.contrast));
     SFX_TRY(checkLookField(Setting::AoBias, s.bias, "AoDesc.profile.aoLook.bias", look.bias));
     SFX_TRY(checkLookField(Setting::AoSumExponent, s.sumExponent, "AoDesc.profile.aoLook.sumExponent", look.sumExponent));
     SFX_TRY(checkSetting(Setting::AoEpsilon, s.epsilon));
-    if (s.samples && s.technique == AoTechnique::Horizon) {
+    if (s.samples && technique == AoTechnique::Horizon) {
         return invalidArgument("AoSettings.samples", std::to_string(*s.samples),
                                "unset for Horizon (its taps are AoSettings.horizon.slices and .steps)");
-    } else if (s.samples && s.technique == AoTechnique::Crease) {
+    } else if (s.samples && technique == AoTechnique::Crease) {
         if (*s.samples != kCreaseHalfTaps && *s.samples != uint32_t(shared::SFX_AO_CREASE_TAPS))
             return invalidArgument("AoSettings.samples", std::to_string(*s.samples),
                                    "12 (half the diamond per pixel) or 24 (the whole 11x11 stippled diamond) for Crease");
     } else if (s.samples) {
         SFX_TRY(checkSetting(Setting::AoSamples, *s.samples));
-        if (s.technique == AoTechnique::Scalable && profile.aoScalableMirrored && *s.samples % 2 != 0)
+        if (technique == AoTechnique::Scalable && profile.aoScalableMirrored && *s.samples % 2 != 0)
             return invalidArgument(
                 "AoSettings.samples", std::to_string(*s.samples),
                 std::string("an even count on the ") + toString(profile.tier) + " tier (its Scalable taps come in mirrored pairs)");
@@ -125,7 +128,7 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
     if (s.depthLayers > 1 && s.resolution == AoResolution::Half)
         return invalidArgument("AoSettings.resolution", "Half with depthLayers " + std::to_string(s.depthLayers),
                                "Full or Tier (multilayer AO runs at full resolution: the layers are full size)");
-    if (s.depthLayers > 1 && s.technique == AoTechnique::Horizon)
+    if (s.depthLayers > 1 && technique == AoTechnique::Horizon)
         return invalidArgument("AoSettings.depthLayers", std::to_string(s.depthLayers), "1 for Horizon (its horizons read the first visible layer)");
     const AoHorizonSettings& hz = s.horizon;
     if (hz.slices) SFX_TRY(checkSetting(Setting::AoHorizonSlices, *hz.slices));
@@ -146,9 +149,9 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
     SFX_TRY(validateAoSettings(s, profile));
     if (outputRows == 0) return invalidArgument("outputRows", "0", "the output's height, >= 1");
     AoConfig c;
-    c.technique = s.technique;
+    c.technique = s.technique.value_or(profile.aoTechnique);
     c.radius = s.radius;
-    const AoLook& look = profile.aoLook[uint32_t(s.technique)];
+    const AoLook& look = profile.aoLook[uint32_t(c.technique)];
     c.intensity = s.intensity.value_or(look.intensity);
     c.contrast = s.contrast.value_or(look.contrast);
     c.epsilon = s.epsilon;
@@ -165,7 +168,7 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
     const double passPxPerReferencePx = double(outputRows) / double(shared::SFX_AO_REFERENCE_ROWS) * (c.halfResolution ? 0.5 : 1.0);
     const uint32_t blurPx = s.blurRadius.value_or(profile.aoBlurRadiusPx);
     c.blurRadius = s.blur ? (c.halfResolution ? std::max(1u, (blurPx + 1) / 2) : blurPx) : 0;
-    switch (s.technique) {
+    switch (c.technique) {
         case AoTechnique::Alchemy:
             c.bias = s.bias.value_or(look.bias);
             c.samples = s.samples.value_or(profile.aoAlchemySamples);
