@@ -1,4 +1,5 @@
 #version 450
+#extension GL_EXT_control_flow_attributes : require
 // Motion blur pass 3: the largest tile velocity among the tiles around each tile whose velocity
 // can reach it (mbNeighborReaches), out to the radius (mbNeighborReachTiles: the 3 x 3 of the
 // course when the tile is the radius): a bound on what can blur over any pixel of the tile.
@@ -19,8 +20,8 @@ void main() {
     int reach = mbNeighborReachTiles(kRadius, kTileSize);
     vec2 best = vec2(0.5);
     float bestLen2 = -1.0;
-    for (int dy = -reach; dy <= reach; ++dy) {
-        for (int dx = -reach; dx <= reach; ++dx) {
+    [[unroll]] for (int dy = -reach; dy <= reach; ++dy) {
+        [[unroll]] for (int dx = -reach; dx <= reach; ++dx) {
             ivec2 q = t + ivec2(dx, dy);
             if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) continue;
             vec2 e = sfxTexel(uTileMax, q, 0).xy;

@@ -1,4 +1,5 @@
 #version 450
+#extension GL_EXT_control_flow_attributes : require
 // Motion blur pass 4: gather reconstruction (docs/algorithms.md). Samples in mirrored pairs
 // along the neighbourhood velocity v_N or the centre velocity v_C; each sample weighted by the
 // soft depth comparison and the spread tests of sfx_shared_mb.h, the centre taking what the
@@ -43,11 +44,11 @@ void main() {
 
     vec4 sum = vec4(0.0);
     float total = 0.0;
-    for (int i = 0; i < kPairs; ++i) {
+    [[unroll]] for (int i = 0; i < kPairs; ++i) {
         if (i >= pairs) break;
         vec2 v = mbPairUsesCentre(i, speedC, speedN) ? vC : vN;
         float speedV = length(v);
-        for (int s = 0; s < 2; ++s) {
+        [[unroll]] for (int s = 0; s < 2; ++s) {
             vec2 off = roundAway(mbSampleT(i, pairs, jitter, s == 0 ? 1.0 : -1.0, speedV) * v);
             // Clamped to the image: a sample never leaves it, however large the velocity.
             ivec2 q = clamp(p + ivec2(off), ivec2(0), size - 1);
