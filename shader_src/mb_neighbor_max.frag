@@ -18,21 +18,18 @@ void main() {
     ivec2 size = textureSize(uTileMax, 0);
     ivec2 t = ivec2(gl_FragCoord.xy);
     int reach = mbNeighborReachTiles(kRadius, kTileSize);
-    vec2 best = vec2(0.5);
+    vec2 best = vec2(0.0);
     float bestLen2 = -1.0;
     [[unroll]] for (int dy = -reach; dy <= reach; ++dy) {
         [[unroll]] for (int dx = -reach; dx <= reach; ++dx) {
             ivec2 q = t + ivec2(dx, dy);
             if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) continue;
-            vec2 e = sfxTexel(uTileMax, q, 0).xy;
-            // Decoded exactly: e is on the 1/2048 grid and 2k an integer.
-            vec2 v = vec2(mbDecodeVelocity(e.x, float(kRadius)), mbDecodeVelocity(e.y, float(kRadius)));
+            vec2 v = sfxTexel(uTileMax, q, 0).xy;
             if (!mbNeighborReaches(dx, dy, v, kTileSize)) continue;
-            vec2 d = e - 0.5;
-            float len2 = dot(d, d);
+            float len2 = mbRankKey(v);
             if (len2 > bestLen2) {
                 bestLen2 = len2;
-                best = e;
+                best = v;
             }
         }
     }

@@ -1,6 +1,6 @@
 #version 450
 // Motion blur pass 1: the velocity the reconstruction will use, packed with depth.
-// Output RGBA16F: xy = velocity radius in [-k, k] px encoded to [0, 1] (in steps of 1/2048); zw = linear depth as an
+// Output RGBA16F: xy = velocity radius in [-k, k] px on fp16's grid (mbQuantizeVelocity); zw = linear depth as an
 // fp16 hi/lo pair (hi = z to 11 significant bits, lo = z - hi), so one fetch gives both at ~22 bits of depth.
 // The velocity is the host's (pixels across the shutter interval) or, in camera-only mode,
 // the reprojection of this pixel's depth by the previous view-projection.
@@ -29,12 +29,11 @@ void main() {
     // Non-finite, infinite and huge velocities: the rule of sfx_shared_mb.h (mbClampVelocity).
     v = mbClampVelocity(v * params.velocityScale, params.radius);
     // On the fp16-exact grid of sfx_shared_mb.h: the target's own rounding never changes it.
-    vec2 enc = vec2(mbQuantizeVelocityCode(mbEncodeVelocity(v.x, params.radius)),
-                    mbQuantizeVelocityCode(mbEncodeVelocity(v.y, params.radius)));
+    vec2 stored = vec2(mbQuantizeVelocity(v.x), mbQuantizeVelocity(v.y));
     float zc = min(z, SFX_MB_MAX_PACKED_DEPTH);
     // hi keeps the top 11 significant bits of z, which fp16 stores exactly; lo the rest.
     // (Computed by hand: packHalf2x16 is missing from GLSL 330, the desktop current tier.)
     float step = exp2(floor(log2(max(zc, 1.0e-4)))) / 1024.0;
     float hi = floor(zc / step) * step;
-    outPacked = vec4(enc, hi, zc - hi);
+    outPacked = vec4(stored, hi, zc - hi);
 }

@@ -18,24 +18,20 @@ layout(location = 0) out vec4 outColor;
 layout(constant_id = SFX_MB_SC_PAIRS) const int kPairs = 1;
 layout(constant_id = SFX_MB_SC_JITTER_SIZE) const int kJitterSize = 2;
 
-vec2 decodeVelocity(vec2 e) {
-    return vec2(mbDecodeVelocity(e.x, params.radius), mbDecodeVelocity(e.y, params.radius));
-}
-
 // Round half away from zero: the same on both sides of the centre, as the reference does.
 vec2 roundAway(vec2 x) { return sign(x) * floor(abs(x) + 0.5); }
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec4 colorC = sfxColor(sfxTexel(uColor, p, 0));  // the colour rule of sfx_shared.h
-    vec2 vN = decodeVelocity(sfxTexel(uNeighborMax, p / params.tileSize, 0).xy);
+    vec2 vN = sfxTexel(uNeighborMax, p / params.tileSize, 0).xy;
     if (length(vN) < SFX_MB_STILL_PX) {
         outColor = colorC;
         return;
     }
     ivec2 size = textureSize(uColor, 0);
     vec4 packedC = sfxTexel(uPacked, p, 0);
-    vec2 vC = decodeVelocity(packedC.xy);
+    vec2 vC = packedC.xy;
     float zC = packedC.z + packedC.w;
     float speedC = length(vC);
     float speedN = length(vN);
@@ -54,7 +50,7 @@ void main() {
             ivec2 q = clamp(p + ivec2(off), ivec2(0), size - 1);
             float dist = length(vec2(q - p));
             vec4 packedS = sfxTexel(uPacked, q, 0);
-            float speedS = length(decodeVelocity(packedS.xy));
+            float speedS = length(packedS.xy);
             float zS = packedS.z + packedS.w;
             float w = mbSampleWeight(zC, zS, speedC, speedS, dist, params.softExtent);
             vec4 colorS = sfxTexel(uColor, q, 0);

@@ -1,6 +1,6 @@
 #version 450
 // Motion blur pass 2: per N x N tile (N = the tile edge, SFX_MB_TILE_PX scaled), the velocity of largest
-// magnitude. Magnitudes are compared on the decoded (centred) value, never on the [0,1] code.
+// magnitude, ranked by mbRankKey as the CPU reference ranks them.
 // Ties keep the first in row-major scan order, as the CPU reference does.
 #include "sfx_shared.h"
 #include "sfx_shared_mb.h"
@@ -14,7 +14,7 @@ layout(constant_id = SFX_MB_SC_TILE_SIZE) const int kTileSize = 1;
 void main() {
     ivec2 size = textureSize(uPacked, 0);
     ivec2 origin = ivec2(gl_FragCoord.xy) * kTileSize;
-    vec2 best = vec2(0.5);
+    vec2 best = vec2(0.0);
     float bestLen2 = -1.0;
     for (int j = 0; j < kTileSize; ++j) {
         int y = origin.y + j;
@@ -22,12 +22,11 @@ void main() {
         for (int i = 0; i < kTileSize; ++i) {
             int x = origin.x + i;
             if (x >= size.x) break;
-            vec2 e = sfxTexel(uPacked, ivec2(x, y), 0).xy;
-            vec2 d = e - 0.5;
-            float len2 = dot(d, d);
+            vec2 v = sfxTexel(uPacked, ivec2(x, y), 0).xy;
+            float len2 = mbRankKey(v);
             if (len2 > bestLen2) {
                 bestLen2 = len2;
-                best = e;
+                best = v;
             }
         }
     }

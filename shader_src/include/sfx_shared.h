@@ -7,6 +7,7 @@
 #define SFX_SHARED_H
 
 #ifdef __cplusplus
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -19,6 +20,9 @@ struct ivec2 { int x, y; };
 #define SFX_VEC2(x, y) vec2{x, y}
 #define SFX_IVEC2(x, y) ivec2{x, y}
 #define SFX_UINT uint32_t
+// GLSL's bit casts; the double is rounded to float first, as the shader holds it.
+inline uint32_t floatBitsToUint(double v) { return std::bit_cast<uint32_t>(float(v)); }
+inline double uintBitsToFloat(uint32_t v) { return double(std::bit_cast<float>(v)); }
 // Functions written once for both languages: double in C++ (the references), float in GLSL.
 #define SFX_FN inline
 #define SFX_REAL double

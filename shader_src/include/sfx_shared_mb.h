@@ -1,5 +1,5 @@
 // Motion blur pieces shared by the mb_*.frag shaders and the C++ CPU reference
-// (sfx/reference/motion_blur_reference.hpp): the velocity encoding, the jitter patterns, where
+// (sfx/reference/motion_blur_reference.hpp): the stored velocity, the jitter patterns, where
 // samples go and how they are weighted. Both sides include this one file so they cannot drift.
 // "The course" below is Bukowski, Hennessy, McGuire, Osman, "Scalable High Quality Motion Blur
 // and Ambient Occlusion" (SIGGRAPH 2012); docs/algorithms.md restates it.
@@ -121,25 +121,30 @@ SFX_MB_FN SFX_MB_VEC2 mbClampVelocity(SFX_MB_VEC2 v, SFX_MB_REAL k) {
     return dir * (k / length(dir));
 }
 
-// Velocity component in [-k, k] pixels <-> [0, 1] (the course's rescale to fit two channels).
-SFX_MB_FN SFX_MB_REAL mbEncodeVelocity(SFX_MB_REAL v, SFX_MB_REAL k) { return v / (2.0 * k) + 0.5; }
-SFX_MB_FN SFX_MB_REAL mbDecodeVelocity(SFX_MB_REAL e, SFX_MB_REAL k) { return (e - 0.5) * (2.0 * k); }
-
-// The code is stored on a uniform grid of 1/SFX_MB_VELOCITY_CODE_STEPS (a velocity step of
-// k/1024 px, the fp16 step of codes in [0.5, 1)): every grid value has at most 11 significant
-// bits, so the RGBA16F and RG16F targets hold it exactly whatever their float-to-half rounding.
-// The APIs allow that rounding to go to nearest or toward zero, and llvmpipe / lavapipe round
-// toward zero: left to the target, a clamped (3, 200) px velocity at k = 64 was stored as
-// 63.9375 px on the GPU where the reference's round to nearest gave 64, on every pixel, and at
-// 60 and 64 px that moved whole rows of taps (4% of channels 3-6e-3 off the reference).
-// Rounded to nearest here (floor(x + 0.5), the same in both languages; the scaling by a power
-// of two and the floor are exact in float), so a code a few float ulps off a grid value (the
-// shader's division) still lands on it; both sides then decode the same value.
-SFX_CONST(float, SFX_MB_VELOCITY_CODE_STEPS, 2048.0)
-SFX_MB_FN SFX_MB_REAL mbQuantizeVelocityCode(SFX_MB_REAL e) {
-    SFX_MB_REAL steps = SFX_MB_REAL(SFX_MB_VELOCITY_CODE_STEPS);
-    return clamp(floor(e * steps + 0.5), 0.0, steps) * (1.0 / steps);
+// The packed velocity keeps pixels, each component on fp16's grid: rounded here to the nearest
+// value with 11 significant bits (ties away from zero; integer operations on the float's bits,
+// the same in both languages), and below fp16's least normal (2^-14 px, far under
+// SFX_MB_STILL_PX) zero. Every such value is exact in the RGBA16F and RG16F targets whatever
+// their float-to-half rounding, which the APIs let go to nearest or toward zero (llvmpipe and
+// lavapipe truncate: left to the target, a clamped 64 px velocity was stored 1/16 px short on
+// every pixel and moved whole rows of taps), so both sides read back what was written. The
+// step is relative (k/1024 px or finer below k/2, whatever the radius): a velocity is stored
+// the same on every tier, so a blur both tiers' radii contain is reconstructed the same way.
+SFX_MB_FN SFX_MB_REAL mbQuantizeVelocity(SFX_MB_REAL v) {
+    SFX_UINT bits = floatBitsToUint(v);
+    if ((bits & 0x7FFFFFFFu) < 0x38800000u) return 0.0;  // |v| < 2^-14
+    return uintBitsToFloat((bits + 0x1000u) & 0xFFFFE000u);
 }
+
+// The squared length by which tile max and neighbour max rank velocities, in float on both
+// sides. The components are on the fp16 grid, so each square is exact in float (22 significant
+// bits) and only the sum rounds, once (a fused multiply-add rounds it the same): the shader and
+// the reference rank alike, ties included.
+#ifdef __cplusplus
+SFX_MB_FN SFX_MB_REAL mbRankKey(SFX_MB_VEC2 v) { return double(float(v.x * v.x) + float(v.y * v.y)); }
+#else
+SFX_MB_FN SFX_MB_REAL mbRankKey(SFX_MB_VEC2 v) { return v.x * v.x + v.y * v.y; }
+#endif
 
 // The reconstruction after Jimenez, "Next Generation Post Processing in Call of Duty: Advanced
 // Warfare" (2014), and Guertin, McGuire, Nowrouzezahrai, "A Fast and Stable Feature-Aware Motion
@@ -210,7 +215,7 @@ SFX_MB_FN SFX_MB_REAL mbCentreShare(SFX_MB_REAL centreWeight, SFX_MB_REAL sample
 SFX_MB_FN int mbNeighborReachTiles(int radius, int tile) { return (radius + tile - 1) / tile; }
 
 // Neighbour max keeps a tile at (dx, dy) tiles from the centre tile only if its velocity `v`
-// (decoded, pixels) can carry its blur into the centre tile (after Guertin et al.): a tile in
+// (pixels) can carry its blur into the centre tile (after Guertin et al.): a tile in
 // line with it along a side needs motion along that axis, one off both axes motion along the
 // diagonal toward it; a tile beyond the adjacent ones also needs a radius that crosses the
 // pixels between the two tiles (Chebyshev; the 0.5 px of mbSpread's ramp). Keeps the dominant
@@ -251,12 +256,11 @@ SFX_BLOCK_END(params)
 // Pass 4, mb_reconstruct.frag.
 #if defined(__cplusplus) || defined(SFX_WANT_MB_RECONSTRUCT_PARAMS)
 SFX_BLOCK(MbReconstructParams, 3)
-    SFX_M_FLOAT(radius)        // k, pixels: decodes the [0,1] velocities
     SFX_M_FLOAT(softExtent)    // soft depth comparison extent, scene units
     SFX_M_FLOAT(centreWeight)  // MotionBlurSettings.centreWeight
-    SFX_M_FLOAT(pad0)
+    SFX_M_FLOAT(pad0) SFX_M_FLOAT(pad1)
     SFX_M_INT(tileSize)        // N: pixel -> tile of the neighbour-max texture
-    SFX_M_INT(pad1) SFX_M_INT(pad2) SFX_M_INT(pad3)  // pairs, jitter: constants above
+    SFX_M_INT(pad2) SFX_M_INT(pad3) SFX_M_INT(pad4)  // pairs, jitter: constants above
 SFX_BLOCK_END(params)
 #endif
 #ifdef __cplusplus

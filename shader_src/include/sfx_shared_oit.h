@@ -52,9 +52,7 @@ using glm::normalize;
 #define SFX_OIT_OUT(type) type&
 #define SFX_OIT_INOUT(type) type&
 #define SFX_OIT_INOUT_ARRAY(type, name, count) type (&name)[count]
-// GLSL's bit casts and half/snorm packing, for the node layout.
-inline uint32_t floatBitsToUint(double v) { return glm::floatBitsToUint(float(v)); }
-inline double uintBitsToFloat(uint32_t v) { return double(glm::uintBitsToFloat(v)); }
+// GLSL's half/snorm packing, for the node layout (the bit casts are sfx_shared.h's).
 inline uint32_t packHalf2x16(glm::dvec2 v) { return glm::packHalf2x16(glm::vec2(v)); }
 inline glm::dvec2 unpackHalf2x16(uint32_t v) { return glm::dvec2(glm::unpackHalf2x16(v)); }
 inline uint32_t packSnorm2x16(glm::dvec2 v) { return glm::packSnorm2x16(glm::vec2(v)); }

@@ -104,6 +104,20 @@ TEST_CASE("motion blur: matches the reference on a scene with moving and still l
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
 
+TEST_CASE("motion blur: the jitter pattern a profile may choose instead of its tier's matches the reference", "[motion_blur][conformance]") {
+    // Both tiers use the checkerboard; the 4x4 pattern stays a profile choice, so it is run here.
+    TierProfile profile = test::tierProfile();
+    profile.mbJitterSize = profile.mbJitterSize == 2 ? 4 : 2;
+    const MotionScene scene = test::movingAndStillLayersScene();
+    const SceneFrame f = scene.render(0);
+    const ColorGrid c = toHalfGrid(f.color);
+    const MotionBlurSettings s = pixelSettings(7.0f);
+    const ColorGrid gpu = test::runMotionBlur(test::device(), profile, c, f.depth, &f.velocity, s, {}, DepthKind::Linear);
+    const ColorGrid ref = motionBlur(c, f.depth, f.velocity, resolveMotionBlur(profile, s, scene.height).value()).color;
+    compareWithReference(gpu, ref, profile.mbJitterSize == 4 ? "4x4 jitter" : "checkerboard jitter");
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+}
+
 TEST_CASE("motion blur: camera-only velocity matches the reference", "[motion_blur][conformance]") {
     const uint32_t w = 64, h = 40;
     const CameraProjection cam = testCamera(w, h);

@@ -152,13 +152,10 @@ GpuMotionBlur runMotionBlurPasses(Device& d, const TierProfile& tier, const Colo
     std::vector<uint16_t> out(size_t(w) * h * 4), packed(size_t(w) * h * 4);
     SFX_REQUIRE_OK(d.readTexture(mb.value()->output(), 0, out.data(), out.size() * 2));
     SFX_REQUIRE_OK(d.readTexture(mb.value()->packedVelocity(), 0, packed.data(), packed.size() * 2));
-    const Result<MotionBlurParams> p = resolveMotionBlur(tier, s, h);
-    REQUIRE(p.isOk());
-    const double k = double(p->radiusPx);
     GpuMotionBlur result{ColorGrid(w, h), VelocityGrid(w, h)};
     for (size_t i = 0; i < result.color.values.size(); ++i) {
         for (size_t c = 0; c < 4; ++c) result.color.values[i][c] = double(halfToFloat(out[i * 4 + c]));
-        for (size_t c = 0; c < 2; ++c) result.radiusPx.values[i][c] = shared::mbDecodeVelocity(double(halfToFloat(packed[i * 4 + c])), k);
+        for (size_t c = 0; c < 2; ++c) result.radiusPx.values[i][c] = double(halfToFloat(packed[i * 4 + c]));
     }
     return result;
 }

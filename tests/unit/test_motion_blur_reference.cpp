@@ -198,7 +198,7 @@ TEST_CASE("motion blur reference: no output is NaN, even for NaN or infinite vel
     }
 }
 
-TEST_CASE("motion blur reference: the jitter patterns and velocity encoding", "[motion_blur]") {
+TEST_CASE("motion blur reference: the jitter patterns and the stored velocity", "[motion_blur]") {
     // Checkerboard alternates +-0.25; the 4x4 table uses each stratum once per block.
     CHECK(shared::mbJitter(0, 0, 2) == -0.25);
     CHECK(shared::mbJitter(1, 0, 2) == 0.25);
@@ -207,10 +207,20 @@ TEST_CASE("motion blur reference: the jitter patterns and velocity encoding", "[
         for (int x = 0; x < 4; ++x) seen.push_back(shared::mbJitter(x + 8, y + 4, 4));
     std::sort(seen.begin(), seen.end());
     for (int i = 0; i < 16; ++i) CHECK(seen[size_t(i)] == Approx((i + 0.5) / 16 - 0.5));
-    // [-k, k] <-> [0, 1], both ways.
-    CHECK(shared::mbEncodeVelocity(-10, 10) == 0.0);
-    CHECK(shared::mbEncodeVelocity(10, 10) == 1.0);
-    CHECK(shared::mbDecodeVelocity(shared::mbEncodeVelocity(3.5, 10), 10) == Approx(3.5));
+    // The stored velocity: pixels on fp16's grid, to nearest, whatever the radius; what the
+    // RGBA16F target keeps exactly (a fixed point of its rounding), so every driver reads it back.
+    CHECK(shared::mbQuantizeVelocity(3.0) == 3.0);
+    CHECK(shared::mbQuantizeVelocity(-64.0) == -64.0);
+    CHECK(shared::mbQuantizeVelocity(63.99) == 64.0);                         // steps of 1/32 in [32, 64)
+    CHECK(shared::mbQuantizeVelocity(1.0 / 3.0) == 0.333251953125);           // 11 significant bits
+    CHECK(shared::mbQuantizeVelocity(1.0 + 1.0 / 2048) == 1.0 + 1.0 / 1024);  // a tie goes away from zero
+    CHECK(shared::mbQuantizeVelocity(-(1.0 + 1.0 / 2048)) == -(1.0 + 1.0 / 1024));
+    CHECK(shared::mbQuantizeVelocity(1.0e-5) == 0.0);  // below fp16's least normal
+    for (double v : {0.7, -2.3, 5.999, 17.25, -33.3, 0.0123}) CHECK(roundToHalf(shared::mbQuantizeVelocity(v)) == shared::mbQuantizeVelocity(v));
+    // Ranked by float sums of exact squares: two lengths that differ only below float's
+    // precision tie, as they do in the shaders.
+    CHECK(shared::mbRankKey({3.0, 4.0}) == 25.0);
+    CHECK(shared::mbRankKey({4096.0, 1.0 / 1024}) == shared::mbRankKey({4096.0, 0.0}));
     // One pair per texel the blur weighs on each side (|v_N| rounded), at most the tier's: a
     // length just past an integer takes no extra pair that would read a texel twice.
     CHECK(shared::mbActivePairs(0.6, 6) == 1);
@@ -235,8 +245,8 @@ TEST_CASE("motion blur: settings out of range are named errors; tiers and scalin
     Result<MotionBlurParams> high = resolveMotionBlur(tiers::profile(Tier::High), s, 1080);
     REQUIRE(high.isOk());
     CHECK(high->taps == 13);
-    CHECK(high->jitterSize == 4);
-    CHECK(high->radiusPx == 27);                                                     // 18 px at 720 rows, scaled to 1080
+    CHECK(high->jitterSize == 2);  // as the current tier: a blur both radii contain is reconstructed alike
+    CHECK(high->radiusPx == 27);   // 18 px at 720 rows, scaled to 1080
     CHECK(resolveMotionBlur(tiers::profile(Tier::Current), s, 180)->radiusPx == 3);  // 2.5 rounds to 3
     // The tile is the same pixels on every tier (10 at 720 rows), scaled as the radius is: the
     // high tier's radius reaches 2 tiles out.

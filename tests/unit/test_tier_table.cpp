@@ -135,7 +135,7 @@ TEST_CASE("tier table: the default presets hold the parameters the tiers always 
                    .aoPackedDepthTarget = false,
                    .mbTaps = 13,
                    .mbMaxRadiusPx = 18.0f,
-                   .mbJitterSize = 4,
+                   .mbJitterSize = 2,
                    .abufferOit = true};
     for (uint32_t i = 0; i < kTierCount; ++i) {
         INFO(toString(Tier(i)));

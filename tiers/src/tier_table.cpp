@@ -139,7 +139,10 @@ TierProfile highDefault() {
     // afar no more often on the tier with the longer blur (docs/motion_blur.md, scene families).
     p.mbTaps = 13;
     p.mbMaxRadiusPx = 18.0f;
-    p.mbJitterSize = 4;  // 4x4 randomised
+    // The current tier's checkerboard: with the velocity stored alike on both tiers, a blur both
+    // radii contain is then reconstructed exactly as on the current tier (the 4x4 pattern lost
+    // up to 0.03 dB there on the held-out families and gained nothing at longer blurs).
+    p.mbJitterSize = 2;
     p.abufferOit = true;
     return p;
 }

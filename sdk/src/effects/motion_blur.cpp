@@ -299,7 +299,6 @@ Status MotionBlur::recordPasses(const MotionBlurInputs& in, const MotionBlurPara
     pack.maxDepth = float(depth_->reconstruction().maxDepth);
     SFX_TRY(uniforms_->write(device_, packParams_, pack));
     ReconstructParams rec{};
-    rec.radius = float(p.radiusPx);
     rec.softExtent = float(p.softDepthExtent);
     rec.centreWeight = float(p.centreWeight);
     rec.tileSize = int32_t(p.tileSizePx);

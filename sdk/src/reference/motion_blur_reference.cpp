@@ -11,22 +11,22 @@ namespace {
 
 using shared::mbActivePairs;
 using shared::mbCentreShare;
-using shared::mbDecodeVelocity;
-using shared::mbEncodeVelocity;
 using shared::mbJitter;
 using shared::mbPairUsesCentre;
 using shared::mbSampleT;
 using shared::mbSampleWeight;
 
 double length2(const std::array<double, 2>& v) { return v[0] * v[0] + v[1] * v[1]; }
+double rankKey(const std::array<double, 2>& v) { return shared::mbRankKey(glm::dvec2(v[0], v[1])); }
 double roundAway(double x) { return x < 0 ? -std::floor(-x + 0.5) : std::floor(x + 0.5); }
 
-// Largest by magnitude over a set of texels; strict '>' so the first in scan order wins ties.
+// Largest by magnitude over a set of texels, ranked as the shaders rank (mbRankKey); strict '>'
+// so the first in scan order wins ties.
 struct MaxTracker {
     std::array<double, 2> best{0, 0};
     double bestLen2 = -1;
     void offer(const std::array<double, 2>& v) {
-        const double l = length2(v);
+        const double l = rankKey(v);
         if (l > bestLen2) {
             bestLen2 = l;
             best = v;
@@ -56,9 +56,8 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
     const double k = double(p.radiusPx);
     MotionBlurReferenceResult r;
 
-    // Pass 1: scale to a radius, clamp the magnitude to k, encode and quantise to the grid the
-    // RGBA16F target holds exactly (sfx_shared_mb.h), then decode (the later passes only ever
-    // see the decoded value).
+    // Pass 1: scale to a radius, clamp the magnitude to k, and round to the fp16 grid the RGBA16F
+    // target holds exactly (sfx_shared_mb.h): what the later passes read.
     r.radiusPx = VelocityGrid(w, h);
     Grid depth(w, h);
     for (uint32_t y = 0; y < h; ++y) {
@@ -67,10 +66,7 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
             const std::array<double, 2>& in = velocityPx.at(x, y);
             const float scale = float(0.5 * p.exposure);
             const glm::dvec2 v = shared::mbClampVelocity(glm::dvec2(double(float(in[0]) * scale), double(float(in[1]) * scale)), k);
-            for (int c = 0; c < 2; ++c) {
-                const double e = shared::mbQuantizeVelocityCode(mbEncodeVelocity(v[c], k));
-                r.radiusPx.at(x, y)[c] = mbDecodeVelocity(e, k);
-            }
+            for (int c = 0; c < 2; ++c) r.radiusPx.at(x, y)[c] = shared::mbQuantizeVelocity(v[c]);
             depth.at(x, y) = std::min(shared::sfxLinearDepthOrFar(linearDepth.at(x, y), maxDepth), double(shared::SFX_MB_MAX_PACKED_DEPTH));
         }
     }

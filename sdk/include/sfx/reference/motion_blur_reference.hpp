@@ -1,8 +1,9 @@
 // CPU reference of motion blur reconstruction, in double precision and written for clarity.
 // It runs the same passes as the shaders with the same jitter, tap layout and weights (all
 // from shader_src/include/sfx_shared_mb.h). Where the GPU stores fp16 (the packed velocity
-// and the tile textures), both quantise the encoded velocity to the same grid, which fp16 holds
-// exactly (mbQuantizeVelocityCode), so the two pick the same texels; everything else stays in double.
+// and the tile textures), both round the velocity to the same grid, which fp16 holds exactly
+// (mbQuantizeVelocity), and rank velocities by the same float key (mbRankKey), so the two pick
+// the same texels; everything else stays in double.
 #pragma once
 
 #include <array>
