@@ -17,7 +17,8 @@
 #                      peer on the same inputs against the same truth (docs/ao_families.md, .csv,
 #                      _cost.csv, docs/images/ao_family_*.png).
 #   6. bench_mb_families - motion blur per scene family, speed, tier and backend against its
-#                      truth (docs/mb_families.csv, the family tables of docs/motion_blur.md).
+#                      truth (docs/mb_families.csv, the family tables of docs/motion_blur.md), and
+#                      each family's pictures (docs/images/mb_<family>_<speed>px.png).
 # Truth images are traced once and cached by scene, view, size, radius, sample count and seed
 # under $SFX_TRUTH_CACHE (default build/truth-cache): a second run only renders the effects.
 # The fitted looks are data of the tier table: fit_ao prints them, and adopting them is an edit of
@@ -50,5 +51,5 @@ step "trade_presets: cost and accuracy of every preset and of the peer, Pareto p
 step "bench_families: the defaults and the peer against the truth, per scene family"
 "$BUILD_DIR"/tools/bench/bench_families --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS" --peer-dir "$PEER_DIR"
 step "bench_mb_families: motion blur on the held-out scene families"
-"$BUILD_DIR"/tools/bench/bench_mb_families --csv docs/mb_families.csv --backends "$BACKENDS"
-step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg, docs/mb_families.csv, docs/ao_families.*"
+"$BUILD_DIR"/tools/bench/bench_mb_families --csv docs/mb_families.csv --backends "$BACKENDS" --images docs/images
+step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg, docs/mb_families.csv, docs/images/mb_*px.png, docs/ao_families.*"

@@ -3,11 +3,15 @@
 // backend): PSNR against the truth over the moving region and over the frame, the gain over the
 // unblurred input on the moving region, and PSNR at the leading edges (background covered) and
 // trailing edges (background revealed) separately; for the independent square, also over the
-// rows it spans. Not a test: docs/motion_blur.md shows its CSV. About two minutes on 2 cores.
+// rows it spans. With --images, a picture per family at a few speeds: input, truth and each
+// tier's CPU reference output, and their errors. Not a test: docs/motion_blur.md shows its CSV
+// and pictures. About two minutes on 2 cores.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -17,8 +21,10 @@
 #include "mb_families.hpp"
 #include "motion_cases.hpp"
 #include "sfx/backends.hpp"
+#include "sfx/image_io.hpp"
 #include "sfx/motion_blur.hpp"
 #include "sfx/reference/motion_blur_reference.hpp"
+#include "sfx/scene_render.hpp"
 #include "sfx/tiers.hpp"
 
 using namespace sfx;
@@ -62,6 +68,25 @@ std::vector<double> parseList(const std::string& s) {
     return out;
 }
 
+// The picture of one family at one speed (--images), panels 4 px apart on mid grey. Top row:
+// input | truth | current tier | high tier, sRGB-encoded as the renderer's PNGs are. Bottom row,
+// under each but the truth (whose slot stays grey): |panel - truth| x 4 per channel on the
+// linear values, written as they are (white: 0.25 or more).
+Status writePicture(const std::string& path, const ColorGrid& input, const ColorGrid& truth, const ColorGrid& current, const ColorGrid& high) {
+    const uint32_t w = truth.width, h = truth.height, gap = 4;
+    io::Image out(4 * w + 3 * gap, 2 * h + gap, 3, 0.5f);
+    const ColorGrid* panels[4] = {&input, &truth, &current, &high};
+    for (uint32_t p = 0; p < 4; ++p)
+        for (uint32_t y = 0; y < h; ++y)
+            for (uint32_t x = 0; x < w; ++x)
+                for (uint32_t c = 0; c < 3; ++c) {
+                    const double v = panels[p]->at(x, y)[c], error = std::fabs(v - truth.at(x, y)[c]);
+                    out.at(p * (w + gap) + x, y, c) = float(render::linearToSrgb(v));
+                    if (p != 1) out.at(p * (w + gap) + x, h + gap + y, c) = float(std::min(1.0, 4 * error));
+                }
+    return io::writePng(path, out);
+}
+
 // One open device per backend x tier, kept for the whole run.
 struct Runner {
     std::string backend;
@@ -75,6 +100,7 @@ int main(int argc, char** argv) {
     CLI::App app{"bench_mb_families: motion blur per scene family, speed, tier and backend against temporal supersampling"};
     uint32_t width = 320, height = 240, instants = 256, seed = 1;
     std::string csvPath = "mb_families.csv", backendsFlag = "vulkan,gles", speedsFlag = "0.5,2,6,12,24,40", familiesFlag = "all";
+    std::string imagesDir, imageSpeedsFlag = "6,12,24";
     std::optional<uint32_t> taps;
     std::optional<float> radius;
     app.add_option("--width", width, "picture width")->capture_default_str();
@@ -87,6 +113,9 @@ int main(int argc, char** argv) {
     app.add_option("--taps", taps, "override MotionBlurSettings::samples on both tiers");
     app.add_option("--radius", radius, "override MotionBlurSettings::maxRadiusPx (at 720 rows) on both tiers");
     app.add_option("--csv", csvPath, "CSV output file")->capture_default_str();
+    app.add_option("--images", imagesDir, "write DIR/mb_<family>_<speed>px.png: input, truth, current, high tier (CPU reference) and errors x4");
+    app.add_option("--image-speeds", imageSpeedsFlag, "speeds of the --images pictures, comma-separated (each also in --speeds)")
+        ->capture_default_str();
     CLI11_PARSE(app, argc, argv);
     if (width == 0 || height == 0 || instants < 2) {
         std::cerr << "bench_mb_families: --width and --height must be > 0, --instants >= 2\n";
@@ -116,7 +145,14 @@ int main(int argc, char** argv) {
     // Per family x tier (CPU reference): the sum of gains, for the summary.
     std::map<std::string, std::array<double, 2>> gainSum;
     std::map<std::string, int> gainCount;
-    const std::vector<double> speeds = parseList(speedsFlag);
+    const std::vector<double> speeds = parseList(speedsFlag), imageSpeeds = parseList(imageSpeedsFlag);
+    if (!imagesDir.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(imagesDir, ec);
+        for (double s : imageSpeeds)
+            if (std::find(speeds.begin(), speeds.end(), s) == speeds.end())
+                std::cerr << "bench_mb_families: image speed " << s << " is not in --speeds\n";
+    }
     for (const std::string& family : tools::familyNames()) {
         if (familiesFlag != "all" && ("," + familiesFlag + ",").find("," + family + ",") == std::string::npos) continue;
         for (double speed : speeds) {
@@ -141,13 +177,16 @@ int main(int argc, char** argv) {
                     << "," << fmt(in.trailing) << "," << fmt(in.rows) << "," << fmt(residual) << "\n";
                 return s;
             };
+            ColorGrid referenceOut[2];  // the CPU reference's output, current and high tier
             for (Tier tier : {Tier::Current, Tier::High}) {
                 Result<MotionBlurParams> p = resolveMotionBlur(tiers::profile(tier), settings, height);
                 if (!p) {
                     std::cerr << "bench_mb_families: " << p.status().toString() << "\n";
                     return 1;
                 }
-                const Scores s = emit(tier, "reference", p.value(), motionBlur(frame.color, frame.depth, frame.velocity, p.value()).color);
+                ColorGrid& out = referenceOut[tier == Tier::High];
+                out = motionBlur(frame.color, frame.depth, frame.velocity, p.value()).color;
+                const Scores s = emit(tier, "reference", p.value(), out);
                 gainSum[family][tier == Tier::High] += s.moving - in.moving;
                 if (tier == Tier::High) ++gainCount[family];
                 for (Runner& r : runners) {
@@ -159,6 +198,15 @@ int main(int argc, char** argv) {
                     }
                     emit(tier, r.backend, p.value(), run->output);
                 }
+            }
+            if (!imagesDir.empty() && std::find(imageSpeeds.begin(), imageSpeeds.end(), speed) != imageSpeeds.end()) {
+                char name[96];
+                std::snprintf(name, sizeof name, "/mb_%s_%gpx.png", family.c_str(), speed);
+                if (Status st = writePicture(imagesDir + name, frame.color, truth, referenceOut[0], referenceOut[1]); !st) {
+                    std::cerr << "bench_mb_families: " << st.toString() << "\n";
+                    return 1;
+                }
+                std::printf("  wrote %s%s\n", imagesDir.c_str(), name);
             }
             std::fflush(stdout);
         }
