@@ -18,7 +18,7 @@
 #include <sstream>
 
 #include "bench_device.hpp"
-#include "mb_families.hpp"
+#include "mb_family_scoring.hpp"
 #include "motion_cases.hpp"
 #include "sfx/backends.hpp"
 #include "sfx/image_io.hpp"
@@ -32,25 +32,14 @@ using namespace sfx::reference;
 
 namespace {
 
-// PSNR (peak 1) of RGB over the masked pixels; an empty mask gives NaN (printed as "-").
-double psnr(const ColorGrid& a, const ColorGrid& truth, const std::vector<bool>& mask) {
-    double sum = 0;
-    size_t n = 0;
-    for (size_t i = 0; i < a.values.size(); ++i) {
-        if (!mask.empty() && !mask[i]) continue;
-        for (int c = 0; c < 3; ++c) sum += std::pow(a.values[i][c] - truth.values[i][c], 2);
-        n += 3;
-    }
-    if (n == 0) return NAN;
-    return sum == 0 ? 99.0 : 10.0 * std::log10(double(n) / sum);
-}
+using tools::familyPsnr;
 
 struct Scores {
     double moving, frame, leading, trailing, rows;
 };
 Scores score(const ColorGrid& out, const ColorGrid& truth, const tools::FamilyMasks& m, const std::vector<bool>& rows) {
-    return {psnr(out, truth, m.moving), psnr(out, truth, {}), psnr(out, truth, m.leading), psnr(out, truth, m.trailing),
-            rows.empty() ? NAN : psnr(out, truth, rows)};
+    return {familyPsnr(out, truth, m.moving), familyPsnr(out, truth, {}), familyPsnr(out, truth, m.leading), familyPsnr(out, truth, m.trailing),
+            rows.empty() ? NAN : familyPsnr(out, truth, rows)};
 }
 
 std::string fmt(double v) {
@@ -159,7 +148,7 @@ int main(int argc, char** argv) {
             const tools::FamilyCase fc = tools::makeFamilyCase(family, speed, seed, width, height);
             const ColorGrid truth = fc.scene.truth(instants);
             // Residual noise of the truth: how far half the instants are from all of them.
-            const double residual = psnr(fc.scene.truth(instants / 2), truth, {});
+            const double residual = familyPsnr(fc.scene.truth(instants / 2), truth, {});
             const tools::FamilyMasks masks = tools::familyMasks(fc.scene, 64);
             const SceneFrame frame = fc.scene.render(0);
             const Scores in = score(frame.color, truth, masks, fc.rowsMask);
