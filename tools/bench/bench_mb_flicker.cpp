@@ -5,9 +5,9 @@
 // D_truth as a PSNR (peak 1, RGB), over the pixels where either frame shows an object and over
 // the frame; the same for the unblurred input. D_out - D_truth is the change of the per-frame
 // error, so a steady error scores high and one that jumps about scores low. The CPU reference runs
-// with both tile jitter patterns (2 = checkerboard, 4 = 4x4 randomised) on both tiers, to bound
-// what the jitter adds; the backends run each tier as it is. Not a test: docs/motion_blur.md
-// shows its CSV.
+// with both sample jitter patterns (2 = checkerboard, 4 = 4x4 randomised) on both tiers, at the
+// tier's radius and at a longer one where the jitter acts, to bound what the pattern adds; the
+// backends run each tier as it is. Not a test: docs/motion_blur.md shows its CSV.
 #include <CLI/CLI.hpp>
 
 #include <chrono>
