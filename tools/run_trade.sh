@@ -19,6 +19,9 @@
 #   6. bench_mb_families - motion blur per scene family, speed, tier and backend against its
 #                      truth (docs/mb_families.csv, the family tables of docs/motion_blur.md), and
 #                      each family's pictures (docs/images/mb_<family>_<speed>px.png).
+#   7. bench_mb_flicker - motion blur's frame-to-frame change against the truth's over frame
+#                      sequences of the same families, and both jitter patterns (docs/mb_flicker.csv,
+#                      "Stable under motion" in docs/motion_blur.md).
 # Truth images are traced once and cached by scene, view, size, radius, sample count and seed
 # under $SFX_TRUTH_CACHE (default build/truth-cache): a second run only renders the effects.
 # The fitted looks are data of the tier table: fit_ao prints them, and adopting them is an edit of
@@ -34,9 +37,9 @@ start=$(date +%s)
 step() { echo "== [$(( $(date +%s) - start )) s] $*"; }
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
 
-step "configure and build bench_trade, fit_ao, trade_presets, bench_families, bench_mb_families"
+step "configure and build bench_trade, fit_ao, trade_presets, bench_families, bench_mb_families, bench_mb_flicker"
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build "$BUILD_DIR" -j"$(nproc)" --target bench_trade fit_ao trade_presets bench_families bench_mb_families sfx_cli >/dev/null
+cmake --build "$BUILD_DIR" -j"$(nproc)" --target bench_trade fit_ao trade_presets bench_families bench_mb_families bench_mb_flicker sfx_cli >/dev/null
 step "fit_ao: the looks, fitted on the training families, scored on the held-out ones"
 "$BUILD_DIR"/tools/bench/fit_ao --start tier --refinements 3 --cache-dir "$CACHE" --out-dir docs --backend "${BACKENDS%%,*}"
 step "bench_trade: the defaults against the truth, every backend"
@@ -52,4 +55,6 @@ step "bench_families: the defaults and the peer against the truth, per scene fam
 "$BUILD_DIR"/tools/bench/bench_families --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS" --peer-dir "$PEER_DIR"
 step "bench_mb_families: motion blur on the held-out scene families"
 "$BUILD_DIR"/tools/bench/bench_mb_families --csv docs/mb_families.csv --backends "$BACKENDS" --images docs/images
-step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg, docs/mb_families.csv, docs/images/mb_*px.png, docs/ao_families.*"
+step "bench_mb_flicker: motion blur's flicker over frame sequences of the scene families"
+"$BUILD_DIR"/tools/bench/bench_mb_flicker --csv docs/mb_flicker.csv --backends "$BACKENDS"
+step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg, docs/mb_families.csv, docs/images/mb_*px.png, docs/mb_flicker.csv, docs/ao_families.*"

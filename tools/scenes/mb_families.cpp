@@ -15,8 +15,8 @@ struct Pose {
     double cx, cy, cosA, sinA, scale;
 };
 Pose poseAt(const FamilyObject& o, double t) {
-    const double a = o.spinRad * t;
-    return {o.centre[0] + o.velocityPx[0] * t, o.centre[1] + o.velocityPx[1] * t, std::cos(a), std::sin(a), std::exp(o.growth * t)};
+    const double a = o.angleRad + o.spinRad * t;
+    return {o.centre[0] + o.velocityPx[0] * t, o.centre[1] + o.velocityPx[1] * t, std::cos(a), std::sin(a), o.scale * std::exp(o.growth * t)};
 }
 
 bool moves(const FamilyObject& o) { return o.velocityPx[0] != 0 || o.velocityPx[1] != 0 || o.spinRad != 0 || o.growth != 0; }

@@ -15,7 +15,8 @@ namespace sfx::tools {
 
 // One object of a family picture. Its motion across the shutter interval (t in [-0.5, 0.5]):
 // the centre moves by velocityPx * t, the object turns by spinRad * t about its centre and is
-// scaled by exp(growth * t) about it (growth > 0: approaching the camera).
+// scaled by exp(growth * t) about it (growth > 0: approaching the camera). angleRad and scale are
+// the pose at t = 0 (0 and 1 as laid out; a later frame of a sequence starts turned and grown).
 struct FamilyObject {
     enum class Shape { Plane, Rect, Disc };
     enum class Texture { Flat, Checker, Stripes };
@@ -28,6 +29,7 @@ struct FamilyObject {
     std::array<double, 2> halfSize{0, 0};  // Rect: half extents; Disc: radius in [0]
     std::array<double, 2> velocityPx{0, 0};
     double spinRad = 0, growth = 0;
+    double angleRad = 0, scale = 1;
 };
 
 struct FamilyScene {
