@@ -40,6 +40,7 @@ void main() {
 
     vec4 sum = vec4(0.0);
     float total = 0.0;
+    float window = 0.0;
     [[unroll]] for (int i = 0; i < kPairs; ++i) {
         if (i >= pairs) break;
         vec2 v = mbPairUsesCentre(i, speedC, speedN) ? vC : vN;
@@ -53,13 +54,14 @@ void main() {
             float speedS = length(packedS.xy);
             float zS = packedS.z + packedS.w;
             float w = mbSampleWeight(zC, zS, speedC, speedS, dist, params.softExtent);
+            window += mbSpread(dist, speedV);
             vec4 colorS = sfxTexel(uColor, q, 0);
             if (!sfxColorIsFinite(colorS)) continue;  // a non-finite sample is left out (sfx_shared.h)
             sum += sfxColor(colorS) * w;
             total += w;
         }
     }
-    float wC = mbCentreShare(params.centreWeight, total, pairs);
+    float wC = mbCentreShare(params.centreWeight, total, window);
     sum += colorC * wC;
     total += wC;
     outColor = sum / total;

@@ -202,12 +202,18 @@ SFX_MB_FN SFX_MB_REAL mbSampleWeight(SFX_MB_REAL zC, SFX_MB_REAL zS, SFX_MB_REAL
     return background * mbSpread(dist, speedC) + (1.0 - background) * mbSpread(dist, speedS);
 }
 
-// The centre's weight: what the samples leave of the 2 * activePairs they stand for (never
-// negative: each weighs at most 1), times MotionBlurSettings.centreWeight (1 = exactly the
-// remainder; larger keeps more of the pixel's own colour). Output = (sum of w * colour +
-// this * centre colour) / (sum of w + this).
-SFX_MB_FN SFX_MB_REAL mbCentreShare(SFX_MB_REAL centreWeight, SFX_MB_REAL sampleWeights, int activePairs) {
-    return max(2.0 * SFX_MB_REAL(activePairs) - sampleWeights, 0.0) * centreWeight;
+// The centre's weight: what the samples leave of the blur window they stand for (never
+// negative), times MotionBlurSettings.centreWeight (1 = exactly the remainder; larger keeps
+// more of the pixel's own colour). Output = (sum of w * colour + this * centre colour) /
+// (sum of w + this). The window is what the samples would weigh in an area moving uniformly
+// with the velocities they follow (`windowWeights`: the sum of mbSpread at each sample's
+// distance and followed speed) plus one sample's worth for the centre (with samples a texel
+// apart its own texel; with samples skipping texels, its share of the gaps, as each sample's).
+// So a uniformly moving area gets the box filter over its blur length at any length: a window
+// of 2 * pairs, as the 2012 course normalises, is right only when |v| is a whole number of
+// texels, and gave the centre up to 1.6 (|v| = 2.7 px, 3 pairs) or 0.76 (3.12 px) of its share.
+SFX_MB_FN SFX_MB_REAL mbCentreShare(SFX_MB_REAL centreWeight, SFX_MB_REAL sampleWeights, SFX_MB_REAL windowWeights) {
+    return max(1.0 + windowWeights - sampleWeights, 0.0) * centreWeight;
 }
 
 // Tiles neighbour max looks out on each side: enough tiles of edge `tile` to cover `radius`

@@ -133,7 +133,8 @@ int main(int argc, char** argv) {
         });
         csv << p.taps << "," << p.radius << "," << p.training << "," << p.heldOut << "," << p.ms << "," << backend << "," << costWidth << ","
             << costHeight << "," << (dominated ? 0 : 1) << "\n";
-        if (!dominated) std::printf("  %2u taps, radius %4.1f: training %.2f, held-out %.2f dB, %.2f ms\n", p.taps, p.radius, p.training, p.heldOut, p.ms);
+        if (!dominated)
+            std::printf("  %2u taps, radius %4.1f: training %.2f, held-out %.2f dB, %.2f ms\n", p.taps, p.radius, p.training, p.heldOut, p.ms);
     }
     std::cout << "wrote " << csvPath << "\n";
     return 0;

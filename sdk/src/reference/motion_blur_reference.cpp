@@ -120,7 +120,7 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
             const double jitter = mbJitter(x, y, int(p.jitterSize));
             const int pairs = mbActivePairs(speedN, int(p.pairs));
             std::array<double, 4> sum{};
-            double total = 0;
+            double total = 0, window = 0;
             for (int i = 0; i < pairs; ++i) {
                 const std::array<double, 2> v = mbPairUsesCentre(i, speedC, speedN) ? vC : vN;
                 const double speedV = std::sqrt(length2(v));
@@ -134,6 +134,7 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
                     const double speedS = std::sqrt(length2(r.radiusPx.at(uint32_t(qx), uint32_t(qy))));
                     const double zS = depth.at(uint32_t(qx), uint32_t(qy));
                     const double wS = mbSampleWeight(zC, zS, speedC, speedS, dist, p.softDepthExtent);
+                    window += shared::mbSpread(dist, speedV);
                     const std::array<double, 4>& rawS = color.at(uint32_t(qx), uint32_t(qy));
                     if (!shared::sfxColorIsFinite(rawS)) continue;  // never spread (sfx_shared.h)
                     const std::array<double, 4> colorS = shared::sfxColor(rawS);
@@ -141,7 +142,7 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
                     total += wS;
                 }
             }
-            const double wC = mbCentreShare(p.centreWeight, total, pairs);
+            const double wC = mbCentreShare(p.centreWeight, total, window);
             for (int c = 0; c < 4; ++c) sum[c] += colorC[c] * wC;
             total += wC;
             std::array<double, 4>& out = r.color.at(uint32_t(x), uint32_t(y));
