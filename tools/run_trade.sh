@@ -21,11 +21,15 @@
 #                      each family's pictures (docs/images/mb_<family>_<speed>px.png).
 #   7. bench_mb_flicker - motion blur's frame-to-frame change against the truth's over frame
 #                      sequences of the same families, and both jitter patterns (docs/mb_flicker.csv,
-#                      "Stable under motion" in docs/motion_blur.md).
+#                      "Stable under motion" in docs/motion_blur.md);
+#   8. fit_mb        - motion blur's accuracy on the training and held-out families and its cost
+#                      per taps x maximum radius at 720 rows, the front its presets are chosen from
+#                      (docs/mb_fit.csv; about 4 minutes).
 # Truth images are traced once and cached by scene, view, size, radius, sample count and seed
 # under $SFX_TRUTH_CACHE (default build/truth-cache): a second run only renders the effects.
 # The fitted looks are data of the tier table: fit_ao prints them, and adopting them is an edit of
-# tiers/src/tier_table.cpp (with the preset accuracies trade_presets prints), then a rerun.
+# tiers/src/tier_table.cpp (with the preset accuracies trade_presets prints), then a rerun; so are
+# the motion blur presets fit_mb's front gives.
 # Usage: tools/run_trade.sh [--backends vulkan,gles]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -37,9 +41,9 @@ start=$(date +%s)
 step() { echo "== [$(( $(date +%s) - start )) s] $*"; }
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
 
-step "configure and build bench_trade, fit_ao, trade_presets, bench_families, bench_mb_families, bench_mb_flicker"
+step "configure and build bench_trade, fit_ao, trade_presets, bench_families, bench_mb_families, bench_mb_flicker, fit_mb"
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build "$BUILD_DIR" -j"$(nproc)" --target bench_trade fit_ao trade_presets bench_families bench_mb_families bench_mb_flicker sfx_cli >/dev/null
+cmake --build "$BUILD_DIR" -j"$(nproc)" --target bench_trade fit_ao trade_presets bench_families bench_mb_families bench_mb_flicker fit_mb sfx_cli >/dev/null
 step "fit_ao: the looks, fitted on the training families, scored on the held-out ones"
 "$BUILD_DIR"/tools/bench/fit_ao --start tier --refinements 3 --cache-dir "$CACHE" --out-dir docs --backend "${BACKENDS%%,*}"
 step "bench_trade: the defaults against the truth, every backend"
@@ -57,4 +61,6 @@ step "bench_mb_families: motion blur on the held-out scene families"
 "$BUILD_DIR"/tools/bench/bench_mb_families --csv docs/mb_families.csv --backends "$BACKENDS" --images docs/images
 step "bench_mb_flicker: motion blur's flicker over frame sequences of the scene families"
 "$BUILD_DIR"/tools/bench/bench_mb_flicker --csv docs/mb_flicker.csv --backends "$BACKENDS"
-step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg, docs/mb_families.csv, docs/images/mb_*px.png, docs/mb_flicker.csv, docs/ao_families.*"
+step "fit_mb: motion blur's front over taps x maximum radius at 720 rows"
+"$BUILD_DIR"/tools/bench/fit_mb --taps 3,5,7,9,11,13,15,17 --radii 8,10,12,14,18,24 --backend "${BACKENDS%%,*}" --csv docs/mb_fit.csv
+step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg, docs/mb_families.csv, docs/images/mb_*px.png, docs/mb_flicker.csv, docs/mb_fit.csv, docs/ao_families.*"

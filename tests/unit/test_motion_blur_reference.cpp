@@ -240,14 +240,14 @@ TEST_CASE("motion blur: settings out of range are named errors; tiers and scalin
     CHECK(cur->taps == 7);
     CHECK(cur->pairs == 3);
     CHECK(cur->jitterSize == 2);
-    CHECK(cur->radiusPx == 10);
-    CHECK(cur->tileSizePx == 10);  // the tile is the radius on the current tier: 3 x 3 tiles
+    CHECK(cur->radiusPx == 14);
+    CHECK(cur->tileSizePx == 10);  // the same tile on every tier: the radius reaches 2 tiles out
     Result<MotionBlurParams> high = resolveMotionBlur(tiers::profile(Tier::High), s, 1080);
     REQUIRE(high.isOk());
     CHECK(high->taps == 13);
     CHECK(high->jitterSize == 2);  // as the current tier: a blur both radii contain is reconstructed alike
     CHECK(high->radiusPx == 27);   // 18 px at 720 rows, scaled to 1080
-    CHECK(resolveMotionBlur(tiers::profile(Tier::Current), s, 180)->radiusPx == 3);  // 2.5 rounds to 3
+    CHECK(resolveMotionBlur(tiers::profile(Tier::Current), s, 180)->radiusPx == 4);  // 3.5 rounds to 4
     // The tile is the same pixels on every tier (10 at 720 rows), scaled as the radius is: the
     // high tier's radius reaches 2 tiles out.
     CHECK(high->tileSizePx == 15);

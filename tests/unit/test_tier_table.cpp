@@ -119,7 +119,7 @@ TEST_CASE("tier table: the default presets hold the parameters the tiers always 
                    .aoCreaseSpacingPx = 12.0f,
                    .aoPackedDepthTarget = true,
                    .mbTaps = 7,
-                   .mbMaxRadiusPx = 10.0f,
+                   .mbMaxRadiusPx = 14.0f,
                    .mbJitterSize = 2,
                    .abufferOit = false};
     expected[1] = {.tier = Tier::High,
