@@ -4,7 +4,8 @@
 //     the same device): AO on the G-buffer of one sample view, motion blur on the "pan" scene;
 //   - accuracy: AO's PSNR against the ray-traced truth on the held-out scene families (each view
 //     at its own radius, 320x180), motion blur's PSNR against its temporally supersampled truth
-//     over the moving region of the held-out motion families (320x240, 2-40 px); both computed
+//     over the moving region of the held-out motion families (960x720, the rows the tiers' radii
+//     are given at, 6-120 px, as fit_mb scores them); both computed
 //     on the first backend (the backends agree).
 // Writes <out-dir>/trade_presets.csv, one SVG Pareto plot per backend and effect under
 // <out-dir>/images/ and the tables into <out-dir>/trade.md between its markers. A program, not a test.
@@ -251,7 +252,7 @@ std::string markdown(const Options& o, const std::vector<Row>& rows, const std::
           "timed interleaved with copies, for motion blur copies timed right after it); AO PSNR "
           "over the held-out scene families at each view's radius (docs/ao_families.md, "
        << o.truth.width << "x" << o.truth.height << "), motion blur PSNR over the moving region against " << o.instants
-       << " supersampled instants, the mean over the held-out motion families at 2-40 px (docs/motion_blur.md, 320x240).\n\n";
+       << " supersampled instants, the mean over the held-out motion families at 6-120 px (docs/motion_blur.md, 960x720).\n\n";
     for (const std::string& backend : o.backends) {
         md << "![Pareto plot, AO, " << backend << "](images/pareto_ao_" << backend << ".svg)\n\n";
         md << "![Pareto plot, motion blur, " << backend << "](images/pareto_mb_" << backend << ".svg)\n\n";
@@ -328,7 +329,10 @@ int main(int argc, char** argv) {
     }
     if (!o.peerDir.empty()) progress(std::to_string(peers->size()) + " peer presets measured in " + o.peerDir);
     cases.heldOut = std::move(heldOut.value());
-    cases.motion = tools::scoredFamilyCases(true, tools::kScoredFamilySpeedsPx, o.instants, 1, 320, 240, progress);
+    // At 720 rows, where the tiers' radii are given: a preset's samples as far apart as in use.
+    std::vector<double> motionSpeeds;
+    for (double speed : tools::kScoredFamilySpeedsPx) motionSpeeds.push_back(speed * 3.0);
+    cases.motion = tools::scoredFamilyCases(true, motionSpeeds, o.instants, 1, 960, 720, progress);
     std::map<Tier, std::map<std::string, tools::AoScore>> aoScores;
     std::map<Tier, std::map<std::string, double>> mbScores;
     std::vector<Row> rows;
