@@ -130,9 +130,16 @@ Result<ShadedFrame> readFrame(Device& device, const tools::GBuffer& g) {
 }
 
 // The average of the shaded colour at `instants` times spread evenly over [-0.5, 0.5].
-Result<ColorGrid> sceneGroundTruth(Device& device, tools::SceneRenderer& renderer, const tools::RasterScene& scene, uint32_t w, uint32_t h,
-                                   uint32_t instants) {
-    ColorGrid sum(w, h);
+// The truth and its residual noise: the RMSE between the average of the even-numbered instants
+// (half as many, as evenly spread) and the average of all of them.
+struct SceneTruth {
+    ColorGrid color;
+    double residualRmse = 0;
+};
+Result<SceneTruth> sceneGroundTruth(Device& device, tools::SceneRenderer& renderer, const tools::RasterScene& scene, uint32_t w, uint32_t h,
+                                    uint32_t instants) {
+    ColorGrid sum(w, h), even(w, h);
+    const uint32_t evenCount = (instants + 1) / 2;
     for (uint32_t i = 0; i < instants; ++i) {
         const double t = (i + 0.5) / instants - 0.5;
         Result<tools::GBuffer> g = renderer.render(scene, w, h, t);
@@ -142,9 +149,13 @@ Result<ColorGrid> sceneGroundTruth(Device& device, tools::SceneRenderer& rendere
         if (!contents) return contents.status();
         const ColorGrid c = shadeGBuffer(contents.value());
         for (size_t p = 0; p < sum.values.size(); ++p)
-            for (size_t ch = 0; ch < 4; ++ch) sum.values[p][ch] += c.values[p][ch] / instants;
+            for (size_t ch = 0; ch < 4; ++ch) {
+                sum.values[p][ch] += c.values[p][ch] / instants;
+                if (i % 2 == 0) even.values[p][ch] += c.values[p][ch] / evenCount;
+            }
     }
-    return sum;
+    const tools::ColorErrors residual = tools::colorErrors(even, sum, std::vector<bool>(sum.values.size(), false));
+    return SceneTruth{std::move(sum), residual.rmse};
 }
 
 // Pixels within `radius` of an edge between surfaces in relative motion: 4-neighbours that
@@ -198,7 +209,7 @@ Result<tools::MotionBlurRun> runOnGBuffer(Device& device, Tier tier, const tools
 // What every case of the run shares.
 struct BenchOptions {
     uint32_t width = 320, height = 180, runs = 7;
-    uint32_t sceneInstants = 32;  // ground-truth instants for the 3D scenes
+    uint32_t sceneInstants = 64;  // ground-truth instants for the 3D scenes
     std::string imagesDir;        // none written when empty
 };
 
@@ -225,21 +236,24 @@ Status runSceneCases(Device& device, const std::string& backend, Tier tier, cons
         std::cout << "[" << sceneName << " 3D] " << backend << "/" << toString(tier) << ": ground truth from " << o.sceneInstants
                   << " rendered instants...\n"
                   << std::flush;
-        Result<ColorGrid> truth = sceneGroundTruth(device, *renderer.value(), scene.value(), o.width, o.height, o.sceneInstants);
-        if (!truth) return truth.status();
+        Result<SceneTruth> sceneTruth = sceneGroundTruth(device, *renderer.value(), scene.value(), o.width, o.height, o.sceneInstants);
+        if (!sceneTruth) return sceneTruth.status();
+        const ColorGrid& truth = sceneTruth->color;
+        std::cout << "  truth's residual noise: rmse " << sceneTruth->residualRmse << " between " << (o.sceneInstants + 1) / 2 << " and "
+                  << o.sceneInstants << " instants\n";
         Result<tools::GBuffer> g = renderer.value()->render(scene.value(), o.width, o.height, 0.0);
         if (!g) return g.status();
         auto measure = [&]() -> Status {
             Result<ShadedFrame> frame = readFrame(device, g.value());
             if (!frame) return frame.status();
             const std::vector<bool> mask = sceneSilhouetteMask(frame.value(), 4 + o.height / 60);
-            const tools::ColorErrors input = tools::colorErrors(frame->color, truth.value(), mask);
+            const tools::ColorErrors input = tools::colorErrors(frame->color, truth, mask);
             double maxSpeed = 0;
             for (const auto& v : frame->velocity.values) maxSpeed = std::max(maxSpeed, std::hypot(v[0], v[1]));
             std::cout << "  input (no blur): rmse " << input.rmse << ", near moving silhouettes " << input.rmseSilhouette << "; largest velocity "
                       << maxSpeed << " px across the shutter\n";
             writeOnce(sceneName + "_input", frame->color);
-            writeOnce(sceneName + "_groundtruth", truth.value());
+            writeOnce(sceneName + "_groundtruth", truth);
             for (const MovingSceneCase& c : movingSceneCases()) {
                 if (c.scene != sceneName) continue;
                 // CameraMotion wants the frame's own view-projection as current (each pixel's
@@ -269,7 +283,7 @@ Status runSceneCases(Device& device, const std::string& backend, Tier tier, cons
                     continue;
                 }
                 const ColorGrid ref = motionBlur(frame->color, frame->linearDepth, v, p).color;
-                const tools::ColorErrors e = tools::colorErrors(run->output, truth.value(), mask);
+                const tools::ColorErrors e = tools::colorErrors(run->output, truth, mask);
                 const tools::ColorErrors vsRef = tools::colorErrors(run->output, ref, std::vector<bool>(mask.size(), false));
                 const char* velocity = c.cameraOnly ? "camera" : "buffer";
                 std::printf("  %-15s %-10s %-7s %u taps r=%u px: %8.3f ms (%s), rmse %.4f, silhouettes %.4f, vs reference %.5f\n", c.name.c_str(),
@@ -328,7 +342,7 @@ Status writeInputs(const std::string& dir, uint32_t w, uint32_t h) {
 
 int main(int argc, char** argv) {
     CLI::App app{"bench_motionblur: cost and error of motion blur per backend x tier against temporal supersampling"};
-    uint32_t width = 320, height = 180, runs = 15, instants = 64, sceneInstants = 32;
+    uint32_t width = 320, height = 180, runs = 15, instants = 64, sceneInstants = 64;
     bool large = false, no3d = false;
     std::string csvPath = "bench_motionblur.csv", imagesDir, writeDir, backendsFlag = "all";
     app.add_option("--width", width, "picture width")->capture_default_str();
