@@ -15,9 +15,10 @@
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <sstream>
 
+#include "bench_args.hpp"
 #include "bench_device.hpp"
+#include "markdown_section.hpp"
 #include "mb_family_scoring.hpp"
 #include "motion_cases.hpp"
 #include "sfx/backends.hpp"
@@ -40,21 +41,6 @@ struct Scores {
 Scores score(const ColorGrid& out, const ColorGrid& truth, const tools::FamilyMasks& m, const std::vector<bool>& rows) {
     return {familyPsnr(out, truth, m.moving), familyPsnr(out, truth, {}), familyPsnr(out, truth, m.leading), familyPsnr(out, truth, m.trailing),
             rows.empty() ? NAN : familyPsnr(out, truth, rows)};
-}
-
-std::string fmt(double v) {
-    if (std::isnan(v)) return "-";
-    char b[32];
-    std::snprintf(b, sizeof b, "%.2f", v);
-    return b;
-}
-
-std::vector<double> parseList(const std::string& s) {
-    std::vector<double> out;
-    std::stringstream ss(s);
-    std::string item;
-    while (std::getline(ss, item, ',')) out.push_back(std::stod(item));
-    return out;
 }
 
 // The picture of one family at one speed (--images), panels 4 px apart on mid grey. Top row:
@@ -116,7 +102,7 @@ int main(int argc, char** argv) {
     std::vector<Runner> runners;
     for (Tier tier : {Tier::Current, Tier::High})
         for (const BackendConfig& config : compiledBackends()) {
-            if (config.backend == BackendKind::Null || ("," + backendsFlag + ",").find("," + toString(config) + ",") == std::string::npos) continue;
+            if (config.backend == BackendKind::Null || !tools::inList(backendsFlag, toString(config))) continue;
             Result<std::unique_ptr<Device>> d = tools::openForTier(config, tier);
             if (!d) {
                 std::cout << toString(config) << "/" << toString(tier) << ": skipped (" << d.status().toString() << ")\n";
@@ -134,7 +120,7 @@ int main(int argc, char** argv) {
     // Per family x tier (CPU reference): the sum of gains, for the summary.
     std::map<std::string, std::array<double, 2>> gainSum;
     std::map<std::string, int> gainCount;
-    const std::vector<double> speeds = parseList(speedsFlag), imageSpeeds = parseList(imageSpeedsFlag);
+    const std::vector<double> speeds = tools::splitNumberList(speedsFlag), imageSpeeds = tools::splitNumberList(imageSpeedsFlag);
     if (!imagesDir.empty()) {
         std::error_code ec;
         std::filesystem::create_directories(imagesDir, ec);
@@ -143,7 +129,7 @@ int main(int argc, char** argv) {
                 std::cerr << "bench_mb_families: image speed " << s << " is not in --speeds\n";
     }
     for (const std::string& family : tools::familyNames()) {
-        if (familiesFlag != "all" && ("," + familiesFlag + ",").find("," + family + ",") == std::string::npos) continue;
+        if (familiesFlag != "all" && !tools::inList(familiesFlag, family)) continue;
         for (double speed : speeds) {
             const tools::FamilyCase fc = tools::makeFamilyCase(family, speed, seed, width, height);
             const ColorGrid truth = fc.scene.truth(instants);
@@ -153,17 +139,20 @@ int main(int argc, char** argv) {
             const SceneFrame frame = fc.scene.render(0);
             const Scores in = score(frame.color, truth, masks, fc.rowsMask);
             std::printf("[%s%s %.1f px] input: moving %s dB, frame %s, leading %s, trailing %s, rows %s; truth(%u/2) vs truth(%u) %s dB\n",
-                        family.c_str(), fc.heldOut ? " held-out" : " training", speed, fmt(in.moving).c_str(), fmt(in.frame).c_str(),
-                        fmt(in.leading).c_str(), fmt(in.trailing).c_str(), fmt(in.rows).c_str(), instants, instants, fmt(residual).c_str());
+                        family.c_str(), fc.heldOut ? " held-out" : " training", speed, tools::fixedOrDash(in.moving).c_str(),
+                        tools::fixedOrDash(in.frame).c_str(), tools::fixedOrDash(in.leading).c_str(), tools::fixedOrDash(in.trailing).c_str(),
+                        tools::fixedOrDash(in.rows).c_str(), instants, instants, tools::fixedOrDash(residual).c_str());
             auto emit = [&](Tier tier, const std::string& source, const MotionBlurParams& p, const ColorGrid& out) {
                 const Scores s = score(out, truth, masks, fc.rowsMask);
                 std::printf("  %-8s %-10s %2u taps r=%2u: moving %s (%+.2f), frame %s, leading %s, trailing %s, rows %s\n", toString(tier),
-                            source.c_str(), p.taps, p.radiusPx, fmt(s.moving).c_str(), s.moving - in.moving, fmt(s.frame).c_str(),
-                            fmt(s.leading).c_str(), fmt(s.trailing).c_str(), fmt(s.rows).c_str());
+                            source.c_str(), p.taps, p.radiusPx, tools::fixedOrDash(s.moving).c_str(), s.moving - in.moving,
+                            tools::fixedOrDash(s.frame).c_str(), tools::fixedOrDash(s.leading).c_str(), tools::fixedOrDash(s.trailing).c_str(),
+                            tools::fixedOrDash(s.rows).c_str());
                 csv << family << "," << (fc.heldOut ? "held-out" : "training") << "," << speed << "," << toString(tier) << "," << source << ","
-                    << p.taps << "," << p.radiusPx << "," << fmt(s.moving) << "," << fmt(s.frame) << "," << fmt(in.moving) << ","
-                    << fmt(s.moving - in.moving) << "," << fmt(s.leading) << "," << fmt(s.trailing) << "," << fmt(s.rows) << "," << fmt(in.leading)
-                    << "," << fmt(in.trailing) << "," << fmt(in.rows) << "," << fmt(residual) << "\n";
+                    << p.taps << "," << p.radiusPx << "," << tools::fixedOrDash(s.moving) << "," << tools::fixedOrDash(s.frame) << ","
+                    << tools::fixedOrDash(in.moving) << "," << tools::fixedOrDash(s.moving - in.moving) << "," << tools::fixedOrDash(s.leading) << ","
+                    << tools::fixedOrDash(s.trailing) << "," << tools::fixedOrDash(s.rows) << "," << tools::fixedOrDash(in.leading) << ","
+                    << tools::fixedOrDash(in.trailing) << "," << tools::fixedOrDash(in.rows) << "," << tools::fixedOrDash(residual) << "\n";
                 return s;
             };
             ColorGrid referenceOut[2];  // the CPU reference's output, current and high tier

@@ -15,10 +15,11 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 
+#include "bench_args.hpp"
 #include "bench_device.hpp"
-#include "mb_families.hpp"
+#include "markdown_section.hpp"
+#include "mb_family_scoring.hpp"
 #include "mb_sequence.hpp"
 #include "motion_cases.hpp"
 #include "sfx/backends.hpp"
@@ -54,16 +55,6 @@ SquareSum changeError(const ColorGrid& a0, const ColorGrid& a1, const ColorGrid*
     return s;
 }
 
-SquareSum frameError(const ColorGrid& a, const ColorGrid& truth, const std::vector<bool>& mask) {
-    SquareSum s;
-    for (size_t i = 0; i < a.values.size(); ++i) {
-        if (!mask.empty() && !mask[i]) continue;
-        for (int c = 0; c < 3; ++c) s.sum += std::pow(a.values[i][c] - truth.values[i][c], 2);
-        s.n += 3;
-    }
-    return s;
-}
-
 // Mean and minimum of the finite values (a pair or frame with no object pixels gives NaN).
 struct Summary {
     double mean = NAN, worst = NAN;
@@ -76,25 +67,6 @@ Summary summarise(const std::vector<double>& v) {
     return n == 0 ? Summary{} : Summary{sum / double(n), worst};
 }
 double mean(const std::vector<double>& v) { return summarise(v).mean; }
-
-std::string fmt(double v, int digits = 2) {
-    if (std::isnan(v)) return "-";
-    char b[32];
-    std::snprintf(b, sizeof b, "%.*f", digits, v);
-    return b;
-}
-
-std::vector<double> parseList(const std::string& s) {
-    std::vector<double> out;
-    std::stringstream ss(s);
-    std::string item;
-    while (std::getline(ss, item, ',')) out.push_back(std::stod(item));
-    return out;
-}
-
-bool listed(const std::string& list, const std::string& name) {
-    return list == "all" || ("," + list + ",").find("," + name + ",") != std::string::npos;
-}
 
 // One open device per backend x tier with the effect and its inputs, kept for the whole run:
 // creating them per frame (tools::runMotionBlur) costs more than running the effect.
@@ -234,7 +206,7 @@ int main(int argc, char** argv) {
     std::vector<std::unique_ptr<Runner>> runners;
     for (Tier tier : {Tier::Current, Tier::High})
         for (const BackendConfig& config : compiledBackends()) {
-            if (config.backend == BackendKind::Null || !listed(backendsFlag, toString(config))) continue;
+            if (config.backend == BackendKind::Null || (backendsFlag != "all" && !tools::inList(backendsFlag, toString(config)))) continue;
             Result<std::unique_ptr<Device>> d = tools::openForTier(config, tier);
             if (!d) {
                 std::cout << toString(config) << "/" << toString(tier) << ": skipped (" << d.status().toString() << ")\n";
@@ -256,9 +228,9 @@ int main(int argc, char** argv) {
     csv << "family,split,speed_px,tier,source,radius_px,jitter,tier_jitter,frames,period,pan_px,temporal_psnr_mean,temporal_psnr_worst,"
            "temporal_psnr_frame_mean,input_temporal_psnr_mean,temporal_gain_db,rms_dtruth,rms_dout,rms_dinput,psnr_mean,psnr_worst,"
            "input_psnr_mean,truth_floor_psnr\n";
-    const std::vector<double> speeds = parseList(speedsFlag);
+    const std::vector<double> speeds = tools::splitNumberList(speedsFlag);
     for (const std::string& family : tools::familyNames()) {
-        if (!listed(familiesFlag, family)) continue;
+        if (familiesFlag != "all" && !tools::inList(familiesFlag, family)) continue;
         for (double speed : speeds) {
             const tools::FamilyCase fc = tools::makeFamilyCase(family, speed, seed, width, height);
             std::vector<Track> tracks = makeTracks(runners, height, jitterRows);
@@ -292,7 +264,7 @@ int main(int argc, char** argv) {
                         }
                         out = std::move(run.value());
                     }
-                    t.psnr.push_back(frameError(out, sf.truth, sf.objects).psnr());
+                    t.psnr.push_back(tools::familyPsnr(out, sf.truth, sf.objects));
                     if (f > 0) {
                         t.temporal.push_back(changeError(t.prev, out, &prevTruth, &sf.truth, pairMask).psnr());
                         t.temporalFrame.push_back(changeError(t.prev, out, &prevTruth, &sf.truth, {}).psnr());
@@ -306,24 +278,26 @@ int main(int argc, char** argv) {
             const Track& in = tracks[0];
             const Summary inTemporal = summarise(in.temporal);
             std::printf("[%s%s %g px, %u frames] input: temporal %s dB (worst %s), per frame %s dB; |D_truth| %s; truth floor %s dB; %.1f s\n",
-                        family.c_str(), fc.heldOut ? " held-out" : " training", speed, frames, fmt(inTemporal.mean).c_str(),
-                        fmt(inTemporal.worst).c_str(), fmt(mean(in.psnr)).c_str(), fmt(mean(rmsTruth), 4).c_str(), fmt(mean(floorPsnr)).c_str(),
-                        elapsed());
+                        family.c_str(), fc.heldOut ? " held-out" : " training", speed, frames, tools::fixedOrDash(inTemporal.mean).c_str(),
+                        tools::fixedOrDash(inTemporal.worst).c_str(), tools::fixedOrDash(mean(in.psnr)).c_str(),
+                        tools::fixedOrDash(mean(rmsTruth), 4).c_str(), tools::fixedOrDash(mean(floorPsnr)).c_str(), elapsed());
             for (const Track& t : tracks) {
                 if (t.failed) continue;
                 const Summary temporal = summarise(t.temporal), perFrame = summarise(t.psnr);
                 if (&t != &in)
                     std::printf("  %-8s %-10s r=%2u jitter %u%s: temporal %s dB (worst %s, %+.2f over the input), frame %s; per frame %s dB\n",
-                                t.tier.c_str(), t.source.c_str(), t.params.radiusPx, t.jitter, t.tierJitter ? " " : "*", fmt(temporal.mean).c_str(),
-                                fmt(temporal.worst).c_str(), temporal.mean - inTemporal.mean, fmt(mean(t.temporalFrame)).c_str(),
-                                fmt(perFrame.mean).c_str());
+                                t.tier.c_str(), t.source.c_str(), t.params.radiusPx, t.jitter, t.tierJitter ? " " : "*",
+                                tools::fixedOrDash(temporal.mean).c_str(), tools::fixedOrDash(temporal.worst).c_str(),
+                                temporal.mean - inTemporal.mean, tools::fixedOrDash(mean(t.temporalFrame)).c_str(),
+                                tools::fixedOrDash(perFrame.mean).c_str());
                 csv << family << "," << (fc.heldOut ? "held-out" : "training") << "," << speed << "," << t.tier << "," << t.source << ","
                     << (t.jitter ? std::to_string(t.params.radiusPx) : "-") << "," << (t.jitter ? std::to_string(t.jitter) : "-") << ","
-                    << (t.tierJitter ? 1 : 0) << "," << frames << "," << period << "," << pan << "," << fmt(temporal.mean) << ","
-                    << fmt(temporal.worst) << "," << fmt(mean(t.temporalFrame)) << "," << fmt(inTemporal.mean) << ","
-                    << fmt(temporal.mean - inTemporal.mean) << "," << fmt(mean(rmsTruth), 5) << "," << fmt(mean(t.rmsOut), 5) << ","
-                    << fmt(mean(in.rmsOut), 5) << "," << fmt(perFrame.mean) << "," << fmt(perFrame.worst) << "," << fmt(mean(in.psnr)) << ","
-                    << fmt(mean(floorPsnr)) << "\n";
+                    << (t.tierJitter ? 1 : 0) << "," << frames << "," << period << "," << pan << "," << tools::fixedOrDash(temporal.mean) << ","
+                    << tools::fixedOrDash(temporal.worst) << "," << tools::fixedOrDash(mean(t.temporalFrame)) << ","
+                    << tools::fixedOrDash(inTemporal.mean) << "," << tools::fixedOrDash(temporal.mean - inTemporal.mean) << ","
+                    << tools::fixedOrDash(mean(rmsTruth), 5) << "," << tools::fixedOrDash(mean(t.rmsOut), 5) << ","
+                    << tools::fixedOrDash(mean(in.rmsOut), 5) << "," << tools::fixedOrDash(perFrame.mean) << "," << tools::fixedOrDash(perFrame.worst)
+                    << "," << tools::fixedOrDash(mean(in.psnr)) << "," << tools::fixedOrDash(mean(floorPsnr)) << "\n";
             }
             std::fflush(stdout);
         }

@@ -1,5 +1,4 @@
-// What the hand-parsed benchmarks (bench_ao, bench_oit) share: comma lists on the command line
-// and the median of their timed runs.
+// What the benchmarks share: comma lists on the command line and the median of their timed runs.
 #pragma once
 
 #include <algorithm>
@@ -17,6 +16,16 @@ inline std::vector<std::string> splitList(const std::string& text) {
         if (!item.empty()) out.push_back(item);
     return out;
 }
+
+// "0.5,2,,6" -> {0.5, 2, 6}: numbers, empty items dropped.
+inline std::vector<double> splitNumberList(const std::string& text) {
+    std::vector<double> out;
+    for (const std::string& item : splitList(text)) out.push_back(std::stod(item));
+    return out;
+}
+
+// Whether `name` is one of the comma list's items.
+inline bool inList(const std::string& list, const std::string& name) { return ("," + list + ",").find("," + name + ",") != std::string::npos; }
 
 // The upper median (the middle element after sorting; 0 for none).
 inline double median(std::vector<double> v) {

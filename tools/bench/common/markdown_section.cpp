@@ -28,4 +28,6 @@ std::string fixed(double v, int digits) {
     return buf;
 }
 
+std::string fixedOrDash(double v, int digits) { return std::isnan(v) ? "-" : fixed(v, digits); }
+
 }  // namespace sfx::tools

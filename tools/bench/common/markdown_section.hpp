@@ -14,5 +14,7 @@ Status replaceMarkdownSection(const std::string& path, const std::string& name, 
 
 // A table cell: v with `digits` decimals, "inf" for an infinity (an exact PSNR).
 std::string fixed(double v, int digits);
+// The same with "-" for NaN (a mask with no pixel, a case not run).
+std::string fixedOrDash(double v, int digits = 2);
 
 }  // namespace sfx::tools
