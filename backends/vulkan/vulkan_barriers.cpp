@@ -143,7 +143,7 @@ void VulkanDevice::barriers(VkCommandBuffer cb, std::span<const ImageUse> images
     }
 
     // Commands going into an open recording note the states its resources start from.
-    const bool intoRecording = mode_ == CallMode::Recording && cb == open_.commandBuffer;
+    const bool intoRecording = recordingOpen() && cb == open_.commandBuffer;
     for (const MipBarrierUse& e : mips) {
         if (intoRecording) noteRecordedUse(e.texture, e.mip, nullptr, e.use.layout, e.use.stages, e.use.access, e.use.write);
         const Hazard h = track(e.texture->mips[e.mip], true, e.use.layout, e.use.stages, e.use.access, e.use.write);

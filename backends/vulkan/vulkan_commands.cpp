@@ -24,7 +24,7 @@ Result<VkCommandBuffer> VulkanDevice::allocateCommandBuffer(VkCommandBufferLevel
 }
 
 Result<VkCommandBuffer> VulkanDevice::recording() {
-    if (mode_ == CallMode::Recording) return open_.commandBuffer;
+    if (recordingOpen()) return open_.commandBuffer;
     return primaryRecording();
 }
 
@@ -60,7 +60,6 @@ Status VulkanDevice::submitAndWait() {
 }
 
 Status VulkanDevice::doFlush() {
-    SFX_TRY(notWhileRecording("flush"));
     if (hostCommandBuffer_) {
         // The host ends and submits its command buffer; what it used (garbage, staging blocks)
         // lives until it is done, which the next setCommandBuffer may assume.

@@ -30,7 +30,6 @@ Status VulkanDevice::doWriteTexture(TextureHandle h, uint32_t mip, const void* d
 
 Status VulkanDevice::doReadTexture(TextureHandle h, uint32_t mip, void* out, size_t bytes) {
     SFX_TRY(noHostCommandBuffer("readTexture"));
-    SFX_TRY(notWhileRecording("readTexture"));
     return downloadTexture(textures_.get(h), mip, out, bytes);
 }
 
@@ -64,7 +63,6 @@ Status VulkanDevice::doWriteBuffer(BufferHandle h, uint64_t offset, const void* 
 
 Status VulkanDevice::doReadBuffer(BufferHandle h, uint64_t offset, void* out, size_t bytes) {
     SFX_TRY(noHostCommandBuffer("readBuffer"));
-    SFX_TRY(notWhileRecording("readBuffer"));
     return readBackBuffer(buffers_.get(h), offset, out, bytes);
 }
 
@@ -119,7 +117,9 @@ Status VulkanDevice::doRenderPass(const RenderPassDesc& pass, std::span<const Dr
         if (!d.indexBuffer.isNull())
             targets.uses.buffers.push_back({&buffers_.get(d.indexBuffer), VK_PIPELINE_STAGE_VERTEX_INPUT_BIT, VK_ACCESS_INDEX_READ_BIT, false});
     }
-    return recordRenderPass(pass, draws, targets, resolved);
+    SFX_TRY(recordRenderPass(pass, draws, targets, resolved));
+    noteRecordedCall(&pass, draws, nullptr);  // only a call that was recorded can match a replay
+    return Status::ok();
 }
 
 Status VulkanDevice::doDispatch(const DispatchDesc& d) {
@@ -130,7 +130,9 @@ Status VulkanDevice::doDispatch(const DispatchDesc& d) {
     if (scratch_.resolved.empty()) scratch_.resolved.resize(1);
     ResolvedBindings& resolved = scratch_.resolved[0];
     SFX_TRY(resolveBindings(d.bindings, pl, uses, resolved));
-    return recordDispatch(d, pl, uses, resolved);
+    SFX_TRY(recordDispatch(d, pl, uses, resolved));
+    noteRecordedCall(nullptr, {}, &d);
+    return Status::ok();
 }
 
 }  // namespace sfx::vulkan

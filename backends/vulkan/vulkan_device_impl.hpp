@@ -72,13 +72,6 @@ public:
     const DeviceCaps& caps() const override { return caps_; }
     DeviceStats stats() const override;  // vulkan_memory.cpp
 
-    // vulkan_recordings.cpp
-    Status beginRecording() override;
-    Result<RecordingHandle> endRecording() override;
-    Status beginReplay(RecordingHandle recording) override;
-    Status endReplay() override;
-    Status destroyRecording(RecordingHandle recording) override;
-
     std::vector<std::string> takeValidationMessages() override {
         std::lock_guard<std::mutex> lock(messagesMutex_);
         std::vector<std::string> out;
@@ -122,11 +115,13 @@ private:
     Status doEndTimer(TimerHandle timer) override;
     Result<TimerReading> doReadTimer(TimerHandle timer) override;
 
-    // Replaying: the call was checked when it was recorded (the same arguments on the same
-    // objects pass again, and endReplay refuses the recording if objects changed since).
-    bool doReplayCall(const RenderPassDesc* pass, std::span<const DrawDesc> draws, const DispatchDesc* dispatch) override {
-        return noteCall(pass, draws, dispatch);
-    }
+    // vulkan_recordings.cpp
+    Status doBeginRecording() override;
+    Result<RecordingHandle> doEndRecording() override;
+    Status doBeginReplay(RecordingHandle recording) override;
+    Status doEndReplay(RecordingHandle recording) override;
+    Status doDestroyRecording(RecordingHandle recording) override;
+    Status doReplayCall(const RenderPassDesc* pass, std::span<const DrawDesc> draws, const DispatchDesc* dispatch) override;
     Status doRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) override;
     Status doDispatch(const DispatchDesc& dispatch) override;
     Status doFlush() override;
@@ -208,10 +203,8 @@ private:
     Status recordDispatch(const DispatchDesc& d, const VulkanPipeline& pl, const Uses& uses, ResolvedBindings& resolved);
 
     // vulkan_recordings.cpp: what the calls between beginRecording/beginReplay and their end do.
-    enum class CallMode { Direct, Recording, Replaying };
-    // A renderPass's or dispatch's arguments: kept with the open recording, or compared with the
-    // replayed one's. True: replaying, the call records nothing.
-    bool noteCall(const RenderPassDesc* pass, std::span<const DrawDesc> draws, const DispatchDesc* dispatch);
+    // Recording: a checked renderPass's or dispatch's arguments, kept with the open recording.
+    void noteRecordedCall(const RenderPassDesc* pass, std::span<const DrawDesc> draws, const DispatchDesc* dispatch);
     // A timer inside a recording makes it single-use; inside a replay, a mismatch. True: skip it.
     bool noteTimer();
     // Recording: notes a use of a resource (the barriers of the recording's command buffer).
@@ -222,8 +215,8 @@ private:
     // recording has used the resource already (the copy must follow that use: it goes into the
     // recording, which is then not reusable).
     Result<VkCommandBuffer> writeRecording(const AccessState& s);
-    bool usedByOpenRecording(const AccessState& s) const { return mode_ == CallMode::Recording && s.recordingSerial == recordingSerial_; }
-    Status notWhileRecording(const char* call) const;
+    bool usedByOpenRecording(const AccessState& s) const { return recordingOpen() && s.recordingSerial == recordingSerial_; }
+    bool recordingOpen() const { return recordingState() == RecordingState::Recording; }
     // A texture or buffer made or imported, one destroyed (or a sampler or pipeline), the
     // descriptor-set cache dropped: recordings made before are stale.
     void changeObjects() { ++objectEpoch_; }
@@ -252,8 +245,8 @@ private:
     HandlePool<PipelineTag, VulkanPipeline> pipelines_;
     HandlePool<TimerTag, VulkanTimer> timers_;
     HandlePool<RecordingTag, VulkanRecording> recordings_;
-    const decltype(validation::poolLookup(textures_, buffers_, samplers_, programs_, pipelines_, timers_)) lookup_ = validation::poolLookup(
-        textures_, buffers_, samplers_, programs_, pipelines_, timers_);
+    const decltype(validation::poolLookup(textures_, buffers_, samplers_, programs_, pipelines_, timers_, recordings_)) lookup_ =
+        validation::poolLookup(textures_, buffers_, samplers_, programs_, pipelines_, timers_, recordings_);
     std::vector<TextureHandle> externals_;  // imported images, handed back at every flush
 
 public:  // set up by the factory functions
@@ -298,11 +291,9 @@ private:
     Garbage hostPending_;  // used by a host command buffer: released at the next setCommandBuffer
     std::chrono::steady_clock::time_point recordStart_{};
 
-    // Reusable recordings (vulkan_recordings.cpp).
-    CallMode mode_ = CallMode::Direct;
-    VulkanRecording open_;       // Recording: being recorded
-    RecordingHandle replaying_;  // Replaying: the recording compared with
-    size_t replayCursor_ = 0;    // Replaying: how much of its calls the calls so far matched
+    // Reusable recordings (vulkan_recordings.cpp); which is open is the front end's state.
+    VulkanRecording open_;     // Recording: being recorded
+    size_t replayCursor_ = 0;  // Replaying: how much of its calls the calls so far matched
     bool replayMatches_ = true;
     uint64_t recordingSerial_ = 0;       // of the open recording (marks AccessState::recordingSerial)
     uint64_t objectEpoch_ = 1;           // bumped by changeObjects()

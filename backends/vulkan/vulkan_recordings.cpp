@@ -101,18 +101,9 @@ bool sameState(const AccessState& a, const AccessState& b) {
     return true;
 }
 
-Status VulkanDevice::notWhileRecording(const char* call) const {
-    if (mode_ == CallMode::Direct) return Status::ok();
-    return {StatusCode::InvalidArgument,
-            std::string(call) + ": a " + (mode_ == CallMode::Recording ? "recording" : "replay") + " is open; allowed after " +
-                (mode_ == CallMode::Recording ? "endRecording" : "endReplay")};
-}
-
-// With DeviceOptions::reuseRecordings off (caps().reusableRecordings false) each call answers as
-// on a device without recordings (the HAL's default: UnsupportedFeature).
-Status VulkanDevice::beginRecording() {
-    if (!caps_.reusableRecordings) return Device::beginRecording();
-    SFX_TRY(notWhileRecording("beginRecording"));
+// The front end (hal_device.cpp) has checked that the device keeps recordings, what is open and
+// the handle; these do the Vulkan work.
+Status VulkanDevice::doBeginRecording() {
     VkCommandBuffer cb = VK_NULL_HANDLE;
     if (!freeSecondaries_.empty()) {
         cb = freeSecondaries_.back();
@@ -137,14 +128,10 @@ Status VulkanDevice::beginRecording() {
     open_.commandBuffer = cb;
     open_.epoch = objectEpoch_;
     ++recordingSerial_;
-    mode_ = CallMode::Recording;
     return Status::ok();
 }
 
-Result<RecordingHandle> VulkanDevice::endRecording() {
-    if (!caps_.reusableRecordings) return Device::endRecording();
-    if (mode_ != CallMode::Recording) return Status{StatusCode::InvalidArgument, "endRecording: no recording is open; allowed after beginRecording"};
-    mode_ = CallMode::Direct;
+Result<RecordingHandle> VulkanDevice::doEndRecording() {
     VulkanRecording rec = std::move(open_);
     open_ = VulkanRecording{};
     VkResult r = vk_.vkEndCommandBuffer(rec.commandBuffer);
@@ -165,22 +152,14 @@ Result<RecordingHandle> VulkanDevice::endRecording() {
     return recordings_.insert(std::move(rec));
 }
 
-Status VulkanDevice::beginReplay(RecordingHandle h) {
-    if (!caps_.reusableRecordings) return Device::beginReplay(h);
-    SFX_TRY(notWhileRecording("beginReplay"));
-    SFX_TRY(recordings_.check(h, "recording"));
-    mode_ = CallMode::Replaying;
-    replaying_ = h;
+Status VulkanDevice::doBeginReplay(RecordingHandle) {
     replayCursor_ = 0;
     replayMatches_ = true;
     return Status::ok();
 }
 
-Status VulkanDevice::endReplay() {
-    if (!caps_.reusableRecordings) return Device::endReplay();
-    if (mode_ != CallMode::Replaying) return {StatusCode::InvalidArgument, "endReplay: no replay is open; allowed after beginReplay"};
-    mode_ = CallMode::Direct;
-    const VulkanRecording& rec = recordings_.get(replaying_);
+Status VulkanDevice::doEndReplay(RecordingHandle replayed) {
+    const VulkanRecording& rec = recordings_.get(replayed);
     if (!replayMatches_ || replayCursor_ != rec.calls.size()) return stale("the calls differ from the recorded ones");
     if (!rec.reusable) return stale(rec.why);
     if (rec.epoch != objectEpoch_) return stale("an object was created or destroyed since it was recorded");
@@ -207,11 +186,7 @@ Status VulkanDevice::endReplay() {
     return Status::ok();
 }
 
-Status VulkanDevice::destroyRecording(RecordingHandle h) {
-    if (!caps_.reusableRecordings) return Device::destroyRecording(h);
-    SFX_TRY(recordings_.check(h, "recording"));
-    if (mode_ == CallMode::Replaying && h == replaying_)
-        return {StatusCode::InvalidArgument, "destroyRecording: the recording is being replayed; allowed after endReplay"};
+Status VulkanDevice::doDestroyRecording(RecordingHandle h) {
     VulkanRecording rec = recordings_.remove(h);
     // Command buffers that executed it may still be pending: it goes back to the free list
     // when they have finished.
@@ -220,28 +195,31 @@ Status VulkanDevice::destroyRecording(RecordingHandle h) {
     return Status::ok();
 }
 
-bool VulkanDevice::noteCall(const RenderPassDesc* pass, std::span<const DrawDesc> draws, const DispatchDesc* dispatch) {
-    if (mode_ == CallMode::Direct) return false;
+void VulkanDevice::noteRecordedCall(const RenderPassDesc* pass, std::span<const DrawDesc> draws, const DispatchDesc* dispatch) {
+    if (!recordingOpen()) return;
     flattenCall(pass, draws, dispatch, callScratch_);
-    if (mode_ == CallMode::Recording) {
-        open_.calls.insert(open_.calls.end(), callScratch_.begin(), callScratch_.end());
-        return false;
-    }
-    const std::vector<uint64_t>& recorded = recordings_.get(replaying_).calls;
+    open_.calls.insert(open_.calls.end(), callScratch_.begin(), callScratch_.end());
+}
+
+// Replaying: the call is compared with the recorded ones (the same arguments on the same objects
+// pass the checks again, and endReplay refuses the recording if objects changed since).
+Status VulkanDevice::doReplayCall(const RenderPassDesc* pass, std::span<const DrawDesc> draws, const DispatchDesc* dispatch) {
+    flattenCall(pass, draws, dispatch, callScratch_);
+    const std::vector<uint64_t>& recorded = recordings_.get(replayedRecording()).calls;
     if (replayMatches_ && replayCursor_ + callScratch_.size() <= recorded.size() &&
         std::equal(callScratch_.begin(), callScratch_.end(), recorded.begin() + std::ptrdiff_t(replayCursor_)))
         replayCursor_ += callScratch_.size();
     else
         replayMatches_ = false;
-    return true;
+    return Status::ok();
 }
 
 bool VulkanDevice::noteTimer() {
-    if (mode_ == CallMode::Recording) {
+    if (recordingOpen()) {
         open_.reusable = false;
         open_.why = "it holds a timer";
     }
-    if (mode_ != CallMode::Replaying) return false;
+    if (recordingState() != RecordingState::Replaying) return false;
     replayMatches_ = false;  // the calls are made again, recorded, with the timer in its place
     return true;
 }

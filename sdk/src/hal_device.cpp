@@ -5,6 +5,8 @@
 #include "sfx/hal.hpp"
 #include "sfx/hal_validation.hpp"
 
+#include <utility>
+
 namespace sfx {
 
 // ---- Textures, buffers, samplers -----------------------------------------------------------
@@ -38,6 +40,7 @@ Status Device::readTexture(TextureHandle texture, uint32_t mip, void* out, size_
     if (!desc) return desc.status();
     SFX_TRY(validation::textureBytes(*desc.value(), mip, bytes, "bytes"));
     SFX_TRY(validation::pointer(out, "out", "the level's bytes"));
+    SFX_TRY(notWhileRecording("readTexture"));  // a read submits what was recorded
     return doReadTexture(texture, mip, out, bytes);
 }
 
@@ -64,6 +67,7 @@ Status Device::readBuffer(BufferHandle buffer, uint64_t offset, void* out, size_
     if (!desc) return desc.status();
     SFX_TRY(validation::bufferRange(*desc.value(), offset, bytes, "readBuffer(offset, bytes)"));
     SFX_TRY(validation::pointer(out, "out", "room for the bytes read"));
+    SFX_TRY(notWhileRecording("readBuffer"));
     return doReadBuffer(buffer, offset, out, bytes);
 }
 
@@ -140,17 +144,87 @@ Result<TimerReading> Device::readTimer(TimerHandle timer) {
 // ---- Commands ------------------------------------------------------------------------------
 
 Status Device::renderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) {
-    if (doReplayCall(&pass, draws, nullptr)) return Status::ok();
+    if (recordingState_ == RecordingState::Replaying) return doReplayCall(&pass, draws, nullptr);
     SFX_TRY(validation::renderPass(pass, draws, objects(), caps()));
     return doRenderPass(pass, draws);
 }
 
 Status Device::dispatch(const DispatchDesc& dispatch) {
-    if (doReplayCall(nullptr, {}, &dispatch)) return Status::ok();
+    if (recordingState_ == RecordingState::Replaying) return doReplayCall(nullptr, {}, &dispatch);
     SFX_TRY(validation::dispatch(dispatch, objects(), caps()));
     return doDispatch(dispatch);
 }
 
-Status Device::flush() { return doFlush(); }
+Status Device::flush() {
+    SFX_TRY(notWhileRecording("flush"));
+    return doFlush();
+}
+
+// ---- Reusable recordings -------------------------------------------------------------------
+// The open recording or replay is the front end's state, so every backend refuses the same
+// calls in the same order: the device keeps recordings, then nothing else is open (or the
+// right kind is), then the handle.
+
+Status Device::recordingsKept(const char* call) const {
+    if (caps().reusableRecordings) return Status::ok();
+    return {StatusCode::UnsupportedFeature,
+            std::string(call) + ": the " + toString(caps().backend) + " device keeps no reusable recordings (caps().reusableRecordings is false)"};
+}
+
+Status Device::notWhileRecording(const char* call) const {
+    if (recordingState_ == RecordingState::None) return Status::ok();
+    const bool recording = recordingState_ == RecordingState::Recording;
+    return {
+        StatusCode::InvalidArgument,
+        std::string(call) + ": a " + (recording ? "recording" : "replay") + " is open; allowed after " + (recording ? "endRecording" : "endReplay")};
+}
+
+Status Device::beginRecording() {
+    SFX_TRY(recordingsKept("beginRecording"));
+    SFX_TRY(notWhileRecording("beginRecording"));
+    SFX_TRY(doBeginRecording());
+    recordingState_ = RecordingState::Recording;
+    return Status::ok();
+}
+
+Result<RecordingHandle> Device::endRecording() {
+    SFX_TRY(recordingsKept("endRecording"));
+    if (recordingState_ != RecordingState::Recording)
+        return Status{StatusCode::InvalidArgument, "endRecording: no recording is open; allowed after beginRecording"};
+    recordingState_ = RecordingState::None;
+    return doEndRecording();
+}
+
+Status Device::beginReplay(RecordingHandle recording) {
+    SFX_TRY(recordingsKept("beginReplay"));
+    SFX_TRY(notWhileRecording("beginReplay"));
+    SFX_TRY(objects().recording(recording, "recording"));
+    SFX_TRY(doBeginReplay(recording));
+    recordingState_ = RecordingState::Replaying;
+    replayed_ = recording;
+    return Status::ok();
+}
+
+Status Device::endReplay() {
+    SFX_TRY(recordingsKept("endReplay"));
+    if (recordingState_ != RecordingState::Replaying) return {StatusCode::InvalidArgument, "endReplay: no replay is open; allowed after beginReplay"};
+    recordingState_ = RecordingState::None;
+    const RecordingHandle replayed = std::exchange(replayed_, RecordingHandle{});
+    return doEndReplay(replayed);
+}
+
+Status Device::destroyRecording(RecordingHandle recording) {
+    SFX_TRY(recordingsKept("destroyRecording"));
+    SFX_TRY(objects().recording(recording, "recording"));
+    if (recordingState_ == RecordingState::Replaying && recording == replayed_)
+        return {StatusCode::InvalidArgument, "destroyRecording: the recording is being replayed; allowed after endReplay"};
+    return doDestroyRecording(recording);
+}
+
+// Reached only on a device that keeps recordings (the front end refuses first elsewhere).
+Status Device::doBeginReplay(RecordingHandle) { return recordingsKept("beginReplay"); }
+Status Device::doEndReplay(RecordingHandle) { return recordingsKept("endReplay"); }
+Status Device::doDestroyRecording(RecordingHandle) { return recordingsKept("destroyRecording"); }
+Status Device::doReplayCall(const RenderPassDesc*, std::span<const DrawDesc>, const DispatchDesc*) { return recordingsKept("beginReplay"); }
 
 }  // namespace sfx

@@ -256,3 +256,24 @@ TEST_CASE("hal: calls that cannot happen inside an open recording or replay are 
     SFX_REQUIRE_OK(dev().flush());
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }
+
+TEST_CASE("hal: a call refused while recording is not kept, so a replay making it again is stale", "[hal][recordings]") {
+    if (keepsNone()) return;
+    Cleanup c;
+    ThreePasses passes(c);
+    passes.record(passes.first);
+    passes.checkFrame(kOld, 0.25f, "warm-up");
+    const RenderPassDesc noAttachments{};
+    SFX_REQUIRE_OK(dev().beginRecording());
+    passes.record(passes.first);
+    checkNamed(dev().renderPass(noAttachments, {}), StatusCode::InvalidArgument, "attachment");
+    Result<RecordingHandle> rec = dev().endRecording();
+    SFX_REQUIRE_OK(rec.status());
+    passes.checkFrame(kOld, 0.25f, "recorded");
+    // Inside a replay calls are only compared; the refused one was never recorded, so it differs.
+    SFX_REQUIRE_OK(dev().beginReplay(rec.value()));
+    passes.record(passes.first);
+    SFX_REQUIRE_OK(dev().renderPass(noAttachments, {}));
+    checkNamed(dev().endReplay(), StatusCode::StaleHandle, "the calls differ");
+    SFX_REQUIRE_OK(dev().destroyRecording(rec.value()));
+}

@@ -147,14 +147,20 @@ Result<TimerReading> FaultInjectingDevice::doReadTimer(TimerHandle timer) {
     return inner_.readTimer(timer);
 }
 
-Status FaultInjectingDevice::beginRecording() {
+Status FaultInjectingDevice::doBeginRecording() {
     if (Status s = enter("beginRecording", false, false); !s) return s;
     return inner_.beginRecording();
 }
 
-Status FaultInjectingDevice::beginReplay(RecordingHandle recording) {
+Status FaultInjectingDevice::doBeginReplay(RecordingHandle recording) {
     if (Status s = enter("beginReplay", false, false); !s) return s;
     return inner_.beginReplay(recording);
+}
+
+// A replayed call can meet a fault like any call; the wrapped device, replaying too, compares it.
+Status FaultInjectingDevice::doReplayCall(const RenderPassDesc* pass, std::span<const DrawDesc> draws, const DispatchDesc* dispatch) {
+    if (Status s = enter(pass ? "renderPass" : "dispatch", false, false); !s) return s;
+    return pass ? inner_.renderPass(*pass, draws) : inner_.dispatch(*dispatch);
 }
 
 }  // namespace sfx::test

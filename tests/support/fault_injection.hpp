@@ -41,14 +41,6 @@ public:
 
     const DeviceCaps& caps() const override { return inner_.caps(); }
 
-    // Beginning one can fail like any call; ending and destroying one are always forwarded (as
-    // destroys are), so that the wrapped device is never left with a recording or replay open.
-    Status beginRecording() override;
-    Result<RecordingHandle> endRecording() override { return inner_.endRecording(); }
-    Status beginReplay(RecordingHandle recording) override;
-    Status endReplay() override { return inner_.endReplay(); }
-    Status destroyRecording(RecordingHandle recording) override { return inner_.destroyRecording(recording); }
-
     DeviceStats stats() const override { return inner_.stats(); }
     std::vector<std::string> takeValidationMessages() override { return inner_.takeValidationMessages(); }
 
@@ -78,6 +70,15 @@ private:
     Status doDestroyPipeline(PipelineHandle pipeline) override { return inner_.destroyPipeline(pipeline); }
 
     Result<TimerHandle> doCreateTimer() override;
+
+    // Beginning a recording or replay can fail like any call; ending and destroying one are always
+    // forwarded (as destroys are), so the wrapped device is never left with one open.
+    Status doBeginRecording() override;
+    Result<RecordingHandle> doEndRecording() override { return inner_.endRecording(); }
+    Status doBeginReplay(RecordingHandle recording) override;
+    Status doEndReplay(RecordingHandle) override { return inner_.endReplay(); }
+    Status doDestroyRecording(RecordingHandle recording) override { return inner_.destroyRecording(recording); }
+    Status doReplayCall(const RenderPassDesc* pass, std::span<const DrawDesc> draws, const DispatchDesc* dispatch) override;
     Status doDestroyTimer(TimerHandle timer) override { return inner_.destroyTimer(timer); }
     Status doBeginTimer(TimerHandle timer) override;
     Status doEndTimer(TimerHandle timer) override;

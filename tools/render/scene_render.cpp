@@ -17,9 +17,6 @@
 namespace sfx::render {
 namespace {
 
-constexpr uint32_t kMaxAoLayers = uint32_t(shared::SFX_AO_MAX_DEPTH_LAYERS);  // the first visible layer and 3 peeled ones
-constexpr uint32_t kMaxCompressedNodes = 4;
-
 std::string mib(uint64_t bytes) {
     std::ostringstream s;
     s.precision(3);
@@ -42,14 +39,13 @@ Status validateOptions(const RenderOptions& o) {
     if (o.height > scene::kMaxSceneSize)
         return invalidArgument("--height", std::to_string(o.height), "0 (the scene's) or [1, " + std::to_string(scene::kMaxSceneSize) + "]");
     SFX_TRY(checkSetting(Setting::AoRadius, o.aoRadius, "--ao-radius"));
-    if (o.aoLayers < 1 || o.aoLayers > kMaxAoLayers)
-        return invalidArgument("--ao-layers", std::to_string(o.aoLayers),
-                               "[1, " + std::to_string(kMaxAoLayers) + "] (1: the first visible layer; more: depth peeling, high tier)");
+    SFX_TRY(checkSetting(Setting::AoDepthLayers, o.aoLayers, "--ao-layers"));
     if (o.aoLayers > 1 && !o.ao) return invalidArgument("--ao-layers", std::to_string(o.aoLayers), "1 with --ao off (the layers are for AO)");
     if (o.maxLayers != keptLayers(TransparencyQuality::Standard) && o.maxLayers != keptLayers(TransparencyQuality::High))
         return invalidArgument("--max-layers", std::to_string(o.maxLayers), "16 or 32 (the fragments the A-buffer resolve keeps exact per pixel)");
-    if (o.nodes < 1 || o.nodes > kMaxCompressedNodes)
-        return invalidArgument("--nodes", std::to_string(o.nodes), "[1, " + std::to_string(kMaxCompressedNodes) + "]");
+    // The table's 0 (no compression) is refused here: the renderer's layer AO reads the compressed lists.
+    SFX_TRY(checkSetting(Setting::OitCompressedNodes, o.nodes, "--nodes"));
+    if (o.nodes == 0) return invalidArgument("--nodes", "0", "at least 1 (AO through the layers reads the compressed lists)");
     return Status::ok();
 }
 

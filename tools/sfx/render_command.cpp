@@ -95,12 +95,12 @@ Command addRenderCommand(CLI::App& app) {
     c.app->add_option("--ao", flags->ao, "off | alchemy | scalable | crease | horizon")->capture_default_str();
     c.app->add_option("--ao-radius", flags->aoRadius, "AO " + settingHelp(Setting::AoRadius))->capture_default_str();
     c.app->add_option("--ao-out", flags->aoOutPath, "also write the AO visibility buffer (.pfm, .exr or .png; values as they are, no sRGB)");
-    c.app->add_option("--ao-layers", flags->aoLayers, "opaque depth layers AO tests, [1, 4]; 1 = the visible layer, more = depth peeling (high tier)")
-        ->capture_default_str();
+    c.app->add_option("--ao-layers", flags->aoLayers, settingHelp(Setting::AoDepthLayers) + "; above 1 by depth peeling")->capture_default_str();
     c.app->add_option("--oit", flags->oit, "auto (transparent objects through OIT) | off (not drawn)")->capture_default_str();
     c.app->add_option("--max-layers", flags->maxLayers, "K: transparent fragments the A-buffer resolve keeps exact per pixel, 16 or 32")
         ->capture_default_str();
-    c.app->add_option("--nodes", flags->nodes, "M: nodes per compressed list for AO through transparency, [1, 4]")->capture_default_str();
+    c.app->add_option("--nodes", flags->nodes, settingHelp(Setting::OitCompressedNodes) + "; at least 1 here (AO through transparency)")
+        ->capture_default_str();
     c.app->add_flag("--plan", flags->showPlan, "print the passes, resources and bytes, and why each is there");
     c.app->add_flag("--stats", flags->showStats, "print objects, triangles, transparent fragments, stored, dropped, pool nodes and bytes");
     c.run = [flags] { return runRender(*flags); };

@@ -445,26 +445,20 @@ public:
     // The commands between beginRecording and endRecording run where they were called, as
     // always, and are kept (Vulkan: a secondary command buffer, executed by endRecording). A later
     // beginReplay ... endReplay around the same calls with the same arguments runs the kept
-    // commands instead of recording them again: renderPass and dispatch there only compare their
-    // arguments with the recorded ones, and endReplay runs the recording, with the barriers that the
-    // resources' states at that point need. Buffers and textures are used by handle, so contents
-    // written before (writeBuffer: a changed uniform) are what the replay reads. endReplay reports
-    // StaleHandle, and runs nothing, when the calls differed from the recorded ones, a texture or
-    // buffer was created (or a texture, buffer, sampler or pipeline destroyed) since the
-    // recording, a resource it writes is not in the state it was recorded from (a recording
-    // made from fresh textures: the frame after it), or
-    // the recording could not be reused (it wrote a resource it had used, or held a timer);
-    // beginReplay reports StaleHandle for a destroyed recording. The caller then makes the same
-    // calls again inside beginRecording ... endRecording. Resources it only reads may be in any
-    // state: endReplay records the barrier and layout transition their reads need.
-    // Between begin and end: flush, reads, and another begin are refused (InvalidArgument).
-    // These stay with the backend that keeps recordings: whether a call is allowed depends on
-    // its open recording or replay, which only it knows.
-    virtual Status beginRecording() { return noRecordings("beginRecording"); }
-    virtual Result<RecordingHandle> endRecording() { return noRecordings("endRecording"); }
-    virtual Status beginReplay(RecordingHandle) { return noRecordings("beginReplay"); }
-    virtual Status endReplay() { return noRecordings("endReplay"); }
-    virtual Status destroyRecording(RecordingHandle) { return noRecordings("destroyRecording"); }
+    // commands instead of recording them again: renderPass and dispatch there are only compared
+    // with the recorded calls, and endReplay runs the recording with the barriers the resources'
+    // states at that point need. Resources are used by handle, so contents written before (a
+    // changed uniform) are what the replay reads. endReplay reports StaleHandle and runs nothing
+    // when the calls differ from the recorded ones, an object was created or destroyed since, a
+    // resource it writes is not in the state it was recorded from, or the recording cannot be
+    // reused (it wrote a resource it had used, or held a timer); beginReplay reports StaleHandle
+    // for a destroyed recording. The caller then records the same calls again. Between begin and
+    // end: flush, reads and another begin are refused (InvalidArgument).
+    Status beginRecording();
+    Result<RecordingHandle> endRecording();
+    Status beginReplay(RecordingHandle recording);
+    Status endReplay();
+    Status destroyRecording(RecordingHandle recording);
 
     // Counts of what the device made (see DeviceStats); cheap, callable every frame.
     virtual DeviceStats stats() const = 0;
@@ -477,12 +471,15 @@ protected:
     // Another device's objects, for a device that forwards to it (the tests' fault injection).
     static const validation::ObjectLookup& objectsOf(const Device& device) { return device.objects(); }
 
+    // What the front end has open; the backend records into, or compares with, it.
+    enum class RecordingState : uint8_t { None, Recording, Replaying };
+    RecordingState recordingState() const { return recordingState_; }
+    RecordingHandle replayedRecording() const { return replayed_; }
+    // InvalidArgument while a recording or replay is open, naming the call that closes it.
+    Status notWhileRecording(const char* call) const;
+
 private:
-    Status noRecordings(const char* call) const {
-        return {
-            StatusCode::UnsupportedFeature,
-            std::string(call) + ": the " + toString(caps().backend) + " device keeps no reusable recordings (caps().reusableRecordings is false)"};
-    }
+    Status recordingsKept(const char* call) const;
 
     // ---- The backend's side ----------------------------------------------------------------
     // The backend's objects as the checks read them: each handle checked (null, foreign,
@@ -521,15 +518,23 @@ private:
     virtual Status doEndTimer(TimerHandle timer) = 0;
     virtual Result<TimerReading> doReadTimer(TimerHandle timer) = 0;
 
-    // A renderPass or dispatch inside a replay is only compared with the recorded call (which
-    // was checked when it was recorded); true: the backend took it so, and nothing else happens.
-    virtual bool doReplayCall(const RenderPassDesc* pass, std::span<const DrawDesc> draws, const DispatchDesc* dispatch) {
-        (void)pass, (void)draws, (void)dispatch;
-        return false;
-    }
+    // Called only where caps().reusableRecordings holds, with the open state checked: begin
+    // with nothing open, end with its kind open (closed by the front end whatever the hook
+    // reports), a live recording handle that is not being replayed for destroy.
+    virtual Status doBeginRecording() { return recordingsKept("beginRecording"); }
+    virtual Result<RecordingHandle> doEndRecording() { return recordingsKept("endRecording"); }
+    virtual Status doBeginReplay(RecordingHandle recording);
+    virtual Status doEndReplay(RecordingHandle recording);
+    virtual Status doDestroyRecording(RecordingHandle recording);
+    // A renderPass or dispatch inside a replay: only compared with the recorded call, which was
+    // checked when it was recorded (a refused call was not recorded, so it cannot match).
+    virtual Status doReplayCall(const RenderPassDesc* pass, std::span<const DrawDesc> draws, const DispatchDesc* dispatch);
     virtual Status doRenderPass(const RenderPassDesc& pass, std::span<const DrawDesc> draws) = 0;
     virtual Status doDispatch(const DispatchDesc& dispatch) = 0;
     virtual Status doFlush() = 0;
+
+    RecordingState recordingState_ = RecordingState::None;
+    RecordingHandle replayed_;
 };
 
 // Byte size of one mip level of a texture.

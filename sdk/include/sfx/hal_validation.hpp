@@ -86,15 +86,25 @@ public:
     virtual Result<const ProgramInfo*> program(ProgramHandle h, const std::string& argument) const = 0;
     virtual Result<const PipelineInfo*> pipeline(PipelineHandle h, const std::string& argument) const = 0;
     virtual Status timer(TimerHandle h, const std::string& argument) const = 0;
+    // Only a device that keeps recordings has any: the front end asks after caps().reusableRecordings.
+    virtual Status recording(RecordingHandle h, const std::string& argument) const = 0;
+};
+
+// The recordings of a device that keeps none: every handle is unknown to it.
+struct NoRecordings {
+    Status check(RecordingHandle, const std::string& argument) const {
+        return {StatusCode::InvalidHandle, argument + ": this device keeps no recordings"};
+    }
 };
 
 // An ObjectLookup over a backend's HandlePools, whose records hold `desc` (textures, buffers)
 // and `info` (programs, pipelines). A backend keeps one next to its pools.
-template <class Textures, class Buffers, class Samplers, class Programs, class Pipelines, class Timers>
+template <class Textures, class Buffers, class Samplers, class Programs, class Pipelines, class Timers, class Recordings = NoRecordings>
 class PoolLookup final : public ObjectLookup {
 public:
-    PoolLookup(const Textures& t, const Buffers& b, const Samplers& s, const Programs& pr, const Pipelines& p, const Timers& ti)
-        : textures_(t), buffers_(b), samplers_(s), programs_(pr), pipelines_(p), timers_(ti) {}
+    PoolLookup(const Textures& t, const Buffers& b, const Samplers& s, const Programs& pr, const Pipelines& p, const Timers& ti,
+               const Recordings& r = noRecordings_)
+        : textures_(t), buffers_(b), samplers_(s), programs_(pr), pipelines_(p), timers_(ti), recordings_(r) {}
     Result<const TextureDesc*> texture(TextureHandle h, const std::string& argument) const override {
         SFX_TRY(textures_.check(h, argument));
         return &textures_.get(h).desc;
@@ -116,20 +126,29 @@ public:
         return &pipelines_.get(h).info;
     }
     Status timer(TimerHandle h, const std::string& argument) const override { return timers_.check(h, argument); }
+    Status recording(RecordingHandle h, const std::string& argument) const override { return recordings_.check(h, argument); }
 
 private:
+    static constexpr NoRecordings noRecordings_{};
     const Textures& textures_;
     const Buffers& buffers_;
     const Samplers& samplers_;
     const Programs& programs_;
     const Pipelines& pipelines_;
     const Timers& timers_;
+    const Recordings& recordings_;
 };
-// The PoolLookup of a backend's six pools.
+// The PoolLookup of a backend's six pools (and its recordings, where it keeps them).
 template <class Textures, class Buffers, class Samplers, class Programs, class Pipelines, class Timers>
 PoolLookup<Textures, Buffers, Samplers, Programs, Pipelines, Timers> poolLookup(const Textures& t, const Buffers& b, const Samplers& s,
                                                                                 const Programs& pr, const Pipelines& p, const Timers& ti) {
     return {t, b, s, pr, p, ti};
+}
+template <class Textures, class Buffers, class Samplers, class Programs, class Pipelines, class Timers, class Recordings>
+PoolLookup<Textures, Buffers, Samplers, Programs, Pipelines, Timers, Recordings> poolLookup(const Textures& t, const Buffers& b, const Samplers& s,
+                                                                                            const Programs& pr, const Pipelines& p, const Timers& ti,
+                                                                                            const Recordings& r) {
+    return {t, b, s, pr, p, ti, r};
 }
 
 // Every check of a render pass and its draws, before anything is recorded: the attachments (at

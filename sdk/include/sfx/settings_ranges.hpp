@@ -20,6 +20,7 @@ enum class Setting : uint32_t {
     AoEpsilon,
     AoSamples,
     AoBlurRadius,
+    AoDepthLayers,
     AoCreaseRange,
     AoCreaseBias,
     AoCreaseAverager,

@@ -119,8 +119,9 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
     if (s.blurRadius) SFX_TRY(checkSetting(Setting::AoBlurRadius, *s.blurRadius));
     if (uint32_t(s.resolution) > 2) return invalidArgument("AoSettings.resolution", std::to_string(uint32_t(s.resolution)), "Tier, Full or Half");
     if (uint32_t(s.normals) > 1) return invalidArgument("AoSettings.normals", std::to_string(uint32_t(s.normals)), "FromDepth or FromTexture");
+    SFX_TRY(checkSetting(Setting::AoDepthLayers, s.depthLayers));
     const uint32_t maxLayers = std::clamp(profile.aoMaxDepthLayers, 1u, uint32_t(shared::SFX_AO_MAX_DEPTH_LAYERS));
-    if (s.depthLayers < 1 || s.depthLayers > maxLayers)
+    if (s.depthLayers > maxLayers)
         return invalidArgument(
             "AoSettings.depthLayers", std::to_string(s.depthLayers),
             maxLayers == 1 ? std::string("1 on the ") + toString(profile.tier) + " tier (multilayer AO needs a tier with aoMaxDepthLayers > 1: high)"

@@ -33,6 +33,8 @@ const SettingRange kRows[] = {
      "taps per pixel (Alchemy, Scalable; even on a mirrored tier); Crease takes 12 or 24"},
     {S::AoBlurRadius, "AoSettings.blurRadius", 1, shared::SFX_AO_MAX_BLUR_RADIUS, kClosed, kClosed, "px",
      "bilateral blur half-width in output pixels"},
+    {S::AoDepthLayers, "AoSettings.depthLayers", 1, shared::SFX_AO_MAX_DEPTH_LAYERS, kClosed, kClosed, "layers",
+     "opaque depth layers each tap tests: 1 = the visible layer; above 1 up to the tier's aoMaxDepthLayers (1 on current)"},
     {S::AoCreaseRange, "AoSettings.crease.range", kAoMinRadius, 1000, kClosed, kClosed, "world units",
      "Crease: distance at which a tap's influence reaches 0"},
     {S::AoCreaseBias, "AoSettings.crease.bias", 0, 100, kOpen, kClosed, "", "Crease: scales (cos - minimumCrease) before saturating"},
