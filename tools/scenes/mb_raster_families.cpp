@@ -28,7 +28,7 @@ Result<Mesh> standing(const std::string& variant, double height, glm::dvec3 at, 
     Result<StandingModel> model = loadStandingModel(variant, height);
     if (!model) return model.status();
     Mesh m(std::move(model->mesh));
-    m.model = glm::translate(glm::dmat4(1.0), at) * glm::rotate(glm::dmat4(1.0), glm::radians(yawDegrees), glm::dvec3(0, 1, 0)) * model->model;
+    m.model = model->placed(glm::translate(glm::dmat4(1.0), at) * glm::rotate(glm::dmat4(1.0), glm::radians(yawDegrees), glm::dvec3(0, 1, 0)));
     m.surface = surface;
     return m;
 }

@@ -49,13 +49,17 @@ Result<StandingModel> loadStandingModel(const std::string& variant, double heigh
         const glm::dvec3 p(upright * glm::dvec4(glm::dvec3(v.position), 1.0));
         lo = glm::min(lo, p), hi = glm::max(hi, p);
     }
-    const double scale = height / (hi.y - lo.y);
     StandingModel out;
     out.mesh = std::move(model.value());
-    out.model = glm::scale(glm::dmat4(1.0), glm::dvec3(scale)) *
-        glm::translate(glm::dmat4(1.0), -glm::dvec3((lo.x + hi.x) / 2, lo.y, (lo.z + hi.z) / 2)) * upright;
-    out.size = scale * (hi - lo);
+    out.upright = upright;
+    out.base = {(lo.x + hi.x) / 2, lo.y, (lo.z + hi.z) / 2};
+    out.scale = height / (hi.y - lo.y);
+    out.size = out.scale * (hi - lo);
     return out;
+}
+
+glm::dmat4 StandingModel::placed(const glm::dmat4& placement) const {
+    return placement * glm::scale(glm::dmat4(1.0), glm::dvec3(scale)) * glm::translate(glm::dmat4(1.0), -base) * upright;
 }
 
 }  // namespace sfx::tools

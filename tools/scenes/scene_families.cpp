@@ -223,7 +223,7 @@ Result<RasterScene> meshScene(const std::string& variant) {
     if (!model) return model.status();
     const double wall = -1.2;
     Mesh m(std::move(model->mesh));
-    m.model = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, wall + 0.15 + model->size.z / 2)) * model->model;
+    m.model = model->placed(glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, wall + 0.15 + model->size.z / 2)));
     RasterScene s;
     s.meshes = {floorQuad(6.0f), wallZ(float(wall), -6, 6, 3)};
     s.meshes.push_back(std::move(m));
