@@ -18,7 +18,9 @@
 #                      _cost.csv, docs/images/ao_family_*.png).
 #   6. bench_mb_families - motion blur per scene family, speed, tier and backend against its
 #                      truth (docs/mb_families.csv, the family tables of docs/motion_blur.md), and
-#                      each family's pictures (docs/images/mb_<family>_<speed>px.png).
+#                      each family's pictures (docs/images/mb_<family>_<speed>px.png); then with
+#                      --raster the rasterised families, drawn by the first backend's raster pass
+#                      (docs/mb_raster_families.csv, docs/images/mb_{models,camera}_12px.png).
 #   7. bench_mb_flicker - motion blur's frame-to-frame change against the truth's over frame
 #                      sequences of the same families, and both jitter patterns (docs/mb_flicker.csv,
 #                      "Stable under motion" in docs/motion_blur.md);
@@ -59,8 +61,11 @@ step "bench_families: the defaults and the peer against the truth, per scene fam
 "$BUILD_DIR"/tools/bench/bench_families --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS" --peer-dir "$PEER_DIR"
 step "bench_mb_families: motion blur on the held-out scene families"
 "$BUILD_DIR"/tools/bench/bench_mb_families --csv docs/mb_families.csv --backends "$BACKENDS" --images docs/images
+step "bench_mb_families --raster: motion blur on the rasterised held-out families"
+"$BUILD_DIR"/tools/bench/bench_mb_families --raster --raster-backend "${BACKENDS%%,*}" --instants 128 --csv docs/mb_raster_families.csv \
+    --backends "$BACKENDS" --images docs/images --image-speeds 12
 step "bench_mb_flicker: motion blur's flicker over frame sequences of the scene families"
 "$BUILD_DIR"/tools/bench/bench_mb_flicker --csv docs/mb_flicker.csv --backends "$BACKENDS"
 step "fit_mb: motion blur's front over taps x maximum radius at 720 rows"
 "$BUILD_DIR"/tools/bench/fit_mb --taps 3,5,7,9,11,13,15,17 --radii 8,10,12,14,18,24 --backend "${BACKENDS%%,*}" --csv docs/mb_fit.csv
-step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg, docs/mb_families.csv, docs/images/mb_*px.png, docs/mb_flicker.csv, docs/mb_fit.csv, docs/ao_families.*"
+step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg, docs/mb_families.csv, docs/mb_raster_families.csv, docs/images/mb_*px.png, docs/mb_flicker.csv, docs/mb_fit.csv, docs/ao_families.*"

@@ -4,7 +4,9 @@
 // unblurred input on the moving region, and PSNR at the leading edges (background covered) and
 // trailing edges (background revealed) separately; for the independent square, also over the
 // rows it spans. With --images, a picture per family at a few speeds: input, truth and each
-// tier's CPU reference output, and their errors. Not a test: docs/motion_blur.md shows its CSV
+// tier's CPU reference output, and their errors. With --raster, the rasterised families
+// (tools/scenes/mb_raster_families.hpp) instead: drawn by --raster-backend's raster pass, the
+// truth averaging --instants rendered instants. Not a test: docs/motion_blur.md shows its CSVs
 // and pictures. About two minutes on 2 cores.
 #include <CLI/CLI.hpp>
 
@@ -13,6 +15,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 
@@ -20,6 +23,7 @@
 #include "bench_device.hpp"
 #include "markdown_section.hpp"
 #include "mb_family_scoring.hpp"
+#include "mb_raster_families.hpp"
 #include "motion_cases.hpp"
 #include "sfx/backends.hpp"
 #include "sfx/image_io.hpp"
@@ -69,6 +73,49 @@ struct Runner {
     std::unique_ptr<Device> device;
 };
 
+using CaseScorer = std::function<bool(const std::string& family, bool heldOut, double speed, const ColorGrid& truth, double residualPsnr,
+                                      const tools::FamilyMasks& masks, const SceneFrame& frame, const std::vector<bool>& rowsMask)>;
+
+// The rasterised families (tools/scenes/mb_raster_families.hpp), all held out: each case drawn by
+// `backend`'s raster pass, its truth the average of `instants` rendered instants, then scored.
+bool scoreRasterFamilies(const std::string& backend, const std::string& familiesFlag, const std::vector<double>& speeds, uint32_t w, uint32_t h,
+                         uint32_t instants, const CaseScorer& scoreCase) {
+    std::unique_ptr<Device> device;
+    for (const BackendConfig& config : compiledBackends())
+        if (config.backend != BackendKind::Null && toString(config) == backend) {
+            Result<std::unique_ptr<Device>> d = tools::openForTier(config, Tier::Current);
+            if (!d) {
+                std::cerr << "bench_mb_families: raster backend " << backend << ": " << d.status().toString() << "\n";
+                return false;
+            }
+            device = std::move(d.value());
+        }
+    if (!device) {
+        std::cerr << "bench_mb_families: raster backend " << backend << " is not compiled\n";
+        return false;
+    }
+    Result<std::unique_ptr<tools::SceneRenderer>> renderer = tools::SceneRenderer::create(*device, Tier::Current);
+    if (!renderer) {
+        std::cerr << "bench_mb_families: " << renderer.status().toString() << "\n";
+        return false;
+    }
+    for (const std::string& family : tools::rasterFamilyNames()) {
+        if (familiesFlag != "all" && !tools::inList(familiesFlag, family)) continue;
+        for (double speed : speeds) {
+            Result<tools::RasterFamilyCase> c = tools::makeRasterFamilyCase(*device, *renderer.value(), family, speed, w, h, instants);
+            if (!c) {
+                std::cerr << "bench_mb_families: " << family << " at " << speed << " px: " << c.status().toString() << "\n";
+                return false;
+            }
+            std::printf("[%s %.1f px] rendered by %s: fastest point %.3f px; truth's residual noise rmse %.5f (%u/2 vs %u instants)\n",
+                        family.c_str(), speed, backend.c_str(), c->measuredSpeedPx, c->residualRmse, instants, instants);
+            const double residualPsnr = c->residualRmse > 0 ? -20.0 * std::log10(c->residualRmse) : 99.0;
+            if (!scoreCase(family, true, speed, c->truth, residualPsnr, c->masks, c->frame, {})) return false;
+        }
+    }
+    return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -76,6 +123,8 @@ int main(int argc, char** argv) {
     uint32_t width = 320, height = 240, instants = 256, seed = 1;
     std::string csvPath = "mb_families.csv", backendsFlag = "vulkan,gles", speedsFlag = "0.5,2,6,12,24,40", familiesFlag = "all";
     std::string imagesDir, imageSpeedsFlag = "6,12,24";
+    std::string rasterBackend = "vulkan";
+    bool raster = false;
     std::optional<uint32_t> taps;
     std::optional<float> radius;
     app.add_option("--width", width, "picture width")->capture_default_str();
@@ -84,6 +133,8 @@ int main(int argc, char** argv) {
     app.add_option("--seed", seed, "layout seed of every family")->capture_default_str();
     app.add_option("--speeds", speedsFlag, "displacements across the shutter, pixels, comma-separated")->capture_default_str();
     app.add_option("--families", familiesFlag, "comma-separated families, or all")->capture_default_str();
+    app.add_flag("--raster", raster, "score the rasterised families (models, camera) instead of the 2D ones");
+    app.add_option("--raster-backend", rasterBackend, "the backend whose raster pass draws the rasterised families")->capture_default_str();
     app.add_option("--backends", backendsFlag, "comma-separated backends; none = CPU reference only")->capture_default_str();
     app.add_option("--taps", taps, "override MotionBlurSettings::samples on both tiers");
     app.add_option("--radius", radius, "override MotionBlurSettings::maxRadiusPx (at 720 rows) on both tiers");
@@ -120,6 +171,8 @@ int main(int argc, char** argv) {
     // Per family x tier (CPU reference): the sum of gains, for the summary.
     std::map<std::string, std::array<double, 2>> gainSum;
     std::map<std::string, int> gainCount;
+    // Per family, over the speeds of 2 px and more: the worst high - current PSNR, moving region and frame.
+    std::map<std::string, std::array<double, 2>> worstHighMinusCurrent;
     const std::vector<double> speeds = tools::splitNumberList(speedsFlag), imageSpeeds = tools::splitNumberList(imageSpeedsFlag);
     if (!imagesDir.empty()) {
         std::error_code ec;
@@ -128,71 +181,89 @@ int main(int argc, char** argv) {
             if (std::find(speeds.begin(), speeds.end(), s) == speeds.end())
                 std::cerr << "bench_mb_families: image speed " << s << " is not in --speeds\n";
     }
-    for (const std::string& family : tools::familyNames()) {
-        if (familiesFlag != "all" && !tools::inList(familiesFlag, family)) continue;
-        for (double speed : speeds) {
-            const tools::FamilyCase fc = tools::makeFamilyCase(family, speed, seed, width, height);
-            const ColorGrid truth = fc.scene.truth(instants);
-            // Residual noise of the truth: how far half the instants are from all of them.
-            const double residual = familyPsnr(fc.scene.truth(instants / 2), truth, {});
-            const tools::FamilyMasks masks = tools::familyMasks(fc.scene, 64);
-            const SceneFrame frame = fc.scene.render(0);
-            const Scores in = score(frame.color, truth, masks, fc.rowsMask);
-            std::printf("[%s%s %.1f px] input: moving %s dB, frame %s, leading %s, trailing %s, rows %s; truth(%u/2) vs truth(%u) %s dB\n",
-                        family.c_str(), fc.heldOut ? " held-out" : " training", speed, tools::fixedOrDash(in.moving).c_str(),
-                        tools::fixedOrDash(in.frame).c_str(), tools::fixedOrDash(in.leading).c_str(), tools::fixedOrDash(in.trailing).c_str(),
-                        tools::fixedOrDash(in.rows).c_str(), instants, instants, tools::fixedOrDash(residual).c_str());
-            auto emit = [&](Tier tier, const std::string& source, const MotionBlurParams& p, const ColorGrid& out) {
-                const Scores s = score(out, truth, masks, fc.rowsMask);
-                std::printf("  %-8s %-10s %2u taps r=%2u: moving %s (%+.2f), frame %s, leading %s, trailing %s, rows %s\n", toString(tier),
-                            source.c_str(), p.taps, p.radiusPx, tools::fixedOrDash(s.moving).c_str(), s.moving - in.moving,
-                            tools::fixedOrDash(s.frame).c_str(), tools::fixedOrDash(s.leading).c_str(), tools::fixedOrDash(s.trailing).c_str(),
-                            tools::fixedOrDash(s.rows).c_str());
-                csv << family << "," << (fc.heldOut ? "held-out" : "training") << "," << speed << "," << toString(tier) << "," << source << ","
-                    << p.taps << "," << p.radiusPx << "," << tools::fixedOrDash(s.moving) << "," << tools::fixedOrDash(s.frame) << ","
-                    << tools::fixedOrDash(in.moving) << "," << tools::fixedOrDash(s.moving - in.moving) << "," << tools::fixedOrDash(s.leading) << ","
-                    << tools::fixedOrDash(s.trailing) << "," << tools::fixedOrDash(s.rows) << "," << tools::fixedOrDash(in.leading) << ","
-                    << tools::fixedOrDash(in.trailing) << "," << tools::fixedOrDash(in.rows) << "," << tools::fixedOrDash(residual) << "\n";
-                return s;
-            };
-            ColorGrid referenceOut[2];  // the CPU reference's output, current and high tier
-            for (Tier tier : {Tier::Current, Tier::High}) {
-                Result<MotionBlurParams> p = resolveMotionBlur(tiers::profile(tier), settings, height);
-                if (!p) {
-                    std::cerr << "bench_mb_families: " << p.status().toString() << "\n";
-                    return 1;
-                }
-                ColorGrid& out = referenceOut[tier == Tier::High];
-                out = motionBlur(frame.color, frame.depth, frame.velocity, p.value()).color;
-                const Scores s = emit(tier, "reference", p.value(), out);
-                gainSum[family][tier == Tier::High] += s.moving - in.moving;
-                if (tier == Tier::High) ++gainCount[family];
-                for (Runner& r : runners) {
-                    if (r.tier != tier) continue;
-                    Result<tools::MotionBlurRun> run = tools::runMotionBlur(*r.device, tiers::profile(tier), settings, frame, cam, 1);
-                    if (!run) {
-                        std::printf("  %-8s %-10s FAILED %s\n", toString(tier), r.backend.c_str(), run.status().toString().c_str());
-                        continue;
-                    }
-                    emit(tier, r.backend, p.value(), run->output);
-                }
+    // One scored case: the family's truth, masks and the input frame the effect gets.
+    auto scoreCase = [&](const std::string& family, bool heldOut, double speed, const ColorGrid& truth, double residual,
+                         const tools::FamilyMasks& masks, const SceneFrame& frame, const std::vector<bool>& rowsMask) -> bool {
+        const Scores in = score(frame.color, truth, masks, rowsMask);
+        std::printf("[%s%s %.1f px] input: moving %s dB, frame %s, leading %s, trailing %s, rows %s; truth(%u/2) vs truth(%u) %s dB\n",
+                    family.c_str(), heldOut ? " held-out" : " training", speed, tools::fixedOrDash(in.moving).c_str(),
+                    tools::fixedOrDash(in.frame).c_str(), tools::fixedOrDash(in.leading).c_str(), tools::fixedOrDash(in.trailing).c_str(),
+                    tools::fixedOrDash(in.rows).c_str(), instants, instants, tools::fixedOrDash(residual).c_str());
+        auto emit = [&](Tier tier, const std::string& source, const MotionBlurParams& p, const ColorGrid& out) {
+            const Scores s = score(out, truth, masks, rowsMask);
+            std::printf("  %-8s %-10s %2u taps r=%2u: moving %s (%+.2f), frame %s, leading %s, trailing %s, rows %s\n", toString(tier),
+                        source.c_str(), p.taps, p.radiusPx, tools::fixedOrDash(s.moving).c_str(), s.moving - in.moving,
+                        tools::fixedOrDash(s.frame).c_str(), tools::fixedOrDash(s.leading).c_str(), tools::fixedOrDash(s.trailing).c_str(),
+                        tools::fixedOrDash(s.rows).c_str());
+            csv << family << "," << (heldOut ? "held-out" : "training") << "," << speed << "," << toString(tier) << "," << source << "," << p.taps
+                << "," << p.radiusPx << "," << tools::fixedOrDash(s.moving) << "," << tools::fixedOrDash(s.frame) << ","
+                << tools::fixedOrDash(in.moving) << "," << tools::fixedOrDash(s.moving - in.moving) << "," << tools::fixedOrDash(s.leading) << ","
+                << tools::fixedOrDash(s.trailing) << "," << tools::fixedOrDash(s.rows) << "," << tools::fixedOrDash(in.leading) << ","
+                << tools::fixedOrDash(in.trailing) << "," << tools::fixedOrDash(in.rows) << "," << tools::fixedOrDash(residual) << "\n";
+            return s;
+        };
+        ColorGrid referenceOut[2];  // the CPU reference's output, current and high tier
+        Scores referenceScores[2];
+        for (Tier tier : {Tier::Current, Tier::High}) {
+            Result<MotionBlurParams> p = resolveMotionBlur(tiers::profile(tier), settings, height);
+            if (!p) {
+                std::cerr << "bench_mb_families: " << p.status().toString() << "\n";
+                return false;
             }
-            if (!imagesDir.empty() && std::find(imageSpeeds.begin(), imageSpeeds.end(), speed) != imageSpeeds.end()) {
-                char name[96];
-                std::snprintf(name, sizeof name, "/mb_%s_%gpx.png", family.c_str(), speed);
-                if (Status st = writePicture(imagesDir + name, frame.color, truth, referenceOut[0], referenceOut[1]); !st) {
-                    std::cerr << "bench_mb_families: " << st.toString() << "\n";
-                    return 1;
+            ColorGrid& out = referenceOut[tier == Tier::High];
+            out = motionBlur(frame.color, frame.depth, frame.velocity, p.value()).color;
+            const Scores s = emit(tier, "reference", p.value(), out);
+            referenceScores[tier == Tier::High] = s;
+            gainSum[family][tier == Tier::High] += s.moving - in.moving;
+            if (tier == Tier::High) ++gainCount[family];
+            for (Runner& r : runners) {
+                if (r.tier != tier) continue;
+                Result<tools::MotionBlurRun> run = tools::runMotionBlur(*r.device, tiers::profile(tier), settings, frame, cam, 1);
+                if (!run) {
+                    std::printf("  %-8s %-10s FAILED %s\n", toString(tier), r.backend.c_str(), run.status().toString().c_str());
+                    continue;
                 }
-                std::printf("  wrote %s%s\n", imagesDir.c_str(), name);
+                emit(tier, r.backend, p.value(), run->output);
             }
-            std::fflush(stdout);
+        }
+        if (speed >= 2) {
+            const double d[] = {referenceScores[1].moving - referenceScores[0].moving, referenceScores[1].frame - referenceScores[0].frame};
+            auto [it, added] = worstHighMinusCurrent.try_emplace(family, std::array<double, 2>{d[0], d[1]});
+            if (!added) it->second = {std::min(it->second[0], d[0]), std::min(it->second[1], d[1])};
+        }
+        if (!imagesDir.empty() && std::find(imageSpeeds.begin(), imageSpeeds.end(), speed) != imageSpeeds.end()) {
+            char name[96];
+            std::snprintf(name, sizeof name, "/mb_%s_%gpx.png", family.c_str(), speed);
+            if (Status st = writePicture(imagesDir + name, frame.color, truth, referenceOut[0], referenceOut[1]); !st) {
+                std::cerr << "bench_mb_families: " << st.toString() << "\n";
+                return false;
+            }
+            std::printf("  wrote %s%s\n", imagesDir.c_str(), name);
+        }
+        std::fflush(stdout);
+        return true;
+    };
+    if (raster) {
+        if (!scoreRasterFamilies(rasterBackend, familiesFlag, speeds, width, height, instants, scoreCase)) return 1;
+    } else {
+        for (const std::string& family : tools::familyNames()) {
+            if (familiesFlag != "all" && !tools::inList(familiesFlag, family)) continue;
+            for (double speed : speeds) {
+                const tools::FamilyCase fc = tools::makeFamilyCase(family, speed, seed, width, height);
+                const ColorGrid truth = fc.scene.truth(instants);
+                // Residual noise of the truth: how far half the instants are from all of them.
+                const double residual = familyPsnr(fc.scene.truth(instants / 2), truth, {});
+                const SceneFrame frame = fc.scene.render(0);
+                if (!scoreCase(family, fc.heldOut, speed, truth, residual, tools::familyMasks(fc.scene, 64), frame, fc.rowsMask)) return 1;
+            }
         }
     }
     std::printf("mean gain over the input on the moving region (CPU reference), current / high:\n");
     for (const auto& [family, g] : gainSum)
         std::printf("  %-9s %-9s %+.2f / %+.2f dB\n", family.c_str(), tools::familyHeldOut(family) ? "held-out" : "training",
                     g[0] / gainCount[family], g[1] / gainCount[family]);
+    std::printf("worst high - current tier over the speeds of 2 px and more (CPU reference), moving region / frame:\n");
+    for (const auto& [family, d] : worstHighMinusCurrent) std::printf("  %-9s %+.3f / %+.3f dB\n", family.c_str(), d[0], d[1]);
     std::cout << "wrote " << csvPath << "\n";
     return 0;
 }

@@ -28,6 +28,7 @@
 #include <set>
 
 #include "bench_device.hpp"
+#include "mb_raster.hpp"
 #include "motion_cases.hpp"
 #include "scene.hpp"
 #include "sfx/backends.hpp"
@@ -49,10 +50,9 @@ io::Image toImage(const ColorGrid& g) {
 }
 
 // ---- The 3D sample scenes (tools/scenes/scene.hpp) -----------------------------------------
-// Rasterised through the HAL at any instant of the shutter interval, so their ground truth is
-// the same temporal supersampling as the 2.5D scenes', with perspective, parallax, curved
-// silhouettes and the rasteriser's own velocity buffer. Colour is a simple lit shading of the
-// G-buffer done here on the CPU: the effect is what is measured, not a lighting model.
+// Rasterised through the HAL at any instant of the shutter interval (tools/scenes/mb_raster.hpp),
+// so their ground truth is the same temporal supersampling as the 2.5D scenes', with
+// perspective, parallax, curved silhouettes and the rasteriser's own velocity buffer.
 
 // One 3D case: a sample scene given motion, and where the effect's velocity comes from.
 struct MovingSceneCase {
@@ -86,82 +86,10 @@ Result<tools::RasterScene> makeMovingScene(const std::string& name) {
     return s;
 }
 
-constexpr std::array<double, 4> kSky{0.55, 0.7, 0.9, 1.0};
-
-// albedo * (0.35 + 0.65 * max(0, n.l)) with a fixed view-space light; sky where nothing was
-// drawn. View space, because a pan only translates the camera: surfaces keep their shading.
-ColorGrid shadeGBuffer(const tools::GBufferContents& g) {
-    const glm::dvec3 light = glm::normalize(glm::dvec3(-0.4, 0.8, 0.45));
-    ColorGrid c(g.width, g.height, kSky);
-    for (size_t i = 0; i < c.values.size(); ++i) {
-        if (!g.drawn(i)) continue;
-        const double k = 0.35 + 0.65 * std::max(0.0, glm::dot(glm::dvec3(g.normals[i]), light));
-        for (size_t ch = 0; ch < 3; ++ch) c.values[i][ch] = g.albedo[i * 4 + ch] / 255.0 * k;
-    }
-    return c;
-}
-
-// The t = 0 frame as the effect sees it, read back for the error mask and the CPU reference.
-struct ShadedFrame {
-    ColorGrid color;
-    Grid linearDepth;         // from the D32F depth, as sfx::LinearDepth computes it
-    VelocityGrid velocity;    // the G-buffer's, pixels across the shutter interval
-    std::vector<bool> drawn;  // albedo a > 0
-};
-
-Result<ShadedFrame> readFrame(Device& device, const tools::GBuffer& g) {
-    Result<tools::GBufferContents> contents = tools::readBack(device, g);
-    if (!contents) return contents.status();
-    ShadedFrame f;
-    f.color = shadeGBuffer(contents.value());
-    const size_t n = size_t(g.width) * g.height;
-    Grid stored(g.width, g.height);
-    for (size_t i = 0; i < n; ++i) stored.values[i] = contents->storedDepth[i];
-    Result<DepthReconstruction> rec = makeDepthReconstruction(g.camera, g.width, g.height);
-    if (!rec) return rec.status();
-    f.linearDepth = linearizeDepth(stored, rec.value());
-    f.velocity = VelocityGrid(g.width, g.height);
-    f.drawn.resize(n);
-    for (size_t i = 0; i < n; ++i) {
-        f.velocity.values[i] = {double(contents->velocity[i].x), double(contents->velocity[i].y)};
-        f.drawn[i] = contents->drawn(i);
-    }
-    return f;
-}
-
-// The average of the shaded colour at `instants` times spread evenly over [-0.5, 0.5].
-// The truth and its residual noise: the RMSE between the average of the even-numbered instants
-// (half as many, as evenly spread) and the average of all of them.
-struct SceneTruth {
-    ColorGrid color;
-    double residualRmse = 0;
-};
-Result<SceneTruth> sceneGroundTruth(Device& device, tools::SceneRenderer& renderer, const tools::RasterScene& scene, uint32_t w, uint32_t h,
-                                    uint32_t instants) {
-    ColorGrid sum(w, h), even(w, h);
-    const uint32_t evenCount = (instants + 1) / 2;
-    for (uint32_t i = 0; i < instants; ++i) {
-        const double t = (i + 0.5) / instants - 0.5;
-        Result<tools::GBuffer> g = renderer.render(scene, w, h, t);
-        if (!g) return g.status();
-        Result<tools::GBufferContents> contents = tools::readBack(device, g.value());
-        renderer.destroy(g.value());
-        if (!contents) return contents.status();
-        const ColorGrid c = shadeGBuffer(contents.value());
-        for (size_t p = 0; p < sum.values.size(); ++p)
-            for (size_t ch = 0; ch < 4; ++ch) {
-                sum.values[p][ch] += c.values[p][ch] / instants;
-                if (i % 2 == 0) even.values[p][ch] += c.values[p][ch] / evenCount;
-            }
-    }
-    const tools::ColorErrors residual = tools::colorErrors(even, sum, std::vector<bool>(sum.values.size(), false));
-    return SceneTruth{std::move(sum), residual.rmse};
-}
-
 // Pixels within `radius` of an edge between surfaces in relative motion: 4-neighbours that
 // differ in coverage or by more than 3% in linear depth, and whose velocities differ by more
 // than 0.5 px. The 3D analogue of movingSilhouetteMask (which knows the 2.5D layers).
-std::vector<bool> sceneSilhouetteMask(const ShadedFrame& f, uint32_t radius) {
+std::vector<bool> sceneSilhouetteMask(const tools::ShadedFrame& f, uint32_t radius) {
     const uint32_t w = f.color.width, h = f.color.height;
     std::vector<bool> edge(size_t(w) * h, false), mask(size_t(w) * h, false);
     auto differ = [&](size_t a, size_t b) {
@@ -236,7 +164,7 @@ Status runSceneCases(Device& device, const std::string& backend, Tier tier, cons
         std::cout << "[" << sceneName << " 3D] " << backend << "/" << toString(tier) << ": ground truth from " << o.sceneInstants
                   << " rendered instants...\n"
                   << std::flush;
-        Result<SceneTruth> sceneTruth = sceneGroundTruth(device, *renderer.value(), scene.value(), o.width, o.height, o.sceneInstants);
+        Result<tools::SceneTruth> sceneTruth = tools::sceneGroundTruth(device, *renderer.value(), scene.value(), o.width, o.height, o.sceneInstants);
         if (!sceneTruth) return sceneTruth.status();
         const ColorGrid& truth = sceneTruth->color;
         std::cout << "  truth's residual noise: rmse " << sceneTruth->residualRmse << " between " << (o.sceneInstants + 1) / 2 << " and "
@@ -244,7 +172,7 @@ Status runSceneCases(Device& device, const std::string& backend, Tier tier, cons
         Result<tools::GBuffer> g = renderer.value()->render(scene.value(), o.width, o.height, 0.0);
         if (!g) return g.status();
         auto measure = [&]() -> Status {
-            Result<ShadedFrame> frame = readFrame(device, g.value());
+            Result<tools::ShadedFrame> frame = tools::readFrame(device, g.value());
             if (!frame) return frame.status();
             const std::vector<bool> mask = sceneSilhouetteMask(frame.value(), 4 + o.height / 60);
             const tools::ColorErrors input = tools::colorErrors(frame->color, truth, mask);

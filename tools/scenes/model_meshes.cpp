@@ -5,6 +5,7 @@
 
 #include <assimp/Importer.hpp>
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 
 namespace sfx::tools {
 
@@ -32,6 +33,33 @@ Result<scene::TriangleMesh> loadModelMesh(const std::string& path) {
     }
     if (mesh.indices.empty()) return Status{StatusCode::FileError, path + ": no triangles"};
     return mesh;
+}
+
+Result<StandingModel> loadStandingModel(const std::string& variant, double height) {
+    const std::string dir = "/usr/share/glmark2/models/";
+    Result<scene::TriangleMesh> model = variant == "bunny" ? scene::loadObjMesh(dir + "bunny.obj") : loadModelMesh(dir + variant + ".3ds");
+    if (!model) return model.status();
+    // The cat is modelled z-up, the horse rolled 60 degrees about its length (z); the bunny is y-up.
+    constexpr double kPi = 3.14159265358979323846;
+    const glm::dmat4 upright = variant == "cat" ? glm::rotate(glm::dmat4(1.0), -kPi / 2, glm::dvec3(1, 0, 0))
+        : variant == "horse"                    ? glm::rotate(glm::dmat4(1.0), -kPi / 3, glm::dvec3(0, 0, 1))
+                                                : glm::dmat4(1.0);
+    glm::dvec3 lo(1e30), hi(-1e30);
+    for (const scene::Vertex& v : model->vertices) {
+        const glm::dvec3 p(upright * glm::dvec4(glm::dvec3(v.position), 1.0));
+        lo = glm::min(lo, p), hi = glm::max(hi, p);
+    }
+    StandingModel out;
+    out.mesh = std::move(model.value());
+    out.upright = upright;
+    out.base = {(lo.x + hi.x) / 2, lo.y, (lo.z + hi.z) / 2};
+    out.scale = height / (hi.y - lo.y);
+    out.size = out.scale * (hi - lo);
+    return out;
+}
+
+glm::dmat4 StandingModel::placed(const glm::dmat4& placement) const {
+    return placement * glm::scale(glm::dmat4(1.0), glm::dvec3(scale)) * glm::translate(glm::dmat4(1.0), -base) * upright;
 }
 
 }  // namespace sfx::tools

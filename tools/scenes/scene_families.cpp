@@ -219,23 +219,11 @@ RasterScene interiorScene(uint32_t seed) {
 
 // A glmark2 model scaled to `height`, standing on the floor 0.15 in front of a back wall.
 Result<RasterScene> meshScene(const std::string& variant) {
-    const std::string dir = "/usr/share/glmark2/models/";
-    Result<scene::TriangleMesh> model = variant == "bunny" ? scene::loadObjMesh(dir + "bunny.obj") : loadModelMesh(dir + variant + ".3ds");
+    Result<StandingModel> model = loadStandingModel(variant, variant == "cat" ? 0.8 : 1.0);
     if (!model) return model.status();
-    // The cat is modelled z-up, the horse rolled 60 degrees about its length (z); the bunny is y-up.
-    const glm::dmat4 upright = variant == "cat" ? glm::rotate(glm::dmat4(1.0), -kPi / 2, glm::dvec3(1, 0, 0))
-        : variant == "horse"                    ? glm::rotate(glm::dmat4(1.0), -kPi / 3, glm::dvec3(0, 0, 1))
-                                                : glm::dmat4(1.0);
-    glm::dvec3 lo(1e30), hi(-1e30);
-    for (const Vertex& v : model->vertices) {
-        const glm::dvec3 p(upright * glm::dvec4(glm::dvec3(v.position), 1.0));
-        lo = glm::min(lo, p), hi = glm::max(hi, p);
-    }
-    const double height = variant == "cat" ? 0.8 : 1.0, scale = height / (hi.y - lo.y), wall = -1.2;
-    const glm::dvec3 place(0, 0, wall + 0.15 + scale * (hi.z - lo.z) / 2);
-    Mesh m(std::move(model.value()));
-    m.model = glm::translate(glm::dmat4(1.0), place) * glm::scale(glm::dmat4(1.0), glm::dvec3(scale)) *
-        glm::translate(glm::dmat4(1.0), -glm::dvec3((lo.x + hi.x) / 2, lo.y, (lo.z + hi.z) / 2)) * upright;
+    const double wall = -1.2;
+    Mesh m(std::move(model->mesh));
+    m.model = model->placed(glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, wall + 0.15 + model->size.z / 2)));
     RasterScene s;
     s.meshes = {floorQuad(6.0f), wallZ(float(wall), -6, 6, 3)};
     s.meshes.push_back(std::move(m));

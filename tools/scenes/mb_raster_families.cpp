@@ -1,0 +1,168 @@
+#include "mb_raster_families.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "mb_raster.hpp"
+#include "model_meshes.hpp"
+#include "sfx_shared_raster.h"
+
+namespace sfx::tools {
+
+using namespace sfx::reference;
+
+namespace {
+
+// Checkered (the raster pass's checker on world coordinates, 0.25 units a cell) unless coloured.
+Mesh quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
+    Mesh m;
+    scene::addQuad(m, a, b, c, d);
+    return m;
+}
+
+glm::dvec4 lambert(double r, double g, double b) { return {r, g, b, shared::SFX_RASTER_SHADING_LAMBERT}; }
+
+// A glmark2 model standing at `at`, turned by `yawDegrees` about the vertical.
+Result<Mesh> standing(const std::string& variant, double height, glm::dvec3 at, double yawDegrees, glm::dvec4 surface) {
+    Result<StandingModel> model = loadStandingModel(variant, height);
+    if (!model) return model.status();
+    Mesh m(std::move(model->mesh));
+    m.model = model->placed(glm::translate(glm::dmat4(1.0), at) * glm::rotate(glm::dmat4(1.0), glm::radians(yawDegrees), glm::dvec3(0, 1, 0)));
+    m.surface = surface;
+    return m;
+}
+
+// The scene with unit motion: object velocities / eye velocity in world units per shutter.
+Result<RasterScene> unitScene(const std::string& family) {
+    RasterScene s;
+    s.name = family;
+    s.fovYDegrees = 50;
+    if (family == "models") {
+        // The horse (near, moving right) passes in front of the cat (moving left and toward the
+        // camera) before a checkered wall and floor; a still camera.
+        s.meshes.push_back(quad({-8, -1, -2}, {8, -1, -2}, {8, 6, -2}, {-8, 6, -2}));
+        s.meshes.push_back(quad({-8, 0, 6}, {8, 0, 6}, {8, 0, -2}, {-8, 0, -2}));
+        Result<Mesh> horse = standing("horse", 1.0, {-0.3, 0, 1.0}, 90, lambert(0.75, 0.42, 0.22));
+        if (!horse) return horse.status();
+        horse->velocity = {1, 0, 0};
+        Result<Mesh> cat = standing("cat", 0.8, {0.4, 0, -0.6}, 0, lambert(0.35, 0.45, 0.8));
+        if (!cat) return cat.status();
+        cat->velocity = {-0.7, 0, 0.3};
+        s.meshes.push_back(std::move(horse.value()));
+        s.meshes.push_back(std::move(cat.value()));
+        s.eye = {0, 0.8, 3.2};
+        s.target = {0, 0.55, 0};
+    } else if (family == "camera") {
+        // Nothing moves but the camera, which pans right and dollies in: a sphere at depth 2.5,
+        // a thin post at 4, the bunny (floating) at 5.5, a box at 8.5 and the wall at 12.
+        s.meshes.push_back(quad({-12, -6, -8}, {12, -6, -8}, {12, 8, -8}, {-12, 8, -8}));
+        Mesh sphere(scene::sphereMesh({0.9f, 1.2f, 1.5f}, 0.35f));
+        s.meshes.push_back(std::move(sphere));
+        s.meshes.push_back(Mesh(scene::cylinderMesh({-0.5f, -0.5f, 0}, 0.06f, 3.0f)));
+        s.meshes.back().surface = lambert(0.9, 0.9, 0.85);
+        Result<Mesh> bunny = standing("bunny", 1.0, {-1.6, 0.4, -1.5}, 30, lambert(0.8, 0.55, 0.5));
+        if (!bunny) return bunny.status();
+        s.meshes.push_back(std::move(bunny.value()));
+        s.meshes.push_back(Mesh(scene::boxMesh({1.6f, -1.6f, -4.6f}, {3.0f, -0.4f, -3.6f})));
+        s.eye = {0, 1.0, 4.0};
+        s.target = {0, 1.0, 0};
+        s.eyeVelocity = {1, 0, -0.3};
+    } else {
+        return invalidArgument("raster motion blur family", "'" + family + "'", "models, camera");
+    }
+    return s;
+}
+
+void scaleMotion(RasterScene& s, double k) {
+    for (Mesh& m : s.meshes) m.velocity *= k;
+    s.eyeVelocity *= k;
+}
+
+double largestSpeed(const ShadedFrame& f) {
+    double v = 0;
+    for (const auto& e : f.velocity.values) v = std::max(v, std::hypot(e[0], e[1]));
+    return v;
+}
+
+Result<ShadedFrame> renderAt(Device& device, SceneRenderer& renderer, const RasterScene& s, uint32_t w, uint32_t h, double t) {
+    Result<GBuffer> g = renderer.render(s, w, h, t);
+    if (!g) return g.status();
+    Result<ShadedFrame> f = readFrame(device, g.value());
+    renderer.destroy(g.value());
+    return f;
+}
+
+// Records the first instant's surfaces and marks the masks as instants arrive.
+struct MaskBuilder {
+    FamilyMasks masks;
+    ShadedFrame first;
+    uint32_t instants = 0;
+    static bool nearer(const ShadedFrame& a, const ShadedFrame& b, size_t p) {  // b's surface in front of a's
+        if (!b.drawn[p]) return false;
+        return !a.drawn[p] || b.linearDepth.values[p] < 0.9 * a.linearDepth.values[p];
+    }
+    void operator()(uint32_t i, const ShadedFrame& f) {
+        const size_t n = f.drawn.size();
+        if (i == 0) {
+            first = f;
+            masks = {std::vector<bool>(n, false), std::vector<bool>(n, false), std::vector<bool>(n, false)};
+        }
+        for (size_t p = 0; p < n; ++p) {
+            const bool closer = nearer(first, f, p), farther = nearer(f, first, p);
+            const auto& v = f.velocity.values[p];
+            if ((f.drawn[p] && (v[0] != 0 || v[1] != 0)) || closer || farther) masks.moving[p] = true;
+            if (i + 1 < instants) continue;
+            if (closer) masks.leading[p] = true;
+            if (farther) masks.trailing[p] = true;
+        }
+    }
+};
+
+}  // namespace
+
+std::vector<std::string> rasterFamilyNames() { return {"models", "camera"}; }
+
+Result<RasterScene> rasterFamilyScene(Device& device, SceneRenderer& renderer, const std::string& family, double speedPx, uint32_t w, uint32_t h) {
+    Result<RasterScene> s = unitScene(family);
+    if (!s) return s;
+    SFX_TRY(renderer.load(s.value()));
+    // Three rescalings: exact for a motion parallel to the picture, within 1e-3 with the dolly.
+    for (int step = 0; step < 3; ++step) {
+        Result<ShadedFrame> f = renderAt(device, renderer, s.value(), w, h, 0.0);
+        if (!f) return f.status();
+        const double v = largestSpeed(f.value());
+        if (v <= 0) return Status{StatusCode::InvalidArgument, "raster motion blur family " + family + ": nothing moves"};
+        scaleMotion(s.value(), speedPx / v);
+    }
+    return s;
+}
+
+Result<RasterFamilyCase> makeRasterFamilyCase(Device& device, SceneRenderer& renderer, const std::string& family, double speedPx, uint32_t w,
+                                              uint32_t h, uint32_t instants) {
+    Result<RasterScene> s = rasterFamilyScene(device, renderer, family, speedPx, w, h);
+    if (!s) return s.status();
+    const RasterScene scene = std::move(s.value());
+    SFX_TRY(renderer.load(scene));  // render() reads the motion from the loaded meshes
+    RasterFamilyCase c;
+    c.family = family;
+    c.speedPx = speedPx;
+    MaskBuilder masks;
+    masks.instants = instants;
+    Result<SceneTruth> truth = sceneGroundTruth(device, renderer, scene, w, h, instants, std::ref(masks));
+    if (!truth) return truth.status();
+    c.truth = std::move(truth->color);
+    c.residualRmse = truth->residualRmse;
+    c.masks = std::move(masks.masks);
+    Result<ShadedFrame> f = renderAt(device, renderer, scene, w, h, 0.0);
+    if (!f) return f.status();
+    c.measuredSpeedPx = largestSpeed(f.value());
+    c.frame.color = std::move(f->color);
+    c.frame.depth = std::move(f->linearDepth);
+    c.frame.velocity = std::move(f->velocity);
+    c.frame.layer.resize(f->drawn.size());
+    for (size_t p = 0; p < f->drawn.size(); ++p) c.frame.layer[p] = f->drawn[p] ? 0 : -1;
+    return c;
+}
+
+}  // namespace sfx::tools
