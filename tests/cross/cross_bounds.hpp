@@ -57,10 +57,11 @@ inline constexpr double kWeightedBlendedPairWorst = (6 * kWeightedBlendedLayers 
 // may exceed the bound.
 inline constexpr double kLayerAoPairWorst = 2 * kHalfStepBelowOne;
 inline constexpr double kAlchemyTieFraction = 0.001;
-// Scene renderer, on rasterisers of the same sub-pixel grid (requireRasterPairsWithin): the same
-// float shading of interpolated normals and depth, the AO of the same taps, both stored as fp16
-// (one step each way) - two steps; the current tier adds one unorm8 step (its AO passes through
-// 8-bit targets; the colour scales it by an ambient share of at most 1).
+// Scene renderer, wherever two rasterisers cover the same pixels (edges far from pixel centres,
+// or the same sub-pixel grid: requireRasterPairsWithin): the same float shading of interpolated
+// normals and depth and the AO of the same taps, stored as fp16 on the way (one step each way
+// per store) - two steps; the current tier adds one unorm8 step (its AO passes through 8-bit
+// targets; the colour scales it by an ambient share of at most 1).
 inline constexpr double kRenderPairWorst = 2 * kHalfStepBelowOne;
 
 }  // namespace sfx::test
