@@ -82,7 +82,7 @@ void compareOit(Tier tier) {
 
 // test_oit_layers.cpp's panes over an opaque floor: up to five layers, one pane authored
 // backwards (back-facing), so compression drops some and every AO branch runs. Each faces the
-// camera, so it is a window-aligned rectangle; its corners are moved (by under 0.02 units) so
+// camera, so it is a window-aligned rectangle; its corners are moved (by at most 0.052 units) so
 // that its edges fall on whole window pixels, half a pixel from every pixel centre
 // (panesMissPixelCentres checks it): no rasteriser's sub-pixel snap can change their coverage.
 constexpr double kNear = 0.5, kFar = 20.0;
