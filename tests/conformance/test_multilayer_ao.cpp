@@ -43,88 +43,35 @@ void checkRefusedHere() {
     CHECK(ao.status().message().find("AoSettings.depthLayers") != std::string::npos);
 }
 
-// Layers of an analytic scene with foreground blocks: on a checker of 8-pixel blocks layer 0 is
-// a surface at 0.6 of the scene's depth (a foreground object) and layer 1 the scene itself, the
-// occluder single-layer AO cannot see; every further layer lies 0.06 to 0.18 (a smooth ripple)
-// behind the one before, within the AO radius, with holes (no layer: 0) on a pattern, so taps
-// see every mix of layers present and absent.
-std::vector<std::vector<float>> syntheticLayers(const tools::AnalyticScene& s, uint32_t layers) {
-    std::vector<std::vector<float>> out(layers, std::vector<float>(size_t(s.width) * s.height, 0.0f));
-    for (uint32_t y = 0; y < s.height; ++y)
-        for (uint32_t x = 0; x < s.width; ++x) {
-            const size_t i = size_t(y) * s.width + x;
-            const double z0 = s.linearDepth.values[i];
-            out[0][i] = float(z0);
-            if (!(z0 < s.reconstruction.maxDepth)) continue;
-            uint32_t l = 1;
-            double z = z0;
-            if ((x / 8 + y / 8) % 3 == 0) {
-                out[0][i] = float(0.6 * z0);
-                out[1][i] = float(z0);
-                l = 2;
-            }
-            for (; l < layers; ++l) {
-                if ((x / 3 + y / 2 + l) % 5 == 0) break;  // no surface behind this one
-                z += 0.12 * (1.0 + 0.5 * std::sin(0.3 * x + l) * std::cos(0.2 * y));
-                out[l][i] = float(z);
-            }
-        }
-    return out;
-}
-
 struct MultilayerRun {
     Grid gpu, reference, single;
 };
 
 MultilayerRun runMultilayer(const tools::AnalyticScene& scene, AoTechnique t, uint32_t layers) {
-    Device& dev = test::device();
-    AoSettings s = test::aoTestSettings(t, 1.0);
-    s.blur = false;  // the reference is the raw estimate
-    s.resolution = AoResolution::Full;
-    s.depthLayers = layers;
-    auto ao = AmbientObscurance::create(dev, {scene.width, scene.height, test::tierProfile(), s, DepthKind::Linear});
-    INFO(ao.status().toString());
-    REQUIRE(ao.isOk());
-    const std::vector<std::vector<float>> depths = syntheticLayers(scene, layers);
-    std::vector<TextureHandle> textures;
-    for (const std::vector<float>& d : depths) {
-        TextureHandle tex = dev.createTexture({scene.width, scene.height, 1, Format::R32F, kTextureSampled, "ml-layer"}).value();
-        SFX_REQUIRE_OK(dev.writeTexture(tex, 0, d.data(), d.size() * sizeof(float)));
-        textures.push_back(tex);
-    }
-    TextureHandle out = dev.createTexture({scene.width, scene.height, 1, Format::R32F, kTextureSampled | kTextureRenderTarget, "ml-out"}).value();
-    AoInputs in;
-    in.depth = DepthSource{textures[0], DepthKind::Linear, scene.camera};
-    for (uint32_t l = 1; l < layers; ++l) in.depthLayers[l - 1] = textures[l];
-    in.output = out;
-    SFX_REQUIRE_OK(ao.value()->dispatch(in));
-    SFX_REQUIRE_OK(dev.flush());
-    std::vector<float> px(size_t(scene.width) * scene.height);
-    SFX_REQUIRE_OK(dev.readTexture(out, 0, px.data(), px.size() * sizeof(float)));
+    const std::vector<std::vector<float>> depths = test::syntheticDepthLayers(scene, layers);
+    const test::GpuMultilayerAo gpu = test::runMultilayerAo(test::device(), test::tierProfile(), scene, t, depths);
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
     MultilayerRun r;
-    r.gpu = Grid(scene.width, scene.height);
-    for (size_t i = 0; i < px.size(); ++i) r.gpu.values[i] = px[i];
+    r.gpu = gpu.visibility;
+    const size_t n = r.gpu.values.size();
 
     // The reference reads the same float depths; normals from layer 0 by the shaders' rule.
     reference::DepthLayers ref, one;
     ref.width = one.width = scene.width;
     ref.height = one.height = scene.height;
-    ref.reconstruction = one.reconstruction = ao.value()->linearDepth().reconstruction();
+    ref.reconstruction = one.reconstruction = gpu.reconstruction;
     Grid layer0(scene.width, scene.height);
-    for (size_t i = 0; i < px.size(); ++i) layer0.values[i] = depths[0][i];
+    for (size_t i = 0; i < n; ++i) layer0.values[i] = depths[0][i];
     ref.normals = one.normals = reference::normalsFromDepth(layer0, ref.reconstruction);
-    ref.depths.resize(px.size());
-    one.depths.resize(px.size());
-    for (size_t i = 0; i < px.size(); ++i) {
+    ref.depths.resize(n);
+    one.depths.resize(n);
+    for (size_t i = 0; i < n; ++i) {
         one.depths[i] = {double(depths[0][i])};
         for (uint32_t l = 0; l < layers; ++l)
             if (l == 0 || depths[l][i] > 0.0f) ref.depths[i].push_back(depths[l][i]);
     }
-    r.reference = reference::multilayerVisibility(ref, ao.value()->config());
-    r.single = reference::multilayerVisibility(one, ao.value()->config());
-    for (TextureHandle tex : textures) SFX_REQUIRE_OK(dev.destroyTexture(tex));
-    SFX_REQUIRE_OK(dev.destroyTexture(out));
+    r.reference = reference::multilayerVisibility(ref, gpu.config);
+    r.single = reference::multilayerVisibility(one, gpu.config);
     return r;
 }
 

@@ -1,9 +1,10 @@
 // The backends compared with each other: the same inputs through every pair of backends this
 // machine has, at each tier (current: under the GL ES 3.0 ceiling), must give the same output
-// of every effect - linear depth and its pyramid, AO per technique with and without blur,
-// motion blur - with the worst pixel within a stated bound (docs/conformance.md). Fewer than
-// two backends at a tier is a skip (CTest "skipped"), or a failure under
-// SFX_REQUIRE_ALL_BACKENDS=1.
+// of every effect - here linear depth and its pyramid, AO per technique with and without blur,
+// motion blur; OIT and multilayer AO in test_cross_oit.cpp, the scene renderer in
+// test_cross_render.cpp - with the worst pixel within a stated bound (cross_bounds.hpp,
+// docs/conformance.md). Fewer than two backends at a tier is a skip (CTest "skipped"), or a
+// failure under SFX_REQUIRE_ALL_BACKENDS=1.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -12,6 +13,8 @@
 #include <map>
 #include <optional>
 
+#include "cross_bounds.hpp"
+#include "cross_compare.hpp"
 #include "effect_runs.hpp"
 #include "sfx/backends.hpp"
 #include "sfx/depth.hpp"
@@ -20,98 +23,9 @@
 #include "skips.hpp"
 
 using namespace sfx;
+using namespace sfx::test;
 
 namespace {
-
-// Worst-pixel bounds between two backends (docs/conformance.md gives the measured worst).
-// AO: every backend evaluates the same float taps on the same float inputs, so only the order
-// of float operations may differ: a few ulps of a visibility in [0, 1]. A tap that rounds to
-// another pixel, a wrong MIP level or a missed blur weight moves a pixel by 1e-3 or more and
-// fails. (Measured: 1.8e-7, lavapipe vs llvmpipe.)
-constexpr double kAoPairWorst = 1e-5;
-// Horizon's arc takes acos: each backend is within kAoHorizonTrigBound of the exact arc
-// (docs/ao.md), so two are within twice that (measured 1.4e-4, SwiftShader vs lavapipe). On the current tier the AO passes through 8-bit targets, where two
-// floats that differ at all may round to neighbouring codes: one unorm8 step more.
-constexpr double kAoHorizonPairWorst = 2 * test::kAoHorizonTrigBound;
-constexpr double kUnorm8Step = 1.0 / 255.0;
-// Motion blur: the output is fp16, so operation order can move a channel by one fp16 ulp
-// below 1 (2^-11); two ulps allowed. A different tap or weight decision moves it far more.
-// (Measured: 0.)
-constexpr double kMotionBlurPairWorst = 2.0 / 2048.0;
-
-struct Opened {
-    std::string name;
-    std::unique_ptr<Device> device;
-};
-
-// Every compiled backend at `tier` (current: under the GL ES 3.0 ceiling), and the Vulkan
-// backend once on each physical device the loader lists (given lavapipe and SwiftShader, two
-// independent compilers compared in one run). An absent backend is reported; with
-// SFX_REQUIRE_ALL_BACKENDS set it fails the test.
-std::vector<Opened> openAll(Tier tier) {
-    std::vector<Opened> out;
-    for (const BackendConfig& config : compiledBackends()) {
-        std::vector<std::string> choices{""};  // "": the backend's own choice
-        if (config.backend == BackendKind::Vulkan) {
-            if (Result<std::vector<std::string>> listed = describeVulkanDevices(); listed && listed->size() > 1) {
-                choices.clear();
-                for (size_t i = 0; i < listed->size(); ++i) choices.push_back(std::to_string(i));
-            }
-        }
-        for (const std::string& choice : choices) {
-            DeviceOptions options;
-            options.validation = true;
-            options.ceiling = tiers::row(tier).ceiling;
-            options.physicalDevice = choice;
-            Result<std::unique_ptr<Device>> device = openDevice(config, options);
-            if (!device) {
-                WARN("backend " << toString(config) << (choice.empty() ? "" : " device " + choice)
-                                << " could not be opened: " << device.status().toString());
-                if (test::requireAllBackends()) FAIL("SFX_REQUIRE_ALL_BACKENDS is set: every backend is required here");
-                continue;
-            }
-            const std::string name = choice.empty() ? toString(config) : toString(config) + " (" + device.value()->caps().deviceName + ")";
-            out.push_back({name, std::move(device.value())});
-        }
-    }
-    return out;
-}
-
-void requireNoValidation(std::vector<Opened>& devices) {
-    for (Opened& o : devices) {
-        auto messages = o.device->takeValidationMessages();
-        for (const auto& m : messages) UNSCOPED_INFO(o.name << " validation: " << m);
-        REQUIRE(messages.empty());
-    }
-}
-
-// Every pair of backends' outputs (one value per channel and pixel): the worst difference is
-// within `bound`; the measured worst is printed so the bound stays honest.
-void requirePairsWithin(const std::map<std::string, std::vector<double>>& results, double bound, const std::string& what) {
-    for (auto a = results.begin(); a != results.end(); ++a)
-        for (auto b = std::next(a); b != results.end(); ++b) {
-            REQUIRE(a->second.size() == b->second.size());
-            double worst = 0;
-            size_t worstAt = 0;
-            for (size_t i = 0; i < a->second.size(); ++i) {
-                REQUIRE(std::isfinite(a->second[i]));
-                REQUIRE(std::isfinite(b->second[i]));
-                const double d = std::abs(a->second[i] - b->second[i]);
-                if (d > worst) worst = d, worstAt = i;
-            }
-            INFO(what << ": " << a->first << " vs " << b->first << ": worst difference " << worst << " at value " << worstAt << " (bound " << bound
-                      << ")");
-            CHECK(worst <= bound);
-            WARN(what << ": " << a->first << " vs " << b->first << ": worst " << worst << " (bound " << bound << ")");
-        }
-}
-
-// The backends at `tier`, or a skip when fewer than two opened: there is nothing to compare.
-// clang-format off
-#define SFX_OPEN_AT_LEAST_TWO(devices, tier)                                                             \
-    std::vector<Opened> devices = openAll(tier);                                                         \
-    if (devices.size() < 2) SFX_SKIP("fewer than two backends at tier " << toString(tier) << ": nothing to compare")
-// clang-format on
 
 void compareAo(Tier tier) {
     SFX_OPEN_AT_LEAST_TWO(devices, tier);
@@ -152,12 +66,13 @@ void compareMotionBlur(Tier tier) {
         MotionBlurSettings s;
         s.maxRadiusPx = radius;
         s.referenceRows = 0;
-        std::map<std::string, std::vector<double>> results;
+        std::map<std::string, std::vector<double>> results, velocities;
         for (Opened& o : devices) {
             INFO(o.name << " / " << toString(tier) << " radius " << (radius ? std::to_string(*radius) : "the tier's"));
-            const ColorGrid out = test::runMotionBlur(*o.device, tiers::profile(tier), f.color, f.depth, &f.velocity, s);
+            const GpuMotionBlur out = test::runMotionBlurPasses(*o.device, tiers::profile(tier), f.color, f.depth, &f.velocity, s);
             std::vector<double>& flat = results[o.name];
-            for (const auto& px : out.values) flat.insert(flat.end(), px.begin(), px.end());
+            for (const auto& px : out.color.values) flat.insert(flat.end(), px.begin(), px.end());
+            for (const auto& v : out.radiusPx.values) velocities[o.name].insert(velocities[o.name].end(), v.begin(), v.end());
         }
         requireNoValidation(devices);
         // Agreement means something only if the output is blurred: far from the input somewhere.
@@ -166,8 +81,9 @@ void compareMotionBlur(Tier tier) {
         for (size_t i = 0; i < f.color.values.size(); ++i)
             for (size_t c = 0; c < 4; ++c) moved = std::max(moved, std::abs(any[i * 4 + c] - f.color.values[i][c]));
         CHECK(moved > 0.1);
-        requirePairsWithin(results, kMotionBlurPairWorst,
-                           "motion blur radius " + std::to_string(int(radius.value_or(0))) + " at tier " + toString(tier));
+        const std::string what = "motion blur radius " + std::to_string(int(radius.value_or(0))) + " at tier " + toString(tier);
+        requirePairsWithin(results, kMotionBlurPairWorst, what);
+        requirePairsWithin(velocities, kVelocityPairWorst, what + ", pass-1 velocities");
     }
 }
 

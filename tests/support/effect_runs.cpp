@@ -75,6 +75,61 @@ GpuAo runAo(Device& dev, const TierProfile& tier, const tools::AnalyticScene& sc
     return result;
 }
 
+std::vector<std::vector<float>> syntheticDepthLayers(const tools::AnalyticScene& s, uint32_t layers) {
+    std::vector<std::vector<float>> out(layers, std::vector<float>(size_t(s.width) * s.height, 0.0f));
+    for (uint32_t y = 0; y < s.height; ++y)
+        for (uint32_t x = 0; x < s.width; ++x) {
+            const size_t i = size_t(y) * s.width + x;
+            const double z0 = s.linearDepth.values[i];
+            out[0][i] = float(z0);
+            if (!(z0 < s.reconstruction.maxDepth)) continue;
+            uint32_t l = 1;
+            double z = z0;
+            if ((x / 8 + y / 8) % 3 == 0) {
+                out[0][i] = float(0.6 * z0);
+                out[1][i] = float(z0);
+                l = 2;
+            }
+            for (; l < layers; ++l) {
+                if ((x / 3 + y / 2 + l) % 5 == 0) break;  // no surface behind this one
+                z += 0.12 * (1.0 + 0.5 * std::sin(0.3 * x + l) * std::cos(0.2 * y));
+                out[l][i] = float(z);
+            }
+        }
+    return out;
+}
+
+GpuMultilayerAo runMultilayerAo(Device& dev, const TierProfile& tier, const tools::AnalyticScene& scene, AoTechnique technique,
+                                const std::vector<std::vector<float>>& layers) {
+    AoSettings s = aoTestSettings(technique, 1.0);
+    s.blur = false;  // the references are the raw estimate
+    s.resolution = AoResolution::Full;
+    s.depthLayers = uint32_t(layers.size());
+    auto ao = AmbientObscurance::create(dev, {scene.width, scene.height, tier, s, DepthKind::Linear});
+    INFO(ao.status().toString());
+    REQUIRE(ao.isOk());
+    std::vector<TextureHandle> textures;
+    for (const std::vector<float>& d : layers) {
+        TextureHandle tex = dev.createTexture({scene.width, scene.height, 1, Format::R32F, kTextureSampled, "ml-layer"}).value();
+        SFX_REQUIRE_OK(dev.writeTexture(tex, 0, d.data(), d.size() * sizeof(float)));
+        textures.push_back(tex);
+    }
+    TextureHandle out = dev.createTexture({scene.width, scene.height, 1, Format::R32F, kTextureSampled | kTextureRenderTarget, "ml-out"}).value();
+    AoInputs in;
+    in.depth = DepthSource{textures[0], DepthKind::Linear, scene.camera};
+    for (size_t l = 1; l < layers.size(); ++l) in.depthLayers[l - 1] = textures[l];
+    in.output = out;
+    SFX_REQUIRE_OK(ao.value()->dispatch(in));
+    SFX_REQUIRE_OK(dev.flush());
+    std::vector<float> px(size_t(scene.width) * scene.height);
+    SFX_REQUIRE_OK(dev.readTexture(out, 0, px.data(), px.size() * sizeof(float)));
+    GpuMultilayerAo r{Grid(scene.width, scene.height), ao.value()->config(), ao.value()->linearDepth().reconstruction()};
+    for (size_t i = 0; i < px.size(); ++i) r.visibility.values[i] = px[i];
+    for (TextureHandle tex : textures) SFX_REQUIRE_OK(dev.destroyTexture(tex));
+    SFX_REQUIRE_OK(dev.destroyTexture(out));
+    return r;
+}
+
 AoSettings aoTestSettings(AoTechnique t, double scale) {
     AoSettings s;
     s.technique = t;
@@ -203,6 +258,52 @@ TranslucentQuads::TranslucentQuads(Device& d, uint32_t w, uint32_t h, float half
     const bool zeroToOne = d.caps().clipDepth == ClipDepthRange::ZeroToOne;
     projection[2][2] = zeroToOne ? -1.0f / 19.5f : -2.0f / 19.5f;
     projection[3][2] = zeroToOne ? -0.5f / 19.5f : -1.0f / 19.5f - 1.0f;
+}
+
+GpuTransparency runTransparency(Device& d, const TransparencyDesc& desc, const std::vector<glm::dvec4>& opaqueColor,
+                                const std::vector<float>& opaqueDepth, const glm::mat4& view, const glm::mat4& projection,
+                                std::span<const TransparentDraw> draws) {
+    const uint32_t w = desc.width, h = desc.height;
+    const size_t n = size_t(w) * h;
+    REQUIRE(opaqueColor.size() == n);
+    REQUIRE(opaqueDepth.size() == n);
+    auto created = Transparency::create(d, desc);
+    INFO(created.status().toString());
+    REQUIRE(created.isOk());
+    std::unique_ptr<Transparency> oit = std::move(created.value());
+    std::vector<uint16_t> halves;
+    for (const glm::dvec4& c : opaqueColor)
+        for (int ch = 0; ch < 4; ++ch) halves.push_back(floatToHalf(float(c[ch])));
+    TextureHandle color = d.createTexture({w, h, 1, Format::RGBA16F, kTextureSampled | kTextureRenderTarget, "test-oit-opaque"}).value();
+    TextureHandle depth = d.createTexture({w, h, 1, Format::D32F, kTextureSampled | kTextureRenderTarget, "test-oit-depth"}).value();
+    SFX_REQUIRE_OK(d.writeTexture(color, 0, halves.data(), halves.size() * 2));
+    SFX_REQUIRE_OK(d.writeTexture(depth, 0, opaqueDepth.data(), opaqueDepth.size() * 4));
+    TransparencyInputs in;
+    in.opaqueColor = color;
+    in.opaqueDepth = depth;
+    in.view = view;
+    in.projection = projection;
+    in.draws = draws;
+    for (int f = 0; f < 2; ++f) {
+        SFX_REQUIRE_OK(oit->render(in));
+        SFX_REQUIRE_OK(d.flush());
+    }
+    GpuTransparency g;
+    std::vector<uint16_t> out(n * 4);
+    SFX_REQUIRE_OK(d.readTexture(oit->output(), 0, out.data(), out.size() * 2));
+    for (uint16_t v : out) g.color.push_back(double(halfToFloat(v)));
+    if (!oit->aoOutput().isNull()) {
+        std::vector<uint16_t> ao(n * 2);
+        SFX_REQUIRE_OK(d.readTexture(oit->aoOutput(), 0, ao.data(), ao.size() * 2));
+        for (uint16_t v : ao) g.ao.push_back(double(halfToFloat(v)));
+    }
+    Result<TransparencyStats> stats = oit->stats();
+    REQUIRE(stats.isOk());
+    g.stats = stats.value();
+    oit.reset();
+    SFX_REQUIRE_OK(d.destroyTexture(color));
+    SFX_REQUIRE_OK(d.destroyTexture(depth));
+    return g;
 }
 
 TranslucentQuads::~TranslucentQuads() {

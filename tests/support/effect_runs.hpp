@@ -42,6 +42,23 @@ Format pickFormat(Device& device, std::initializer_list<Format> wanted, bool ren
 GpuAo runAo(Device& device, const TierProfile& tier, const tools::AnalyticScene& scene, const AoSettings& settings,
             DepthKind descInput = DepthKind::Linear);
 
+// Depth layers of an analytic scene with foreground blocks: on a checker of 8-pixel blocks layer 0
+// is a surface at 0.6 of the scene's depth (a foreground object) and layer 1 the scene itself, the
+// occluder single-layer AO cannot see; every further layer lies 0.06 to 0.18 (a smooth ripple)
+// behind the one before, within the AO radius, with holes (no layer: 0) on a pattern, so taps
+// see every mix of layers present and absent. Linear depth, layer 0 first.
+std::vector<std::vector<float>> syntheticDepthLayers(const tools::AnalyticScene& scene, uint32_t layers);
+
+// Multilayer AO (AoSettings.depthLayers = layers.size()) of `layers` (R32F linear depth each)
+// into an R32F target, raw (no blur), at full resolution.
+struct GpuMultilayerAo {
+    reference::Grid visibility;
+    AoConfig config;
+    DepthReconstruction reconstruction;
+};
+GpuMultilayerAo runMultilayerAo(Device& device, const TierProfile& tier, const tools::AnalyticScene& scene, AoTechnique technique,
+                                const std::vector<std::vector<float>>& layers);
+
 // The motion blur tests' camera for a w x h target.
 CameraProjection motionBlurTestCamera(uint32_t w, uint32_t h);
 
@@ -92,5 +109,18 @@ struct TranslucentQuads {
     TranslucentQuads& operator=(const TranslucentQuads&) = delete;
     ~TranslucentQuads();
 };
+
+// sfx::Transparency with `desc` over an opaque picture of desc.width x desc.height (row 0 first):
+// `opaqueColor` RGBA per pixel, held as RGBA16F, and `opaqueDepth` the D32F attachment's values.
+// Two frames are rendered (the second's pool sized from the first's count, as a host's steady
+// scene is) and the second read back as doubles: the RGBA16F composite, and the RG16F AO through
+// the layers (blended, opaque per pixel) when the effect made one.
+struct GpuTransparency {
+    std::vector<double> color, ao;
+    TransparencyStats stats;
+};
+GpuTransparency runTransparency(Device& device, const TransparencyDesc& desc, const std::vector<glm::dvec4>& opaqueColor,
+                                const std::vector<float>& opaqueDepth, const glm::mat4& view, const glm::mat4& projection,
+                                std::span<const TransparentDraw> draws);
 
 }  // namespace sfx::test

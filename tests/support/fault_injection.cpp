@@ -96,7 +96,10 @@ Result<SamplerHandle> FaultInjectingDevice::doCreateSampler(const SamplerDesc& d
 
 Result<ProgramHandle> FaultInjectingDevice::doCreateProgram(const CompiledProgram& program) {
     if (Status s = enter("createProgram", true, false); !s) return s;
-    return inner_.createProgram(program);
+    if (!rewrite_) return inner_.createProgram(program);
+    CompiledProgram edited = program;
+    if (rewrite_(edited)) ++rewritten_;
+    return inner_.createProgram(edited);
 }
 
 Result<PipelineHandle> FaultInjectingDevice::doCreateGraphicsPipeline(const GraphicsPipelineDesc& desc, validation::PipelineInfo) {

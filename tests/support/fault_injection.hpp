@@ -1,7 +1,8 @@
 // A test-only HAL decorator that makes a real device fail on purpose: the k-th resource creation
 // (texture, buffer, sampler, program, pipeline or timer), the k-th submit (flush, or a read,
 // which flushes first), or device loss from the k-th call on (every call after it fails, as
-// on a GPU reset). Everything else is forwarded to the wrapped device, whose handles pass
+// on a GPU reset); or run a defect in its programs, which only a comparison with another device
+// can see. Everything else is forwarded to the wrapped device, whose handles pass
 // through unchanged, so the wrapped device's stats() tell whether a failed attempt leaked.
 // Its own front end checks every call against the wrapped device's objects first, so a fault
 // hits only calls that pass the checks, as a real device's failure would.
@@ -12,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 
 #include "sfx/hal.hpp"
 #include "sfx/hal_validation.hpp"
@@ -36,6 +38,15 @@ public:
     void resetCounts() { creations_ = submits_ = calls_ = 0; }
     bool faultFired() const { return fired_; }  // since the fault was armed
     bool lost() const { return lost_; }
+
+    // A defect in what this one device runs (independent of the armed fault): `rewrite` edits a
+    // copy of each program before the wrapped device creates it, and says whether it changed
+    // anything (e.g. one line of a GL dialect's source). Empty: programs pass unchanged.
+    void rewritePrograms(std::function<bool(CompiledProgram&)> rewrite) {
+        rewrite_ = std::move(rewrite);
+        rewritten_ = 0;
+    }
+    uint64_t rewrittenPrograms() const { return rewritten_; }  // since rewritePrograms
 
     Device& inner() { return inner_; }
 
@@ -98,6 +109,8 @@ private:
     uint64_t armedCreations_ = 0, armedSubmits_ = 0, armedCalls_ = 0;
     uint64_t creations_ = 0, submits_ = 0, calls_ = 0;
     bool fired_ = false, lost_ = false;
+    std::function<bool(CompiledProgram&)> rewrite_;
+    uint64_t rewritten_ = 0;
 };
 
 }  // namespace sfx::test

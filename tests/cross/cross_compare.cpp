@@ -1,0 +1,110 @@
+#include "cross_compare.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sfx/tiers.hpp"
+
+namespace sfx::test {
+
+std::vector<Opened> openAll(Tier tier) {
+    std::vector<Opened> out;
+    for (const BackendConfig& config : compiledBackends()) {
+        std::vector<std::string> choices{""};  // "": the backend's own choice
+        if (config.backend == BackendKind::Vulkan) {
+            if (Result<std::vector<std::string>> listed = describeVulkanDevices(); listed && listed->size() > 1) {
+                choices.clear();
+                for (size_t i = 0; i < listed->size(); ++i) choices.push_back(std::to_string(i));
+            }
+        }
+        for (const std::string& choice : choices) {
+            DeviceOptions options;
+            options.validation = true;
+            options.ceiling = tiers::row(tier).ceiling;
+            options.physicalDevice = choice;
+            Result<std::unique_ptr<Device>> device = openDevice(config, options);
+            if (!device) {
+                WARN("backend " << toString(config) << (choice.empty() ? "" : " device " + choice)
+                                << " could not be opened: " << device.status().toString());
+                if (requireAllBackends()) FAIL("SFX_REQUIRE_ALL_BACKENDS is set: every backend is required here");
+                continue;
+            }
+            const std::string name = choice.empty() ? toString(config) : toString(config) + " (" + device.value()->caps().deviceName + ")";
+            out.push_back({name, config.backend, std::move(device.value())});
+        }
+    }
+    return out;
+}
+
+void requireNoValidation(std::vector<Opened>& devices) {
+    for (Opened& o : devices) {
+        auto messages = o.device->takeValidationMessages();
+        for (const auto& m : messages) UNSCOPED_INFO(o.name << " validation: " << m);
+        REQUIRE(messages.empty());
+    }
+}
+
+Worst worstDifference(const std::vector<double>& a, const std::vector<double>& b, double bound) {
+    REQUIRE(a.size() == b.size());
+    Worst w;
+    size_t nonFinite = 0, firstNonFinite = 0;
+    for (size_t i = 0; i < a.size(); ++i) {
+        if (!std::isfinite(a[i]) || !std::isfinite(b[i])) {
+            if (nonFinite++ == 0) firstNonFinite = i;
+            continue;
+        }
+        const double d = std::abs(a[i] - b[i]);
+        if (d > w.value) w.value = d, w.at = i;
+        w.beyond += d > bound ? 1 : 0;
+    }
+    // One assertion for the lot: a per-value one costs more than the comparison.
+    INFO(nonFinite << " values not finite, the first at " << firstNonFinite);
+    REQUIRE(nonFinite == 0);
+    return w;
+}
+
+void requirePairsWithin(const std::map<std::string, std::vector<double>>& results, double bound, const std::string& what, double tieFraction) {
+    for (auto a = results.begin(); a != results.end(); ++a)
+        for (auto b = std::next(a); b != results.end(); ++b) {
+            const Worst worst = worstDifference(a->second, b->second, bound);
+            INFO(what << ": " << a->first << " vs " << b->first << ": worst difference " << worst.value << " at value " << worst.at << " ("
+                      << a->second[worst.at] << " vs " << b->second[worst.at] << ", bound " << bound << "), " << worst.beyond << " of "
+                      << a->second.size() << " values beyond it");
+            if (tieFraction > 0.0)
+                CHECK(double(worst.beyond) <= tieFraction * double(a->second.size()));
+            else
+                CHECK(worst.value <= bound);
+            WARN(what << ": " << a->first << " vs " << b->first << ": worst " << worst.value << " (bound " << bound << "; " << worst.beyond << " of "
+                      << a->second.size() << " values beyond it)");
+        }
+}
+
+void requireRasterPairsWithin(const std::vector<Opened>& devices, const std::map<std::string, std::vector<double>>& results, double bound,
+                              const std::string& what, double tieFraction) {
+    std::map<uint32_t, std::map<std::string, std::vector<double>>> byGrid;
+    std::map<std::string, uint32_t> gridOf;
+    for (const Opened& o : devices) {
+        const uint32_t bits = o.device->caps().limits.subPixelPrecisionBits;
+        gridOf[o.name] = bits;
+        if (results.count(o.name)) byGrid[bits][o.name] = results.at(o.name);
+    }
+    for (const auto& [bits, group] : byGrid)
+        requirePairsWithin(group, bound, what + " (sub-pixel grid 1/" + std::to_string(1u << bits) + ")", tieFraction);
+    for (auto a = results.begin(); a != results.end(); ++a)
+        for (auto b = std::next(a); b != results.end(); ++b) {
+            if (gridOf[a->first] == gridOf[b->first]) continue;
+            const Worst worst = worstDifference(a->second, b->second, bound);
+            WARN(what << ": " << a->first << " vs " << b->first << ": sub-pixel grids 1/" << (1u << gridOf[a->first]) << " and 1/"
+                      << (1u << gridOf[b->first]) << " cover silhouettes differently, not compared: worst " << worst.value << ", " << worst.beyond
+                      << " of " << a->second.size() << " values beyond " << bound);
+        }
+}
+
+void requireSpan(const std::vector<double>& values, double minSpan, const std::string& what) {
+    REQUIRE_FALSE(values.empty());
+    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+    INFO(what << ": the output spans " << *lo << " to " << *hi << ", less than " << minSpan << ": nothing to agree on");
+    CHECK(*hi - *lo > minSpan);
+}
+
+}  // namespace sfx::test
