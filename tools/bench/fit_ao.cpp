@@ -1,7 +1,8 @@
 // fit_ao: calibrates the AO techniques' default settings against ray-traced ground truth.
 // For each tier x technique it searches intensity and contrast (and Alchemy's and
 // Scalable's bias and sum exponent, crease's range and bias) coarse to fine, maximising the mean PSNR over the
-// frame plus the mean PSNR where the truth is below 0.95, on the views of the TRAINING scene
+// frame plus the mean PSNR where the truth is below 0.95, less a penalty where the mean signed
+// error there passes --bright-limit (too bright in contacts), on the views of the TRAINING scene
 // families (tools/scenes/scene_families.*) at each view's radius with the blur on (the
 // default); then it scores the fitted settings and today's defaults on the HELD-OUT families,
 // whose kind of geometry the search never saw, each family on its own as well. Writes
@@ -46,7 +47,13 @@ struct Options {
     std::vector<std::string> tiers{"high", "current"};
     bool diagnose = false;        // score the tier defaults' variants instead of fitting
     std::string start = "paper";  // where the search starts: the papers' look, or the tier table's
+    // Mean signed error where the truth is occluded above which the objective pays: a look may
+    // not buy PSNR by leaving contacts and creases too bright (negative: no limit).
+    double brightLimit = -1;
 };
+
+// dB of objective lost per unit of training signed error beyond the limit: 0.01 too bright costs 1 dB.
+constexpr double kBrightPenaltyDb = 100.0;
 
 // A searched parameter: a field of AoSettings, its range and whether the search steps in log space.
 struct Parameter {
@@ -127,7 +134,12 @@ Result<AoSettings> fit(tools::AoEvaluator& ev, const AoSettings& start, const st
     for (const Parameter& p : params) best.push_back(p.toUnit(p.of(start)));
     Result<tools::AoScore> first = ev.score(start, training);
     if (!first) return first.status();
-    double bestObjective = first->objective();
+    auto objective = [&](const tools::AoScore& r) {
+        const double excess = o.brightLimit < 0 ? 0.0 : std::max(0.0, r.signedOccluded - o.brightLimit);
+        return r.objective() - kBrightPenaltyDb * excess;
+    };
+    double bestObjective = objective(first.value());
+    double bestSigned = first->signedOccluded;
     // Scores the point u (clamped to the cube); keeps it when better. *improved says so.
     auto tryPoint = [&](std::vector<double> u, bool* improved) -> Status {
         for (double& x : u) x = std::clamp(x, 0.0, 1.0);
@@ -135,12 +147,13 @@ Result<AoSettings> fit(tools::AoEvaluator& ev, const AoSettings& start, const st
         if (u == best) return Status::ok();  // at a bound: nothing new
         Result<tools::AoScore> r = ev.score(settingsAt(u), training);
         if (!r) return r.status();
-        if (r->objective() > bestObjective + 1e-6) bestObjective = r->objective(), best = u, *improved = true;
+        if (objective(r.value()) > bestObjective + 1e-6)
+            bestObjective = objective(r.value()), bestSigned = r->signedOccluded, best = u, *improved = true;
         return Status::ok();
     };
     auto progress = [&](const std::string& stage) {
         std::cout << "  " << label << " " << stage << ": " << describe(settingsAt(best)) << " -> training objective " << fixed(bestObjective, 2)
-                  << " dB (" << ev.evaluations() << " evaluations)" << std::endl;
+                  << " dB, signed error occluded " << fixed(bestSigned, 3) << " (" << ev.evaluations() << " evaluations)" << std::endl;
     };
     progress("start");
     bool improved = false;
@@ -312,6 +325,10 @@ int main(int argc, char** argv) {
     app.add_option("--tiers", o.tiers, "comma-separated: high, current")->delimiter(',')->capture_default_str();
     app.add_option("--start", o.start, "where the search starts: paper (the papers' look) or tier (the tier table's)")
         ->check(CLI::IsMember({"paper", "tier"}))
+        ->capture_default_str();
+    app.add_option(
+           "--bright-limit", o.brightLimit,
+           "training mean signed error where occluded above which the objective pays " + fixed(kBrightPenaltyDb, 0) + " dB per unit (< 0: none)")
         ->capture_default_str();
     app.add_flag("--diagnose", o.diagnose, "score variants of the tier defaults on the training and the held-out views instead of fitting");
     app.add_option("--cache-dir", o.cacheDir, "where truth images are cached")->capture_default_str();
