@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
 # docs/robustness_extremes.md must hold exactly the rows the extremes conformance cases wrote
-# (test-output/<backend>-<tier>/extremes_rows.md, one file per run of sfx_conformance).
-#   check_extremes_doc.sh TEST_OUTPUT_DIR DOC           compare, for every run that wrote rows
-#   check_extremes_doc.sh TEST_OUTPUT_DIR DOC --write   regenerate the table in DOC
-# A backend that did not run here (its rows file is missing) is not compared.
+# (extremes_rows.md, one file per run of sfx_conformance: BUILD_DIR/test-output/<run>/ and, for
+# the runs on SwiftShader, BUILD_DIR/test-output-swiftshader/<run>/; a row's backend column
+# names its driver when that is not Mesa's, so each driver's rows are compared apart).
+#   check_extremes_doc.sh BUILD_DIR DOC           compare, for every run that wrote rows
+#   check_extremes_doc.sh BUILD_DIR DOC --write   regenerate the table in DOC
+# A backend or driver that did not run here (its rows file is missing) is not compared.
 set -euo pipefail
-out=$1 doc=$2 mode=${3:-}
+build=$1 doc=$2 mode=${3:-}
 shopt -s nullglob
-files=("$out"/*/extremes_rows.md)
+files=("$build"/test-output/*/extremes_rows.md "$build"/test-output-swiftshader/*/extremes_rows.md)
 if [ ${#files[@]} -eq 0 ]; then
-  echo "no extremes_rows.md under $out: run the conformance tests first" >&2
+  echo "no extremes_rows.md under $build/test-output*: run the conformance tests first" >&2
   exit 1
 fi
 header='| effect | input | rule | backend | tier | result |
@@ -26,7 +28,7 @@ if [ "$mode" = "--write" ]; then
 fi
 status=0
 for f in "${files[@]}"; do
-  run=$(basename "$(dirname "$f")")
+  run=$(basename "$(dirname "$(dirname "$f")")")/$(basename "$(dirname "$f")")
   backend=$(head -1 "$f" | awk -F' [|] ' '{print $4}')
   tier=$(head -1 "$f" | awk -F' [|] ' '{print $5}')
   expected=$(LC_ALL=C sort "$f")

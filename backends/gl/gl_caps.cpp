@@ -100,6 +100,20 @@ Status GlDevice::init(CapabilityCeiling ceiling) {
     c.limits.maxTextureBindings = geti(GL_MAX_TEXTURE_IMAGE_UNITS);
     c.limits.minUniformBufferOffsetAlignment = std::max<uint32_t>(1, geti(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT));
     c.limits.minStorageBufferOffsetAlignment = modern ? std::max<uint32_t>(1, geti(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT)) : 1;
+    // Every power of two up to `most` samples, one at least (DeviceLimits' sample count masks).
+    auto countsUpTo = [](uint32_t most) {
+        uint32_t mask = 1;
+        for (uint32_t k = 1; k < 31 && (1u << k) <= most; ++k) mask |= 1u << k;
+        return mask;
+    };
+    c.limits.framebufferColorSampleCounts = c.limits.framebufferDepthSampleCounts = countsUpTo(geti(GL_MAX_SAMPLES));
+    const bool uncapped = ceiling == CapabilityCeiling::None;
+    if (uncapped && (!es || v >= 31)) {
+        c.limits.sampledImageColorSampleCounts = countsUpTo(geti(GL_MAX_COLOR_TEXTURE_SAMPLES));
+        c.limits.sampledImageDepthSampleCounts = countsUpTo(geti(GL_MAX_DEPTH_TEXTURE_SAMPLES));
+    }
+    const bool textureBuffers = !es || v >= 32 || extensions_.count("GL_EXT_texture_buffer") || extensions_.count("GL_OES_texture_buffer");
+    c.limits.maxTexelBufferElements = uncapped && textureBuffers ? geti(GL_MAX_TEXTURE_BUFFER_SIZE) : 0;
     // GL ES 3.1 may offer storage to compute only (its minimum fragment counts are 0).
     c.fragmentStoresAndAtomics = full && geti(GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS) > 0 && geti(GL_MAX_FRAGMENT_IMAGE_UNIFORMS) > 0;
 

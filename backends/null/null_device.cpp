@@ -189,6 +189,10 @@ DeviceCaps defaultCaps(CapabilityCeiling ceiling) {
     // The largest alignment common hardware asks for, so code that passes here passes there.
     c.limits.minUniformBufferOffsetAlignment = 256;
     c.limits.minStorageBufferOffsetAlignment = 256;
+    // The fewest sample counts and texels Vulkan allows (1 and 4 samples, 65536 texels).
+    c.limits.framebufferColorSampleCounts = c.limits.framebufferDepthSampleCounts = 0x1 | 0x4;
+    c.limits.sampledImageColorSampleCounts = c.limits.sampledImageDepthSampleCounts = full ? 0x1 | 0x4 : 0x1;
+    c.limits.maxTexelBufferElements = full ? 65536 : 0;
     // Every format as far as the APIs allow any device: depth and integer formats do not filter
     // or blend, depth formats are no storage images.
     for (size_t f = 1; f < size_t(Format::Count); ++f) {

@@ -45,6 +45,12 @@ void VulkanDevice::fillCaps(const DeviceOptions& options) {
     c.limits.maxTextureBindings = std::min<uint32_t>(l.maxPerStageDescriptorSampledImages, 64);
     c.limits.minUniformBufferOffsetAlignment = std::max<uint64_t>(1, l.minUniformBufferOffsetAlignment);
     c.limits.minStorageBufferOffsetAlignment = std::max<uint64_t>(1, l.minStorageBufferOffsetAlignment);
+    // VkSampleCountFlags has bit k for 2^k samples, the encoding DeviceLimits records.
+    c.limits.framebufferColorSampleCounts = l.framebufferColorSampleCounts;
+    c.limits.framebufferDepthSampleCounts = l.framebufferDepthSampleCounts;
+    c.limits.sampledImageColorSampleCounts = fullFeatures_ ? l.sampledImageColorSampleCounts : uint32_t(VK_SAMPLE_COUNT_1_BIT);
+    c.limits.sampledImageDepthSampleCounts = fullFeatures_ ? l.sampledImageDepthSampleCounts : uint32_t(VK_SAMPLE_COUNT_1_BIT);
+    c.limits.maxTexelBufferElements = fullFeatures_ ? l.maxTexelBufferElements : 0;
 
     for (size_t i = 1; i < size_t(Format::Count); ++i) {
         const Format f = Format(i);

@@ -37,12 +37,20 @@ struct Hostile {
     float value;
 };
 
+// The backend column: the backend, and the driver when it is not Mesa's llvmpipe (lavapipe on
+// Vulkan), which runs every backend in the test run: "vulkan (SwiftShader Device)". Each
+// driver's rows then have a key of their own in the document.
+std::string backendColumn() {
+    const std::string backend = toString(test::backendConfig()), driver = test::driverName();
+    return driver == "llvmpipe" ? backend : backend + " (" + driver + ")";
+}
+
 // One row of the extremes table; the file is started afresh by the first row of the run.
 void addRow(const std::string& effect, const std::string& input, const std::string& rule, bool passed) {
     static bool first = true;
     std::ofstream out(test::outputDir() + "/extremes_rows.md", first ? std::ios::trunc : std::ios::app);
     first = false;
-    out << "| " << effect << " | " << input << " | " << rule << " | " << toString(test::backendConfig()) << " | " << toString(test::tier()) << " | "
+    out << "| " << effect << " | " << input << " | " << rule << " | " << backendColumn() << " | " << toString(test::tier()) << " | "
         << (passed ? "finite, matches reference" : "FAILED") << " |\n";
 }
 

@@ -9,7 +9,8 @@
 //                               spacing of fp16's subnormals)
 //   R32F, RGBA32F:              the value itself
 // and its worst pixel against the CPU reference is within the effect's float bound plus that
-// quantisation. Small targets: a few dispatches per format.
+// quantisation. Small targets: a few dispatches per format. The AO case writes each format's
+// worst pixel and mean error against the reference to docs/portability.md's rows.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -20,6 +21,7 @@
 
 #include "analytic_scenes.hpp"
 #include "effect_runs.hpp"
+#include "portability_rows.hpp"
 #include "sfx/half.hpp"
 #include "sfx/oit.hpp"
 #include "skips.hpp"
@@ -149,6 +151,9 @@ TEST_CASE("precision: AO output formats hold the visibility to their stated quan
         std::vector<float> z(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
         SFX_REQUIRE_OK(dev.writeTexture(depth, 0, z.data(), z.size() * 4));
     }
+    // Per format, over both dispatches: the worst |stored - reference| and the sum of them, for
+    // docs/portability.md.
+    std::vector<std::pair<double, double>> againstReference(formats.size());
     // Without blur the AO pass writes the output; with it the second blur pass does.
     for (auto [technique, blur] : {std::pair{AoTechnique::Alchemy, false}, std::pair{AoTechnique::Scalable, true}}) {
         AoSettings s = test::aoTestSettings(technique);
@@ -168,7 +173,8 @@ TEST_CASE("precision: AO output formats hold the visibility to their stated quan
         };
         const std::vector<double> value = haveFloat ? run(Format::R32F) : std::vector<double>{};
         const Grid ref = ambientVisibility(scene.aoInput(false), ao.value()->config());
-        for (Format f : formats) {
+        for (size_t k = 0; k < formats.size(); ++k) {
+            const Format f = formats[k];
             INFO(test::label() << " " << toString(technique) << (blur ? " blur" : "") << " into " << toString(f));
             const std::vector<double> stored = run(f);
             const uint32_t c = channels(f);
@@ -181,6 +187,8 @@ TEST_CASE("precision: AO output formats hold the visibility to their stated quan
                 for (uint32_t ch = 1; ch < c; ++ch) REQUIRE(stored[i * c + ch] == (ch == 3 ? 1.0 : v));
                 if (haveFloat) excess.add(v, value[i], f, i);
                 worstRef = std::max(worstRef, std::abs(v - ref.values[i]) - quantisation(f, ref.values[i]));
+                againstReference[k].first = std::max(againstReference[k].first, std::abs(v - ref.values[i]));
+                againstReference[k].second += std::abs(v - ref.values[i]);
             }
             if (haveFloat) {
                 INFO("worst excess over the quantisation " << excess.worst << " at pixel " << excess.at << ": stored " << stored[excess.at * c]
@@ -191,6 +199,9 @@ TEST_CASE("precision: AO output formats hold the visibility to their stated quan
             CHECK(worstRef <= kAoWorstPixel[size_t(test::tier())]);
         }
     }
+    for (size_t k = 0; k < formats.size(); ++k)
+        test::addPortabilityRow(std::string("AO output format ") + toString(formats[k]), againstReference[k].first,
+                                againstReference[k].second / double(2 * n));
     SFX_REQUIRE_OK(dev.destroyTexture(depth));
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
 }

@@ -27,6 +27,13 @@ std::vector<std::string> takeValidationMessages();
 // test-output (whatever the working directory, so nothing lands in the source tree).
 std::string outputDir();
 
+// The driver's name without its build details ("llvmpipe (LLVM 15.0.6, 256 bits)" is
+// "llvmpipe"): the vector width varies with the machine, a documented row's key must not.
+inline std::string driverName() {
+    const std::string& name = device().caps().deviceName;
+    return name.substr(0, name.find(" ("));
+}
+
 // A window position (pixels) snapped to the device's sub-pixel grid (to nearest), as its
 // rasteriser snaps vertices (DeviceLimits::subPixelPrecisionBits): a CPU rasteriser compared with
 // the GPU's covers pixel centres and interpolates from the snapped positions.

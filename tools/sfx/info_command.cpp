@@ -128,7 +128,7 @@ std::string defaultCostCacheDir() {
     return "sfx-cost-cache";
 }
 
-// The limits and formats the tiers and effects rely on, two lines.
+// The limits and formats the tiers and effects rely on, and the limits recorded for the host only.
 void printLimitsAndFormats(std::ostream& out, const DeviceCaps& caps) {
     const DeviceLimits& l = caps.limits;
     out << "  limits: textures up to " << l.maxTextureSize << ", render targets up to " << l.maxRenderTargetWidth << "x" << l.maxRenderTargetHeight
@@ -136,6 +136,17 @@ void printLimitsAndFormats(std::ostream& out, const DeviceCaps& caps) {
         << l.maxUniformBlockSize << " bytes, storage buffers " << l.maxStorageBufferSize << " bytes, compute work groups "
         << l.maxComputeWorkGroupInvocations << " invocations and " << l.maxComputeWorkGroupCount[0] << "x" << l.maxComputeWorkGroupCount[1] << "x"
         << l.maxComputeWorkGroupCount[2] << " groups, " << l.maxTextureBindings << " texture bindings\n";
+    // A sample count mask as its counts, "1/2/4".
+    auto counts = [](uint32_t mask) {
+        std::string list;
+        for (uint32_t k = 0; k < 32; ++k)
+            if (mask & (1u << k)) list += (list.empty() ? "" : "/") + std::to_string(1u << k);
+        return list.empty() ? std::string("none") : list;
+    };
+    out << "  samples per pixel (recorded, the SDK makes single-sampled textures): colour attachments " << counts(l.framebufferColorSampleCounts)
+        << ", depth attachments " << counts(l.framebufferDepthSampleCounts) << ", sampled colour " << counts(l.sampledImageColorSampleCounts)
+        << ", sampled depth " << counts(l.sampledImageDepthSampleCounts) << "; texel buffers (recorded, the SDK makes none) "
+        << l.maxTexelBufferElements << " texels\n";
     auto formats = [](const std::array<bool, size_t(Format::Count)>& has) {
         std::string list;
         for (size_t f = 1; f < size_t(Format::Count); ++f)

@@ -258,6 +258,21 @@ struct DeviceLimits {
     // UNIFORM_BUFFER_OFFSET_ALIGNMENT / SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT); at least 1.
     uint64_t minUniformBufferOffsetAlignment = 1;
     uint64_t minStorageBufferOffsetAlignment = 1;
+    // Samples per pixel, as a mask with bit k set for 2^k samples (bit 0: one sample), for colour
+    // and depth attachments and for sampled colour and depth textures: Vulkan
+    // framebufferColor/DepthSampleCounts and sampledImageColor/DepthSampleCounts; GL every power
+    // of two up to MAX_SAMPLES (GL accepts any request up to it and may round it up) and, where
+    // multisampled textures exist (desktop GL 3.2, GL ES 3.1), up to MAX_COLOR_TEXTURE_SAMPLES /
+    // MAX_DEPTH_TEXTURE_SAMPLES, else one. Under the GL ES 3.0 ceiling sampled textures have one
+    // sample, as GL ES 3.0 has no multisampled textures. Recorded for the host: the HAL makes
+    // single-sampled textures only.
+    uint32_t framebufferColorSampleCounts = 1, framebufferDepthSampleCounts = 1;
+    uint32_t sampledImageColorSampleCounts = 1, sampledImageDepthSampleCounts = 1;
+    // Texels one texel buffer may address: Vulkan maxTexelBufferElements, GL
+    // MAX_TEXTURE_BUFFER_SIZE where the context has texture buffers (desktop GL 3.1, GL ES 3.2,
+    // EXT_ or OES_texture_buffer); 0 without, and under the GL ES 3.0 ceiling, which has none.
+    // Recorded for the host: the HAL makes no texel buffer.
+    uint32_t maxTexelBufferElements = 0;
 };
 
 struct DeviceCaps {
