@@ -24,6 +24,7 @@
 #include <string>
 #include <tuple>
 
+#include "edge_bands.hpp"
 #include "portability_rows.hpp"
 #include "sfx/reference/oit_reference.hpp"
 #include "sfx/scene_render.hpp"
@@ -79,7 +80,7 @@ render::RenderResult renderScene(const scene::Scene& scene, std::vector<uint32_t
 
 struct Reference {
     std::vector<std::vector<reference::OitFragment>> fragments;  // per pixel, depth-tested
-    std::vector<bool> ambiguous;
+    test::PixelMask ambiguous{kW, kH};
 };
 
 // Window position (x, y in pixels, row 0 = NDC y -1), window depth and view depth (clip w).
@@ -91,7 +92,6 @@ struct Projected {
 Reference rasterise(const scene::Scene& scene, const render::RenderResult::OpaqueInputs& in) {
     Reference ref;
     ref.fragments.resize(size_t(kW) * kH);
-    ref.ambiguous.assign(size_t(kW) * kH, false);
     const glm::dmat4 vp = in.projection * in.view;
     const bool zeroToOne = in.clipDepth == ClipDepthRange::ZeroToOne;
     auto project = [&](const glm::dmat4& model, const glm::vec3& v) {
@@ -101,20 +101,6 @@ Reference rasterise(const scene::Scene& scene, const render::RenderResult::Opaqu
         const glm::dvec2 window((ndc.x + 1.0) * 0.5 * kW, (ndc.y + 1.0) * 0.5 * kH);
         return Projected{test::snapToSubPixelGrid(window), zeroToOne ? ndc.z : ndc.z * 0.5 + 0.5, c.w};
     };
-    auto markBand = [&](glm::dvec2 a, glm::dvec2 b) {
-        const int x0 = std::max(0, int(std::floor(std::min(a.x, b.x) - kEdgeBand - 0.5)));
-        const int x1 = std::min(int(kW) - 1, int(std::ceil(std::max(a.x, b.x) + kEdgeBand)));
-        const int y0 = std::max(0, int(std::floor(std::min(a.y, b.y) - kEdgeBand - 0.5)));
-        const int y1 = std::min(int(kH) - 1, int(std::ceil(std::max(a.y, b.y) + kEdgeBand)));
-        const glm::dvec2 d = b - a;
-        const double len2 = glm::dot(d, d);
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x) {
-                const glm::dvec2 c(x + 0.5, y + 0.5);
-                const double t = len2 > 0 ? std::clamp(glm::dot(c - a, d) / len2, 0.0, 1.0) : 0.0;
-                if (glm::length(c - (a + t * d)) < kEdgeBand) ref.ambiguous[size_t(y) * kW + size_t(x)] = true;
-            }
-    };
     for (size_t oi = 0; oi < scene.objects.size(); ++oi) {
         const scene::SceneObject& o = scene.objects[oi];
         if (!o.translucent()) continue;
@@ -122,29 +108,16 @@ Reference rasterise(const scene::Scene& scene, const render::RenderResult::Opaqu
         const size_t tris = mesh.indices.size() / 3;
         std::vector<Projected> pv(mesh.vertices.size());
         for (size_t i = 0; i < mesh.vertices.size(); ++i) pv[i] = project(o.world, mesh.vertices[i].position);
-        // Silhouette edges: used by one triangle, or by triangles facing different ways on screen
-        // (edges keyed by their object-space end points: OBJ meshes repeat vertices).
-        using Key = std::array<float, 6>;
-        std::map<Key, std::vector<int>> edges;
         std::vector<int> facing(tris);
         for (size_t t = 0; t < tris; ++t) {
             const uint32_t* ix = &mesh.indices[t * 3];
             const glm::dvec2 a = pv[ix[0]].p, b = pv[ix[1]].p, c = pv[ix[2]].p;
             const double area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
             facing[t] = area > 0 ? 1 : area < 0 ? -1 : 0;
-            for (int e = 0; e < 3; ++e) {
-                glm::vec3 p = mesh.vertices[ix[e]].position, q = mesh.vertices[ix[(e + 1) % 3]].position;
-                if (std::tie(q.x, q.y, q.z) < std::tie(p.x, p.y, p.z)) std::swap(p, q);
-                edges[{p.x, p.y, p.z, q.x, q.y, q.z}].push_back(facing[t]);
-            }
         }
-        for (const auto& [key, faces] : edges) {
-            const bool silhouette = faces.size() != 2 || faces[0] != faces[1] || faces[0] == 0;
-            if (silhouette) {
-                const Projected a = project(o.world, {key[0], key[1], key[2]}), b = project(o.world, {key[3], key[4], key[5]});
-                markBand(a.p, b.p);
-            }
-        }
+        // Silhouettes only: across an inner edge the colour and opacity stay the same.
+        for (const auto& [p, q] : test::changingEdges(mesh, facing, false))
+            test::markSegmentBand(ref.ambiguous, project(o.world, p).p, project(o.world, q).p, kEdgeBand);
         for (size_t t = 0; t < tris; ++t) {
             if (facing[t] == 0) continue;
             uint32_t ix[3] = {mesh.indices[t * 3], mesh.indices[t * 3 + 1], mesh.indices[t * 3 + 2]};
@@ -172,7 +145,7 @@ Reference rasterise(const scene::Scene& scene, const render::RenderResult::Opaqu
                     const size_t i = size_t(y) * kW + size_t(x);
                     const double depth = b[0] * v[0]->depth + b[1] * v[1]->depth + b[2] * v[2]->depth;
                     const double opaque = in.storedDepth[i];
-                    if (std::abs(depth - opaque) < kDepthBand) ref.ambiguous[i] = true;
+                    if (std::abs(depth - opaque) < kDepthBand) ref.ambiguous.set[i] = 1;
                     if (!(depth < opaque)) continue;
                     reference::OitFragment f;
                     f.color = o.color;
@@ -187,7 +160,7 @@ Reference rasterise(const scene::Scene& scene, const render::RenderResult::Opaqu
     for (size_t i = 0; i < ref.fragments.size(); ++i) {
         std::vector<reference::OitFragment> s = reference::sortedFragments(ref.fragments[i], 1e300);
         for (size_t k = 1; k < s.size(); ++k)
-            if (s[k].drawIndex != s[k - 1].drawIndex && s[k].depth - s[k - 1].depth < kOrderBand * s[k].depth) ref.ambiguous[i] = true;
+            if (s[k].drawIndex != s[k - 1].drawIndex && s[k].depth - s[k - 1].depth < kOrderBand * s[k].depth) ref.ambiguous.set[i] = 1;
     }
     return ref;
 }
@@ -208,7 +181,7 @@ Errors compare(const scene::Scene& scene, const render::RenderResult& r) {
         const std::vector<reference::OitFragment>& f = ref.fragments[i];
         if (!f.empty()) ++e.covered;
         if (f.size() > k) ++e.deeperThanK;
-        if (ref.ambiguous[i]) {
+        if (ref.ambiguous.set[i]) {
             ++e.ambiguous;
             continue;
         }

@@ -79,24 +79,37 @@ void requirePairsWithin(const std::map<std::string, std::vector<double>>& result
         }
 }
 
-void requireRasterPairsWithin(const std::vector<Opened>& devices, const std::map<std::string, std::vector<double>>& results, double bound,
-                              const std::string& what, double tieFraction) {
-    std::map<uint32_t, std::map<std::string, std::vector<double>>> byGrid;
+void requireRasterPairsWithin(const std::vector<Opened>& devices, const std::map<std::string, std::vector<double>>& results, size_t channels,
+                              double bound, const std::string& what, const std::function<PixelMask(uint32_t bits)>& excluded, OutsideBand check) {
     std::map<std::string, uint32_t> gridOf;
-    for (const Opened& o : devices) {
-        const uint32_t bits = o.device->caps().limits.subPixelPrecisionBits;
-        gridOf[o.name] = bits;
-        if (results.count(o.name)) byGrid[bits][o.name] = results.at(o.name);
-    }
-    for (const auto& [bits, group] : byGrid)
-        requirePairsWithin(group, bound, what + " (sub-pixel grid 1/" + std::to_string(1u << bits) + ")", tieFraction);
+    for (const Opened& o : devices) gridOf[o.name] = o.device->caps().limits.subPixelPrecisionBits;
     for (auto a = results.begin(); a != results.end(); ++a)
         for (auto b = std::next(a); b != results.end(); ++b) {
-            if (gridOf[a->first] == gridOf[b->first]) continue;
-            const Worst worst = worstDifference(a->second, b->second, bound);
-            WARN(what << ": " << a->first << " vs " << b->first << ": sub-pixel grids 1/" << (1u << gridOf[a->first]) << " and 1/"
-                      << (1u << gridOf[b->first]) << " cover silhouettes differently, not compared: worst " << worst.value << ", " << worst.beyond
-                      << " of " << a->second.size() << " values beyond " << bound);
+            const uint32_t bitsA = gridOf.at(a->first), bitsB = gridOf.at(b->first);
+            const std::string grids = "sub-pixel grid 1/" + std::to_string(1u << bitsA) +
+                (bitsA == bitsB ? "" : " and 1/" + std::to_string(1u << bitsB));
+            if (bitsA == bitsB) {
+                requirePairsWithin({*a, *b}, bound, what + " (" + grids + ")");
+                continue;
+            }
+            const PixelMask band = excluded(std::min(bitsA, bitsB));
+            REQUIRE(band.set.size() * channels == a->second.size());
+            std::vector<double> outsideA, outsideB;
+            for (size_t i = 0; i < a->second.size(); ++i)
+                if (!band.set[i / channels]) outsideA.push_back(a->second[i]), outsideB.push_back(b->second[i]);
+            const Worst outside = worstDifference(outsideA, outsideB, bound), all = worstDifference(a->second, b->second, bound);
+            const double fraction = double(band.count()) / double(band.set.size());
+            INFO(what << ": " << a->first << " vs " << b->first << " (" << grids << "): " << band.count() << " of " << band.set.size()
+                      << " pixels within a grid step of an edge");
+            CHECK(fraction <= kMaxExcludedFraction);
+            if (check == OutsideBand::Checked) {
+                INFO("outside them worst " << outside.value << " at value " << outside.at << ", bound " << bound);
+                CHECK(outside.value <= bound);
+            }
+            WARN(what << ": " << a->first << " vs " << b->first << " (" << grids << ")" << (check == OutsideBand::Checked ? "" : ", not checked")
+                      << ": " << band.count() << " of " << band.set.size() << " pixels (" << 100.0 * fraction
+                      << " %) within a grid step of an edge; outside them worst " << outside.value << ", " << outside.beyond << " of "
+                      << outsideA.size() << " values beyond " << bound << "; everywhere worst " << all.value);
         }
 }
 

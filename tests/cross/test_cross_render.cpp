@@ -2,9 +2,10 @@
 // same scene drawn by every pair, on each tier, with AO, a translucent object through
 // sfx::Transparency and (high tier) a peeled second depth layer for AO. Two scenes: one whose
 // every edge lies half a pixel from the pixel centres, held to the bound between every pair
-// (SwiftShader's coarser sub-pixel grid included), and test_render.cpp's boxes, whose
-// silhouettes are arbitrary lines, held to it between rasterisers of one sub-pixel grid
-// (requireRasterPairsWithin). Bounds: cross_bounds.hpp.
+// (SwiftShader's coarser sub-pixel grid included), and test_render.cpp's boxes, whose edges are
+// arbitrary lines, held to it between rasterisers of one sub-pixel grid; between grids the
+// pixels near edges are counted and the rest printed (requireRasterPairsWithin says why).
+// Bounds: cross_bounds.hpp.
 #include <catch2/catch.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -12,10 +13,12 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "cross_bounds.hpp"
 #include "cross_compare.hpp"
+#include "raster_bands.hpp"
 #include "sfx/scene_render.hpp"
 #include "sfx/tiers.hpp"
 
@@ -77,16 +80,20 @@ double alignedEdgesMissPixelCentres(const scene::Scene& scene) {
     return margin;
 }
 
+constexpr float kAoRadius = 0.4f;
+
 // The scene renderer's colour and AO of `text` on every device, with AO (and, where the tier
 // has it, a second peeled layer for AO when `layers` is 2).
 struct Rendered {
     std::map<std::string, std::vector<double>> color, ao;
+    std::optional<render::RenderResult::OpaqueInputs> frame;  // the first device's camera
 };
-Rendered renderOnEach(std::vector<Opened>& devices, Tier tier, const scene::Scene& scene, uint32_t layers, const std::string& what) {
+Rendered renderOnEach(std::vector<Opened>& devices, Tier tier, const scene::Scene& scene, uint32_t layers, const std::string& what, bool ao = true) {
     render::RenderOptions options;
-    options.ao = AoTechnique::Scalable;
-    options.aoRadius = 0.4f;
+    options.ao = ao ? std::optional<AoTechnique>(AoTechnique::Scalable) : std::nullopt;
+    options.aoRadius = kAoRadius;
     options.aoLayers = layers;
+    options.keepOpaqueInputs = true;
     Rendered r;
     for (Opened& o : devices) {
         INFO(o.name << ": " << what);
@@ -101,13 +108,14 @@ Rendered renderOnEach(std::vector<Opened>& devices, Tier tier, const scene::Scen
         REQUIRE(out.isOk());
         CHECK(out->warnings.empty());
         CHECK(out->stats.transparencyRan);
-        REQUIRE(out->ao.has_value());
+        REQUIRE(out->ao.has_value() == ao);
         r.color[o.name].assign(out->color.pixels.begin(), out->color.pixels.end());
-        r.ao[o.name].assign(out->ao->pixels.begin(), out->ao->pixels.end());
+        if (ao) r.ao[o.name].assign(out->ao->pixels.begin(), out->ao->pixels.end());
+        if (!r.frame) r.frame = out->opaque;
     }
     requireNoValidation(devices);
     requireSpan(r.color.begin()->second, 0.3, what + " colour");
-    requireSpan(r.ao.begin()->second, 0.1, what + " AO");
+    if (ao) requireSpan(r.ao.begin()->second, 0.1, what + " AO");
     return r;
 }
 
@@ -136,9 +144,19 @@ void compareRender(Tier tier) {
         requirePairsWithin(a.ao, bound, "scene renderer, aligned scene, " + what + " AO");
         requirePairsWithin(a.color, bound, "scene renderer, aligned scene, " + what + " colour");
         const Rendered b = renderOnEach(devices, tier, boxes, layers, "scene renderer, boxes, " + what);
-        requireRasterPairsWithin(devices, b.ao, bound, "scene renderer, boxes, " + what + " AO");
-        requireRasterPairsWithin(devices, b.color, bound, "scene renderer, boxes, " + what + " colour");
+        REQUIRE(b.frame.has_value());
+        auto band = [&](uint32_t bits) { return sceneEdgeBand(boxes, *b.frame, bits); };
+        requireRasterPairsWithin(devices, b.ao, 1, bound, "scene renderer, boxes, " + what + " AO", band, OutsideBand::Printed);
+        requireRasterPairsWithin(devices, b.color, 3, bound, "scene renderer, boxes, " + what + " colour", band, OutsideBand::Printed);
     }
+    // Without AO the boxes' colour is coverage, flat shading and the transparency step: held to
+    // the bound outside the band between every pair.
+    const std::string flatWhat = std::string("scene renderer, boxes without AO, at tier ") + toString(tier);
+    const Rendered flat = renderOnEach(devices, tier, boxes, 1, flatWhat, false);
+    REQUIRE(flat.frame.has_value());
+    requireRasterPairsWithin(
+        devices, flat.color, 3, bound, flatWhat + ", colour", [&](uint32_t bits) { return sceneEdgeBand(boxes, *flat.frame, bits); },
+        OutsideBand::Checked);
 }
 
 }  // namespace
