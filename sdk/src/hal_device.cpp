@@ -222,6 +222,8 @@ Status Device::destroyRecording(RecordingHandle recording) {
 }
 
 // Reached only on a device that keeps recordings (the front end refuses first elsewhere).
+Status Device::doBeginRecording() { return recordingsKept("beginRecording"); }
+Result<RecordingHandle> Device::doEndRecording() { return recordingsKept("endRecording"); }
 Status Device::doBeginReplay(RecordingHandle) { return recordingsKept("beginReplay"); }
 Status Device::doEndReplay(RecordingHandle) { return recordingsKept("endReplay"); }
 Status Device::doDestroyRecording(RecordingHandle) { return recordingsKept("destroyRecording"); }

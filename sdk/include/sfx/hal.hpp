@@ -536,8 +536,8 @@ private:
     // Called only where caps().reusableRecordings holds, with the open state checked: begin
     // with nothing open, end with its kind open (closed by the front end whatever the hook
     // reports), a live recording handle that is not being replayed for destroy.
-    virtual Status doBeginRecording() { return recordingsKept("beginRecording"); }
-    virtual Result<RecordingHandle> doEndRecording() { return recordingsKept("endRecording"); }
+    virtual Status doBeginRecording();
+    virtual Result<RecordingHandle> doEndRecording();
     virtual Status doBeginReplay(RecordingHandle recording);
     virtual Status doEndReplay(RecordingHandle recording);
     virtual Status doDestroyRecording(RecordingHandle recording);
