@@ -58,13 +58,6 @@ Result<TierProfile> presetProfile(Tier tier, const std::string& name) {
     return invalidArgument("--preset", "'" + name + "'", std::string("a preset of the ") + toString(tier) + " tier: " + names);
 }
 
-// "time: <median> ms" first, so a script reads the price of a configuration from one line.
-void printCost(const tools::DispatchCost& cost) {
-    std::printf("time: %.3f ms\n", cost.totalMs);
-    std::printf("  median of %u dispatches after a warm-up, %s; per pass:\n", cost.runs, toString(cost.source));
-    for (const tools::PassCost& p : cost.passes) std::printf("    %.3f ms  %s\n", p.ms, p.name.c_str());
-}
-
 int runAo(const AoFlags& f) {
     const std::string cmd = "ao";
     const std::string ext = io::extensionOf(f.outPath);
@@ -163,7 +156,7 @@ int runAo(const AoFlags& f) {
               << " resolution -> " << f.outPath << " and " << png.value() << "\n";
     if (f.showPlan) std::cout << ao.value()->plan().describe();
     std::cout.flush();
-    if (cost) printCost(*cost);
+    if (cost) tools::printCost(*cost);
     return 0;
 }
 
@@ -199,9 +192,7 @@ Command addAoCommand(CLI::App& app) {
     c.app->add_flag("--no-blur", flags->noBlur, "skip the bilateral blur");
     c.app->add_option("--preset", flags->preset, "one of the tier's presets (sfx info --rules lists them); explicit flags override it")
         ->capture_default_str();
-    c.app->add_option("--runs", flags->runs,
-                      "time the dispatch: prints 'time: <median> ms' over N dispatches after a warm-up (GPU timestamps on Vulkan, "
-                      "glFinish on GL), per pass beside it; 0 = not timed");
+    c.app->add_option("--runs", flags->runs, tools::kTimedRunsHelp);
     c.app->add_flag("--plan", flags->showPlan, "print the passes and memory");
     c.app->add_option("--out", flags->outPath, "output visibility, .pfm or .exr (a .png is written beside it)")->required();
     c.run = [flags] { return runAo(*flags); };

@@ -7,6 +7,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "pass_profile.hpp"
 #include "sfx/half.hpp"
 #include "sfx/motion_blur.hpp"
 #include "sfx/settings_ranges.hpp"
@@ -31,6 +32,7 @@ struct MotionBlurFlags {
     float softDepth = 0.1f;
     float centreWeight = 1.0f;
     float exposure = 1.0f;
+    uint32_t runs = 0;  // > 0: time the dispatch, median of runs after a warm-up
 };
 
 // Colour may travel as 16-bit floats (RGBA16F where RGBA32F is not renderable): finite colour
@@ -52,6 +54,8 @@ Status checkFlags(const MotionBlurFlags& f) {
     if (f.samples) SFX_TRY(checkSetting(Setting::MbSamples, *f.samples, "--samples"));
     SFX_TRY(checkSetting(Setting::MbSoftDepthExtent, f.softDepth, "--soft-depth"));
     SFX_TRY(checkSetting(Setting::MbCentreWeight, f.centreWeight, "--centre-weight"));
+    if (f.runs > tools::kMaxTimedRuns)
+        return invalidArgument("--runs", std::to_string(f.runs), "0 (not timed) to " + std::to_string(tools::kMaxTimedRuns));
     return checkSetting(Setting::MbExposure, f.exposure, "--exposure");
 }
 
@@ -137,6 +141,14 @@ Status run(const MotionBlurFlags& f) {
     inputs.velocity = velTex.value();
     SFX_TRY(mb.value()->dispatch(inputs, s));
     SFX_TRY(device.flush());
+    std::optional<tools::DispatchCost> cost;
+    if (f.runs > 0) {
+        // The timed dispatches write the same output again: profiling changes no pixel (conformance).
+        Result<tools::DispatchCost> c = tools::profilePasses(
+            device, *mb.value(), [&] { return mb.value()->dispatch(inputs, s); }, f.runs);
+        if (!c) return c.status();
+        cost = c.value();
+    }
 
     io::Image out(w, h, 4);
     if (full) {
@@ -162,6 +174,8 @@ Status run(const MotionBlurFlags& f) {
     const MotionBlurParams p = resolveMotionBlur(profile, s, h).value();
     std::cout << "sfx motionblur: " << toString(opened->config) << " " << toString(profile.tier) << " tier, " << p.taps << " taps, radius "
               << p.radiusPx << " px, " << w << "x" << h << " -> " << f.outPath << "\n";
+    std::cout.flush();
+    if (cost) tools::printCost(*cost);
     (void)device.destroyTexture(colorTex.value());
     (void)device.destroyTexture(velTex.value());
     (void)device.destroyTexture(depth->source.texture);
@@ -191,6 +205,7 @@ Command addMotionBlurCommand(CLI::App& app) {
     sub->add_option("--soft-depth", flags->softDepth, settingHelp(Setting::MbSoftDepthExtent))->capture_default_str();
     sub->add_option("--centre-weight", flags->centreWeight, settingHelp(Setting::MbCentreWeight))->capture_default_str();
     sub->add_option("--exposure", flags->exposure, settingHelp(Setting::MbExposure))->capture_default_str();
+    sub->add_option("--runs", flags->runs, tools::kTimedRunsHelp);
     c.run = [flags] {
         Status s = run(*flags);
         return s.isOk() ? 0 : fail("motionblur", s);

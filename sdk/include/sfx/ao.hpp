@@ -195,7 +195,6 @@ private:
     void releaseTargets();
     void release();
     Status createPassTimers();
-    void destroyPassTimers();
 
     Device& device_;
     AoDesc desc_;
@@ -230,7 +229,7 @@ private:
     // The passes as a recording replayed in steady frames (Vulkan), unless profiling.
     std::unique_ptr<detail::RecordedPasses> recorded_;
     bool profiling_ = false;
-    std::vector<TimerHandle> passTimers_;  // one per plan() pass while profiling, else empty
+    std::unique_ptr<detail::PassTimers> passTimers_;  // one per plan() pass while profiling, else empty
 };
 
 }  // namespace sfx

@@ -17,6 +17,7 @@ namespace detail {
 class PipelineCache;   // the effects' pipelines by specialisation constants (internal)
 class UniformWrites;   // the effects' uniform buffers, written when their bytes change (internal)
 class RecordedPasses;  // the effects' passes recorded once and replayed (internal)
+class PassTimers;      // the effects' per-pass timers while profiling (internal)
 }  // namespace detail
 
 enum class DepthKind : uint32_t {

@@ -138,6 +138,15 @@ public:
     // Passes and bytes for the given settings (the tile textures depend on the radius).
     EffectPlan plan(const MotionBlurSettings& settings = {}) const;
 
+    // Per-pass profiling, off by default (as AmbientObscurance::setProfiling): on, each pass of
+    // plan(settings) is bracketed by its own HAL timer and every dispatch records its passes
+    // anew (a recording with timers is single-use). passTimings() reads the last profiled
+    // dispatch after the host's Device::flush(), in plan() order; InvalidArgument when
+    // profiling is off or nothing was timed yet. On GL each timer waits for the GPU at both ends.
+    Status setProfiling(bool enabled);
+    bool profiling() const { return profiling_; }
+    Result<std::vector<PassTiming>> passTimings();
+
 private:
     MotionBlur(Device& device, const MotionBlurDesc& desc);
     Status allocate();
@@ -161,6 +170,9 @@ private:
     std::unique_ptr<detail::UniformWrites> uniforms_;  // every write of the uniform buffers above
     // The passes as a recording replayed in steady frames (Vulkan), unless profiling.
     std::unique_ptr<detail::RecordedPasses> recorded_;
+    bool profiling_ = false;
+    MotionBlurSettings profiledSettings_;             // the last profiled dispatch's, for its plan's pass names
+    std::unique_ptr<detail::PassTimers> passTimers_;  // one per plan() pass while profiling, else empty
 };
 
 }  // namespace sfx

@@ -178,7 +178,6 @@ private:
     Result<uint32_t> readCounter();
     // Records `record` inside pass `index`'s timer when profiling (plan(true) order).
     Status timed(size_t index, const std::function<Status()>& record);
-    void destroyPassTimers();
     void release();
 
     Device& device_;
@@ -196,8 +195,7 @@ private:
     PipelineHandle filterPipelines_[2];  // horizontal, vertical
     TransparencyStats last_;
     bool profiling_ = false;
-    size_t timedPasses_ = 0;  // passes the last profiled frame timed
-    std::vector<TimerHandle> passTimers_;
+    std::unique_ptr<detail::PassTimers> passTimers_;  // made on first use while profiling
 };
 
 }  // namespace sfx

@@ -7,6 +7,7 @@
 
 #include "ao_internal.hpp"
 #include "effect_common.hpp"
+#include "pass_timers.hpp"
 #include "recorded_passes.hpp"
 #include "sfx/ao.hpp"
 #include "sfx_shaders.hpp"
@@ -54,7 +55,8 @@ AmbientObscurance::AmbientObscurance(Device& device, const AoDesc& desc)
       desc_(desc),
       pipelines_(std::make_unique<detail::PipelineCache>(device)),
       uniforms_(std::make_unique<detail::UniformWrites>()),
-      recorded_(std::make_unique<detail::RecordedPasses>(device)) {}
+      recorded_(std::make_unique<detail::RecordedPasses>(device)),
+      passTimers_(std::make_unique<detail::PassTimers>(device)) {}
 
 AmbientObscurance::~AmbientObscurance() { release(); }
 
@@ -135,29 +137,17 @@ void AmbientObscurance::releaseTargets() {
 }
 
 Status AmbientObscurance::createPassTimers() {
-    destroyPassTimers();
-    const size_t passes = plan().passes.size();
-    for (size_t i = 0; i < passes; ++i) {
-        Result<TimerHandle> timer = device_.createTimer();
-        if (!timer) {
-            destroyPassTimers();
-            return timer.status();
-        }
-        passTimers_.push_back(timer.value());
-    }
-    return Status::ok();
-}
-
-void AmbientObscurance::destroyPassTimers() {
-    for (TimerHandle t : passTimers_) (void)device_.destroyTimer(t);
-    passTimers_.clear();
+    passTimers_->clear();
+    Status s = passTimers_->reserve(plan().passes.size());
+    if (!s) passTimers_->clear();
+    return s;
 }
 
 Status AmbientObscurance::setProfiling(bool enabled) {
     if (enabled == profiling_) return Status::ok();
     profiling_ = enabled;
     if (!enabled) {
-        destroyPassTimers();
+        passTimers_->clear();
         return Status::ok();
     }
     Status s = depth_ ? createPassTimers() : Status::ok();  // without resources, allocate() creates them
@@ -166,20 +156,9 @@ Status AmbientObscurance::setProfiling(bool enabled) {
 }
 
 Result<std::vector<PassTiming>> AmbientObscurance::passTimings() {
-    if (!profiling_ || passTimers_.empty())
+    if (!profiling_)
         return Status{StatusCode::InvalidArgument, "AmbientObscurance::passTimings: profiling is off (call setProfiling(true) before dispatch)"};
-    const EffectPlan p = plan();
-    std::vector<PassTiming> out;
-    out.reserve(passTimers_.size());
-    for (size_t i = 0; i < passTimers_.size(); ++i) {
-        Result<TimerReading> reading = device_.readTimer(passTimers_[i]);
-        if (!reading)
-            return Status{
-                reading.status().code(),
-                "AmbientObscurance::passTimings: pass '" + p.passes[i].name + "' (dispatch, then flush, first): " + reading.status().message()};
-        out.push_back({p.passes[i].effect, p.passes[i].name, reading.value()});
-    }
-    return out;
+    return passTimers_->read(plan(), "AmbientObscurance");
 }
 
 void AmbientObscurance::release() {
@@ -196,7 +175,7 @@ void AmbientObscurance::release() {
     }
     releaseTargets();
     targetFormat_ = Format::Undefined;
-    destroyPassTimers();
+    passTimers_->clear();
     depth_.reset();
 }
 
@@ -284,7 +263,7 @@ Status AmbientObscurance::recordPasses(const AoInputs& in, const TextureDesc& ou
     // Profiling: plan() order is the depth passes (linearize + one per MIP level past 0), at half
     // resolution the half-size depth unless MIP level 1 is it, the obscurance pass, blur h and v,
     // at half resolution the upsample. timed() records a pass bare when profiling is off.
-    const std::span<const TimerHandle> timers(passTimers_);
+    const std::span<const TimerHandle> timers = passTimers_->handles();
     // plan() builds strings: asked only when profiling (timed() ignores the index otherwise).
     const size_t depthPasses = timers.empty() ? 0 : depth_->plan().passes.size();  // none when passing linear depth through
     SFX_TRY(depth_->dispatch(in.depth, timers.empty() ? timers : timers.first(depthPasses)));

@@ -2,8 +2,10 @@
 #pragma once
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
+#include "pass_timers.hpp"
 #include "sfx/ao.hpp"
 #include "sfx_shared_ao.h"
 
@@ -45,10 +47,8 @@ namespace sfx {
 
 template <class Record>
 Status AmbientObscurance::timed(size_t passIndex, Record&& record) {
-    if (passTimers_.empty()) return record();
-    SFX_TRY(device_.beginTimer(passTimers_[passIndex]));
-    SFX_TRY(record());
-    return device_.endTimer(passTimers_[passIndex]);
+    if (passTimers_->empty()) return record();
+    return passTimers_->timed(passIndex, std::forward<Record>(record));
 }
 
 }  // namespace sfx

@@ -1,5 +1,6 @@
 #include "sfx/motion_blur.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -7,6 +8,7 @@
 #include <vector>
 
 #include "effect_common.hpp"
+#include "pass_timers.hpp"
 #include "recorded_passes.hpp"
 #include "sfx/settings_ranges.hpp"
 #include "sfx/validation_errors.hpp"
@@ -112,7 +114,8 @@ MotionBlur::MotionBlur(Device& device, const MotionBlurDesc& desc)
       desc_(desc),
       pipelines_(std::make_unique<detail::PipelineCache>(device)),
       uniforms_(std::make_unique<detail::UniformWrites>()),
-      recorded_(std::make_unique<detail::RecordedPasses>(device)) {}
+      recorded_(std::make_unique<detail::RecordedPasses>(device)),
+      passTimers_(std::make_unique<detail::PassTimers>(device)) {}
 
 MotionBlur::~MotionBlur() { release(); }
 
@@ -200,6 +203,7 @@ void MotionBlur::release() {
         *b = {};
     }
     releaseTargets();
+    passTimers_->clear();
     depth_.reset();
 }
 
@@ -270,13 +274,23 @@ Status MotionBlur::dispatch(const MotionBlurInputs& in, const MotionBlurSettings
 
     // Before the passes: a new tile size makes textures, which no recording may span.
     SFX_TRY(allocateTiles(p.tileSizePx));
+    if (profiling_) {
+        profiledSettings_ = settings;
+        SFX_TRY(passTimers_->reserve(plan(settings).passes.size()));
+        return recordPasses(in, p, target);
+    }
     const uint64_t key = detail::RecordedPasses::key({in.color.bits, in.depth.texture.bits, in.velocity.bits, target.bits});
     return recorded_->run(key, [&] { return recordPasses(in, p, target); });
 }
 
 Status MotionBlur::recordPasses(const MotionBlurInputs& in, const MotionBlurParams& p, TextureHandle target) {
     const bool cameraOnly = in.velocity.isNull();
-    SFX_TRY(depth_->dispatch(in.depth));
+    // Profiling: the depth passes take the first timers, then one per pass in plan() order.
+    // plan() builds strings: asked only when profiling.
+    const std::span<const TimerHandle> timers = passTimers_->handles();
+    const size_t depthPasses = profiling_ ? depth_->plan().passes.size() : 0;
+    SFX_TRY(depth_->dispatch(in.depth, timers.first(std::min(depthPasses, timers.size()))));
+    size_t passIndex = depthPasses;
 
     PackParams pack{};
     const glm::dmat4 reprojection = in.camera.previousViewProjection * glm::inverse(in.camera.currentViewProjection);
@@ -329,7 +343,8 @@ Status MotionBlur::recordPasses(const MotionBlurInputs& in, const MotionBlurPara
         DrawDesc draw;
         draw.pipeline = pipeline;
         draw.bindings = std::move(bindings);
-        return device_.renderPass(pass, std::span<const DrawDesc>(&draw, 1));
+        auto record = [&] { return device_.renderPass(pass, std::span<const DrawDesc>(&draw, 1)); };
+        return profiling_ ? passTimers_->timed(passIndex++, record) : record();
     };
 
     BindingSet packBind;
@@ -353,6 +368,18 @@ Status MotionBlur::recordPasses(const MotionBlurInputs& in, const MotionBlurPara
                         TextureBinding{gen::mb_reconstruct::uNeighborMax, neighborMax_, 0, 1, {}}};
     recBind.uniformBuffers = {BufferBinding{gen::mb_reconstruct::MbReconstructParams, reconstructParams_, 0, 0}};
     return run(target, "sfx-mb-reconstruct", reconstructPipeline.value(), recBind);
+}
+
+Status MotionBlur::setProfiling(bool enabled) {
+    profiling_ = enabled;
+    if (!enabled) passTimers_->clear();
+    return Status::ok();
+}
+
+Result<std::vector<PassTiming>> MotionBlur::passTimings() {
+    if (!profiling_)
+        return Status{StatusCode::InvalidArgument, "MotionBlur::passTimings: profiling is off (call setProfiling(true) before dispatch)"};
+    return passTimers_->read(plan(profiledSettings_), "MotionBlur");
 }
 
 EffectPlan MotionBlur::plan(const MotionBlurSettings& settings) const {

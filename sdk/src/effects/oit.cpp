@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "effect_common.hpp"
+#include "pass_timers.hpp"
 #include "sfx/settings_ranges.hpp"
 #include "sfx_shaders.hpp"
 #include "sfx_shared_oit.h"
@@ -36,7 +37,8 @@ Status checkProfile(const TierProfile& p) {
 uint32_t keptLayers(TransparencyQuality quality) { return quality == TransparencyQuality::High ? 32u : 16u; }
 uint32_t keptLayers(const TransparencyDesc& desc) { return desc.maxLayers.value_or(keptLayers(desc.quality)); }
 
-Transparency::Transparency(Device& device, const TransparencyDesc& desc) : device_(device), desc_(desc) {}
+Transparency::Transparency(Device& device, const TransparencyDesc& desc)
+    : device_(device), desc_(desc), passTimers_(std::make_unique<detail::PassTimers>(device)) {}
 
 Transparency::~Transparency() { release(); }
 
@@ -74,48 +76,25 @@ Result<std::unique_ptr<Transparency>> Transparency::create(Device& device, const
     return t;
 }
 
-void Transparency::destroyPassTimers() {
-    for (TimerHandle t : passTimers_) (void)device_.destroyTimer(t);
-    passTimers_.clear();
-    timedPasses_ = 0;
-}
-
 Status Transparency::setProfiling(bool enabled) {
     profiling_ = enabled;
-    if (!enabled) destroyPassTimers();
+    if (!enabled) passTimers_->clear();
     return Status::ok();
 }
 
 Status Transparency::timed(size_t index, const std::function<Status()>& record) {
     if (!profiling_) return record();
-    while (passTimers_.size() <= index) {
-        Result<TimerHandle> t = device_.createTimer();
-        if (!t) return t.status();
-        passTimers_.push_back(t.value());
-    }
-    SFX_TRY(device_.beginTimer(passTimers_[index]));
-    SFX_TRY(record());
-    SFX_TRY(device_.endTimer(passTimers_[index]));
-    timedPasses_ = std::max(timedPasses_, index + 1);
-    return Status::ok();
+    return passTimers_->timed(index, record);
 }
 
 Result<std::vector<PassTiming>> Transparency::passTimings() {
-    if (!profiling_ || timedPasses_ == 0)
-        return Status{StatusCode::InvalidArgument,
-                      "Transparency::passTimings: nothing timed (call setProfiling(true), then render() a frame with a draw and flush)"};
-    const EffectPlan p = plan(true);
-    std::vector<PassTiming> out;
-    for (size_t i = 0; i < timedPasses_ && i < p.passes.size(); ++i) {
-        Result<TimerReading> reading = device_.readTimer(passTimers_[i]);
-        if (!reading) return reading.status();
-        out.push_back({p.passes[i].effect, p.passes[i].name, reading.value()});
-    }
-    return out;
+    if (!profiling_)
+        return Status{StatusCode::InvalidArgument, "Transparency::passTimings: profiling is off (call setProfiling(true) before render)"};
+    return passTimers_->read(plan(true), "Transparency");
 }
 
 void Transparency::release() {
-    destroyPassTimers();
+    passTimers_->clear();
     // Destroys through `destroy` when set, then clears the handle.
     auto drop = [&](auto& h, Status (Device::*destroy)(std::remove_reference_t<decltype(h)>)) {
         if (!h.isNull()) (void)(device_.*destroy)(h);

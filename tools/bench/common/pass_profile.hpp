@@ -3,6 +3,7 @@
 // the median of each pass and of each dispatch's total over the timed runs.
 #pragma once
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,10 @@ namespace sfx::tools {
 
 // Most timed runs a command line may ask for: enough for any median, short of an hour's run.
 inline constexpr uint32_t kMaxTimedRuns = 1000;
+// The --runs flag of the sfx commands that price a dispatch.
+inline constexpr const char* kTimedRunsHelp =
+    "time the dispatch: prints 'time: <median> ms' over N dispatches after a warm-up (GPU timestamps on Vulkan, "
+    "glFinish on GL), per pass beside it; 0 = not timed";
 
 struct PassCost {
     std::string name;
@@ -58,6 +63,13 @@ Result<DispatchCost> profilePasses(Device& dev, Effect& effect, Dispatch&& dispa
     for (size_t p = 0; p < perPass.size(); ++p) cost.passes[p].ms = median(perPass[p]);
     cost.totalMs = median(totals);
     return cost;
+}
+
+// "time: <median> ms" first, so a script reads the price of a configuration from one line.
+inline void printCost(const DispatchCost& cost) {
+    std::printf("time: %.3f ms\n", cost.totalMs);
+    std::printf("  median of %u dispatches after a warm-up, %s; per pass:\n", cost.runs, toString(cost.source));
+    for (const PassCost& p : cost.passes) std::printf("    %.3f ms  %s\n", p.ms, p.name.c_str());
 }
 
 }  // namespace sfx::tools
