@@ -10,6 +10,7 @@
 #include "effect_runs.hpp"
 #include "portability_rows.hpp"
 #include "scene.hpp"
+#include "scene_runs.hpp"
 #include "sfx/ao.hpp"
 #include "sfx/reference/ao_reference.hpp"
 #include "sfx/reference/oit_reference.hpp"
@@ -167,22 +168,15 @@ TEST_CASE("multilayer ao: depth peeling recovers the contact shadow a foreground
     Result<scene::Scene> file = scene::loadSceneFile(scenePath("hidden_contact.json"));
     INFO(file.status().toString());
     REQUIRE(file.isOk());
-    Result<tiers::TierChoice> tier = tiers::choose(test::device().caps(), test::tier());
-    REQUIRE(tier.isOk());
     auto renderAo = [&](uint32_t layers) {
         render::RenderOptions o;
         o.ao = AoTechnique::Alchemy;
         o.aoRadius = 0.5f;
         o.aoLayers = layers;
-        auto r = render::SceneRender::create(test::device(), tier.value(), file.value(), o);
-        INFO(r.status().toString());
-        REQUIRE(r.isOk());
-        Result<render::RenderResult> out = r.value()->render();
-        INFO(out.status().toString());
-        REQUIRE(out.isOk());
-        REQUIRE(out->ao.has_value());
+        render::RenderResult out = test::renderScene(test::device(), test::tier(), file.value(), o);
+        REQUIRE(out.ao.has_value());
         SFX_REQUIRE_NO_VALIDATION_MESSAGES();
-        return out->ao->pixels;
+        return out.ao->pixels;
     };
     const std::vector<float> single = renderAo(1), multi = renderAo(2);
     const uint32_t w = file->width, h = file->height;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <string>
 
+#include "scene_runs.hpp"
 #include "sfx/scene_render.hpp"
 #include "sfx/tiers.hpp"
 #include "test_device.hpp"
@@ -34,22 +35,10 @@ scene::Scene loadScene(const std::string& text) {
     return s.value();
 }
 
-tiers::TierChoice testTier() {
-    Result<tiers::TierChoice> t = tiers::choose(test::device().caps(), test::tier());
-    INFO(t.status().toString());
-    REQUIRE(t.isOk());
-    return t.value();
-}
+tiers::TierChoice testTier() { return test::chooseTier(test::device(), test::tier()); }
 
 render::RenderResult renderWith(const scene::Scene& scene, const render::RenderOptions& options, render::FramePlan* plan = nullptr) {
-    auto r = render::SceneRender::create(test::device(), testTier(), scene, options);
-    INFO(r.status().toString());
-    REQUIRE(r.isOk());
-    if (plan) *plan = r.value()->plan();
-    Result<render::RenderResult> out = r.value()->render();
-    INFO(out.status().toString());
-    REQUIRE(out.isOk());
-    return std::move(out.value());
+    return test::renderScene(test::device(), test::tier(), scene, options, plan);
 }
 
 bool hasPass(const render::FramePlan& plan, const std::string& effect) {

@@ -26,6 +26,7 @@
 
 #include "edge_bands.hpp"
 #include "portability_rows.hpp"
+#include "scene_runs.hpp"
 #include "sfx/reference/oit_reference.hpp"
 #include "sfx/scene_render.hpp"
 #include "sfx/tiers.hpp"
@@ -59,23 +60,15 @@ scene::Scene loadScene(const char* name) {
 }
 
 render::RenderResult renderScene(const scene::Scene& scene, std::vector<uint32_t> order = {}, render::FramePlan* plan = nullptr) {
-    Result<tiers::TierChoice> tier = tiers::choose(test::device().caps(), test::tier());
-    REQUIRE(tier.isOk());
     render::RenderOptions o;
     o.width = kW;
     o.height = kH;
     o.ao = AoTechnique::Alchemy;  // AO on the opaque picture, as the demo draws it
     o.keepOpaqueInputs = true;
     o.transparentDrawOrder = std::move(order);
-    auto r = render::SceneRender::create(test::device(), tier.value(), scene, o);
-    INFO(r.status().toString());
-    REQUIRE(r.isOk());
-    if (plan) *plan = r.value()->plan();
-    Result<render::RenderResult> out = r.value()->render();
-    INFO(out.status().toString());
-    REQUIRE(out.isOk());
-    REQUIRE(out->opaque.has_value() == scene.hasTranslucency());  // the transparency step's inputs, only when it ran
-    return std::move(out.value());
+    render::RenderResult out = test::renderScene(test::device(), test::tier(), scene, o, plan);
+    REQUIRE(out.opaque.has_value() == scene.hasTranslucency());  // the transparency step's inputs, only when it ran
+    return out;
 }
 
 struct Reference {
@@ -261,13 +254,11 @@ TEST_CASE("scene renderer OIT: draw order does not change the picture", "[render
 
 TEST_CASE("scene renderer OIT: a bad draw order is a named error", "[render][oit][bad-input]") {
     const scene::Scene scene = loadScene("panes.json");
-    Result<tiers::TierChoice> tier = tiers::choose(test::device().caps(), test::tier());
-    REQUIRE(tier.isOk());
     render::RenderOptions o;
     o.width = kW;
     o.height = kH;
     o.transparentDrawOrder = {0, 0, 1};
-    auto r = render::SceneRender::create(test::device(), tier.value(), scene, o);
+    auto r = render::SceneRender::create(test::device(), test::chooseTier(test::device(), test::tier()), scene, o);
     REQUIRE_FALSE(r.isOk());
     CHECK(r.status().code() == StatusCode::InvalidArgument);
     CHECK(r.status().message().find("RenderOptions.transparentDrawOrder") == 0);

@@ -19,6 +19,7 @@
 #include "cross_bounds.hpp"
 #include "cross_compare.hpp"
 #include "raster_bands.hpp"
+#include "scene_runs.hpp"
 #include "sfx/scene_render.hpp"
 #include "sfx/tiers.hpp"
 
@@ -97,21 +98,13 @@ Rendered renderOnEach(std::vector<Opened>& devices, Tier tier, const scene::Scen
     Rendered r;
     for (Opened& o : devices) {
         INFO(o.name << ": " << what);
-        Result<tiers::TierChoice> choice = tiers::choose(o.device->caps(), tier);
-        INFO(choice.status().toString());
-        REQUIRE(choice.isOk());
-        auto renderer = render::SceneRender::create(*o.device, choice.value(), scene, options);
-        INFO(renderer.status().toString());
-        REQUIRE(renderer.isOk());
-        Result<render::RenderResult> out = renderer.value()->render();
-        INFO(out.status().toString());
-        REQUIRE(out.isOk());
-        CHECK(out->warnings.empty());
-        CHECK(out->stats.transparencyRan);
-        REQUIRE(out->ao.has_value() == ao);
-        r.color[o.name].assign(out->color.pixels.begin(), out->color.pixels.end());
-        if (ao) r.ao[o.name].assign(out->ao->pixels.begin(), out->ao->pixels.end());
-        if (!r.frame) r.frame = out->opaque;
+        const render::RenderResult out = test::renderScene(*o.device, tier, scene, options);
+        CHECK(out.warnings.empty());
+        CHECK(out.stats.transparencyRan);
+        REQUIRE(out.ao.has_value() == ao);
+        r.color[o.name].assign(out.color.pixels.begin(), out.color.pixels.end());
+        if (ao) r.ao[o.name].assign(out.ao->pixels.begin(), out.ao->pixels.end());
+        if (!r.frame) r.frame = out.opaque;
     }
     requireNoValidation(devices);
     requireSpan(r.color.begin()->second, 0.3, what + " colour");
