@@ -20,7 +20,7 @@
 #                      truth (docs/mb_families.csv, the family tables of docs/motion_blur.md), and
 #                      each family's pictures (docs/images/mb_<family>_<speed>px.png); then with
 #                      --raster the rasterised families, drawn by the first backend's raster pass
-#                      (docs/mb_raster_families.csv, docs/images/mb_{models,camera}_12px.png).
+#                      (docs/mb_raster_families.csv, docs/images/mb_{models,camera,turning}_12px.png).
 #   7. bench_mb_flicker - motion blur's frame-to-frame change against the truth's over frame
 #                      sequences of the same families, and both jitter patterns (docs/mb_flicker.csv,
 #                      "Stable under motion" in docs/motion_blur.md);

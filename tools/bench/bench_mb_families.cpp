@@ -133,7 +133,7 @@ int main(int argc, char** argv) {
     app.add_option("--seed", seed, "layout seed of every family")->capture_default_str();
     app.add_option("--speeds", speedsFlag, "displacements across the shutter, pixels, comma-separated")->capture_default_str();
     app.add_option("--families", familiesFlag, "comma-separated families, or all")->capture_default_str();
-    app.add_flag("--raster", raster, "score the rasterised families (models, camera) instead of the 2D ones");
+    app.add_flag("--raster", raster, "score the rasterised families (models, camera, turning) instead of the 2D ones");
     app.add_option("--raster-backend", rasterBackend, "the backend whose raster pass draws the rasterised families")->capture_default_str();
     app.add_option("--backends", backendsFlag, "comma-separated backends; none = CPU reference only")->capture_default_str();
     app.add_option("--taps", taps, "override MotionBlurSettings::samples on both tiers");

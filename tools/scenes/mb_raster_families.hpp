@@ -2,8 +2,9 @@
 // the SDK's own raster pass (mb_raster.hpp): "models", glmark2's horse and cat moving in front of
 // a still checkered wall and floor (object motion, still camera), and "camera", a still scene of
 // a sphere, a thin post, the bunny, a box and a wall at depths from 2.5 to 12 seen by a camera
-// that pans right while it dollies in (every pixel moves, faster the nearer it is). Each is
-// scaled to a chosen speed; the truth is the average of many rendered instants.
+// that pans right while it dollies in (every pixel moves, faster the nearer it is), and
+// "turning", a two-bladed cross spinning in the picture plane and the horse turning on the spot
+// (still camera). Each is scaled to a chosen speed; the truth is the average of many rendered instants.
 #pragma once
 
 #include <string>

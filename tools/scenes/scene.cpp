@@ -36,6 +36,14 @@ Result<Mesh> loadObj(const std::string& path) {
 
 }  // namespace
 
+glm::dmat4 Mesh::modelAt(double time) const {
+    glm::dmat4 turned = model;
+    if (spinRadians != 0.0)
+        turned = glm::translate(glm::dmat4(1.0), spinCentre) * glm::rotate(glm::dmat4(1.0), spinRadians * time, spinAxis) *
+            glm::translate(glm::dmat4(1.0), -spinCentre) * model;
+    return glm::translate(glm::dmat4(1.0), velocity * time) * turned;
+}
+
 glm::dmat4 RasterScene::view(double time) const {
     const glm::dvec3 shift = eyeVelocity * time;
     return glm::lookAt(eye + shift, target + shift, up);
@@ -232,14 +240,13 @@ Result<GBuffer> SceneRenderer::render(const RasterScene& scene, uint32_t width, 
         }
         std::vector<DrawDesc> draws;
         for (const GpuMesh& m : meshes_) {
-            auto modelAt = [&](double t) { return glm::translate(glm::dmat4(1.0), m.source->velocity * t) * m.source->model; };
-            const glm::dmat4 modelView = scene.view(time) * modelAt(time);
+            const glm::dmat4 modelView = scene.view(time) * m.source->modelAt(time);
             RasterParams p{};
             store(p.modelView, modelView);
             store(p.projection, g.camera.projection);
             store(p.normalMatrix, glm::transpose(glm::inverse(modelView)));
-            store(p.shutterOpenClip, g.camera.projection * scene.view(time - 0.5) * modelAt(time - 0.5));
-            store(p.shutterCloseClip, g.camera.projection * scene.view(time + 0.5) * modelAt(time + 0.5));
+            store(p.shutterOpenClip, g.camera.projection * scene.view(time - 0.5) * m.source->modelAt(time - 0.5));
+            store(p.shutterCloseClip, g.camera.projection * scene.view(time + 0.5) * m.source->modelAt(time + 0.5));
             p.viewportSize[0] = float(width);
             p.viewportSize[1] = float(height);
             for (int c = 0; c < 4; ++c) p.surface[c] = float(m.source->surface[c]);

@@ -23,6 +23,13 @@ struct Mesh : scene::TriangleMesh {
     Mesh(scene::TriangleMesh triangles) : scene::TriangleMesh(std::move(triangles)) {}
     glm::dmat4 model{1.0};
     glm::dvec3 velocity{0.0};  // world units per shutter interval (for moving-object demos)
+    // Turning: radians per shutter interval about the world axis `spinAxis` through the world
+    // point `spinCentre`, applied after `model` and before the translation by `velocity`.
+    double spinRadians = 0.0;
+    glm::dvec3 spinAxis{0, 1, 0};
+    glm::dvec3 spinCentre{0.0};
+    // Object to world at `time` shutter intervals from t = 0 (model itself at t = 0).
+    glm::dmat4 modelAt(double time) const;
     // RasterParams.surface: rgb linear colour, a the shading code (SFX_RASTER_SHADING_*);
     // a = 0 draws the samples' checkered albedo.
     glm::dvec4 surface{0.0};
