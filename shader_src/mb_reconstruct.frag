@@ -17,8 +17,6 @@ layout(location = 0) out vec4 outColor;
 // Fixed per pipeline (sfx_shared_mb.h); MotionBlur gives both.
 layout(constant_id = SFX_MB_SC_PAIRS) const int kPairs = 1;
 layout(constant_id = SFX_MB_SC_JITTER_SIZE) const int kJitterSize = 2;
-layout(constant_id = SFX_MB_SC_BASE_PAIRS) const int kBasePairs = 1;
-layout(constant_id = SFX_MB_SC_BASE_RADIUS) const int kBaseRadius = 1;
 
 // Round half away from zero: the same on both sides of the centre, as the reference does.
 vec2 roundAway(vec2 x) { return sign(x) * floor(abs(x) + 0.5); }
@@ -38,7 +36,7 @@ void main() {
     float speedC = length(vC);
     float speedN = length(vN);
     float jitter = mbJitter(p.x, p.y, kJitterSize);
-    int pairs = mbActivePairs(speedN, kPairs, kBasePairs, kBaseRadius);
+    int pairs = mbActivePairs(speedN, kPairs);
 
     vec4 sum = vec4(0.0);
     float total = 0.0;

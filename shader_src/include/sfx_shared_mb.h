@@ -160,20 +160,7 @@ SFX_MB_FN SFX_MB_REAL mbRankKey(SFX_MB_VEC2 v) { return v.x * v.x + v.y * v.y; }
 // weight them double (rounding up did, for every length just past an integer). The step sits
 // 0.01 px below the half: integer and half-integer lengths, on the velocity grid, stay away from
 // it in float and double alike (a half-integer length takes the pair whose end texel weighs 0).
-//
-// A tier may keep another tier's sampling for the blurs that tier's radius holds: with
-// `basePairs` below `pairs`, at most basePairs pairs while |v_N| is within `baseRadius` (pixels),
-// every pair the rule above allows beyond it. Where a hidden background must be guessed, reading
-// every texel near the centre invents more than the other tier's skipping samples do, so the
-// tier with more pairs computes the other's picture wherever both radii hold the blur
-// (docs/motion_blur.md, "The tier promise between the scored speeds"). basePairs 0 or >= pairs:
-// the rule above alone. The step sits 0.01 px past the base radius, away from the velocity grid
-// in float and double.
-SFX_MB_FN int mbActivePairs(SFX_MB_REAL speedN, int pairs, int basePairs, int baseRadius) {
-    int dense = clamp(int(ceil(speedN - 0.49)), 1, pairs);
-    if (basePairs < 1 || basePairs >= pairs || speedN > SFX_MB_REAL(baseRadius) + 0.01) return dense;
-    return min(dense, basePairs);
-}
+SFX_MB_FN int mbActivePairs(SFX_MB_REAL speedN, int pairs) { return clamp(int(ceil(speedN - 0.49)), 1, pairs); }
 
 // Pair i of `pairs` sits at +t and -t' along one velocity of length `speed`:
 //   t = (i + 1 + jitter * s) / pairs,   t' = (i + 1 - jitter * s) / pairs,   both at most 1.
@@ -256,8 +243,6 @@ SFX_MB_FN bool mbNeighborReaches(int dx, int dy, SFX_MB_VEC2 v, int tile) {
 #define SFX_MB_SC_RADIUS 1       // mb_neighbor_max: k, the blur radius in pixels
 #define SFX_MB_SC_PAIRS 0        // mb_reconstruct: sample pairs, (taps - 1) / 2
 #define SFX_MB_SC_JITTER_SIZE 1  // mb_reconstruct: 2 = checkerboard, 4 = 4x4 randomised
-#define SFX_MB_SC_BASE_PAIRS 2   // mb_reconstruct: mbActivePairs' basePairs
-#define SFX_MB_SC_BASE_RADIUS 3  // mb_reconstruct: mbActivePairs' baseRadius, pixels
 
 // ---- Uniform blocks of the motion blur passes (SFX_BLOCK: one declaration for GLSL and C++) ----
 // Pass 1, mb_pack.frag.

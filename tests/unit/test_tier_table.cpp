@@ -22,7 +22,7 @@ namespace {
 auto fields(const TierProfile& p) {
     return std::make_tuple(p.tier, p.aoScalableTaps, p.aoScalableMirrored, p.aoScalableMaxRadiusPx, p.aoUsesDepthMip, p.aoDepthMipLevels,
                            p.aoAlchemySamples, p.aoBlurRadiusPx, p.aoCreaseTaps, p.aoCreaseSpacingPx, p.aoPackedDepthTarget, p.mbTaps,
-                           p.mbMaxRadiusPx, p.mbJitterSize, p.mbBasePairs, p.mbBaseRadiusPx, p.abufferOit);
+                           p.mbMaxRadiusPx, p.mbJitterSize, p.abufferOit);
 }
 
 bool sameStructure(const TierProfile& a, const TierProfile& b) {

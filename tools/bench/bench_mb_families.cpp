@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
     double sweepFrom = 0.5;
     std::optional<uint32_t> taps;
     std::optional<float> radius;
-    std::optional<uint32_t> highTaps, highBasePairs;
+    std::optional<uint32_t> highTaps;
     std::optional<float> highRadius;
     app.add_option("--width", width, "picture width")->capture_default_str();
     app.add_option("--height", height, "picture height")->capture_default_str();
@@ -149,7 +149,6 @@ int main(int argc, char** argv) {
     app.add_option("--radius", radius, "override MotionBlurSettings::maxRadiusPx (at 720 rows) on both tiers");
     app.add_option("--high-taps", highTaps, "the high tier's profile taps (a candidate default; --taps overrides it)");
     app.add_option("--high-radius", highRadius, "the high tier's profile radius at 720 rows (a candidate default)");
-    app.add_option("--high-base-pairs", highBasePairs, "the high tier's base pairs, at the current tier's radius (0: none)");
     app.add_option("--csv", csvPath, "CSV output file")->capture_default_str();
     app.add_option("--images", imagesDir, "write DIR/mb_<family>_<speed>px.png: input, truth, current, high tier (CPU reference) and errors x4");
     app.add_option("--image-speeds", imageSpeedsFlag, "speeds of the --images pictures, comma-separated (each also in --speeds)")
@@ -164,7 +163,6 @@ int main(int argc, char** argv) {
     TierProfile profiles[2] = {tiers::profile(Tier::Current), tiers::profile(Tier::High)};  // indexed by tier == High
     if (highTaps) profiles[1].mbTaps = *highTaps;
     if (highRadius) profiles[1].mbMaxRadiusPx = *highRadius;
-    if (highBasePairs) profiles[1].mbBasePairs = *highBasePairs, profiles[1].mbBaseRadiusPx = profiles[0].mbMaxRadiusPx;
 
     std::vector<Runner> runners;
     for (Tier tier : {Tier::Current, Tier::High})

@@ -71,9 +71,7 @@ int main(int argc, char** argv) {
         std::fflush(stdout);
     };
     // The tiers differ in taps and radius only, which the grid sets: one profile stands for both.
-    // The grid is of the plain pair rule: no base sampling (mbActivePairs), as the presets use.
-    TierProfile base = tiers::profile(Tier::High);
-    base.mbBasePairs = 0, base.mbBaseRadiusPx = 0;
+    const TierProfile base = tiers::profile(Tier::High);
     if (base.mbJitterSize != tiers::profile(Tier::Current).mbJitterSize) {
         std::cerr << "fit_mb: the tiers' motion-blur jitter differs; the grid would need a run per tier\n";
         return 1;

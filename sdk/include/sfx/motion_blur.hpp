@@ -63,11 +63,6 @@ struct MotionBlurParams {
     uint32_t pairs = 0;       // (taps - 1) / 2 mirrored sample pairs
     uint32_t jitterSize = 0;  // 2 = checkerboard, 4 = 4x4 randomised
     uint32_t radiusPx = 0;    // k: clamp radius, output pixels, [1, 64]
-    // The base sampling of mbActivePairs (sfx_shared_mb.h): at most basePairs pairs while the
-    // neighbourhood velocity is within baseRadiusPx. basePairs == pairs (and baseRadiusPx ==
-    // radiusPx) where the profile has none or it would not be below the pairs and radius in use.
-    uint32_t basePairs = 0;
-    uint32_t baseRadiusPx = 0;
     // N: tile edge of tile max and neighbour max, output pixels, [1, k] (SFX_MB_TILE_PX scaled
     // as the radius is, made larger where the neighbourhood would reach past
     // SFX_MB_MAX_NEIGHBOR_REACH tiles).

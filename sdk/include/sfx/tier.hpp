@@ -91,11 +91,6 @@ struct TierProfile {
     uint32_t mbTaps = 0;        // reconstruction taps including the centre
     float mbMaxRadiusPx = 0;    // maximum blur radius at the reference resolution
     uint32_t mbJitterSize = 0;  // 2 (checkerboard) or 4 (4x4 randomised)
-    // Base sampling (mbActivePairs): at most mbBasePairs pairs while the neighbourhood velocity is
-    // within mbBaseRadiusPx (at the reference resolution), then no farther apart than there;
-    // 0 pairs: none (every pair the blur length allows).
-    uint32_t mbBasePairs = 0;
-    float mbBaseRadiusPx = 0;
     // Order-independent transparency
     bool abufferOit = false;
 };

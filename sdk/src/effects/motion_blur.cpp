@@ -81,15 +81,6 @@ Result<MotionBlurParams> resolveMotionBlur(const TierProfile& profile, const Mot
                                std::to_string(*s.maxRadiusPx) + " (" + std::to_string(radius) + " px at " + std::to_string(height) + " rows)",
                                "a scaled radius <= 64 px");
     p.radiusPx = uint32_t(radius);
-    // The base sampling (mbActivePairs): its radius scaled and rounded as the tier's; only below
-    // the pairs and the radius in use, else the plain rule (basePairs = pairs).
-    p.basePairs = p.pairs, p.baseRadiusPx = p.radiusPx;
-    if (profile.mbBasePairs > 0 && profile.mbBasePairs < p.pairs) {
-        const double baseScaled = s.referenceRows == 0 ? double(profile.mbBaseRadiusPx)
-                                                       : double(profile.mbBaseRadiusPx) * double(height) / double(s.referenceRows);
-        const double baseRadius = std::max(1.0, std::round(baseScaled));
-        if (baseRadius < radius) p.basePairs = profile.mbBasePairs, p.baseRadiusPx = uint32_t(baseRadius);
-    }
     // The tile: the same pixels at referenceRows on every tier, never beyond the radius, and
     // large enough that neighbour max reaches the radius within its limit of tiles.
     const double tileBase = double(shared::SFX_MB_TILE_PX);
@@ -327,10 +318,7 @@ Status MotionBlur::recordPasses(const MotionBlurInputs& in, const MotionBlurPara
                                                        gen::mb_neighbor_max::kName);
     if (!neighborPipeline) return neighborPipeline.status();
     Result<PipelineHandle> reconstructPipeline = pipeline(reconstructProgram_, desc_.colorFormat,
-                                                          {{SFX_MB_SC_PAIRS, int32_t(p.pairs)},
-                                                           {SFX_MB_SC_JITTER_SIZE, int32_t(p.jitterSize)},
-                                                           {SFX_MB_SC_BASE_PAIRS, int32_t(p.basePairs)},
-                                                           {SFX_MB_SC_BASE_RADIUS, int32_t(p.baseRadiusPx)}},
+                                                          {{SFX_MB_SC_PAIRS, int32_t(p.pairs)}, {SFX_MB_SC_JITTER_SIZE, int32_t(p.jitterSize)}},
                                                           gen::mb_reconstruct::kName);
     if (!reconstructPipeline) return reconstructPipeline.status();
 

@@ -118,7 +118,7 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
             const double speedC = std::sqrt(length2(vC));
             const double speedN = std::sqrt(length2(vN));
             const double jitter = mbJitter(x, y, int(p.jitterSize));
-            const int pairs = mbActivePairs(speedN, int(p.pairs), int(p.basePairs), int(p.baseRadiusPx));
+            const int pairs = mbActivePairs(speedN, int(p.pairs));
             std::array<double, 4> sum{};
             double total = 0, window = 0;
             for (int i = 0; i < pairs; ++i) {
