@@ -21,6 +21,9 @@
 #                      each family's pictures (docs/images/mb_<family>_<speed>px.png); then with
 #                      --raster the rasterised families, drawn by the first backend's raster pass
 #                      (docs/mb_raster_families.csv, docs/images/mb_{models,camera,turning}_12px.png).
+#                      With --sweeps, both every 0.5 px past both tiers' blur, CPU reference
+#                      (docs/mb_sweep.csv, docs/mb_raster_sweep.csv, "The tier promise
+#                      between the scored speeds" in docs/motion_blur.md).
 #   7. bench_mb_flicker - motion blur's frame-to-frame change against the truth's over frame
 #                      sequences of the same families, and both jitter patterns (docs/mb_flicker.csv,
 #                      "Stable under motion" in docs/motion_blur.md);
@@ -32,13 +35,22 @@
 # The fitted looks are data of the tier table: fit_ao prints them, and adopting them is an edit of
 # tiers/src/tier_table.cpp (with the preset accuracies trade_presets prints), then a rerun; so are
 # the motion blur presets fit_mb's front gives.
-# Usage: tools/run_trade.sh [--backends vulkan,gles]
+# Usage: tools/run_trade.sh [--backends vulkan,gles] [--sweeps]
+# --sweeps adds the motion blur speed sweeps of step 6 (10-16 minutes on 2 cores, beyond the
+# rest's 20-minute budget); without it they are skipped, and the script says so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${SFX_BUILD_DIR:-build}
 CACHE=${SFX_TRUTH_CACHE:-$BUILD_DIR/truth-cache}
 BACKENDS=vulkan,gles
-if [ "${1:-}" = "--backends" ] && [ -n "${2:-}" ]; then BACKENDS=$2; fi
+SWEEPS=0
+while [ $# -gt 0 ]; do
+    case "$1" in
+        --backends) BACKENDS=${2:?--backends needs a list}; shift 2 ;;
+        --sweeps) SWEEPS=1; shift ;;
+        *) echo "run_trade.sh: unknown argument '$1' (allowed: --backends LIST, --sweeps)" >&2; exit 2 ;;
+    esac
+done
 start=$(date +%s)
 step() { echo "== [$(( $(date +%s) - start )) s] $*"; }
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
@@ -64,8 +76,16 @@ step "bench_mb_families: motion blur on the held-out scene families"
 step "bench_mb_families --raster: motion blur on the rasterised held-out families"
 "$BUILD_DIR"/tools/bench/bench_mb_families --raster --raster-backend "${BACKENDS%%,*}" --instants 128 --csv docs/mb_raster_families.csv \
     --backends "$BACKENDS" --images docs/images --image-speeds 12
+if [ "$SWEEPS" = 1 ]; then
+    step "bench_mb_families --sweep: the tier promise every 0.5 px, CPU reference (10-16 minutes)"
+    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --backends none --csv docs/mb_sweep.csv
+    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --raster --raster-backend "${BACKENDS%%,*}" --instants 64 --backends none \
+        --csv docs/mb_raster_sweep.csv
+else
+    step "bench_mb_families --sweep: skipped (10-16 minutes; run with --sweeps): docs/mb_sweep.csv and docs/mb_raster_sweep.csv keep their last run"
+fi
 step "bench_mb_flicker: motion blur's flicker over frame sequences of the scene families"
 "$BUILD_DIR"/tools/bench/bench_mb_flicker --csv docs/mb_flicker.csv --backends "$BACKENDS"
 step "fit_mb: motion blur's front over taps x maximum radius at 720 rows"
 "$BUILD_DIR"/tools/bench/fit_mb --taps 3,5,7,9,11,13,15,17 --radii 8,10,12,14,18,24 --backend "${BACKENDS%%,*}" --csv docs/mb_fit.csv
-step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg, docs/mb_families.csv, docs/mb_raster_families.csv, docs/images/mb_*px.png, docs/mb_flicker.csv, docs/mb_fit.csv, docs/ao_families.*"
+step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg, docs/mb_families.csv, docs/mb_raster_families.csv, docs/mb_sweep.csv, docs/mb_raster_sweep.csv, docs/images/mb_*px.png, docs/mb_flicker.csv, docs/mb_fit.csv, docs/ao_families.*"

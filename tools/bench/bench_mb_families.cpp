@@ -6,11 +6,15 @@
 // rows it spans. With --images, a picture per family at a few speeds: input, truth and each
 // tier's CPU reference output, and their errors. With --raster, the rasterised families
 // (tools/scenes/mb_raster_families.hpp) instead: drawn by --raster-backend's raster pass, the
-// truth averaging --instants rendered instants. Not a test: docs/motion_blur.md shows its CSVs
-// and pictures. About two minutes on 2 cores.
+// truth averaging --instants rendered instants. With --sweep, every 0.5 px from 0.5 px to past
+// both tiers' blur (the high tier's radius at this height, doubled, plus 4 px) and, per family
+// and region, the worst high - current tier and its speed: the tier promise checked between the
+// scored speeds too. Not a test: docs/motion_blur.md shows its CSVs and pictures. About two
+// minutes on 2 cores (a sweep: see docs/motion_blur.md).
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -124,9 +128,12 @@ int main(int argc, char** argv) {
     std::string csvPath = "mb_families.csv", backendsFlag = "vulkan,gles", speedsFlag = "0.5,2,6,12,24,40", familiesFlag = "all";
     std::string imagesDir, imageSpeedsFlag = "6,12,24";
     std::string rasterBackend = "vulkan";
-    bool raster = false;
+    bool raster = false, sweep = false;
+    double sweepFrom = 0.5;
     std::optional<uint32_t> taps;
     std::optional<float> radius;
+    std::optional<uint32_t> highTaps;
+    std::optional<float> highRadius;
     app.add_option("--width", width, "picture width")->capture_default_str();
     app.add_option("--height", height, "picture height")->capture_default_str();
     app.add_option("--instants", instants, "instants averaged for the truth")->capture_default_str();
@@ -136,8 +143,12 @@ int main(int argc, char** argv) {
     app.add_flag("--raster", raster, "score the rasterised families (models, camera, turning) instead of the 2D ones");
     app.add_option("--raster-backend", rasterBackend, "the backend whose raster pass draws the rasterised families")->capture_default_str();
     app.add_option("--backends", backendsFlag, "comma-separated backends; none = CPU reference only")->capture_default_str();
+    app.add_flag("--sweep", sweep, "speeds every 0.5 px past both tiers' blur (replaces --speeds); print the worst high - current per region");
+    app.add_option("--sweep-from", sweepFrom, "the sweep's first speed, px (a multiple of 0.5)")->capture_default_str();
     app.add_option("--taps", taps, "override MotionBlurSettings::samples on both tiers");
     app.add_option("--radius", radius, "override MotionBlurSettings::maxRadiusPx (at 720 rows) on both tiers");
+    app.add_option("--high-taps", highTaps, "the high tier's profile taps (a candidate default; --taps overrides it)");
+    app.add_option("--high-radius", highRadius, "the high tier's profile radius at 720 rows (a candidate default)");
     app.add_option("--csv", csvPath, "CSV output file")->capture_default_str();
     app.add_option("--images", imagesDir, "write DIR/mb_<family>_<speed>px.png: input, truth, current, high tier (CPU reference) and errors x4");
     app.add_option("--image-speeds", imageSpeedsFlag, "speeds of the --images pictures, comma-separated (each also in --speeds)")
@@ -149,6 +160,9 @@ int main(int argc, char** argv) {
     }
     MotionBlurSettings settings;
     settings.samples = taps, settings.maxRadiusPx = radius;
+    TierProfile profiles[2] = {tiers::profile(Tier::Current), tiers::profile(Tier::High)};  // indexed by tier == High
+    if (highTaps) profiles[1].mbTaps = *highTaps;
+    if (highRadius) profiles[1].mbMaxRadiusPx = *highRadius;
 
     std::vector<Runner> runners;
     for (Tier tier : {Tier::Current, Tier::High})
@@ -173,7 +187,27 @@ int main(int argc, char** argv) {
     std::map<std::string, int> gainCount;
     // Per family, over the speeds of 2 px and more: the worst high - current PSNR, moving region and frame.
     std::map<std::string, std::array<double, 2>> worstHighMinusCurrent;
-    const std::vector<double> speeds = tools::splitNumberList(speedsFlag), imageSpeeds = tools::splitNumberList(imageSpeedsFlag);
+    std::vector<double> speeds = tools::splitNumberList(speedsFlag);
+    const std::vector<double> imageSpeeds = tools::splitNumberList(imageSpeedsFlag);
+    if (sweep) {
+        Result<MotionBlurParams> high = resolveMotionBlur(profiles[1], settings, height);
+        Result<MotionBlurParams> current = resolveMotionBlur(profiles[0], settings, height);
+        if (!high || !current) {
+            std::cerr << "bench_mb_families: " << (high ? current.status() : high.status()).toString() << "\n";
+            return 1;
+        }
+        // A speed is a displacement across the shutter: twice the blur radius.
+        const double last = 2.0 * std::max(high->radiusPx, current->radiusPx) + 4.0;
+        speeds.clear();
+        for (int half = std::max(1, int(std::lround(2.0 * sweepFrom))); half <= int(2.0 * last); ++half) speeds.push_back(0.5 * half);
+    }
+    // --sweep: per family and region (moving, frame, leading, trailing), the worst high - current
+    // tier (CPU reference) and the speed where it is.
+    struct Worst {
+        double db = INFINITY, speed = 0;
+    };
+    std::map<std::string, std::array<Worst, 4>> sweepWorst;
+    std::map<std::string, std::array<int, 2>> sweepIdentical;  // speeds where the tiers' outputs are identical, of all
     if (!imagesDir.empty()) {
         std::error_code ec;
         std::filesystem::create_directories(imagesDir, ec);
@@ -205,7 +239,7 @@ int main(int argc, char** argv) {
         ColorGrid referenceOut[2];  // the CPU reference's output, current and high tier
         Scores referenceScores[2];
         for (Tier tier : {Tier::Current, Tier::High}) {
-            Result<MotionBlurParams> p = resolveMotionBlur(tiers::profile(tier), settings, height);
+            Result<MotionBlurParams> p = resolveMotionBlur(profiles[tier == Tier::High], settings, height);
             if (!p) {
                 std::cerr << "bench_mb_families: " << p.status().toString() << "\n";
                 return false;
@@ -218,13 +252,24 @@ int main(int argc, char** argv) {
             if (tier == Tier::High) ++gainCount[family];
             for (Runner& r : runners) {
                 if (r.tier != tier) continue;
-                Result<tools::MotionBlurRun> run = tools::runMotionBlur(*r.device, tiers::profile(tier), settings, frame, cam, 1);
+                Result<tools::MotionBlurRun> run = tools::runMotionBlur(*r.device, profiles[tier == Tier::High], settings, frame, cam, 1);
                 if (!run) {
                     std::printf("  %-8s %-10s FAILED %s\n", toString(tier), r.backend.c_str(), run.status().toString().c_str());
                     continue;
                 }
                 emit(tier, r.backend, p.value(), run->output);
             }
+        }
+        const double regions[4][2] = {{referenceScores[0].moving, referenceScores[1].moving},
+                                      {referenceScores[0].frame, referenceScores[1].frame},
+                                      {referenceScores[0].leading, referenceScores[1].leading},
+                                      {referenceScores[0].trailing, referenceScores[1].trailing}};
+        auto& identical = sweepIdentical[family];
+        identical[0] += referenceOut[0].values == referenceOut[1].values, ++identical[1];
+        for (int r = 0; r < 4; ++r) {
+            const double d = regions[r][1] - regions[r][0];  // NaN where the region is empty: never the worst
+            Worst& w = sweepWorst[family][r];
+            if (d < w.db) w = {d, speed};
         }
         if (speed >= 2) {
             const double d[] = {referenceScores[1].moving - referenceScores[0].moving, referenceScores[1].frame - referenceScores[0].frame};
@@ -264,6 +309,20 @@ int main(int argc, char** argv) {
                     g[0] / gainCount[family], g[1] / gainCount[family]);
     std::printf("worst high - current tier over the speeds of 2 px and more (CPU reference), moving region / frame:\n");
     for (const auto& [family, d] : worstHighMinusCurrent) std::printf("  %-9s %+.3f / %+.3f dB\n", family.c_str(), d[0], d[1]);
+    if (sweep) {
+        std::printf("sweep, %g to %g px every 0.5 px at %ux%u: worst high - current tier (CPU reference), dB at speed px\n", speeds.front(),
+                    speeds.back(), width, height);
+        std::printf("  %-9s %-16s %-16s %-16s %-16s %s\n", "family", "moving", "frame", "leading", "trailing", "identical outputs");
+        for (const auto& [family, w] : sweepWorst) {
+            std::printf("  %-9s", family.c_str());
+            for (const Worst& r : w) {
+                char cell[40] = "-";
+                if (std::isfinite(r.db)) std::snprintf(cell, sizeof cell, "%+.3f at %g", r.db, r.speed);
+                std::printf(" %-16s", cell);
+            }
+            std::printf(" %d of %d speeds\n", sweepIdentical[family][0], sweepIdentical[family][1]);
+        }
+    }
     std::cout << "wrote " << csvPath << "\n";
     return 0;
 }
