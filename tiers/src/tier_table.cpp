@@ -138,7 +138,7 @@ TierProfile highDefault() {
     p.aoHalfResolution = true;      // as the current tier; the blur's 6 px become 3 half-size taps each side
     p.aoMaxDepthLayers = 4;         // multilayer AO: the first visible layer and 3 peeled ones (SFX_AO_MAX_DEPTH_LAYERS)
     // 12 samples + centre: its samples no farther apart than the current tier's (18 px / 6 pairs
-    // against 10 px / 3 pairs), so a thin feature is missed and a hidden background guessed from
+    // against 14 px / 3 pairs), so a thin feature is missed and a hidden background guessed from
     // afar no more often on the tier with the longer blur (docs/motion_blur.md, scene families).
     p.mbTaps = 13;
     p.mbMaxRadiusPx = 18.0f;
