@@ -182,6 +182,58 @@ TEST_CASE("ao bent normals: the floor beside a wall bends away from it on the de
     }
 }
 
+TEST_CASE("ao bent normals: setSettings turns them on and off; the visibility beside them is the same", "[ao][horizon][bent]") {
+    if (drawsNothing()) SFX_SKIP("the null backend draws nothing: GPU results are not compared on " << test::label());
+    // The bent variants compute the visibility with the plain programs' code: within the 1e-5
+    // the backends agree to where only the order of float operations may differ
+    // (docs/conformance.md), whichever program ran.
+    Device& dev = test::device();
+    const tools::AnalyticScene scene = tools::cornerScene(64, 48, 1.0);
+    AoSettings on = bentSettings(AoResolution::Tier, true), off = on;
+    off.bentNormals = false;
+    Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev, {64, 48, test::tierProfile(), off, DepthKind::Linear});
+    REQUIRE(ao.isOk());
+    std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
+    TextureHandle depthTex = dev.createTexture({64, 48, 1, Format::R32F, kTextureSampled, "bent-toggle-depth"}).value();
+    SFX_REQUIRE_OK(dev.writeTexture(depthTex, 0, depth.data(), depth.size() * sizeof(float)));
+    const Format of = test::pickFormat(dev, {Format::R32F}, true);
+    TextureHandle outTex = dev.createTexture({64, 48, 1, of, kTextureSampled | kTextureRenderTarget, "bent-toggle-ao"}).value();
+    TextureHandle bentTex = dev.createTexture({64, 48, 1, Format::RGBA8, kTextureSampled | kTextureRenderTarget, "bent-toggle-bent"}).value();
+    AoInputs in;
+    in.depth = DepthSource{depthTex, DepthKind::Linear, scene.camera};
+    in.output = outTex;
+    auto visibility = [&] {
+        SFX_REQUIRE_OK(dev.flush());
+        std::vector<double> v(64 * 48);
+        if (of == Format::R32F) {
+            std::vector<float> px(v.size());
+            SFX_REQUIRE_OK(dev.readTexture(outTex, 0, px.data(), px.size() * sizeof(float)));
+            for (size_t i = 0; i < v.size(); ++i) v[i] = px[i];
+        } else {
+            std::vector<uint8_t> px(v.size() * 4);
+            SFX_REQUIRE_OK(dev.readTexture(outTex, 0, px.data(), px.size()));
+            for (size_t i = 0; i < v.size(); ++i) v[i] = px[i * 4] / 255.0;
+        }
+        return v;
+    };
+    SFX_REQUIRE_OK(ao.value()->dispatch(in));
+    const std::vector<double> plain = visibility();
+    SFX_REQUIRE_OK(ao.value()->setSettings(on));
+    CHECK(ao.value()->dispatch(in).code() == StatusCode::InvalidArgument);  // no bent target given
+    in.bentNormals = bentTex;
+    SFX_REQUIRE_OK(ao.value()->dispatch(in));
+    const std::vector<double> withBent = visibility();
+    double worst = 0;
+    for (size_t i = 0; i < plain.size(); ++i) worst = std::max(worst, std::abs(plain[i] - withBent[i]));
+    CHECK(worst <= (of == Format::R32F ? 1e-5 : 1.0 / 255.0));
+    SFX_REQUIRE_OK(ao.value()->setSettings(off));
+    in.bentNormals = {};
+    SFX_REQUIRE_OK(ao.value()->dispatch(in));
+    SFX_REQUIRE_OK(dev.flush());
+    SFX_REQUIRE_NO_VALIDATION_MESSAGES();
+    for (TextureHandle t : {depthTex, outTex, bentTex}) SFX_REQUIRE_OK(dev.destroyTexture(t));
+}
+
 TEST_CASE("ao bent normals: named errors, and the plan lists their targets", "[ao][horizon][bent][bad-input]") {
     Device& dev = test::device();
     const TierProfile& profile = test::tierProfile();
