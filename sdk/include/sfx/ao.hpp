@@ -4,7 +4,8 @@
 //
 // Output: ambient visibility in [0, 1] (1 = unoccluded) in the r channel of the host's output
 // texture (every channel of an RGBA target holds it, alpha 1). Sky (linear depth at or past
-// SFX_SKY_DEPTH, or the far plane) is 1.
+// SFX_SKY_DEPTH, or the far plane) is 1. With AoSettings.bentNormals (horizon) also the bent
+// normals, in AoInputs.bentNormals.
 #pragma once
 
 #include <memory>
