@@ -385,15 +385,18 @@ float aoUnpackDepthKey(vec2 ba, float keyBase, float maxDepth) {
 #define SFX_AO_SC_HALF_RES 6       // 1: half-size pass: positions and normals at aoFullResPixel
 #define SFX_AO_SC_DEPTH_LAYERS 7   // opaque depth layers each tap tests (1: the first visible one only)
 #define SFX_AO_SC_HORIZON_STEPS 8  // Horizon: depth samples per side of a slice (kAoSamples: its slices)
+#define SFX_AO_SC_BENT_UNORM 9     // bent normal variants: 1 writes RGBA8 (xyz * 0.5 + 0.5), 0 signed float
 // The bilateral blur (ao_blur.frag):
 #define SFX_AO_SC_BLUR_RADIUS 0           // taps each side
 #define SFX_AO_SC_BLUR_MODERATE_RADIUS 1  // Crease's second, moderate blur
 #define SFX_AO_SC_BLUR_CREASE 2           // 1: also the moderate blur, blended in the final pass
 #define SFX_AO_SC_BLUR_FINAL_PASS 3       // 0: horizontal into the intermediate, 1: vertical out
 #define SFX_AO_SC_BLUR_KEEP_DEPTH 4       // 1: the vertical pass keeps the float depth (the upsample reads it)
+#define SFX_AO_SC_BLUR_BENT_UNORM 5       // as SFX_AO_SC_BENT_UNORM, for the pass's bent normal target
 // The upsample (ao_upsample.frag):
 #define SFX_AO_SC_UPSAMPLE_DEPTH 0  // where the half-size depth comes from (SFX_AO_HALF_DEPTH_*)
 #define SFX_AO_SC_UPSAMPLE_LINEARIZE 1  // 1: uDepth is the host's hardware depth: linearize on fetch
+#define SFX_AO_SC_UPSAMPLE_BENT_UNORM 2  // as SFX_AO_SC_BENT_UNORM, for the host's bent normal target
 // The half-size depth (ao_half_depth.frag):
 #define SFX_AO_SC_HALF_DEPTH_LINEARIZE 0  // 1: uDepth is the host's hardware depth: linearize on fetch
 // Where the obscurance pass puts the depth its readers need, when it writes the AO target (blur

@@ -18,6 +18,9 @@
 #ifdef __cplusplus
 namespace sfx::shared {
 using std::acos;
+#define SFX_AO_VEC2 glm::dvec2
+#else
+#define SFX_AO_VEC2 vec2
 #endif
 
 // Most slices and steps per side the shader is built for (what settings validation allows).
@@ -140,6 +143,62 @@ SFX_FN SFX_REAL aoHorizonSliceVisibility(SFX_REAL plusSin, SFX_REAL minusSin, SF
 // by up to 20% with the pixel's rotation; dividing by them leaves an unoccluded pixel exactly 1
 // at any slice count and removes that scatter from occluded ones.
 SFX_FN SFX_REAL aoHorizonRatio(SFX_REAL visibleSum, SFX_REAL openSum) { return openSum > 0.0 ? visibleSum / openSum : 1.0; }
+
+// ---- Bent normal: the cosine-weighted mean unoccluded direction (AoSettings.bentNormals) ----
+// One side's arc from the view vector to its horizon, weighted and measured as the visibility's
+// (cos(th - n) |sin th| dth), integrated against the direction (cos th, sin th) itself: the
+// arc's vector along V (x) and along t (y). With H = side * h >= 0 and the normal's sine turned
+// to the side (sin n -> side sin n) both are cubics in cos H and sin H (docs/algorithms.md):
+//   along V: (cos n (1 - cos^3 H) + side sin n sin^3 H) / 3
+//   along t: side (cos n sin^3 H + side sin n (2 - 3 cos H + cos^3 H)) / 3
+// H = side n + acos e, so cos H and sin H follow from e, cos n and sin n without another
+// transcendental; a horizon past the view vector leaves nothing, decided as aoHorizonArc does.
+SFX_FN SFX_AO_VEC2 aoHorizonArcDirection(SFX_REAL s, SFX_REAL side, SFX_REAL nAngle, SFX_REAL cosN, SFX_REAL sinN) {
+    SFX_REAL e = clamp(s, 0.0, 1.0);
+    SFX_REAL h = nAngle + side * acos(e);
+    if (!(side * h > 0.0)) return SFX_AO_VEC2(0.0, 0.0);
+    SFX_REAL sinNs = side * sinN;
+    SFX_REAL cosA = sqrt(max(1.0 - e * e, 0.0));
+    SFX_REAL cosH = cosN * e - sinNs * cosA;
+    SFX_REAL sinH = sinNs * e + cosN * cosA;
+    SFX_REAL cosH3 = cosH * cosH * cosH, sinH3 = sinH * sinH * sinH;
+    SFX_REAL alongV = (cosN * (1.0 - cosH3) + sinNs * sinH3) / 3.0;
+    SFX_REAL alongT = side * (cosN * sinH3 + sinNs * (2.0 - 3.0 * cosH + cosH3)) / 3.0;
+    return SFX_AO_VEC2(alongV, alongT);
+}
+// One slice's bent vector in view space: both sides' arc vectors on V and t, times the projected
+// normal's length as the slice's visibility is.
+SFX_FN SFX_AO_VEC3 aoHorizonSliceBent(SFX_REAL plusSin, SFX_REAL minusSin, SFX_AO_VEC3 projected, SFX_REAL nAngle, SFX_AO_VEC3 V,
+                                      SFX_AO_VEC3 t) {
+    SFX_REAL cosN = projected.y, sinN = projected.z;
+    SFX_AO_VEC2 b = aoHorizonArcDirection(plusSin, 1.0, nAngle, cosN, sinN) + aoHorizonArcDirection(minusSin, -1.0, nAngle, cosN, sinN);
+    return projected.x * (b.x * V + b.y * t);
+}
+// The pixel's bent vector from its slices' weighted sums (visible and open bent vectors, visible
+// and open arcs), per unit of the open arcs. A few slices' open vectors scatter around the open
+// hemisphere's exact vector (over the hemisphere the weighted direction integrates to 2/3 n per
+// unit of the cosine's integral) as their open arcs scatter around 1; the visible vector is
+// corrected by that scatter times the visible share (the ratio that corrects the visibility),
+// so an unoccluded pixel's vector is exactly 2/3 n at any slice count.
+SFX_FN SFX_AO_VEC3 aoHorizonBentVector(SFX_AO_VEC3 bentSum, SFX_AO_VEC3 openBentSum, SFX_REAL visibleSum, SFX_REAL openSum, SFX_AO_VEC3 n) {
+    if (!(openSum > 0.0)) return (2.0 / 3.0) * n;
+    SFX_REAL ratio = visibleSum / openSum;
+    return (bentSum + ratio * ((2.0 / 3.0) * openSum * n - openBentSum)) / openSum;
+}
+// Below this length of the bent vector nothing is seen and the normal stands in.
+SFX_CONST(float, SFX_AO_HORIZON_MIN_BENT_LENGTH, 0.001)
+// The bent normal: the bent vector's direction, unit length; n where nothing is visible.
+SFX_FN SFX_AO_VEC3 aoHorizonBentNormal(SFX_AO_VEC3 bentVector, SFX_AO_VEC3 n) {
+    SFX_REAL len = length(bentVector);
+    return len > SFX_REAL(SFX_AO_HORIZON_MIN_BENT_LENGTH) ? bentVector / len : n;
+}
+
+// The last pass's renormalisation of blurred and upsampled bent normals (sky's (0, 0, 1) stays);
+// a vector blurred to nothing (opposite normals cancelling) faces the eye.
+SFX_FN SFX_AO_VEC3 aoBentNormalResolve(SFX_AO_VEC3 v) {
+    SFX_REAL len = length(v);
+    return len > 0.0 ? v / len : SFX_AO_VEC3(0.0, 0.0, 1.0);
+}
 
 #ifdef __cplusplus
 }  // namespace sfx::shared

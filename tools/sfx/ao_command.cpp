@@ -1,5 +1,6 @@
 // sfx ao: ambient obscurance on G-buffer files, with any technique, tier and backend.
-// Writes visibility in [0, 1] (1 = unoccluded) to --out (.pfm or .exr) and a PNG beside it;
+// Writes visibility in [0, 1] (1 = unoccluded) to --out (.pfm or .exr) and a PNG beside it, and
+// with --bent-normals the horizon technique's bent normals (signed view-space xyz);
 // --preset picks one of the tier's presets, --runs prices the dispatch.
 #include <iostream>
 #include <optional>
@@ -8,6 +9,7 @@
 #include "commands.hpp"
 #include "pass_profile.hpp"
 #include "sfx/ao.hpp"
+#include "sfx/half.hpp"
 #include "sfx/settings_ranges.hpp"
 
 namespace sfx::cli {
@@ -20,6 +22,7 @@ struct AoFlags {
     std::string resolution = "tier";
     std::string normalsPath;
     std::string outPath;
+    std::string bentPath;                 // not empty: AoSettings.bentNormals, written there
     std::string preset = kDefaultPreset;  // one of the tier's presets (sfx info --rules)
     uint32_t runs = 0;                    // > 0: time the dispatch, median of runs after a warm-up
     float radius = 0.5f;
@@ -58,10 +61,35 @@ Result<TierProfile> presetProfile(Tier tier, const std::string& name) {
     return invalidArgument("--preset", "'" + name + "'", std::string("a preset of the ") + toString(tier) + " tier: " + names);
 }
 
+// The bent normals read back as signed xyz (RGBA8 holds xyz * 0.5 + 0.5), written to `path`.
+Status writeBentNormals(Device& dev, TextureHandle texture, Format format, uint32_t w, uint32_t h, const std::string& path) {
+    io::Image image(w, h, 3);
+    const size_t n = size_t(w) * h;
+    if (format == Format::RGBA8) {
+        std::vector<uint8_t> px(n * 4);
+        SFX_TRY(dev.readTexture(texture, 0, px.data(), px.size()));
+        for (size_t i = 0; i < n; ++i)
+            for (size_t c = 0; c < 3; ++c) image.pixels[i * 3 + c] = px[i * 4 + c] / 255.0f * 2.0f - 1.0f;
+    } else if (format == Format::RGBA16F) {
+        std::vector<uint16_t> px(n * 4);
+        SFX_TRY(dev.readTexture(texture, 0, px.data(), px.size() * sizeof(uint16_t)));
+        for (size_t i = 0; i < n; ++i)
+            for (size_t c = 0; c < 3; ++c) image.pixels[i * 3 + c] = halfToFloat(px[i * 4 + c]);
+    } else {
+        std::vector<float> px(n * 4);
+        SFX_TRY(dev.readTexture(texture, 0, px.data(), px.size() * sizeof(float)));
+        for (size_t i = 0; i < n; ++i)
+            for (size_t c = 0; c < 3; ++c) image.pixels[i * 3 + c] = px[i * 4 + c];
+    }
+    return io::writeImage(path, image);
+}
+
 int runAo(const AoFlags& f) {
     const std::string cmd = "ao";
     const std::string ext = io::extensionOf(f.outPath);
     if (ext != ".pfm" && ext != ".exr") return fail(cmd, invalidArgument("--out", "'" + f.outPath + "'", "a .pfm or .exr file"));
+    if (!f.bentPath.empty() && io::extensionOf(f.bentPath) != ".pfm" && io::extensionOf(f.bentPath) != ".exr")
+        return fail(cmd, invalidArgument("--bent-normals", "'" + f.bentPath + "'", "a .pfm or .exr file"));
     if (Status st = checkFlags(f); !st) return fail(cmd, st);
     AoSettings s;
     if (!f.technique.empty()) {
@@ -82,6 +110,7 @@ int runAo(const AoFlags& f) {
     s.blurRadius = f.blurRadius;
     s.horizon = {f.slices, f.steps, f.thickness, f.falloff};
     s.normals = f.normalsPath.empty() ? AoNormals::FromDepth : AoNormals::FromTexture;
+    s.bentNormals = !f.bentPath.empty();
 
     // Files first, each read once: a malformed or mismatched file is named before any device is opened.
     Result<LoadedDepth> depth = readDepth(f.camera);
@@ -128,6 +157,15 @@ int runAo(const AoFlags& f) {
     in.depth = depth->source;
     in.normals = normals;
     in.output = out.value();
+    // Bent normals in the widest float format the device renders (signed xyz), else RGBA8.
+    Format bentFormat = Format::RGBA8;
+    for (Format candidate : {Format::RGBA32F, Format::RGBA16F})
+        if (bentFormat == Format::RGBA8 && dev.caps().renderableFormat[size_t(candidate)]) bentFormat = candidate;
+    if (s.bentNormals) {
+        Result<TextureHandle> b = dev.createTexture({w, h, 1, bentFormat, kTextureSampled | kTextureRenderTarget, "sfx-cli-bent-normals"});
+        if (!b) return fail(cmd, b.status());
+        in.bentNormals = b.value();
+    }
     if (Status st = ao.value()->dispatch(in); !st) return fail(cmd, st);
     if (Status st = dev.flush(); !st) return fail(cmd, st);
     std::optional<tools::DispatchCost> cost;
@@ -151,9 +189,12 @@ int runAo(const AoFlags& f) {
     if (Status st = io::writeImage(f.outPath, image); !st) return fail(cmd, st);
     Result<std::string> png = writePngBeside(f.outPath, image);
     if (!png) return fail(cmd, png.status());
+    if (s.bentNormals) {
+        if (Status st = writeBentNormals(dev, in.bentNormals, bentFormat, w, h, f.bentPath); !st) return fail(cmd, st);
+    }
     std::cout << "sfx ao: " << toString(ao.value()->config().technique) << " on " << dev.caps().summary() << ", tier " << toString(opened->tier.tier)
               << " preset " << f.preset << ", " << w << "x" << h << ", AO at " << (ao.value()->config().halfResolution ? "half" : "full")
-              << " resolution -> " << f.outPath << " and " << png.value() << "\n";
+              << " resolution -> " << f.outPath << " and " << png.value() << (s.bentNormals ? ", bent normals -> " + f.bentPath : "") << "\n";
     if (f.showPlan) std::cout << ao.value()->plan().describe();
     std::cout.flush();
     if (cost) tools::printCost(*cost);
@@ -195,6 +236,9 @@ Command addAoCommand(CLI::App& app) {
     c.app->add_option("--runs", flags->runs, tools::kTimedRunsHelp);
     c.app->add_flag("--plan", flags->showPlan, "print the passes and memory");
     c.app->add_option("--out", flags->outPath, "output visibility, .pfm or .exr (a .png is written beside it)")->required();
+    c.app->add_option("--bent-normals", flags->bentPath,
+                      "horizon only: also write the bent normals (mean unoccluded direction, view space, signed xyz; sky (0, 0, 1)) "
+                      "to this .pfm or .exr");
     c.run = [flags] { return runAo(*flags); };
     return c;
 }

@@ -4,7 +4,8 @@
 //
 // Output: ambient visibility in [0, 1] (1 = unoccluded) in the r channel of the host's output
 // texture (every channel of an RGBA target holds it, alpha 1). Sky (linear depth at or past
-// SFX_SKY_DEPTH, or the far plane) is 1.
+// SFX_SKY_DEPTH, or the far plane) is 1. With AoSettings.bentNormals (horizon) also the bent
+// normals, in AoInputs.bentNormals.
 #pragma once
 
 #include <memory>
@@ -88,6 +89,9 @@ struct AoSettings {
     // surfaces behind the first visible one still occlude; runs at full resolution without a
     // depth MIP (resolution Tier resolves to Full; Half is an error).
     uint32_t depthLayers = 1;
+    // Bent normals (Horizon only): the cosine-weighted mean unoccluded direction per pixel, into
+    // AoInputs.bentNormals, blurred and upsampled with the visibility's weights (docs/ao.md).
+    bool bentNormals = false;
 };
 
 // The papers' nominal values.
@@ -126,6 +130,7 @@ struct AoConfig {
     AoNormals normals = AoNormals::FromDepth;
     AoCreaseConfig crease;
     AoHorizonConfig horizon;
+    bool bentNormals = false;  // AoSettings.bentNormals
 };
 
 // InvalidArgument naming the first field out of range.
@@ -156,6 +161,10 @@ struct AoInputs {
     // depth at the context's size, sampled: per pixel the nearest opaque surface strictly behind
     // the previous layer (0 or the far plane where there is none). Unused entries stay null.
     TextureHandle depthLayers[3] = {};
+    // With AoSettings.bentNormals: the bent normals, view space (x right, y up, camera looking down
+    // -z), unit length: the context's size, kTextureRenderTarget, RGBA8 (xyz * 0.5 + 0.5) or
+    // RGBA16F / RGBA32F (signed xyz), alpha 1. Sky is (0, 0, 1), facing the eye.
+    TextureHandle bentNormals;
 };
 
 class AmbientObscurance {
@@ -207,10 +216,11 @@ private:
     Status timed(size_t passIndex, Record&& record);
     Status allocateHalfRes();
     // Every pass of a dispatch whose inputs were checked; `out` is the output's description,
-    // `normalSource` the shaders' normal source (0 derived, 1 signed float, 2 RGBA8).
-    Status recordPasses(const AoInputs& in, const TextureDesc& out, int32_t normalSource);
+    // `normalSource` the shaders' normal source (0 derived, 1 signed float, 2 RGBA8), `bentFormat`
+    // the host's bent normal target's format (Undefined without bent normals).
+    Status recordPasses(const AoInputs& in, const TextureDesc& out, int32_t normalSource, Format bentFormat);
     Status recordHalfDepth(size_t passIndex);
-    Status recordUpsample(const AoInputs& in, Format outFormat, TextureHandle source, size_t passIndex);
+    Status recordUpsample(const AoInputs& in, Format outFormat, Format bentFormat, TextureHandle source, size_t passIndex);
     // Half resolution: whether the half-size depth is depth MIP level 1 (high-tier Scalable),
     // else halfDepth_ made by the ao_half_depth pass. The pass's size.
     bool halfDepthFromMip() const;
@@ -219,6 +229,8 @@ private:
     TextureHandle halfDepthTexture() const;
 
     TextureHandle aoTarget_, blurTarget_;
+    // With bent normals: the obscurance pass's and the blur intermediate's (bentTargetFormat()).
+    TextureHandle bentTarget_, bentBlurTarget_;
     TextureHandle halfDepth_;  // half resolution without a depth MIP: R32F, half size
     Format targetFormat_ = Format::Undefined;
     BufferHandle aoParams_, blurParamsH_, blurParamsV_, upsampleParams_;

@@ -81,7 +81,19 @@ Status AmbientObscurance::allocate() {
     Result<BufferHandle> params = device_.createBuffer({sizeof(AoParams), kBufferUniform, "sfx-ao-params"});
     if (!params) return params.status();
     aoParams_ = params.value();
-    Result<ProgramHandle> program = loadProgram(device_, programName(config_.technique), tier);
+    // Bent normals are a second attachment of their own program variants: a pipeline without it
+    // must not meet a shader writing it.
+    const bool bent = config_.bentNormals;
+    if (bent) {
+        if (device_.caps().limits.maxColorAttachments < 2)
+            return {StatusCode::UnsupportedFeature,
+                    "AoSettings.bentNormals needs 2 colour attachments; the device has " + std::to_string(device_.caps().limits.maxColorAttachments)};
+        if (!device_.caps().renderableFormat[size_t(detail::aoBentTargetFormat(desc_.profile))])
+            return {StatusCode::UnsupportedFormat,
+                    std::string("bent normal target format ") + toString(detail::aoBentTargetFormat(desc_.profile)) +
+                        " is not renderable on this device"};
+    }
+    Result<ProgramHandle> program = loadProgram(device_, bent ? gen::ao_horizon_bent::kName : programName(config_.technique), tier);
     if (!program) return program.status();
     aoProgram_ = program.value();
 
@@ -98,7 +110,7 @@ Status AmbientObscurance::allocate() {
             if (!buf) return buf.status();
             *b = buf.value();
         }
-        Result<ProgramHandle> blur = loadProgram(device_, gen::ao_blur::kName, tier);
+        Result<ProgramHandle> blur = loadProgram(device_, bent ? gen::ao_blur_bent::kName : gen::ao_blur::kName, tier);
         if (!blur) return blur.status();
         blurProgram_ = blur.value();
     }
@@ -108,8 +120,9 @@ Status AmbientObscurance::allocate() {
 }
 
 // The size-dependent part, at the pass's size: the raw AO target (with blur or at half
-// resolution), the blur intermediate (with blur) and the half-size depth (half resolution
-// without a depth MIP). Full resolution without blur needs none.
+// resolution), the blur intermediate (with blur), the half-size depth (half resolution
+// without a depth MIP), and with bent normals their own raw and blur targets beside the AO's.
+// Full resolution without blur needs none.
 Status AmbientObscurance::allocateTargets() {
     const bool half = config_.halfResolution, blur = config_.blurRadius > 0;
     struct Wanted {
@@ -118,8 +131,12 @@ Status AmbientObscurance::allocateTargets() {
         Format format;
         const char* name;
     };
+    const bool bent = config_.bentNormals;
+    const Format bentFormat = detail::aoBentTargetFormat(desc_.profile);
     for (const Wanted& w : {Wanted{&aoTarget_, blur || half, targetFormat_, "sfx-ao-raw"}, Wanted{&blurTarget_, blur, targetFormat_, "sfx-ao-blur"},
-                            Wanted{&halfDepth_, half && !halfDepthFromMip(), Format::R32F, "sfx-ao-half-depth"}}) {
+                            Wanted{&halfDepth_, half && !halfDepthFromMip(), Format::R32F, "sfx-ao-half-depth"},
+                            Wanted{&bentTarget_, bent && (blur || half), bentFormat, "sfx-ao-bent-raw"},
+                            Wanted{&bentBlurTarget_, bent && blur, bentFormat, "sfx-ao-bent-blur"}}) {
         if (!w.needed) continue;
         TextureDesc td{passWidth(), passHeight(), 1, w.format, kTextureSampled | kTextureRenderTarget, w.name};
         Result<TextureHandle> tex = device_.createTexture(td);
@@ -130,7 +147,7 @@ Status AmbientObscurance::allocateTargets() {
 }
 
 void AmbientObscurance::releaseTargets() {
-    for (TextureHandle* t : {&aoTarget_, &blurTarget_, &halfDepth_}) {
+    for (TextureHandle* t : {&aoTarget_, &blurTarget_, &halfDepth_, &bentTarget_, &bentBlurTarget_}) {
         if (!t->isNull()) (void)device_.destroyTexture(*t);
         *t = {};
     }
@@ -215,7 +232,8 @@ Status AmbientObscurance::setSettings(const AoSettings& settings) {
     // pipeline a changed constant needs (the pipeline cache keeps the others). Only a technique,
     // MIP level count or blur on/off change reallocates programs and textures.
     if (depth_ && config->technique == config_.technique && config->depthMipLevels == config_.depthMipLevels &&
-        (config->blurRadius > 0) == (config_.blurRadius > 0) && config->halfResolution == config_.halfResolution) {
+        (config->blurRadius > 0) == (config_.blurRadius > 0) && config->halfResolution == config_.halfResolution &&
+        config->bentNormals == config_.bentNormals) {
         config_ = config.value();
         return Status::ok();
     }
@@ -252,14 +270,20 @@ Status AmbientObscurance::dispatch(const AoInputs& in) {
                 std::string("AoInputs.normals format ") + toString(nd->format) + "; allowed RGBA16F/RGBA32F (signed xyz) or RGBA8 (xyz * 0.5 + 0.5)"};
     }
     SFX_TRY(detail::checkDepthLayers(device_, in, config_, desc_.width, desc_.height));
+    Format bentFormat = Format::Undefined;
+    if (config_.bentNormals) {
+        Result<Format> f = detail::checkBentNormalsInput(device_, in.bentNormals, desc_.width, desc_.height);
+        if (!f) return f.status();
+        bentFormat = f.value();
+    }
     // Pass timers make a recording single-use: profiling records every frame.
-    if (profiling_) return recordPasses(in, out.value(), normalSource);
-    const uint64_t key = detail::RecordedPasses::key(
-        {in.depth.texture.bits, in.normals.bits, in.output.bits, in.depthLayers[0].bits, in.depthLayers[1].bits, in.depthLayers[2].bits});
-    return recorded_->run(key, [&] { return recordPasses(in, out.value(), normalSource); });
+    if (profiling_) return recordPasses(in, out.value(), normalSource, bentFormat);
+    const uint64_t key = detail::RecordedPasses::key({in.depth.texture.bits, in.normals.bits, in.output.bits, in.depthLayers[0].bits,
+                                                      in.depthLayers[1].bits, in.depthLayers[2].bits, in.bentNormals.bits});
+    return recorded_->run(key, [&] { return recordPasses(in, out.value(), normalSource, bentFormat); });
 }
 
-Status AmbientObscurance::recordPasses(const AoInputs& in, const TextureDesc& out, int32_t normalSource) {
+Status AmbientObscurance::recordPasses(const AoInputs& in, const TextureDesc& out, int32_t normalSource, Format bentFormat) {
     // Profiling: plan() order is the depth passes (linearize + one per MIP level past 0), at half
     // resolution the half-size depth unless MIP level 1 is it, the obscurance pass, blur h and v,
     // at half resolution the upsample. timed() records a pass bare when profiling is off.
@@ -306,6 +330,9 @@ Status AmbientObscurance::recordPasses(const AoInputs& in, const TextureDesc& ou
     // Obscurance: straight into the output at full resolution without blur.
     const bool direct = !blur && !half;
     const TextureHandle aoDest = direct ? in.output : aoTarget_;
+    const bool bent = config_.bentNormals;
+    const Format bentTargetFormat = detail::aoBentTargetFormat(desc_.profile);
+    const Format bentDestFormat = direct ? bentFormat : bentTargetFormat;
     const SpecializationConstant aoConstants[] = {
         {SFX_AO_SC_SAMPLES, int32_t(config_.samples)},
         {SFX_AO_SC_MIRRORED, config_.mirrored ? 1 : 0},
@@ -316,11 +343,16 @@ Status AmbientObscurance::recordPasses(const AoInputs& in, const TextureDesc& ou
         {SFX_AO_SC_HALF_RES, half ? 1 : 0},
         {SFX_AO_SC_DEPTH_LAYERS, int32_t(config_.depthLayers)},
         {SFX_AO_SC_HORIZON_STEPS, int32_t(config_.horizon.steps)},
+        {SFX_AO_SC_BENT_UNORM, bentDestFormat == Format::RGBA8 ? 1 : 0},
     };
-    Result<PipelineHandle> aoPipeline = pipelines_->get(aoProgram_, direct ? out.format : targetFormat_, aoConstants, "sfx-ao");
+    // The bent variant alone declares the last constant.
+    const std::span<const SpecializationConstant> aoConstantSpan(aoConstants, std::size(aoConstants) - (bent ? 0 : 1));
+    Result<PipelineHandle> aoPipeline = pipelines_->get(aoProgram_, direct ? out.format : targetFormat_, aoConstantSpan, "sfx-ao",
+                                                        bent ? bentDestFormat : Format::Undefined);
     if (!aoPipeline) return aoPipeline.status();
     RenderPassDesc pass;
     pass.colors = {ColorAttachment{aoDest, 0, LoadOp::DontCare, {}}};
+    if (bent) pass.colors.push_back(ColorAttachment{direct ? in.bentNormals : bentTarget_, 0, LoadOp::DontCare, {}});
     pass.debugName = "sfx-ao";
     DrawDesc draw;
     draw.pipeline = aoPipeline.value();
@@ -349,28 +381,36 @@ Status AmbientObscurance::recordPasses(const AoInputs& in, const TextureDesc& ou
             // At half resolution the second pass goes back into the raw target, for the upsample.
             const TextureHandle src = blurPass == 0 ? aoTarget_ : blurTarget_;
             const TextureHandle dst = blurPass == 0 ? blurTarget_ : half ? aoTarget_ : in.output;
+            // The bent normals follow the same way through their own targets.
+            const TextureHandle bentSrc = blurPass == 0 ? bentTarget_ : bentBlurTarget_;
+            const TextureHandle bentDst = blurPass == 0 ? bentBlurTarget_ : half ? bentTarget_ : in.bentNormals;
+            const Format bentDstFormat = blurPass == 0 || half ? bentTargetFormat : bentFormat;
             const SpecializationConstant blurConstants[] = {
                 {SFX_AO_SC_BLUR_RADIUS, radius},
                 {SFX_AO_SC_BLUR_MODERATE_RADIUS, std::max(1, radius / 2)},
                 {SFX_AO_SC_BLUR_CREASE, config_.technique == AoTechnique::Crease ? 1 : 0},
                 {SFX_AO_SC_BLUR_FINAL_PASS, blurPass},
                 {SFX_AO_SC_BLUR_KEEP_DEPTH, half ? 1 : 0},
+                {SFX_AO_SC_BLUR_BENT_UNORM, bentDstFormat == Format::RGBA8 ? 1 : 0},
             };
-            Result<PipelineHandle> bp = pipelines_->get(blurProgram_, blurPass == 0 || half ? targetFormat_ : out.format, blurConstants,
-                                                        blurPass == 0 ? "sfx-ao-blur-h" : "sfx-ao-blur-v");
+            const std::span<const SpecializationConstant> blurConstantSpan(blurConstants, std::size(blurConstants) - (bent ? 0 : 1));
+            Result<PipelineHandle> bp = pipelines_->get(blurProgram_, blurPass == 0 || half ? targetFormat_ : out.format, blurConstantSpan,
+                                                        blurPass == 0 ? "sfx-ao-blur-h" : "sfx-ao-blur-v", bent ? bentDstFormat : Format::Undefined);
             if (!bp) return bp.status();
             RenderPassDesc bpass;
             bpass.colors = {ColorAttachment{dst, 0, LoadOp::DontCare, {}}};
+            if (bent) bpass.colors.push_back(ColorAttachment{bentDst, 0, LoadOp::DontCare, {}});
             bpass.debugName = blurPass == 0 ? "sfx-ao-blur-h" : "sfx-ao-blur-v";
             DrawDesc bdraw;
             bdraw.pipeline = bp.value();
             // The depth comes with each texel of the source (the target's layout): one binding.
             bdraw.bindings.textures = {TextureBinding{gen::ao_blur::uSource, src, 0, 1, {}}};
+            if (bent) bdraw.bindings.textures.push_back(TextureBinding{gen::ao_blur_bent::uBentSource, bentSrc, 0, 1, {}});
             bdraw.bindings.uniformBuffers = {BufferBinding{gen::ao_blur::BlurParams, buffer, 0, 0}};
             SFX_TRY(timed(passIndex++, [&] { return device_.renderPass(bpass, std::span<const DrawDesc>(&bdraw, 1)); }));
         }
     }
-    if (half) SFX_TRY(recordUpsample(in, out.format, aoTarget_, passIndex++));
+    if (half) SFX_TRY(recordUpsample(in, out.format, bentFormat, aoTarget_, passIndex++));
     return Status::ok();
 }
 
@@ -382,7 +422,8 @@ EffectPlan AmbientObscurance::plan() const {
     const std::string atHalf = half ? " at half size" : "";
     if (half && !halfDepthFromMip()) plan.passes.push_back({"ao", "half-size depth (AO at half resolution; no depth MIP level 1 to reuse)", w, h});
     const std::string layers = config_.depthLayers > 1 ? ", taps test " + std::to_string(config_.depthLayers) + " depth layers" : "";
-    plan.passes.push_back({"ao", std::string("obscurance (") + toString(config_.technique) + layers + ")" + atHalf, w, h});
+    const std::string bentNote = config_.bentNormals ? ", + bent normals" : "";
+    plan.passes.push_back({"ao", std::string("obscurance (") + toString(config_.technique) + layers + bentNote + ")" + atHalf, w, h});
     plan.resources.push_back({"ao", "ao params", Format::Undefined, 0, 0, 1, sizeof(AoParams)});
     if (blur) {
         plan.passes.push_back({"ao", "bilateral blur h" + atHalf, w, h});
@@ -404,6 +445,13 @@ EffectPlan AmbientObscurance::plan() const {
         plan.resources.push_back(plannedTexture("ao", "half-size depth (R32F): what obscurance, blur and upsample weights read at half size",
                                                 TextureDesc{w, h, 1, Format::R32F, kTextureSampled | kTextureRenderTarget}));
     if (half) plan.resources.push_back({"ao", "upsample params", Format::Undefined, 0, 0, 1, sizeof(UpsampleParams)});
+    if (config_.bentNormals) {
+        const Format bentFormat = detail::aoBentTargetFormat(desc_.profile);
+        const TextureDesc bd{w, h, 1, bentFormat, kTextureSampled | kTextureRenderTarget};
+        const std::string f = std::string(" (") + toString(bentFormat) + ")";
+        if (blur || half) plan.resources.push_back(plannedTexture("ao", "raw bent normals" + f + atHalf, bd));
+        if (blur) plan.resources.push_back(plannedTexture("ao", "bent normal blur intermediate" + f + atHalf, bd));
+    }
     return plan;
 }
 

@@ -27,7 +27,7 @@ Status AmbientObscurance::allocateHalfRes() {
         if (!program) return program.status();
         halfDepthProgram_ = program.value();
     }
-    Result<ProgramHandle> upsample = detail::loadProgram(device_, gen::ao_upsample::kName, tier);
+    Result<ProgramHandle> upsample = detail::loadProgram(device_, config_.bentNormals ? gen::ao_upsample_bent::kName : gen::ao_upsample::kName, tier);
     if (!upsample) return upsample.status();
     upsampleProgram_ = upsample.value();
     Result<BufferHandle> params = device_.createBuffer({sizeof(shared::UpsampleParams), kBufferUniform, "sfx-ao-upsample-params"});
@@ -55,7 +55,7 @@ Status AmbientObscurance::recordHalfDepth(size_t passIndex) {
     return timed(passIndex, [&] { return device_.renderPass(pass, std::span<const DrawDesc>(&draw, 1)); });
 }
 
-Status AmbientObscurance::recordUpsample(const AoInputs& in, Format outFormat, TextureHandle source, size_t passIndex) {
+Status AmbientObscurance::recordUpsample(const AoInputs& in, Format outFormat, Format bentFormat, TextureHandle source, size_t passIndex) {
     shared::UpsampleParams u{};
     const DepthReconstruction& rec = depth_->reconstruction();
     u.maxDepth = float(rec.maxDepth);
@@ -75,17 +75,25 @@ Status AmbientObscurance::recordUpsample(const AoInputs& in, Format outFormat, T
         : depthIn == SFX_AO_DEPTH_IN_FLOAT_B                       ? SFX_AO_HALF_DEPTH_SOURCE_B
         : depthIn == SFX_AO_DEPTH_IN_KEY_BA                        ? SFX_AO_HALF_DEPTH_SOURCE_KEY
                                                                    : SFX_AO_HALF_DEPTH_TEXTURE;
-    Result<PipelineHandle> pipeline = pipelines_->get(
-        upsampleProgram_, outFormat, {{SFX_AO_SC_UPSAMPLE_DEPTH, halfDepthSource}, {SFX_AO_SC_UPSAMPLE_LINEARIZE, linearize}}, "sfx-ao-upsample");
+    // With bent normals the upsample's variant writes them too, from the raw bent target the
+    // blur's second pass (or the obscurance pass) left, with the visibility's weights.
+    const bool bent = config_.bentNormals;
+    const SpecializationConstant constants[] = {{SFX_AO_SC_UPSAMPLE_DEPTH, halfDepthSource},
+                                                {SFX_AO_SC_UPSAMPLE_LINEARIZE, linearize},
+                                                {SFX_AO_SC_UPSAMPLE_BENT_UNORM, bentFormat == Format::RGBA8 ? 1 : 0}};
+    Result<PipelineHandle> pipeline = pipelines_->get(upsampleProgram_, outFormat, std::span<const SpecializationConstant>(constants, bent ? 3 : 2),
+                                                      "sfx-ao-upsample", bent ? bentFormat : Format::Undefined);
     if (!pipeline) return pipeline.status();
     RenderPassDesc pass;
     pass.colors = {ColorAttachment{in.output, 0, LoadOp::DontCare, {}}};
+    if (bent) pass.colors.push_back(ColorAttachment{in.bentNormals, 0, LoadOp::DontCare, {}});
     pass.debugName = "sfx-ao-upsample";
     DrawDesc draw;
     draw.pipeline = pipeline.value();
     draw.bindings.textures = {TextureBinding{gen::ao_upsample::uDepth, depth_->sourceTexture(), 0, 1, {}},
                               TextureBinding{gen::ao_upsample::uHalfDepth, halfDepthTexture(), 0, 1, {}},
                               TextureBinding{gen::ao_upsample::uSource, source, 0, 1, {}}};
+    if (bent) draw.bindings.textures.push_back(TextureBinding{gen::ao_upsample_bent::uBentSource, bentTarget_, 0, 1, {}});
     draw.bindings.uniformBuffers = {BufferBinding{gen::ao_upsample::UpsampleParams, upsampleParams_, 0, 0}};
     return timed(passIndex, [&] { return device_.renderPass(pass, std::span<const DrawDesc>(&draw, 1)); });
 }

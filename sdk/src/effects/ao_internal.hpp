@@ -19,6 +19,14 @@ inline Format aoTargetFormat(const TierProfile& profile, AoTechnique technique) 
     return technique == AoTechnique::Crease ? Format::RGBA32F : Format::RG32F;
 }
 
+// The bent normals' intermediate targets (AoSettings.bentNormals): RGBA8 holding xyz * 0.5 + 0.5
+// where the AO target is RGBA8 (ES 3.0 need not render to float), else RGBA16F.
+inline Format aoBentTargetFormat(const TierProfile& profile) { return profile.aoPackedDepthTarget ? Format::RGBA8 : Format::RGBA16F; }
+
+// The host's bent normal target's check (AoInputs.bentNormals with AoSettings.bentNormals on):
+// InvalidArgument naming it, else its format.
+Result<Format> checkBentNormalsInput(Device& device, TextureHandle texture, uint32_t width, uint32_t height);
+
 // At half resolution, whether depth MIP level 1 is the half-size depth: high-tier Scalable or Horizon,
 // whose pyramid exists anyway, on a target large enough for a second level. Otherwise the
 // ao_half_depth pass makes the same rotated-grid sample into a texture of its own.

@@ -131,6 +131,9 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
                                "Full or Tier (multilayer AO runs at full resolution: the layers are full size)");
     if (s.depthLayers > 1 && technique == AoTechnique::Horizon)
         return invalidArgument("AoSettings.depthLayers", std::to_string(s.depthLayers), "1 for Horizon (its horizons read the first visible layer)");
+    if (s.bentNormals && technique != AoTechnique::Horizon)
+        return invalidArgument("AoSettings.bentNormals", std::string("true with technique ") + toString(technique),
+                               "false, or true with technique horizon (the bent normals come from its horizons)");
     const AoHorizonSettings& hz = s.horizon;
     if (hz.slices) SFX_TRY(checkSetting(Setting::AoHorizonSlices, *hz.slices));
     if (hz.steps) SFX_TRY(checkSetting(Setting::AoHorizonSteps, *hz.steps));
@@ -160,6 +163,7 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
     const AoCreaseSettings& cs = s.crease;
     c.crease = {cs.range.value_or(look.creaseRange), cs.bias.value_or(look.creaseBias), cs.averager, cs.minimumCrease, cs.fadeStart, cs.fadeEnd};
     c.depthLayers = s.depthLayers;
+    c.bentNormals = s.bentNormals;
     // Multilayer AO is full size (its layers are): the tier's half resolution does not apply.
     c.halfResolution = s.resolution == AoResolution::Half || (s.resolution == AoResolution::Tier && profile.aoHalfResolution && s.depthLayers == 1);
     // Pixel counts are the pass's: at half size the blur keeps its footprint in output pixels

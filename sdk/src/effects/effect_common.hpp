@@ -51,12 +51,15 @@ public:
     PipelineCache& operator=(const PipelineCache&) = delete;
 
     // The constants as a span (a stack array at the call site): a steady-frame lookup allocates nothing.
-    Result<PipelineHandle> get(ProgramHandle program, Format format, std::initializer_list<SpecializationConstant> constants, const char* debugName) {
-        return get(program, format, std::span<const SpecializationConstant>(constants.begin(), constants.size()), debugName);
+    // `second`: a second colour attachment's format (Undefined: one attachment).
+    Result<PipelineHandle> get(ProgramHandle program, Format format, std::initializer_list<SpecializationConstant> constants, const char* debugName,
+                               Format second = Format::Undefined) {
+        return get(program, format, std::span<const SpecializationConstant>(constants.begin(), constants.size()), debugName, second);
     }
-    Result<PipelineHandle> get(ProgramHandle program, Format format, std::span<const SpecializationConstant> constants, const char* debugName) {
+    Result<PipelineHandle> get(ProgramHandle program, Format format, std::span<const SpecializationConstant> constants, const char* debugName,
+                               Format second = Format::Undefined) {
         for (const Entry& e : entries_)
-            if (e.program == program && e.format == format && sameConstants(e.constants, constants)) return e.pipeline;
+            if (e.program == program && e.format == format && e.second == second && sameConstants(e.constants, constants)) return e.pipeline;
         // Combinations left behind by earlier settings go first, oldest first, once there are many.
         if (entries_.size() >= kMaxEntries) {
             (void)device_.destroyPipeline(entries_.front().pipeline);
@@ -65,11 +68,12 @@ public:
         GraphicsPipelineDesc pd;
         pd.program = program;
         pd.colorFormats = {format};
+        if (second != Format::Undefined) pd.colorFormats.push_back(second);
         pd.debugName = debugName;
         pd.constants.assign(constants.begin(), constants.end());
         Result<PipelineHandle> pipeline = device_.createGraphicsPipeline(pd);
         if (!pipeline) return pipeline.status();
-        entries_.push_back({program, format, pd.constants, pipeline.value()});
+        entries_.push_back({program, format, second, pd.constants, pipeline.value()});
         return pipeline.value();
     }
     void clear() {
@@ -81,7 +85,7 @@ private:
     static constexpr size_t kMaxEntries = 32;
     struct Entry {
         ProgramHandle program;
-        Format format;
+        Format format, second;
         std::vector<SpecializationConstant> constants;
         PipelineHandle pipeline;
     };

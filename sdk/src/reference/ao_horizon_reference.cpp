@@ -8,7 +8,7 @@ namespace sfx::reference::detail {
 
 namespace sh = sfx::shared;
 
-double horizonVisibility(const HorizonPass& pass, int x, int y, double z, const glm::dvec3& C, const glm::dvec3& n) {
+double horizonVisibility(const HorizonPass& pass, int x, int y, double z, const glm::dvec3& C, const glm::dvec3& n, glm::dvec3* bent) {
     const AoConfig& c = pass.config;
     const Grid& base = pass.pyramid[0];
     const sh::ivec2 size{int(base.width), int(base.height)};
@@ -21,6 +21,7 @@ double horizonVisibility(const HorizonPass& pass, int x, int y, double z, const 
     const double invFalloffWidth = 1.0 / (c.horizon.falloff * c.radius);
     const glm::dvec3 V = sh::aoHorizonViewVector(C);
     double visibleSum = 0.0, openSum = 0.0;
+    glm::dvec3 bentSum(0.0), openBentSum(0.0);
     for (int i = 0; i < slices; ++i) {
         const sh::vec2 d = sh::aoTapDirection(sh::aoHorizonSliceTurnsQ16(i, slices), rotation);
         const glm::dvec3 u = sh::aoHorizonSliceDirection(d.x, d.y, pass.projInfo[0], pass.projInfo[1], V);
@@ -47,7 +48,12 @@ double horizonVisibility(const HorizonPass& pass, int x, int y, double z, const 
         const double nAngle = sh::aoHorizonNormalAngle(projected);
         visibleSum += weight * sh::aoHorizonSliceVisibility(horizon[0], horizon[1], projected, nAngle);
         openSum += weight * sh::aoHorizonSliceVisibility(0.0, 0.0, projected, nAngle);
+        if (bent) {
+            bentSum += weight * sh::aoHorizonSliceBent(horizon[0], horizon[1], projected, nAngle, V, t);
+            openBentSum += weight * sh::aoHorizonSliceBent(0.0, 0.0, projected, nAngle, V, t);
+        }
     }
+    if (bent) *bent = sh::aoHorizonBentVector(bentSum, openBentSum, visibleSum, openSum, n);
     return sh::aoHorizonRatio(visibleSum, openSum);
 }
 

@@ -23,7 +23,8 @@ struct HorizonPass {
 };
 
 // Visibility (before intensity and contrast) of pass pixel (x, y) at depth z, position C,
-// normal n: the mean over slices of the visible arc between the two horizons.
-double horizonVisibility(const HorizonPass& pass, int x, int y, double z, const glm::dvec3& C, const glm::dvec3& n);
+// normal n: the mean over slices of the visible arc between the two horizons. With `bent`, also
+// the pixel's bent vector (sfx_shared_ao_horizon.h, aoHorizonBentVector: not yet normalised).
+double horizonVisibility(const HorizonPass& pass, int x, int y, double z, const glm::dvec3& C, const glm::dvec3& n, glm::dvec3* bent = nullptr);
 
 }  // namespace sfx::reference::detail

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "ao_horizon_reference.hpp"
 #include "sfx_shared_ao_horizon.h"
@@ -176,8 +177,9 @@ namespace {
 // (map.half false) or half size, where positions come from each texel's full-size source pixel,
 // host normals (full size, may be empty) are read there and screen radii are in half-size
 // pixels (rec.pixelsPerUnitAtUnitDepth halved by the caller).
-Grid rawVisibilityOfPass(const Grid& d, const std::vector<dvec3>& hostNormals, const DepthReconstruction& rec, const PixelMap& map,
-                         const AoConfig& c) {
+// With `bent` (Horizon), the pass's bent normals too (sky (0, 0, 1), its length infinite).
+Grid rawVisibilityOfPass(const Grid& d, const std::vector<dvec3>& hostNormals, const DepthReconstruction& rec, const PixelMap& map, const AoConfig& c,
+                         BentNormals* bent = nullptr) {
     // Host normals follow the rule of sfx_shared_ao.h: an unusable one (zero, NaN, infinite)
     // falls back to the derived normal of its pixel.
     std::vector<dvec3> normals = mappedNormalsFromDepth(d, rec, map);
@@ -195,6 +197,11 @@ Grid rawVisibilityOfPass(const Grid& d, const std::vector<dvec3>& hostNormals, c
     const detail::HorizonPass horizonPass{c, pyramid, [&](int px, int py, double pz) { return positionAt(rec, map, px, py, pz); }, rec.projInfo,
                                           float(rec.pixelsPerUnitAtUnitDepth)};
     Grid out(d.width, d.height, 1.0);
+    if (bent) {
+        bent->normals.assign(size_t(d.width) * d.height, dvec3(0.0, 0.0, 1.0));
+        bent->vectorLength.assign(size_t(d.width) * d.height, std::numeric_limits<double>::infinity());
+        bent->resolveLength.assign(size_t(d.width) * d.height, 1.0);
+    }
     for (uint32_t y = 0; y < d.height; ++y) {
         for (uint32_t x = 0; x < d.width; ++x) {
             const double z = d.at(x, y);
@@ -203,7 +210,13 @@ Grid rawVisibilityOfPass(const Grid& d, const std::vector<dvec3>& hostNormals, c
             const dvec3 n = normals[size_t(y) * d.width + x];
             double sum = 0;
             if (c.technique == AoTechnique::Horizon) {
-                sum = detail::horizonVisibility(horizonPass, int(x), int(y), z, C, n);
+                dvec3 vector(0.0);
+                sum = detail::horizonVisibility(horizonPass, int(x), int(y), z, C, n, bent ? &vector : nullptr);
+                if (bent) {
+                    const size_t i = size_t(y) * d.width + x;
+                    bent->normals[i] = sh::aoHorizonBentNormal(vector, n);
+                    bent->vectorLength[i] = glm::length(vector);
+                }
                 out.at(x, y) = saturate(aoFinishVisibility(aoOcclusionFromSum(c, sum, z), c.contrast));
                 continue;
             }
@@ -258,9 +271,13 @@ Grid halfSizeDepth(const Grid& linearDepth) {
     return out;
 }
 
-Grid depthAwareUpsample(const Grid& halfVisibility, const Grid& halfDepth, const Grid& fullDepth, double maxDepth) {
-    Grid out(fullDepth.width, fullDepth.height, 1.0);
-    const int hw = int(halfVisibility.width), hh = int(halfVisibility.height);
+namespace {
+
+// The upsample's weights applied to one channel: visibility (saturated, sky 1) or a bent
+// normal's component (sky `skyValue`, not saturated).
+Grid upsampleChannel(const Grid& halfValues, const Grid& halfDepth, const Grid& fullDepth, double maxDepth, double skyValue, bool saturated) {
+    Grid out(fullDepth.width, fullDepth.height, skyValue);
+    const int hw = int(halfValues.width), hh = int(halfValues.height);
     for (uint32_t y = 0; y < out.height; ++y) {
         for (uint32_t x = 0; x < out.width; ++x) {
             const double z0 = sh::sfxLinearDepthOrFar(fullDepth.at(x, y), maxDepth);
@@ -273,7 +290,7 @@ Grid depthAwareUpsample(const Grid& halfVisibility, const Grid& halfDepth, const
                 for (int i = 0; i < 2; ++i) {  // the shader's order: ties keep the first
                     const uint32_t qx = uint32_t(std::clamp(bx + i, 0, hw - 1)), qy = uint32_t(std::clamp(by + j, 0, hh - 1));
                     const double zq = sh::sfxLinearDepthOrFar(halfDepth.at(qx, qy), maxDepth);
-                    const double a = halfVisibility.at(qx, qy);
+                    const double a = halfValues.at(qx, qy);
                     const double bilinear = (i == 1 ? ux : 1.0 - ux) * (j == 1 ? uy : 1.0 - uy);
                     const double w = sh::aoUpsampleWeight(bilinear, zq, z0, invTolerance);
                     acc += w * a;
@@ -284,10 +301,17 @@ Grid depthAwareUpsample(const Grid& halfVisibility, const Grid& halfDepth, const
                         nearestAo = a;
                     }
                 }
-            out.at(x, y) = saturate(sh::aoUpsampleResolve(acc, wsum, nearestAo));
+            const double v = sh::aoUpsampleResolve(acc, wsum, nearestAo);
+            out.at(x, y) = saturated ? saturate(v) : v;
         }
     }
     return out;
+}
+
+}  // namespace
+
+Grid depthAwareUpsample(const Grid& halfVisibility, const Grid& halfDepth, const Grid& fullDepth, double maxDepth) {
+    return upsampleChannel(halfVisibility, halfDepth, fullDepth, maxDepth, 1.0, true);
 }
 
 Grid bilateralBlurPass(const Grid& vis, const Grid& d, double maxDepth, int radius, int dx, int dy) {
@@ -325,6 +349,88 @@ Grid ambientVisibility(const AoInput& in, const AoConfig& c) {
     const PixelMap map{true, int(d.width), int(d.height)};
     const Grid half = blurOfPass(rawVisibilityOfPass(dh, in.normals, halfRec, map, c), dh, maxDepth, c);
     return depthAwareUpsample(half, dh, d, maxDepth);
+}
+
+namespace {
+
+Grid component(const std::vector<dvec3>& v, uint32_t w, uint32_t h, int axis) {
+    Grid g(w, h);
+    for (size_t i = 0; i < v.size(); ++i) g.values[i] = v[i][axis];
+    return g;
+}
+
+// The smallest of `g` over the (2r + 1)-wide box around each texel (the blur's footprint).
+Grid boxMin(const Grid& g, int r) {
+    Grid out = g;
+    for (uint32_t y = 0; y < g.height; ++y)
+        for (uint32_t x = 0; x < g.width; ++x)
+            for (int j = -r; j <= r; ++j)
+                for (int i = -r; i <= r; ++i) {
+                    const int qx = int(x) + i, qy = int(y) + j;
+                    if (qx >= 0 && qy >= 0 && qx < int(g.width) && qy < int(g.height))
+                        out.at(x, y) = std::min(out.at(x, y), g.at(uint32_t(qx), uint32_t(qy)));
+                }
+    return out;
+}
+
+// The smallest of half-size `g` over the 2x2 texels the upsample reads for each full-size pixel.
+Grid upsampleMin(const Grid& g, uint32_t w, uint32_t h) {
+    Grid out(w, h);
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x) {
+            double m = std::numeric_limits<double>::infinity();
+            for (int j = 0; j < 2; ++j)
+                for (int i = 0; i < 2; ++i) {
+                    const int qx = std::clamp(sh::aoUpsampleBase(int(x)) + i, 0, int(g.width) - 1);
+                    const int qy = std::clamp(sh::aoUpsampleBase(int(y)) + j, 0, int(g.height) - 1);
+                    m = std::min(m, g.at(uint32_t(qx), uint32_t(qy)));
+                }
+            out.at(x, y) = m;
+        }
+    return out;
+}
+
+}  // namespace
+
+BentNormals rawBentNormals(const AoInput& in, const AoConfig& c) {
+    const Grid d = linearDepthOrFar(in.linearDepth, in.reconstruction.maxDepth);
+    BentNormals bent;
+    (void)rawVisibilityOfPass(d, in.normals, in.reconstruction, PixelMap{}, c, &bent);
+    return bent;
+}
+
+BentNormals ambientBentNormals(const AoInput& in, const AoConfig& c) {
+    const double maxDepth = in.reconstruction.maxDepth;
+    const Grid d = linearDepthOrFar(in.linearDepth, maxDepth);
+    const Grid dh = c.halfResolution ? halfSizeDepth(d) : d;
+    DepthReconstruction rec = in.reconstruction;
+    if (c.halfResolution) rec.pixelsPerUnitAtUnitDepth *= 0.5;
+    const PixelMap map{c.halfResolution, int(d.width), int(d.height)};
+    BentNormals raw;
+    (void)rawVisibilityOfPass(dh, in.normals, rec, map, c, &raw);
+    // Each component through the visibility's blur weights (the blur's sky passes (0, 0, 1)
+    // through) and upsample weights, then renormalised once, as the last pass does.
+    Grid channels[3];
+    const int r = int(c.blurRadius);
+    for (int a = 0; a < 3; ++a) {
+        channels[a] = component(raw.normals, dh.width, dh.height, a);
+        if (r > 0) channels[a] = bilateralBlurPass(bilateralBlurPass(channels[a], dh, maxDepth, r, 1, 0), dh, maxDepth, r, 0, 1);
+        if (c.halfResolution) channels[a] = upsampleChannel(channels[a], dh, d, maxDepth, a == 2 ? 1.0 : 0.0, false);
+    }
+    Grid lengths(dh.width, dh.height);
+    lengths.values = raw.vectorLength;
+    if (r > 0) lengths = boxMin(lengths, r);
+    if (c.halfResolution) lengths = upsampleMin(lengths, d.width, d.height);
+    BentNormals out;
+    out.normals.resize(size_t(d.width) * d.height);
+    out.resolveLength.resize(out.normals.size());
+    out.vectorLength = lengths.values;
+    for (size_t i = 0; i < out.normals.size(); ++i) {
+        const dvec3 v(channels[0].values[i], channels[1].values[i], channels[2].values[i]);
+        out.normals[i] = sh::aoBentNormalResolve(v);
+        out.resolveLength[i] = glm::length(v);
+    }
+    return out;
 }
 
 }  // namespace sfx::reference

@@ -70,4 +70,21 @@ Grid depthAwareUpsample(const Grid& halfVisibility, const Grid& halfDepth, const
 // pixel, screen radii in half-size pixels), then depthAwareUpsample.
 Grid ambientVisibility(const AoInput& in, const AoConfig& config);
 
+// Bent normals (AoSettings.bentNormals, Horizon): per pixel the unit view-space mean unoccluded
+// direction of shared::aoHorizonBentNormal, sky (0, 0, 1), row 0 first, with what conditions
+// them (docs/ao.md, "Bent normals": the conformance bound divides by both lengths).
+struct BentNormals {
+    std::vector<glm::dvec3> normals;
+    // The bent vector's length per unit of open arc (shared::aoHorizonBentVector; 2/3 unoccluded,
+    // infinite for sky): raw, the pixel's own; ambient, the smallest over the raw pixels the blur
+    // and the upsample weigh in.
+    std::vector<double> vectorLength;
+    // The blurred (and upsampled) vector's length before the last renormalisation (1 raw).
+    std::vector<double> resolveLength;
+};
+// Raw: the obscurance pass's. Ambient: each component through the blur's and the upsample's
+// visibility weights, then renormalised (shared::aoBentNormalResolve), as the last pass writes.
+BentNormals rawBentNormals(const AoInput& in, const AoConfig& config);
+BentNormals ambientBentNormals(const AoInput& in, const AoConfig& config);
+
 }  // namespace sfx::reference
