@@ -1,7 +1,7 @@
 // fit_ao: calibrates the AO techniques' default settings against ray-traced ground truth.
 // For each tier x technique it searches intensity and contrast (and Alchemy's and
 // Scalable's bias and sum exponent, crease's range and bias) coarse to fine, maximising the mean PSNR over the
-// frame plus the mean PSNR where the truth is below 0.95, less a penalty where the mean signed
+// frame (weighed by --frame-weight) plus the mean PSNR where the truth is below 0.95, less a penalty where the mean signed
 // error there passes --bright-limit (too bright in contacts), on the views of the TRAINING scene
 // families (tools/scenes/scene_families.*) at each view's radius with the blur on (the
 // default); then it scores the fitted settings and today's defaults on the HELD-OUT families,
