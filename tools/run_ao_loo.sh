@@ -3,7 +3,7 @@
 # builds fit_ao and runs it with --leave-one-out, which fits each technique's look per tier on
 # every scene family and on every family but one (from the tier table's look, the search of
 # tools/run_trade.sh's fit) and scores each family under both (docs/ao_loo.csv and the tables
-# between the page's fit_ao_loo markers). About 8 minutes on 2 shared cores: apart from
+# between the page's fit_ao_loo markers). 6.5-8 minutes on 2 shared cores: apart from
 # tools/run_trade.sh, which stays within its time. Truth images come from the same cache.
 # Usage: tools/run_ao_loo.sh [--backend vulkan]
 set -euo pipefail
