@@ -1,13 +1,16 @@
 // fit_ao: calibrates the AO techniques' default settings against ray-traced ground truth.
 // For each tier x technique it searches intensity and contrast (and Alchemy's and
 // Scalable's bias and sum exponent, crease's range and bias) coarse to fine, maximising the mean PSNR over the
-// frame plus the mean PSNR where the truth is below 0.95, less a penalty where the mean signed
+// frame (weighed by --frame-weight) plus the mean PSNR where the truth is below 0.95, less a penalty where the mean signed
 // error there passes --bright-limit (too bright in contacts), on the views of the TRAINING scene
 // families (tools/scenes/scene_families.*) at each view's radius with the blur on (the
 // default); then it scores the fitted settings and today's defaults on the HELD-OUT families,
 // whose kind of geometry the search never saw, each family on its own as well. Writes
-// <out-dir>/ao_fit.csv and the tables into <out-dir>/trade.md between its markers. The truth
-// comes from the same cache as bench_trade. A program, not a test.
+// <out-dir>/ao_fit.csv and the tables into <out-dir>/trade.md between its markers. With
+// --leave-one-out it measures instead how the fit generalises, one family left out at a time
+// (ao_leave_one_out.hpp): <out-dir>/ao_loo.csv and its section of <out-dir>/ao_families.md. The
+// search is tools/bench/common/ao_look_search.*. The truth comes from the same cache as
+// bench_trade. A program, not a test.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -22,6 +25,8 @@
 #include <optional>
 #include <sstream>
 
+#include "ao_leave_one_out.hpp"
+#include "ao_look_search.hpp"
 #include "ao_scoring.hpp"
 #include "bench_device.hpp"
 #include "markdown_section.hpp"
@@ -43,147 +48,12 @@ struct Options {
     std::string backend = "vulkan";
     std::vector<std::string> techniques{"alchemy", "scalable", "crease"};
     std::string cacheDir = "build/truth-cache", outDir = "docs";
-    uint32_t refinements = 5;  // levels of the fine search (its step halves at each)
     std::vector<std::string> tiers{"high", "current"};
     bool diagnose = false;        // score the tier defaults' variants instead of fitting
     std::string start = "paper";  // where the search starts: the papers' look, or the tier table's
-    // Mean signed error where the truth is occluded above which the objective pays: a look may
-    // not buy PSNR by leaving contacts and creases too bright (negative: no limit).
-    double brightLimit = -1;
+    tools::LookSearch search;
+    bool leaveOneOut = false;  // fit on every family and on every family but one, score each
 };
-
-// dB of objective lost per unit of training signed error beyond the limit: 0.01 too bright costs 1 dB.
-constexpr double kBrightPenaltyDb = 100.0;
-
-// A searched parameter: a field of AoSettings, its range and whether the search steps in log space.
-struct Parameter {
-    const char* name;
-    std::optional<float> AoSettings::*field = nullptr;              // a top-level field, or
-    std::optional<float> AoCreaseSettings::*creaseField = nullptr;  // one of crease's
-    double lo, hi;
-    bool logScale;
-    std::optional<float>& of(AoSettings& s) const { return field ? s.*field : s.crease.*creaseField; }
-    // The searched settings are always set (startingSettings, tierSettings).
-    float of(const AoSettings& s) const { return (field ? s.*field : s.crease.*creaseField).value(); }
-    double toUnit(double v) const { return logScale ? std::log(v / lo) / std::log(hi / lo) : (v - lo) / (hi - lo); }
-    double fromUnit(double u) const {
-        u = std::clamp(u, 0.0, 1.0);
-        return logScale ? lo * std::pow(hi / lo, u) : lo + u * (hi - lo);
-    }
-};
-
-std::vector<Parameter> parametersOf(AoTechnique t) {
-    std::vector<Parameter> p{{"intensity", &AoSettings::intensity, nullptr, 0.05, 20.0, true},
-                             {"contrast", &AoSettings::contrast, nullptr, 0.1, 10.0, true}};
-    if (t == AoTechnique::Alchemy) p.push_back({"bias", &AoSettings::bias, nullptr, 1e-7, 0.3, true});
-    if (t == AoTechnique::Scalable) {
-        p.push_back({"bias", &AoSettings::bias, nullptr, 0.0, 0.5, false});
-        p.push_back({"sumExponent", &AoSettings::sumExponent, nullptr, 0.5, 4.0, true});
-    }
-    if (t == AoTechnique::Crease) {
-        // crease.averager divides what intensity multiplies: searching both would be searching one.
-        p.push_back({"crease.range", nullptr, &AoCreaseSettings::range, 0.05, 10.0, true});
-        p.push_back({"crease.bias", nullptr, &AoCreaseSettings::bias, 0.02, 10.0, true});
-    }
-    return p;
-}
-
-// The papers' look (every tier's default before the calibration), made explicit: the search
-// starts from it and "before the fit" scores it.
-AoSettings startingSettings(AoTechnique t) {
-    AoSettings s;
-    s.technique = t;
-    s.normals = AoNormals::FromTexture;  // the G-buffer's normals, as a deferred renderer would
-    s.intensity = 1.0f, s.contrast = 1.0f;
-    s.bias = t == AoTechnique::Alchemy ? kAoAlchemyDefaultBias : t == AoTechnique::Scalable ? kAoScalableDefaultBias : 0.0f;
-    s.crease.range = 1.0f, s.crease.bias = 0.25f;
-    if (t == AoTechnique::Scalable) s.sumExponent = kAoScalableCourseSumExponent;
-    return s;
-}
-
-// The tier table's look for t, as explicit settings (a refit that starts where the last one ended).
-AoSettings tierSettings(AoTechnique t, const TierProfile& profile) {
-    AoSettings s = startingSettings(t);
-    const AoLook& look = profile.aoLook[uint32_t(t)];
-    s.intensity = look.intensity, s.contrast = look.contrast;
-    if (t != AoTechnique::Crease) s.bias = look.bias;
-    if (t == AoTechnique::Scalable) s.sumExponent = look.sumExponent;
-    s.crease.range = look.creaseRange, s.crease.bias = look.creaseBias;
-    return s;
-}
-
-std::string describe(const AoSettings& s) {
-    std::ostringstream o;
-    for (const Parameter& p : parametersOf(s.technique.value())) o << (o.tellp() ? ", " : "") << p.name << " " << p.of(s);
-    return o.str();
-}
-
-// Coarse to fine: first each parameter in turn over 5 points spanning its whole range (in log
-// space where marked), then `refinements` levels of a Hooke-Jeeves pattern search in the unit
-// cube of the parameters: +-step on each in turn, then a jump along the move just made (the
-// intensity-contrast ridge is diagonal), the step halving from 1/8 of the range each level.
-Result<AoSettings> fit(tools::AoEvaluator& ev, const AoSettings& start, const std::vector<tools::AoCase>& training, const Options& o,
-                       const std::string& label) {
-    const std::vector<Parameter> params = parametersOf(start.technique.value());
-    auto settingsAt = [&](const std::vector<double>& u) {
-        AoSettings s = start;
-        for (size_t i = 0; i < params.size(); ++i) params[i].of(s) = float(params[i].fromUnit(u[i]));
-        return s;
-    };
-    std::vector<double> best;
-    for (const Parameter& p : params) best.push_back(p.toUnit(p.of(start)));
-    Result<tools::AoScore> first = ev.score(start, training);
-    if (!first) return first.status();
-    auto objective = [&](const tools::AoScore& r) {
-        const double excess = o.brightLimit < 0 ? 0.0 : std::max(0.0, r.signedOccluded - o.brightLimit);
-        return r.objective() - kBrightPenaltyDb * excess;
-    };
-    double bestObjective = objective(first.value());
-    double bestSigned = first->signedOccluded;
-    // Scores the point u (clamped to the cube); keeps it when better. *improved says so.
-    auto tryPoint = [&](std::vector<double> u, bool* improved) -> Status {
-        for (double& x : u) x = std::clamp(x, 0.0, 1.0);
-        *improved = false;
-        if (u == best) return Status::ok();  // at a bound: nothing new
-        Result<tools::AoScore> r = ev.score(settingsAt(u), training);
-        if (!r) return r.status();
-        if (objective(r.value()) > bestObjective + 1e-6)
-            bestObjective = objective(r.value()), bestSigned = r->signedOccluded, best = u, *improved = true;
-        return Status::ok();
-    };
-    auto progress = [&](const std::string& stage) {
-        std::cout << "  " << label << " " << stage << ": " << describe(settingsAt(best)) << " -> training objective " << fixed(bestObjective, 2)
-                  << " dB, signed error occluded " << fixed(bestSigned, 3) << " (" << ev.evaluations() << " evaluations)" << std::endl;
-    };
-    progress("start");
-    bool improved = false;
-    for (size_t i = 0; i < params.size(); ++i)
-        for (int k = 0; k <= 4; ++k) {
-            std::vector<double> u = best;
-            u[i] = k / 4.0;
-            SFX_TRY(tryPoint(u, &improved));
-        }
-    progress("coarse");
-    double step = 1.0 / 8.0;
-    for (uint32_t level = 0; level < o.refinements; ++level, step *= 0.5) {
-        for (int round = 0; round < 4; ++round) {
-            const std::vector<double> base = best;
-            for (size_t i = 0; i < params.size(); ++i)
-                for (double direction : {1.0, -1.0}) {
-                    std::vector<double> u = best;
-                    u[i] += direction * step;
-                    SFX_TRY(tryPoint(u, &improved));
-                    if (improved) break;  // the other direction goes back
-                }
-            if (best == base) break;
-            std::vector<double> jump = best;
-            for (size_t i = 0; i < jump.size(); ++i) jump[i] += best[i] - base[i];
-            SFX_TRY(tryPoint(jump, &improved));
-        }
-        progress("fine, step " + fixed(step, 4));
-    }
-    return settingsAt(best);
-}
 
 // Where a technique's error at the tier's defaults comes from: the held-out score of the default
 // and of variants that each change one thing (no blur: how much noise the blur hides; 4x the
@@ -303,6 +173,27 @@ std::string markdown(const Options& o, const std::vector<FitRow>& rows, const st
     return md.str();
 }
 
+// The leave-one-out run's CSV and its section of <out-dir>/ao_families.md.
+bool writeLeaveOneOut(const Options& o, const std::vector<tools::LeaveOneOut>& runs, const std::vector<tools::AoCase>& cases,
+                      const std::vector<tools::TradeView>& views, const std::string& machine, double seconds) {
+    if (runs.empty()) return false;
+    std::map<std::string, std::vector<tools::AoCase>> byFamily;
+    for (const tools::AoCase& c : cases) byFamily[views[c.view].family].push_back(c);
+    std::map<std::string, tools::AoScore> none;
+    for (const auto& [family, c] : byFamily) none[family] = tools::noAoScore(c);
+    std::filesystem::create_directories(o.outDir);
+    std::ofstream(o.outDir + "/ao_loo.csv") << tools::leaveOneOutCsv(runs);
+    if (Status st = tools::replaceMarkdownSection(o.outDir + "/ao_families.md", "fit_ao_loo",
+                                                  tools::leaveOneOutMarkdown(runs, none, machine, seconds));
+        !st) {
+        std::cerr << "fit_ao: " << st.toString() << "\n";
+        return false;
+    }
+    std::cout << "fit_ao: " << runs.size() << " leave-one-out runs -> " << o.outDir << "/ao_loo.csv and " << o.outDir << "/ao_families.md in "
+              << fixed(seconds, 1) << " s" << std::endl;
+    return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -321,21 +212,27 @@ int main(int argc, char** argv) {
     app.add_option("--techniques", o.techniques, "comma-separated: alchemy, scalable, crease, horizon (horizon: --diagnose only)")
         ->delimiter(',')
         ->capture_default_str();
-    app.add_option("--refinements", o.refinements, "halvings of the fine search's step")->capture_default_str();
+    app.add_option("--refinements", o.search.refinements, "halvings of the fine search's step")->capture_default_str();
     app.add_option("--tiers", o.tiers, "comma-separated: high, current")->delimiter(',')->capture_default_str();
     app.add_option("--start", o.start, "where the search starts: paper (the papers' look) or tier (the tier table's)")
         ->check(CLI::IsMember({"paper", "tier"}))
         ->capture_default_str();
-    app.add_option(
-           "--bright-limit", o.brightLimit,
-           "training mean signed error where occluded above which the objective pays " + fixed(kBrightPenaltyDb, 0) + " dB per unit (< 0: none)")
+    app.add_option("--bright-limit", o.search.brightLimit,
+                   "training mean signed error where occluded above which the objective pays " + fixed(tools::kBrightPenaltyDb, 0) +
+                       " dB per unit (< 0: none)")
         ->capture_default_str();
+    app.add_option("--frame-weight", o.search.frameWeight, "the objective: this x frame PSNR + PSNR where occluded (0: occluded only)")
+        ->capture_default_str();
+    app.add_flag("--leave-one-out", o.leaveOneOut,
+                 "from the tier table's look, fit on every family and on every family but one, score each family under each "
+                 "(<out-dir>/ao_loo.csv, ao_families.md)");
     app.add_flag("--diagnose", o.diagnose, "score variants of the tier defaults on the training and the held-out views instead of fitting");
     app.add_option("--cache-dir", o.cacheDir, "where truth images are cached")->capture_default_str();
     app.add_option("--out-dir", o.outDir, "ao_fit.csv and trade.md (tables between its fit_ao markers)")->capture_default_str();
     CLI11_PARSE(app, argc, argv);
     const auto started = std::chrono::steady_clock::now();
-    auto elapsed = [&] { return fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(), 1); };
+    auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
+    auto elapsed = [&] { return fixed(seconds(), 1); };
 
     const std::vector<tools::TradeView> trainingViews = tools::familyViews(false), heldOutViews = tools::familyViews(true);
     std::vector<tools::TradeView> views = trainingViews;
@@ -358,6 +255,9 @@ int main(int argc, char** argv) {
         return 1;
     }
     std::vector<FitRow> rows;
+    std::vector<tools::LeaveOneOut> looRuns;
+    std::vector<tools::AoCase> allCases = training.value();
+    if (o.leaveOneOut) allCases.insert(allCases.end(), heldOut->begin(), heldOut->end());
     std::string machine;
     for (Tier tier : {Tier::High, Tier::Current}) {
         if (std::find(o.tiers.begin(), o.tiers.end(), toString(tier)) == o.tiers.end()) continue;
@@ -387,9 +287,20 @@ int main(int argc, char** argv) {
                 }
                 continue;
             }
-            const AoSettings start = o.start == "tier" ? tierSettings(technique, tiers::choose(dev.value()->caps(), tier)->profile)
-                                                       : startingSettings(technique);
-            Result<AoSettings> fitted = fit(ev, start, training.value(), o, label);
+            const AoSettings start = o.start == "tier" || o.leaveOneOut
+                ? tools::tierLook(technique, tiers::choose(dev.value()->caps(), tier)->profile)
+                : tools::paperLook(technique);
+            if (o.leaveOneOut) {
+                Result<tools::LeaveOneOut> r = tools::leaveOneOut(ev, views, allCases, start, o.search, label);
+                if (!r) {
+                    std::cerr << "fit_ao: " << label << ": " << r.status().toString() << "\n";
+                    return 1;
+                }
+                looRuns.push_back(r.value());
+                progress(label + ": leave-one-out done");
+                continue;
+            }
+            Result<AoSettings> fitted = tools::searchLook([&](const AoSettings& s) { return ev.score(s, training.value()); }, start, o.search, label);
             Result<tools::AoScore> before = fitted ? ev.score(start, heldOut.value()) : Result<tools::AoScore>(fitted.status());
             Result<tools::AoScore> trained = before ? ev.score(fitted.value(), training.value()) : Result<tools::AoScore>(before.status());
             Result<tools::AoScore> held = trained ? ev.score(fitted.value(), heldOut.value()) : Result<tools::AoScore>(trained.status());
@@ -402,8 +313,8 @@ int main(int argc, char** argv) {
                 std::cerr << "fit_ao: " << label << ": " << families.status().toString() << "\n";
                 return 1;
             }
-            rows.push_back(
-                {toString(tier), name, describe(fitted.value()), fitted.value(), before.value(), trained.value(), held.value(), families.value()});
+            rows.push_back({toString(tier), name, tools::describeLook(fitted.value()), fitted.value(), before.value(), trained.value(), held.value(),
+                            families.value()});
             std::cout << "[" << elapsed() << " s] " << label << ": " << rows.back().fitted << "; held out " << fixed(held->psnr, 2)
                       << " dB, occluded " << fixed(held->psnrOccluded, 2) << " dB (before the fit " << fixed(before->psnr, 2) << " / "
                       << fixed(before->psnrOccluded, 2) << "; no AO " << fixed(none["held-out"].psnr, 2) << " / "
@@ -411,6 +322,7 @@ int main(int argc, char** argv) {
         }
     }
     if (o.diagnose) return 0;
+    if (o.leaveOneOut) return writeLeaveOneOut(o, looRuns, allCases, views, machine, seconds()) ? 0 : 1;
     std::filesystem::create_directories(o.outDir);
     std::ofstream csv(o.outDir + "/ao_fit.csv");
     csv << "tier,technique,intensity,contrast,bias,sum_exponent,crease_range,crease_bias,training_psnr_db,training_psnr_occluded_db,heldout_psnr_db,"
