@@ -30,7 +30,7 @@ endif()
 # The constants shared by shaders and C++ (sfx_core's include path names this folder). The
 # GLSL-only shader bodies stay out: sfxc compiled them into the libraries and they are no C++.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/shader_src/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/sfx/shader_include
-        PATTERN sfx_shared_oit_ao.h EXCLUDE PATTERN sfx_shared_oit_resolve.h EXCLUDE)
+        PATTERN sfx_shared_oit_ao.h EXCLUDE PATTERN sfx_shared_oit_resolve.h EXCLUDE PATTERN sfx_ao_*_pass.h EXCLUDE)
 install(FILES ${PROJECT_BINARY_DIR}/generated/sfx_shaders/sfx_shaders.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 
 install(EXPORT ScalableFXTargets NAMESPACE ScalableFX:: DESTINATION ${SFX_CMAKE_DIR})
