@@ -70,7 +70,7 @@ void main() {
     aoWrite(sky ? 1.0 : aoFinish(params.intensity * (1.0 - visibility)), z, sky);
 #ifdef SFX_AO_BENT_NORMALS
     vec3 bent = sky ? vec3(0.0, 0.0, 1.0) : aoHorizonBentNormal(aoHorizonBentVector(bentSum, openBentSum, visibleSum, openSum, n), n);
-    outBent = vec4(kAoBentUnorm != 0 ? bent * 0.5 + 0.5 : bent, 1.0);
+    outBent = aoBentEncode(bent, kAoBentUnorm != 0);
 #endif
 }
 

@@ -25,16 +25,10 @@ layout(constant_id = SFX_AO_SC_UPSAMPLE_LINEARIZE) const int kLinearize = 0;
 layout(set = 0, binding = 4) uniform sampler2D uBentSource;
 layout(location = 1) out vec4 outBent;
 layout(constant_id = SFX_AO_SC_UPSAMPLE_BENT_UNORM) const int kBentUnorm = 0;
-vec3 bentAt(ivec2 q) {
-    vec3 b = sfxTexel(uBentSource, q, 0).xyz;
-#ifdef SFX_AO_PACKED_DEPTH_TARGET
-    b = b * 2.0 - 1.0;
-#endif
-    return b;
-}
+vec3 bentAt(ivec2 q) { return aoBentDecode(sfxTexel(uBentSource, q, 0)); }
 void writeBent(vec3 b) {
     b = aoBentNormalResolve(b);
-    outBent = vec4(kBentUnorm != 0 ? b * 0.5 + 0.5 : b, 1.0);
+    outBent = aoBentEncode(b, kBentUnorm != 0);
 }
 #endif
 

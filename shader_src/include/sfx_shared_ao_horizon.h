@@ -204,4 +204,19 @@ SFX_FN SFX_AO_VEC3 aoBentNormalResolve(SFX_AO_VEC3 v) {
 }  // namespace sfx::shared
 #endif
 
+// ---- GLSL of the bent-normal programs (the _bent variants define SFX_AO_BENT_NORMALS) ----
+#if !defined(__cplusplus) && defined(SFX_AO_BENT_NORMALS)
+// A bent vector as a target stores it: RGBA8 (unorm) holds xyz * 0.5 + 0.5, float targets signed xyz.
+vec4 aoBentEncode(vec3 b, bool unorm) { return vec4(unorm ? b * 0.5 + 0.5 : b, 1.0); }
+// A bent vector read from an intermediate target: RGBA8 where the tier's AO target is
+// (SFX_AO_PACKED_DEPTH_TARGET, from the tier table), else RGBA16F.
+vec3 aoBentDecode(vec4 texel) {
+#ifdef SFX_AO_PACKED_DEPTH_TARGET
+    return texel.xyz * 2.0 - 1.0;
+#else
+    return texel.xyz;
+#endif
+}
+#endif
+
 #endif  // SFX_SHARED_AO_HORIZON_H
