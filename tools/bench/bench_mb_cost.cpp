@@ -61,20 +61,12 @@ int main(int argc, char** argv) {
         p.mbTaps = taps, p.mbMaxRadiusPx = radius;
         list.push_back({c, p, {}});
     }
-    std::unique_ptr<Device> device;
-    for (const BackendConfig& config : compiledBackends())
-        if (config.backend != BackendKind::Null && toString(config) == backend) {
-            Result<std::unique_ptr<Device>> d = tools::openForTier(config, Tier::High);
-            if (!d) {
-                std::cerr << "bench_mb_cost: " << backend << ": " << d.status().toString() << "\n";
-                return 1;
-            }
-            device = std::move(d.value());
-        }
-    if (!device) {
-        std::cerr << "bench_mb_cost: --backend " << backend << " is not compiled in\n";
+    Result<std::unique_ptr<Device>> opened = tools::openNamedForTier(backend, Tier::High);
+    if (!opened) {
+        std::cerr << "bench_mb_cost: --backend " << backend << ": " << opened.status().toString() << "\n";
         return 1;
     }
+    std::unique_ptr<Device> device = std::move(opened.value());
     Result<std::unique_ptr<tools::CopyPass>> copy = tools::makeCopyPass(*device, Tier::High, width, height, Format::RGBA16F);
     if (!copy) {
         std::cerr << "bench_mb_cost: " << copy.status().toString() << "\n";

@@ -84,20 +84,12 @@ using CaseScorer = std::function<bool(const std::string& family, bool heldOut, d
 // `backend`'s raster pass, its truth the average of `instants` rendered instants, then scored.
 bool scoreRasterFamilies(const std::string& backend, const std::string& familiesFlag, const std::vector<double>& speeds, uint32_t w, uint32_t h,
                          uint32_t instants, const CaseScorer& scoreCase) {
-    std::unique_ptr<Device> device;
-    for (const BackendConfig& config : compiledBackends())
-        if (config.backend != BackendKind::Null && toString(config) == backend) {
-            Result<std::unique_ptr<Device>> d = tools::openForTier(config, Tier::Current);
-            if (!d) {
-                std::cerr << "bench_mb_families: raster backend " << backend << ": " << d.status().toString() << "\n";
-                return false;
-            }
-            device = std::move(d.value());
-        }
-    if (!device) {
-        std::cerr << "bench_mb_families: raster backend " << backend << " is not compiled\n";
+    Result<std::unique_ptr<Device>> opened = tools::openNamedForTier(backend, Tier::Current);
+    if (!opened) {
+        std::cerr << "bench_mb_families: raster backend " << backend << ": " << opened.status().toString() << "\n";
         return false;
     }
+    std::unique_ptr<Device> device = std::move(opened.value());
     Result<std::unique_ptr<tools::SceneRenderer>> renderer = tools::SceneRenderer::create(*device, Tier::Current);
     if (!renderer) {
         std::cerr << "bench_mb_families: " << renderer.status().toString() << "\n";

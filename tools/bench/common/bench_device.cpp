@@ -17,6 +17,12 @@ Result<std::unique_ptr<Device>> openForTier(const BackendConfig& config, Tier ti
     return device;
 }
 
+Result<std::unique_ptr<Device>> openNamedForTier(const std::string& backend, Tier tier) {
+    for (const BackendConfig& config : compiledBackends())
+        if (config.backend != BackendKind::Null && toString(config) == backend) return openForTier(config, tier);
+    return Status{StatusCode::InvalidArgument, "backend " + backend + " is not compiled in"};
+}
+
 Status forEachDevice(const std::vector<std::string>& backends, const std::vector<Tier>& tierList, const std::string& program,
                      const std::function<Status(Device&, const std::string& backend, Tier)>& run) {
     for (const std::string& backend : backends)

@@ -17,6 +17,11 @@ namespace sfx::tools {
 // shaders. UnsupportedTier when the device cannot run the tier.
 Result<std::unique_ptr<Device>> openForTier(const BackendConfig& config, Tier tier);
 
+// The compiled backend named `backend` (its BackendConfig's toString, e.g. "vulkan"; never the
+// null backend, which draws nothing to measure) opened with openForTier; InvalidArgument when
+// no such backend is compiled in.
+Result<std::unique_ptr<Device>> openNamedForTier(const std::string& backend, Tier tier);
+
 // Opens every backend (by name, e.g. "vulkan") x tier with openForTier and calls run on each
 // device; one that cannot run the tier is skipped with a line on stdout saying why. An unknown
 // backend name is InvalidArgument; the first error of run stops the loop, named by backend/tier.
