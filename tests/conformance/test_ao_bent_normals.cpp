@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "analytic_scenes.hpp"
+#include "bench_device.hpp"
 #include "effect_runs.hpp"
 #include "sfx/ao.hpp"
-#include "sfx/half.hpp"
 #include "sfx/reference/ao_reference.hpp"
 #include "skips.hpp"
 #include "test_device.hpp"
@@ -58,30 +58,11 @@ GpuBent runBent(const tools::AnalyticScene& scene, const AoSettings& settings, F
     SFX_REQUIRE_OK(ao.value()->dispatch(in));
     SFX_REQUIRE_OK(dev.flush());
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
-    const size_t n = size_t(scene.width) * scene.height;
-    GpuBent r{Grid(scene.width, scene.height), std::vector<glm::dvec3>(n), ao.value()->config(), ao.value()->plan()};
-    if (of == Format::R32F) {
-        std::vector<float> px(n);
-        SFX_REQUIRE_OK(dev.readTexture(outTex, 0, px.data(), px.size() * sizeof(float)));
-        for (size_t i = 0; i < n; ++i) r.visibility.values[i] = px[i];
-    } else {
-        std::vector<uint8_t> px(n * 4);
-        SFX_REQUIRE_OK(dev.readTexture(outTex, 0, px.data(), px.size()));
-        for (size_t i = 0; i < n; ++i) r.visibility.values[i] = px[i * 4] / 255.0;
-    }
-    if (bentFormat == Format::RGBA8) {
-        std::vector<uint8_t> px(n * 4);
-        SFX_REQUIRE_OK(dev.readTexture(bentTex, 0, px.data(), px.size()));
-        for (size_t i = 0; i < n; ++i) r.bent[i] = glm::dvec3(px[i * 4], px[i * 4 + 1], px[i * 4 + 2]) / 255.0 * 2.0 - 1.0;
-    } else if (bentFormat == Format::RGBA16F) {
-        std::vector<uint16_t> px(n * 4);
-        SFX_REQUIRE_OK(dev.readTexture(bentTex, 0, px.data(), px.size() * 2));
-        for (size_t i = 0; i < n; ++i) r.bent[i] = glm::dvec3(halfToFloat(px[i * 4]), halfToFloat(px[i * 4 + 1]), halfToFloat(px[i * 4 + 2]));
-    } else {
-        std::vector<float> px(n * 4);
-        SFX_REQUIRE_OK(dev.readTexture(bentTex, 0, px.data(), px.size() * sizeof(float)));
-        for (size_t i = 0; i < n; ++i) r.bent[i] = glm::dvec3(px[i * 4], px[i * 4 + 1], px[i * 4 + 2]);
-    }
+    Result<Grid> visibility = tools::readVisibility(dev, outTex, of, scene.width, scene.height);
+    SFX_REQUIRE_OK(visibility.status());
+    Result<std::vector<glm::dvec3>> bent = tools::readBentNormals(dev, bentTex, bentFormat, scene.width, scene.height);
+    SFX_REQUIRE_OK(bent.status());
+    GpuBent r{std::move(visibility.value()), std::move(bent.value()), ao.value()->config(), ao.value()->plan()};
     for (TextureHandle t : {depthTex, outTex, bentTex}) SFX_REQUIRE_OK(dev.destroyTexture(t));
     return r;
 }

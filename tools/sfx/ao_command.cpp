@@ -5,11 +5,11 @@
 #include <iostream>
 #include <optional>
 
+#include "bench_device.hpp"
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "pass_profile.hpp"
 #include "sfx/ao.hpp"
-#include "sfx/half.hpp"
 #include "sfx/settings_ranges.hpp"
 
 namespace sfx::cli {
@@ -63,24 +63,11 @@ Result<TierProfile> presetProfile(Tier tier, const std::string& name) {
 
 // The bent normals read back as signed xyz (RGBA8 holds xyz * 0.5 + 0.5), written to `path`.
 Status writeBentNormals(Device& dev, TextureHandle texture, Format format, uint32_t w, uint32_t h, const std::string& path) {
+    Result<std::vector<glm::dvec3>> bent = tools::readBentNormals(dev, texture, format, w, h);
+    if (!bent) return bent.status();
     io::Image image(w, h, 3);
-    const size_t n = size_t(w) * h;
-    if (format == Format::RGBA8) {
-        std::vector<uint8_t> px(n * 4);
-        SFX_TRY(dev.readTexture(texture, 0, px.data(), px.size()));
-        for (size_t i = 0; i < n; ++i)
-            for (size_t c = 0; c < 3; ++c) image.pixels[i * 3 + c] = px[i * 4 + c] / 255.0f * 2.0f - 1.0f;
-    } else if (format == Format::RGBA16F) {
-        std::vector<uint16_t> px(n * 4);
-        SFX_TRY(dev.readTexture(texture, 0, px.data(), px.size() * sizeof(uint16_t)));
-        for (size_t i = 0; i < n; ++i)
-            for (size_t c = 0; c < 3; ++c) image.pixels[i * 3 + c] = halfToFloat(px[i * 4 + c]);
-    } else {
-        std::vector<float> px(n * 4);
-        SFX_TRY(dev.readTexture(texture, 0, px.data(), px.size() * sizeof(float)));
-        for (size_t i = 0; i < n; ++i)
-            for (size_t c = 0; c < 3; ++c) image.pixels[i * 3 + c] = px[i * 4 + c];
-    }
+    for (size_t i = 0; i < bent->size(); ++i)
+        for (int c = 0; c < 3; ++c) image.pixels[i * 3 + c] = float(bent.value()[i][c]);
     return io::writeImage(path, image);
 }
 

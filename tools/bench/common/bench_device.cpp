@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "sfx/half.hpp"
 #include "sfx/tiers.hpp"
 
 namespace sfx::tools {
@@ -53,6 +54,25 @@ Result<reference::Grid> readVisibility(Device& dev, TextureHandle texture, Forma
         std::vector<uint8_t> px(n * 4);
         SFX_TRY(dev.readTexture(texture, 0, px.data(), px.size()));
         for (size_t i = 0; i < n; ++i) out.values[i] = px[i * 4] / 255.0;
+    }
+    return out;
+}
+
+Result<std::vector<glm::dvec3>> readBentNormals(Device& dev, TextureHandle texture, Format format, uint32_t w, uint32_t h) {
+    const size_t n = size_t(w) * h;
+    std::vector<glm::dvec3> out(n);
+    if (format == Format::RGBA8) {
+        std::vector<uint8_t> px(n * 4);
+        SFX_TRY(dev.readTexture(texture, 0, px.data(), px.size()));
+        for (size_t i = 0; i < n; ++i) out[i] = glm::dvec3(px[i * 4], px[i * 4 + 1], px[i * 4 + 2]) / 255.0 * 2.0 - 1.0;
+    } else if (format == Format::RGBA16F) {
+        std::vector<uint16_t> px(n * 4);
+        SFX_TRY(dev.readTexture(texture, 0, px.data(), px.size() * sizeof(uint16_t)));
+        for (size_t i = 0; i < n; ++i) out[i] = glm::dvec3(halfToFloat(px[i * 4]), halfToFloat(px[i * 4 + 1]), halfToFloat(px[i * 4 + 2]));
+    } else {
+        std::vector<float> px(n * 4);
+        SFX_TRY(dev.readTexture(texture, 0, px.data(), px.size() * sizeof(float)));
+        for (size_t i = 0; i < n; ++i) out[i] = glm::dvec3(px[i * 4], px[i * 4 + 1], px[i * 4 + 2]);
     }
     return out;
 }

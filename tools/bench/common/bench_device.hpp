@@ -2,6 +2,8 @@
 // and reading an AO output back.
 #pragma once
 
+#include <glm/glm.hpp>
+
 #include <functional>
 #include <memory>
 #include <string>
@@ -33,5 +35,9 @@ Format aoOutputFormat(const Device& device);
 
 // A W x H AO output (R32F, or RGBA8's red channel) as visibility in [0, 1], row 0 first.
 Result<reference::Grid> readVisibility(Device& device, TextureHandle texture, Format format, uint32_t width, uint32_t height);
+
+// A W x H bent-normal output (AoInputs.bentNormals) as signed xyz, row 0 first: RGBA8 holds
+// xyz * 0.5 + 0.5, RGBA16F and RGBA32F signed xyz.
+Result<std::vector<glm::dvec3>> readBentNormals(Device& device, TextureHandle texture, Format format, uint32_t width, uint32_t height);
 
 }  // namespace sfx::tools
