@@ -20,50 +20,14 @@ namespace {
 
 bool drawsNothing() { return test::device().caps().backend == BackendKind::Null; }
 
-// The bent vector (per unit of open arc) takes no acos of its own: cos H and sin H follow from
-// the horizon's sine. Only the visible share that scales the open correction carries the
-// visibility's acos allowance, times |2/3 n - open vector| <= 5/3.
-constexpr double kBentTrigAllowance = test::kAoHorizonTrigBound * 5.0 / 3.0;
 // A tap the float position moves to the neighbouring pixel moves a horizon: the bent vector by
 // what it moves the visibility, which the tier's visibility bound allows (test_ao.cpp).
 double bentTapAllowance() { return test::tier() == Tier::High ? 0.005 : 0.01; }
-// Half and 8-bit rounding of a component in [-1, 1]: 2^-11 relative, or 1/255 (xyz * 0.5 + 0.5
-// rounded to the nearest of 255 steps), plus 1e-6 for the float arithmetic of the pass.
-double rounding(Format f) { return (f == Format::RGBA8 ? 1.0 / 255.0 : f == Format::RGBA16F ? 1.0 / 2048.0 : 0.0) + 1e-6; }
 
-struct GpuBent {
-    Grid visibility;
-    std::vector<glm::dvec3> bent;
-    AoConfig config;
-    EffectPlan plan;
-};
-
-GpuBent runBent(const tools::AnalyticScene& scene, const AoSettings& settings, Format bentFormat) {
-    Device& dev = test::device();
-    Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(
-        dev, {scene.width, scene.height, test::tierProfile(), settings, DepthKind::Linear});
-    INFO(ao.status().toString());
-    REQUIRE(ao.isOk());
-    std::vector<float> depth(scene.linearDepth.values.begin(), scene.linearDepth.values.end());
-    TextureHandle depthTex = dev.createTexture({scene.width, scene.height, 1, Format::R32F, kTextureSampled, "bent-test-depth"}).value();
-    SFX_REQUIRE_OK(dev.writeTexture(depthTex, 0, depth.data(), depth.size() * sizeof(float)));
-    const Format of = test::pickFormat(dev, {Format::R32F}, true);
-    TextureHandle outTex = dev.createTexture({scene.width, scene.height, 1, of, kTextureSampled | kTextureRenderTarget, "bent-test-ao"}).value();
-    TextureHandle bentTex =
-        dev.createTexture({scene.width, scene.height, 1, bentFormat, kTextureSampled | kTextureRenderTarget, "bent-test-bent"}).value();
-    AoInputs in;
-    in.depth = DepthSource{depthTex, DepthKind::Linear, scene.camera};
-    in.output = outTex;
-    in.bentNormals = bentTex;
-    SFX_REQUIRE_OK(ao.value()->dispatch(in));
-    SFX_REQUIRE_OK(dev.flush());
+test::GpuAo runBent(const tools::AnalyticScene& scene, const AoSettings& settings, Format bentFormat) {
+    test::GpuAo r = test::runAo(test::device(), test::tierProfile(), scene, settings, DepthKind::Linear, bentFormat);
     SFX_REQUIRE_NO_VALIDATION_MESSAGES();
-    Result<Grid> visibility = tools::readVisibility(dev, outTex, of, scene.width, scene.height);
-    SFX_REQUIRE_OK(visibility.status());
-    Result<std::vector<glm::dvec3>> bent = tools::readBentNormals(dev, bentTex, bentFormat, scene.width, scene.height);
-    SFX_REQUIRE_OK(bent.status());
-    GpuBent r{std::move(visibility.value()), std::move(bent.value()), ao.value()->config(), ao.value()->plan()};
-    for (TextureHandle t : {depthTex, outTex, bentTex}) SFX_REQUIRE_OK(dev.destroyTexture(t));
+    REQUIRE(r.bentNormals.size() == r.visibility.values.size());
     return r;
 }
 
@@ -73,15 +37,6 @@ AoSettings bentSettings(AoResolution resolution, bool blur) {
     s.resolution = resolution;
     s.blur = blur;
     return s;
-}
-
-// The bound on one pixel's worst component (docs/ao.md, "Bent normals"): the raw normal's
-// direction moves by (taps + trig) / the bent vector's length, each intermediate rounding moves
-// the vector by sqrt(3) roundings, the renormalisation divides both by the blurred vector's
-// length, and the output rounds once more.
-double bentBound(const reference::BentNormals& ref, size_t i, Format intermediate, int intermediates, Format out) {
-    const double raw = (bentTapAllowance() + kBentTrigAllowance) / ref.vectorLength[i];
-    return (raw + std::sqrt(3.0) * intermediates * rounding(intermediate)) / ref.resolveLength[i] + rounding(out);
 }
 
 }  // namespace
@@ -98,7 +53,7 @@ TEST_CASE("ao bent normals: match the CPU reference at full and half resolution,
                     const tools::AnalyticScene scene = make(96, 64, 1.0);
                     const AoSettings s = bentSettings(resolution, blur);
                     INFO(test::label() << " " << scene.name << " " << toString(resolution) << (blur ? " blur" : "") << " into " << toString(out));
-                    const GpuBent gpu = runBent(scene, s, out);
+                    const test::GpuAo gpu = runBent(scene, s, out);
                     const reference::BentNormals ref = reference::ambientBentNormals(scene.aoInput(false), gpu.config);
                     // The visibility beside them is the technique's own (test_ao.cpp bounds it): the
                     // same reference, the tier's worst-pixel bound.
@@ -106,17 +61,15 @@ TEST_CASE("ao bent normals: match the CPU reference at full and half resolution,
                     double worstVis = 0;
                     for (size_t i = 0; i < vis.values.size(); ++i) worstVis = std::max(worstVis, std::abs(vis.values[i] - gpu.visibility.values[i]));
                     CHECK(worstVis <= bentTapAllowance() + test::kAoHorizonTrigBound);
-                    // Intermediate roundings: the raw target, and each blur pass that writes one.
-                    const int intermediates = gpu.config.blurRadius > 0 || gpu.config.halfResolution
-                        ? 1 + (gpu.config.blurRadius > 0 ? 1 : 0) + (gpu.config.blurRadius > 0 && gpu.config.halfResolution ? 1 : 0)
-                        : 0;
+                    const int intermediates = test::bentIntermediates(gpu.config);
                     size_t failures = 0;
-                    for (size_t i = 0; i < gpu.bent.size(); ++i) {
-                        const glm::dvec3 g = gpu.bent[i];
+                    for (size_t i = 0; i < gpu.bentNormals.size(); ++i) {
+                        const glm::dvec3 g = gpu.bentNormals[i];
                         REQUIRE(std::isfinite(g.x + g.y + g.z));
                         const glm::dvec3 d = glm::abs(g - ref.normals[i]);
                         const double e = std::max(d.x, std::max(d.y, d.z));
-                        const double bound = bentBound(ref, i, intermediate, intermediates, out);
+                        const double bound = test::bentComponentBound(bentTapAllowance() + test::kBentTrigAllowance, ref.vectorLength[i],
+                                                                      ref.resolveLength[i], intermediate, intermediates, out);
                         worstError = std::max(worstError, e);
                         if (std::isfinite(ref.vectorLength[i])) worstRatio = std::max(worstRatio, e / bound);  // sky is one rounding
                         if (e > bound && failures++ < 3) {
@@ -140,12 +93,12 @@ TEST_CASE("ao bent normals: the floor beside a wall bends away from it on the de
     // (along V and t swapped, a side's sign) turns them toward it.
     const tools::AnalyticScene scene = tools::cornerScene(96, 64, 1.0);
     for (AoResolution resolution : {AoResolution::Full, AoResolution::Half}) {
-        const GpuBent gpu = runBent(scene, bentSettings(resolution, true), Format::RGBA8);
+        const test::GpuAo gpu = runBent(scene, bentSettings(resolution, true), Format::RGBA8);
         double nearSum = 0, farSum = 0;
         size_t nearCount = 0, farCount = 0;
-        for (size_t i = 0; i < gpu.bent.size(); ++i) {
+        for (size_t i = 0; i < gpu.bentNormals.size(); ++i) {
             if (!tools::onCornerPlaneA(scene.positions[i], scene.normals[i])) continue;
-            const double d = tools::distanceToCrease(scene.positions[i]), lean = glm::dot(gpu.bent[i], tools::kCornerNormalB);
+            const double d = tools::distanceToCrease(scene.positions[i]), lean = glm::dot(gpu.bentNormals[i], tools::kCornerNormalB);
             if (d > 0.05 && d < 0.2) {
                 nearSum += lean;
                 ++nearCount;

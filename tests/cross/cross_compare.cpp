@@ -79,6 +79,32 @@ void requirePairsWithin(const std::map<std::string, std::vector<double>>& result
         }
 }
 
+void requirePairsWithinEach(const std::map<std::string, std::vector<double>>& results, const std::vector<double>& bounds, const std::string& what) {
+    for (auto a = results.begin(); a != results.end(); ++a)
+        for (auto b = std::next(a); b != results.end(); ++b) {
+            REQUIRE(a->second.size() == bounds.size());
+            REQUIRE(b->second.size() == bounds.size());
+            double worstRatio = 0, worstAbsolute = 0;
+            size_t at = 0, beyond = 0, notFinite = 0;
+            for (size_t i = 0; i < bounds.size(); ++i) {
+                if (!std::isfinite(a->second[i]) || !std::isfinite(b->second[i])) ++notFinite;
+                const double d = std::abs(a->second[i] - b->second[i]);
+                worstAbsolute = std::max(worstAbsolute, d);
+                if (d > bounds[i]) ++beyond;
+                if (d / bounds[i] > worstRatio) {
+                    worstRatio = d / bounds[i];
+                    at = i;
+                }
+            }
+            INFO(what << ": " << a->first << " vs " << b->first << ": worst difference / bound " << worstRatio << " at value " << at << " ("
+                      << a->second[at] << " vs " << b->second[at] << ", bound " << bounds[at] << "), " << beyond << " of " << bounds.size()
+                      << " values beyond their bound");
+            CHECK(notFinite == 0);
+            CHECK(worstRatio <= 1.0);
+            WARN(what << ": " << a->first << " vs " << b->first << ": worst " << worstAbsolute << ", worst difference / bound " << worstRatio);
+        }
+}
+
 void requireRasterPairsWithin(const std::vector<Opened>& devices, const std::map<std::string, std::vector<double>>& results, size_t channels,
                               double bound, const std::string& what, const std::function<PixelMask(uint32_t bits)>& excluded, OutsideBand check) {
     std::map<std::string, uint32_t> gridOf;

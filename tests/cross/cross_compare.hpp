@@ -48,6 +48,11 @@ Worst worstDifference(const std::vector<double>& a, const std::vector<double>& b
 // rounding can cross: a tie); how many did is printed.
 void requirePairsWithin(const std::map<std::string, std::vector<double>>& results, double bound, const std::string& what, double tieFraction = 0.0);
 
+// requirePairsWithin with a bound per value (`bounds`, one per value of every output): each
+// pair's worst difference / bound is at most 1; that ratio and the worst absolute difference
+// are printed.
+void requirePairsWithinEach(const std::map<std::string, std::vector<double>>& results, const std::vector<double>& bounds, const std::string& what);
+
 // requirePairsWithin for a rasterised picture, `channels` values per pixel. Pairs whose
 // rasterisers snap vertices to the same sub-pixel grid (DeviceLimits::subPixelPrecisionBits)
 // are held to `bound` everywhere. On different grids a pixel centre near an edge may be covered

@@ -6,6 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "bench_device.hpp"
 #include "sfx/half.hpp"
 #include "sfx_shared.h"
 #include "sfx_shared_mb.h"
@@ -22,7 +23,22 @@ Format pickFormat(Device& device, std::initializer_list<Format> wanted, bool ren
     return Format::RGBA8;
 }
 
-GpuAo runAo(Device& dev, const TierProfile& tier, const tools::AnalyticScene& scene, const AoSettings& settings, DepthKind descInput) {
+double bentRounding(Format f) { return (f == Format::RGBA8 ? 2.0 / 255.0 : f == Format::RGBA16F ? 1.0 / 2048.0 : 0.0) + 1e-6; }
+
+int bentIntermediates(const AoConfig& config) {
+    const bool blur = config.blurRadius > 0;
+    if (!blur && !config.halfResolution) return 0;
+    return 1 + (blur ? 1 : 0) + (blur && config.halfResolution ? 1 : 0);
+}
+
+double bentComponentBound(double directionAllowance, double vectorLength, double resolveLength, Format intermediate, int intermediates,
+                          Format output) {
+    const double raw = directionAllowance / vectorLength;
+    return (raw + std::sqrt(3.0) * intermediates * bentRounding(intermediate)) / resolveLength + bentRounding(output);
+}
+
+GpuAo runAo(Device& dev, const TierProfile& tier, const tools::AnalyticScene& scene, const AoSettings& settings, DepthKind descInput,
+            Format bentFormat) {
     AoDesc desc{scene.width, scene.height, tier, settings, descInput};
     Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev, desc);
     INFO(ao.status().toString());
@@ -48,29 +64,26 @@ GpuAo runAo(Device& dev, const TierProfile& tier, const tools::AnalyticScene& sc
     }
     const Format of = pickFormat(dev, {Format::R32F, Format::R16F, Format::RGBA8}, true);
     TextureHandle outTex = dev.createTexture({scene.width, scene.height, 1, of, kTextureSampled | kTextureRenderTarget, "ao-test-out"}).value();
+    TextureHandle bentTex;
+    if (settings.bentNormals)
+        bentTex = dev.createTexture({scene.width, scene.height, 1, bentFormat, kTextureSampled | kTextureRenderTarget, "ao-test-bent"}).value();
 
     AoInputs in;
     in.depth = DepthSource{depthTex, DepthKind::Linear, scene.camera};
     in.normals = normalTex;
     in.output = outTex;
+    in.bentNormals = bentTex;
     SFX_REQUIRE_OK(ao.value()->dispatch(in));
     SFX_REQUIRE_OK(dev.flush());
-    GpuAo result{Grid(scene.width, scene.height), ao.value()->config(), ao.value()->plan()};
-    const size_t n = size_t(scene.width) * scene.height;
-    if (of == Format::R32F) {
-        std::vector<float> px(n);
-        SFX_REQUIRE_OK(dev.readTexture(outTex, 0, px.data(), px.size() * sizeof(float)));
-        for (size_t i = 0; i < n; ++i) result.visibility.values[i] = px[i];
-    } else if (of == Format::RGBA8) {
-        std::vector<uint8_t> px(n * 4);
-        SFX_REQUIRE_OK(dev.readTexture(outTex, 0, px.data(), px.size()));
-        for (size_t i = 0; i < n; ++i) result.visibility.values[i] = px[i * 4] / 255.0;
-    } else {
-        std::vector<uint16_t> px(n);
-        SFX_REQUIRE_OK(dev.readTexture(outTex, 0, px.data(), px.size() * 2));
-        for (size_t i = 0; i < n; ++i) result.visibility.values[i] = double(halfToFloat(px[i]));
+    Result<Grid> visibility = tools::readVisibility(dev, outTex, of, scene.width, scene.height);
+    SFX_REQUIRE_OK(visibility.status());
+    GpuAo result{std::move(visibility.value()), ao.value()->config(), ao.value()->plan(), {}};
+    if (settings.bentNormals) {
+        Result<std::vector<glm::dvec3>> bent = tools::readBentNormals(dev, bentTex, bentFormat, scene.width, scene.height);
+        SFX_REQUIRE_OK(bent.status());
+        result.bentNormals = std::move(bent.value());
     }
-    for (TextureHandle t : {depthTex, normalTex, outTex})
+    for (TextureHandle t : {depthTex, normalTex, outTex, bentTex})
         if (!t.isNull()) SFX_REQUIRE_OK(dev.destroyTexture(t));
     return result;
 }

@@ -19,10 +19,34 @@ namespace sfx::test {
 // the tier's bound against the reference (docs/ao.md; test_ao_horizon_reference.cpp checks it).
 inline constexpr double kAoHorizonTrigBound = 0.002;
 
+// The bent normal (AoSettings.bentNormals) takes no acos of its own: cos H and sin H follow
+// from the horizon's sine. Only the visible share that scales the open correction carries the
+// visibility's acos allowance, times |2/3 n - open vector| <= 5/3.
+inline constexpr double kBentTrigAllowance = kAoHorizonTrigBound * 5.0 / 3.0;
+
+// One rounding of a bent-normal component in [-1, 1] stored as `format`, plus 1e-6 for the
+// pass's float arithmetic. Both APIs let a conversion to a normalized 8-bit code return either of
+// the two nearest codes, and a store to fp16 round to nearest or toward zero: one whole step,
+// 2/255 of a component for RGBA8 (it holds xyz * 0.5 + 0.5) and 2^-11 for RGBA16F. Two backends
+// storing nearly the same value land at most one step apart, so the same term bounds a pair.
+double bentRounding(Format format);
+
+// How many intermediate targets a bent normal passes through before the output: the raw
+// target when a blur or upsample follows, and each blur pass that writes one.
+int bentIntermediates(const AoConfig& config);
+
+// The bound on one pixel's worst bent-normal component (docs/ao.md, "Bent normals"): the raw
+// vector's direction moves by `directionAllowance` / its length, each intermediate rounding
+// moves the vector by sqrt(3) roundings, the renormalisation divides both by the blurred
+// vector's length, and the output rounds once more.
+double bentComponentBound(double directionAllowance, double vectorLength, double resolveLength, Format intermediate, int intermediates,
+                          Format output);
+
 struct GpuAo {
     reference::Grid visibility;
     AoConfig config;
     EffectPlan plan;
+    std::vector<glm::dvec3> bentNormals;  // when the settings ask for them
 };
 
 // The AO tests' settings for technique `t` at world scale `scale`: radius 0.5, Scalable at
@@ -38,9 +62,10 @@ Format pickFormat(Device& device, std::initializer_list<Format> wanted, bool ren
 
 // AO of `scene` with `settings`. descInput: what the context is told it will get. The scenes'
 // depth is linear, so Linear reads it where it lies (no linearisation pass unless a MIP is
-// built); Hardware copies it first.
+// built); Hardware copies it first. With settings.bentNormals the bent normals are written to a
+// `bentFormat` target and read back too.
 GpuAo runAo(Device& device, const TierProfile& tier, const tools::AnalyticScene& scene, const AoSettings& settings,
-            DepthKind descInput = DepthKind::Linear);
+            DepthKind descInput = DepthKind::Linear, Format bentFormat = Format::RGBA8);
 
 // Depth layers of an analytic scene with foreground blocks: on a checker of 8-pixel blocks layer 0
 // is a surface at 0.6 of the scene's depth (a foreground object) and layer 1 the scene itself, the

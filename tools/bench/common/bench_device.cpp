@@ -50,6 +50,10 @@ Result<reference::Grid> readVisibility(Device& dev, TextureHandle texture, Forma
         std::vector<float> px(n);
         SFX_TRY(dev.readTexture(texture, 0, px.data(), px.size() * sizeof(float)));
         for (size_t i = 0; i < n; ++i) out.values[i] = px[i];
+    } else if (format == Format::R16F) {
+        std::vector<uint16_t> px(n);
+        SFX_TRY(dev.readTexture(texture, 0, px.data(), px.size() * sizeof(uint16_t)));
+        for (size_t i = 0; i < n; ++i) out.values[i] = double(halfToFloat(px[i]));
     } else {
         std::vector<uint8_t> px(n * 4);
         SFX_TRY(dev.readTexture(texture, 0, px.data(), px.size()));

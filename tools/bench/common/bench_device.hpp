@@ -33,7 +33,7 @@ Status forEachDevice(const std::vector<std::string>& backends, const std::vector
 // The format an AO output gets on `device`: R32F where renderable, else RGBA8.
 Format aoOutputFormat(const Device& device);
 
-// A W x H AO output (R32F, or RGBA8's red channel) as visibility in [0, 1], row 0 first.
+// A W x H AO output (R32F, R16F, or RGBA8's red channel) as visibility in [0, 1], row 0 first.
 Result<reference::Grid> readVisibility(Device& device, TextureHandle texture, Format format, uint32_t width, uint32_t height);
 
 // A W x H bent-normal output (AoInputs.bentNormals) as signed xyz, row 0 first: RGBA8 holds
