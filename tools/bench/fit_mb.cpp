@@ -76,27 +76,21 @@ int main(int argc, char** argv) {
         std::cerr << "fit_mb: the tiers' motion-blur jitter differs; the grid would need a run per tier\n";
         return 1;
     }
+    // Opened before the truth is computed, so a wrong --backend fails at once.
+    std::unique_ptr<Device> device;
+    if (backend != "none") {
+        Result<std::unique_ptr<Device>> d = tools::openNamedForTier(backend, Tier::High);
+        if (!d) {
+            std::cerr << "fit_mb: --backend " << backend << ": " << d.status().toString() << "\n";
+            return 1;
+        }
+        device = std::move(d.value());
+    }
     if (speeds.empty())
         for (double s : tools::kScoredFamilySpeedsPx) speeds.push_back(s * height / 240.0);
     const auto training = tools::scoredFamilyCases(false, speeds, instants, 1, width, height, progress);
     const auto heldOut = tools::scoredFamilyCases(true, speeds, instants, 1, width, height, progress);
 
-    std::unique_ptr<Device> device;
-    if (backend != "none") {
-        for (const BackendConfig& config : compiledBackends())
-            if (toString(config) == backend) {
-                Result<std::unique_ptr<Device>> d = tools::openForTier(config, Tier::High);
-                if (!d) {
-                    std::cerr << "fit_mb: " << backend << ": " << d.status().toString() << "\n";
-                    return 1;
-                }
-                device = std::move(d.value());
-            }
-        if (!device) {
-            std::cerr << "fit_mb: --backend " << backend << " is not compiled in\n";
-            return 1;
-        }
-    }
     PerspectiveDesc pd;
     pd.aspect = double(costWidth) / costHeight;
     const CameraProjection cam = makePerspective(pd).value();
