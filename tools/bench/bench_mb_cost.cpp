@@ -1,6 +1,6 @@
 // bench_mb_cost: motion blur configurations timed side by side on one device, for a cost
 // comparison on a machine shared with other work. Each configuration (taps : radius at 720 rows,
-// the rest the high tier's) is timed on the "pan" scene (as fit_mb and trade_presets time) once
+// the rest the high tier's) is timed on the "pan" scene (as fit_mb and trade_presets time; --scene picks another) once
 // per round, in an order that alternates between rounds, beside a copy pass of the same size as
 // the load indicator; printed are the medians over the rounds. A program, not a test; docs/motion_blur.md shows its figures.
 #include <CLI/CLI.hpp>
@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "bench_device.hpp"
@@ -36,10 +37,11 @@ struct Config {
 int main(int argc, char** argv) {
     CLI::App app{"bench_mb_cost: motion blur configurations timed alternately on one backend", "bench_mb_cost"};
     std::vector<std::string> configs{"13:18", "9:18", "7:14"};
-    std::string backend = "vulkan";
+    std::string backend = "vulkan", sceneName = "pan";
     uint32_t width = 1280, height = 720, runs = 5, rounds = 7;
     app.add_option("--configs", configs, "taps:radius, comma-separated")->delimiter(',')->capture_default_str();
     app.add_option("--backend", backend, "the backend timing them")->capture_default_str();
+    app.add_option("--scene", sceneName, "the procedural scene timed: ball, pan or crossing")->capture_default_str();
     app.add_option("--width", width, "pixels of the timed runs")->capture_default_str();
     app.add_option("--height", height, "pixels of the timed runs")->capture_default_str();
     app.add_option("--runs", runs, "timed runs per configuration and round (median)")->capture_default_str();
@@ -75,7 +77,14 @@ int main(int argc, char** argv) {
     PerspectiveDesc pd;
     pd.aspect = double(width) / height;
     const CameraProjection cam = makePerspective(pd).value();
-    const reference::SceneFrame frame = tools::makeMotionScenes(width, height)[1].scene.render(0);
+    std::optional<reference::SceneFrame> found;
+    for (const tools::NamedMotionScene& named : tools::makeMotionScenes(width, height))
+        if (named.name == sceneName) found = named.scene.render(0);
+    if (!found) {
+        std::cerr << "bench_mb_cost: --scene " << sceneName << ": allowed ball, pan, crossing\n";
+        return 1;
+    }
+    const reference::SceneFrame& frame = *found;
     std::vector<double> copyMs;
     for (uint32_t round = 0; round < rounds; ++round) {
         for (size_t k = 0; k < list.size(); ++k) {
