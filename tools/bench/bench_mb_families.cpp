@@ -9,8 +9,10 @@
 // truth averaging --instants rendered instants. With --sweep, every 0.5 px from 0.5 px to past
 // both tiers' blur (the high tier's radius at this height, doubled, plus 4 px) and, per family
 // and region, the worst high - current tier and its speed: the tier promise checked between the
-// scored speeds too. Not a test: docs/motion_blur.md shows its CSVs and pictures. About two
-// minutes on 2 cores (a sweep: see docs/motion_blur.md).
+// scored speeds too. --hidden-near, --high-dither-pairs and --high-jitter-always score the CPU
+// reference's candidate reconstructions (MotionBlurCandidate) instead of today's. Not a test:
+// docs/motion_blur.md shows its CSVs and pictures. About two minutes on 2 cores (a sweep: see
+// docs/motion_blur.md).
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -126,6 +128,8 @@ int main(int argc, char** argv) {
     std::optional<float> radius;
     std::optional<uint32_t> highTaps;
     std::optional<float> highRadius;
+    MotionBlurCandidate candidates[2];  // the CPU reference's, current and high tier
+    double hiddenNear = 0;
     app.add_option("--width", width, "picture width")->capture_default_str();
     app.add_option("--height", height, "picture height")->capture_default_str();
     app.add_option("--instants", instants, "instants averaged for the truth")->capture_default_str();
@@ -141,6 +145,12 @@ int main(int argc, char** argv) {
     app.add_option("--radius", radius, "override MotionBlurSettings::maxRadiusPx (at 720 rows) on both tiers");
     app.add_option("--high-taps", highTaps, "the high tier's profile taps (a candidate default; --taps overrides it)");
     app.add_option("--high-radius", highRadius, "the high tier's profile radius at 720 rows (a candidate default)");
+    app.add_option("--hidden-near", hiddenNear,
+                   "candidate, both tiers' CPU reference: the hidden background's colour weighted by distance^-P (0 = today's)")
+        ->capture_default_str();
+    app.add_flag("--high-dither-pairs", candidates[1].ditherPairs, "candidate, the high tier's CPU reference: per-pixel dither of the pair count");
+    app.add_flag("--high-jitter-always", candidates[1].jitterAlways,
+                 "candidate, the high tier's CPU reference: 4 x 4 position jitter at full share everywhere");
     app.add_option("--csv", csvPath, "CSV output file")->capture_default_str();
     app.add_option("--images", imagesDir, "write DIR/mb_<family>_<speed>px.png: input, truth, current, high tier (CPU reference) and errors x4");
     app.add_option("--image-speeds", imageSpeedsFlag, "speeds of the --images pictures, comma-separated (each also in --speeds)")
@@ -150,6 +160,11 @@ int main(int argc, char** argv) {
         std::cerr << "bench_mb_families: --width and --height must be > 0, --instants >= 2\n";
         return 1;
     }
+    if (!(hiddenNear >= 0 && hiddenNear <= 8)) {
+        std::cerr << "bench_mb_families: --hidden-near must be in [0, 8]\n";
+        return 1;
+    }
+    candidates[0].hiddenNearExponent = candidates[1].hiddenNearExponent = hiddenNear;
     MotionBlurSettings settings;
     settings.samples = taps, settings.maxRadiusPx = radius;
     TierProfile profiles[2] = {tiers::profile(Tier::Current), tiers::profile(Tier::High)};  // indexed by tier == High
@@ -237,7 +252,7 @@ int main(int argc, char** argv) {
                 return false;
             }
             ColorGrid& out = referenceOut[tier == Tier::High];
-            out = motionBlur(frame.color, frame.depth, frame.velocity, p.value()).color;
+            out = motionBlur(frame.color, frame.depth, frame.velocity, p.value(), kSkyDepth, candidates[tier == Tier::High]).color;
             const Scores s = emit(tier, "reference", p.value(), out);
             referenceScores[tier == Tier::High] = s;
             gainSum[family][tier == Tier::High] += s.moving - in.moving;

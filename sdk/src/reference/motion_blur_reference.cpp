@@ -51,7 +51,7 @@ double roundToHalf(double value) {
 }
 
 MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearDepth, const VelocityGrid& velocityPx, const MotionBlurParams& p,
-                                     double maxDepth) {
+                                     double maxDepth, const MotionBlurCandidate& candidate) {
     const uint32_t w = color.width, h = color.height;
     const double k = double(p.radiusPx);
     MotionBlurReferenceResult r;
@@ -117,15 +117,18 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
             const double zC = depth.at(uint32_t(x), uint32_t(y));
             const double speedC = std::sqrt(length2(vC));
             const double speedN = std::sqrt(length2(vN));
-            const double jitter = mbJitter(x, y, int(p.jitterSize));
-            const int pairs = mbActivePairs(speedN, int(p.pairs));
-            std::array<double, 4> sum{};
-            double total = 0, window = 0;
+            const bool table = candidate.ditherPairs || candidate.jitterAlways;
+            const double jitter = mbJitter(x, y, table ? 4 : int(p.jitterSize));
+            const int pairs = candidate.ditherPairs ? std::clamp(int(std::floor(speedN + 0.5 + jitter)), 1, int(p.pairs))
+                                                    : mbActivePairs(speedN, int(p.pairs));
+            std::array<double, 4> sum{}, hiddenSum{};
+            double total = 0, window = 0, hiddenWeight = 0, hiddenNear = 0;
             for (int i = 0; i < pairs; ++i) {
                 const std::array<double, 2> v = mbPairUsesCentre(i, speedC, speedN) ? vC : vN;
                 const double speedV = std::sqrt(length2(v));
                 for (double side : {1.0, -1.0}) {
-                    const double t = mbSampleT(i, pairs, jitter, side, speedV);
+                    const double t = candidate.jitterAlways ? side * std::min((i + 1.0 + side * jitter) / pairs, 1.0)
+                                                            : mbSampleT(i, pairs, jitter, side, speedV);
                     const int ox = int(roundAway(t * v[0])), oy = int(roundAway(t * v[1]));
                     const int qx = std::clamp(x + ox, 0, int(w) - 1), qy = std::clamp(y + oy, 0, int(h) - 1);
                     if (qx != x + ox || qy != y + oy) ++r.samplesOutside;
@@ -138,10 +141,20 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
                     const std::array<double, 4>& rawS = color.at(uint32_t(qx), uint32_t(qy));
                     if (!shared::sfxColorIsFinite(rawS)) continue;  // never spread (sfx_shared.h)
                     const std::array<double, 4> colorS = shared::sfxColor(rawS);
-                    for (int c = 0; c < 4; ++c) sum[c] += colorS[c] * wS;
+                    double wShown = wS;
+                    if (candidate.hiddenNearExponent > 0) {
+                        const double hidden = std::clamp(2.0 * (zS - zC) / p.softDepthExtent, 0.0, 1.0) *
+                            shared::mbBackgroundShare(zC, zS, p.softDepthExtent) * shared::mbSpread(dist, speedC);
+                        const double near = hidden * std::pow(std::max(dist, 1.0), -candidate.hiddenNearExponent);
+                        for (int c = 0; c < 4; ++c) hiddenSum[c] += colorS[c] * near;
+                        hiddenWeight += hidden, hiddenNear += near, wShown -= hidden;
+                    }
+                    for (int c = 0; c < 4; ++c) sum[c] += colorS[c] * wShown;
                     total += wS;
                 }
             }
+            if (hiddenNear > 0)
+                for (int c = 0; c < 4; ++c) sum[c] += hiddenSum[c] * (hiddenWeight / hiddenNear);
             const double wC = mbCentreShare(p.centreWeight, total, window);
             for (int c = 0; c < 4; ++c) sum[c] += colorC[c] * wC;
             total += wC;

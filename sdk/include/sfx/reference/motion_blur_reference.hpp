@@ -52,12 +52,31 @@ struct MotionBlurReferenceResult {
 // SFX_SKY_DEPTH of sfx_shared.h (the .cpp asserts they are equal): an infinite projection's maxDepth.
 inline constexpr double kSkyDepth = 1.0e8;
 
+// Candidate reconstructions the benches can score against today's (docs/motion_blur.md, "The
+// tier promise between the scored speeds"); the shaders have none of them, and the defaults are
+// today's reconstruction exactly.
+struct MotionBlurCandidate {
+    // > 0: of each sample's background weight, the part behind the centre (the weight times
+    // clamp(2 (z_S - z_C) / softDepthExtent, 0, 1): none when level, so a uniformly moving area
+    // keeps its box filter) stands for the surface the centre hides, and that part's colour is the
+    // average of those samples weighted by distance^-hiddenNearExponent (nearer samples likelier
+    // to look like it); the weights, and so the background's share, are unchanged.
+    double hiddenNearExponent = 0;
+    // Per-pixel dither of the pair count: round(|v_N| + j) pairs instead of round(|v_N|), j the
+    // 4 x 4 table's offset (mbJitter size 4), so a fractional length uses the pair counts either
+    // side of it in proportion.
+    bool ditherPairs = false;
+    // Jitter the sample positions at full share (s = 1) even where the pairs read every texel,
+    // with the 4 x 4 table's offsets.
+    bool jitterAlways = false;
+};
+
 // linearDepth: linear depth, read through sfxLinearDepthOrFar(z, maxDepth) as the pack pass does
 // (maxDepth: the far plane of the depth's reconstruction, or SFX_SKY_DEPTH); velocityPx: the
 // host's velocity, pixels across the shutter interval. Sizes must match (asserted by the caller).
 // Hostile values follow the rules of sfx_shared.h / sfx_shared_mb.h, as on the GPU.
 MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearDepth, const VelocityGrid& velocityPx, const MotionBlurParams& params,
-                                     double maxDepth = kSkyDepth);
+                                     double maxDepth = kSkyDepth, const MotionBlurCandidate& candidate = {});
 
 // Camera-only velocity (pixels across the shutter, current minus previous position) for
 // linear depth under `projection`, as mb_pack.frag computes it.
