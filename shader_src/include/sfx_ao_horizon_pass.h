@@ -1,8 +1,8 @@
 // The body of the horizon obscurance pass (ao_horizon.frag; ao_horizon_bent.frag defines
 // SFX_AO_BENT_NORMALS first and also writes the bent normal to a second attachment, which only
 // its pipelines have). Horizon-based AO (Jimenez et al. 2016, GTAO) as a fragment pass:
-// kAoSamples slices per pixel, each marched both ways in kAoHorizonSteps steps crowding toward
-// the pixel, the highest horizon above the tangent plane per side kept (thickness heuristic,
+// kAoSamples slices per pixel, each marched both ways in kAoHorizonSteps steps evenly spread over
+// the radius, the highest horizon above the tangent plane per side kept (thickness heuristic,
 // falloff at the radius's edge), then the cosine-weighted visible arc in closed form
 // (sfx_shared_ao_horizon.h). High tier: far steps read the depth MIP level their distance calls
 // for, as Scalable's taps do.

@@ -40,13 +40,14 @@ SFX_FN int aoHorizonSliceTurnsQ16(int i, int slices) { return ((2 * i + 1) * 163
 SFX_FN int aoHorizonJitterIndex(SFX_UINT hash, int slice) {
     return (int((hash >> 8u) & 255u) + slice * SFX_AO_HORIZON_JITTER_PER_SLICE) & 255;
 }
-// Step j of `steps` lies at ((j + jitter) / steps)^2 of the screen radius, jitter = (k + 0.5) /
-// 256: samples crowd toward the pixel, where a horizon changes fastest. Float in both languages
-// (a discrete decision follows: the pixel it reads).
+// Step j of `steps` lies at (j + jitter) / steps of the screen radius, jitter = (k + 0.5) / 256:
+// evenly spread, so no gap between two steps is wider than 1 / steps of the radius, inside which
+// the truth counts every occluder (docs/ao_families.md measures other spreads). Float in both
+// languages (a discrete decision follows: the pixel it reads).
 SFX_FN float aoHorizonStepRadius(int j, int steps, int jitterIndex, float screenRadius) {
     SFX_PRECISE float jitter = (float(jitterIndex) + 0.5f) * 0.00390625f;
     SFX_PRECISE float t = (float(j) + jitter) / float(steps);
-    SFX_PRECISE float rho = t * t * screenRadius;
+    SFX_PRECISE float rho = t * screenRadius;
     return max(rho, SFX_AO_HORIZON_MIN_STEP_PX);
 }
 

@@ -1,8 +1,10 @@
 // The horizon technique's CPU reference against closed forms: an open plane is unoccluded, the
 // floor beside a perpendicular wall sees the circular-segment visibility of the ray-traced
-// truth's definition, and the shared per-slice terms integrate the visible arc exactly.
+// truth's definition, the shared per-slice terms integrate the visible arc exactly, and a
+// slice's steps are evenly spread over the radius.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -91,6 +93,25 @@ TEST_CASE("ao horizon: the conformance allowance covers the specified acos preci
     }
     INFO("slice ratio moves " << worstRatio << ", open arc " << worstOpen);
     CHECK(worstRatio + worstOpen / (1.0 - worstOpen) <= test::kAoHorizonTrigBound);
+}
+
+TEST_CASE("ao horizon: a slice's steps are evenly spread, no gap wider than the radius over the steps", "[ao][horizon]") {
+    // The truth counts every occluder within the radius, so an occluder in a wide gap between
+    // two steps is missed: step j lies at (j + jitter) / steps of the screen radius for every
+    // jitter, the first within one gap of the pixel and the last inside the radius.
+    namespace sh = sfx::shared;
+    const float screenRadius = 64.0f;
+    for (int steps : {2, 4, 6, 12})
+        for (int jitter = 0; jitter < 256; jitter += 15) {
+            INFO(steps << " steps, jitter index " << jitter);
+            const double gap = double(screenRadius) / steps, xi = (jitter + 0.5) / 256.0;
+            for (int j = 0; j < steps; ++j) {
+                const double rho = sh::aoHorizonStepRadius(j, steps, jitter, screenRadius);
+                CHECK(rho == Approx(std::max((j + xi) * gap, double(sh::SFX_AO_HORIZON_MIN_STEP_PX))).epsilon(1e-6));
+                CHECK(rho < double(screenRadius));
+                if (j > 0) CHECK(rho - sh::aoHorizonStepRadius(j - 1, steps, jitter, screenRadius) <= gap * (1 + 1e-6));
+            }
+        }
 }
 
 TEST_CASE("ao horizon: the visible arc of an open slice integrates the cosine over the hemisphere", "[ao][horizon]") {

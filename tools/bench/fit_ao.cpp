@@ -1,6 +1,7 @@
 // fit_ao: calibrates the AO techniques' default settings against ray-traced ground truth.
 // For each tier x technique it searches intensity and contrast (and Alchemy's and
-// Scalable's bias and sum exponent, crease's range and bias) coarse to fine, maximising the mean PSNR over the
+// Scalable's bias and sum exponent, crease's range and bias; horizon's one parameter, a power on
+// its visibility) coarse to fine, maximising the mean PSNR over the
 // frame (weighed by --frame-weight) plus the mean PSNR where the truth is below 0.95, less a penalty where the mean signed
 // error there passes --bright-limit (too bright in contacts), on the views of the TRAINING scene
 // families (tools/scenes/scene_families.*) at each view's radius with the blur on (the
@@ -52,14 +53,33 @@ struct Options {
     bool diagnose = false;        // score the tier defaults' variants instead of fitting
     std::string start = "paper";  // where the search starts: the papers' look, or the tier table's
     tools::LookSearch search;
-    bool leaveOneOut = false;  // fit on every family and on every family but one, score each
+    bool leaveOneOut = false;           // fit on every family and on every family but one, score each
+    std::vector<std::string> variants;  // --diagnose: only the variants whose names contain one of these (none: all)
 };
+
+// Each family's score from a run's comparisons (one per case; AoCase::view indexes `views`).
+std::map<std::string, tools::AoScore> byFamily(const std::vector<truth::Comparison>& errors, const std::vector<tools::AoCase>& cases,
+                                               const std::vector<tools::TradeView>& views) {
+    std::map<std::string, std::vector<truth::Comparison>> split;
+    for (size_t i = 0; i < cases.size(); ++i) split[views[cases[i].view].family].push_back(errors[i]);
+    std::map<std::string, tools::AoScore> scores;
+    for (const auto& [family, e] : split) scores[family] = tools::summarise(e);
+    return scores;
+}
+
+// The fitted settings' score on each held-out family's cases.
+Result<std::map<std::string, tools::AoScore>> scoreByFamily(tools::AoEvaluator& ev, const AoSettings& settings,
+                                                            const std::vector<tools::AoCase>& cases, const std::vector<tools::TradeView>& views) {
+    Result<std::vector<truth::Comparison>> errors = ev.run(settings, cases);
+    if (!errors) return errors.status();
+    return byFamily(errors.value(), cases, views);
+}
 
 // Where a technique's error at the tier's defaults comes from: the held-out score of the default
 // and of variants that each change one thing (no blur: how much noise the blur hides; 4x the
 // taps: the noise left; full resolution: what half resolution costs; no screen-radius clamp).
 Status diagnose(tools::AoEvaluator& ev, Tier tier, AoTechnique technique, const std::vector<tools::AoCase>& training,
-                const std::vector<tools::AoCase>& heldOut) {
+                const std::vector<tools::AoCase>& heldOut, const std::vector<tools::TradeView>& views, const std::vector<std::string>& only) {
     const TierProfile base = tiers::choose(ev.device().caps(), tier)->profile;
     const tools::AoScore none = tools::noAoScore(heldOut);  // the baseline of the 4 dB accuracy goal
     struct Variant {
@@ -98,21 +118,37 @@ Status diagnose(tools::AoEvaluator& ev, Tier tier, AoTechnique technique, const 
                         {"grid " + std::to_string(slices) + "x" + std::to_string(steps) + " falloff " + fixed(falloff, 2),
                          [=](AoSettings&, TierProfile& p) { p.aoHorizonSlices = slices, p.aoHorizonSteps = steps, p.aoHorizonFalloff = falloff; }});
                 }
+    // Horizon with a power p on its visibility (the look's contrast; intensity stays 1), and
+    // without the depth MIP (every step at the pass's size), the tier's other defaults.
+    if (technique == AoTechnique::Horizon) {
+        for (float k : {1.1f, 1.2f, 1.3f, 1.4f, 1.5f})
+            variants.push_back({"horizon power " + fixed(k, 2), [=](AoSettings&, TierProfile& p) { p.aoLook[3].contrast = k; }});
+        variants.push_back({"horizon no depth MIP", [](AoSettings&, TierProfile& p) { p.aoDepthMipLevels = 1; }});
+    }
     for (const Variant& v : variants) {
+        if (!only.empty() && std::none_of(only.begin(), only.end(), [&](const std::string& o) { return v.name.find(o) != std::string::npos; }))
+            continue;
         AoSettings s;
         s.technique = technique;
         s.normals = AoNormals::FromTexture;
         TierProfile p = base;
         v.apply(s, p);
         ev.setProfile(p);
-        Result<tools::AoScore> t = ev.score(s, training);
-        if (!t) return t.status();
-        Result<tools::AoScore> r = ev.score(s, heldOut);
-        if (!r) return r.status();
-        std::cout << "  diagnose " << toString(tier) << "/" << toString(technique) << " " << v.name << ": training " << fixed(t->psnr, 2) << " / "
-                  << fixed(t->psnrOccluded, 2) << " dB, held out " << fixed(r->psnr, 2) << " / " << fixed(r->psnrOccluded, 2)
-                  << " dB, signed error occluded " << fixed(r->signedOccluded, 3) << ", gain over no AO occluded "
-                  << fixed(r->psnrOccluded - none.psnrOccluded, 2) << " dB" << std::endl;
+        // One run of each set: its mean and each family's.
+        Result<std::vector<truth::Comparison>> te = ev.run(s, training);
+        if (!te) return te.status();
+        Result<std::vector<truth::Comparison>> re = ev.run(s, heldOut);
+        if (!re) return re.status();
+        const tools::AoScore t = tools::summarise(te.value()), r = tools::summarise(re.value());
+        std::map<std::string, tools::AoScore> families = byFamily(te.value(), training, views);
+        families.merge(byFamily(re.value(), heldOut, views));
+        std::cout << "  diagnose " << toString(tier) << "/" << toString(technique) << " " << v.name << ": training " << fixed(t.psnr, 2) << " / "
+                  << fixed(t.psnrOccluded, 2) << " dB, held out " << fixed(r.psnr, 2) << " / " << fixed(r.psnrOccluded, 2)
+                  << " dB, signed error occluded " << fixed(r.signedOccluded, 3) << ", gain over no AO occluded "
+                  << fixed(r.psnrOccluded - none.psnrOccluded, 2) << " dB, training signed error occluded " << fixed(t.signedOccluded, 3) << ";";
+        for (const auto& [family, f] : families)
+            std::cout << " " << family << " " << fixed(f.psnr, 2) << " / " << fixed(f.psnrOccluded, 2) << " / " << fixed(f.signedOccluded, 3) << ";";
+        std::cout << std::endl;
     }
     ev.setProfile(base);
     return Status::ok();
@@ -124,18 +160,6 @@ struct FitRow {
     tools::AoScore before, trainingScore, heldOut;
     std::map<std::string, tools::AoScore> heldOutFamilies;  // the fitted settings on each held-out family
 };
-
-// The fitted settings' score on each held-out family's cases.
-Result<std::map<std::string, tools::AoScore>> scoreByFamily(tools::AoEvaluator& ev, const AoSettings& settings,
-                                                            const std::vector<tools::AoCase>& cases, const std::vector<tools::TradeView>& views) {
-    Result<std::vector<truth::Comparison>> errors = ev.run(settings, cases);
-    if (!errors) return errors.status();
-    std::map<std::string, std::vector<truth::Comparison>> byFamily;
-    for (size_t i = 0; i < cases.size(); ++i) byFamily[views[cases[i].view].family].push_back(errors.value()[i]);
-    std::map<std::string, tools::AoScore> scores;
-    for (const auto& [family, e] : byFamily) scores[family] = tools::summarise(e);
-    return scores;
-}
 
 std::string markdown(const Options& o, const std::vector<FitRow>& rows, const std::map<std::string, tools::AoScore>& none,
                      const std::vector<tools::TradeView>& training, const std::vector<tools::TradeView>& heldOut, const std::string& machine) {
@@ -209,7 +233,7 @@ int main(int argc, char** argv) {
         ->delimiter(',')
         ->capture_default_str();
     app.add_option("--backend", o.backend, "vulkan, gles, gl, gl-egl, gl-osmesa (the backends agree)")->capture_default_str();
-    app.add_option("--techniques", o.techniques, "comma-separated: alchemy, scalable, crease, horizon (horizon: --diagnose only)")
+    app.add_option("--techniques", o.techniques, "comma-separated: alchemy, scalable, crease, horizon (horizon's look: a power on its visibility)")
         ->delimiter(',')
         ->capture_default_str();
     app.add_option("--refinements", o.search.refinements, "halvings of the fine search's step")->capture_default_str();
@@ -227,6 +251,7 @@ int main(int argc, char** argv) {
                  "from the tier table's look, fit on every family and on every family but one, score each family under each "
                  "(<out-dir>/ao_loo.csv, ao_families.md)");
     app.add_flag("--diagnose", o.diagnose, "score variants of the tier defaults on the training and the held-out views instead of fitting");
+    app.add_option("--variants", o.variants, "--diagnose: comma-separated parts of the variants' names to run (none: every variant)")->delimiter(',');
     app.add_option("--cache-dir", o.cacheDir, "where truth images are cached")->capture_default_str();
     app.add_option("--out-dir", o.outDir, "ao_fit.csv and trade.md (tables between its fit_ao markers)")->capture_default_str();
     CLI11_PARSE(app, argc, argv);
@@ -281,7 +306,7 @@ int main(int argc, char** argv) {
             }
             const std::string label = std::string(toString(tier)) + "/" + name;
             if (o.diagnose) {
-                if (Status st = diagnose(ev, tier, technique, training.value(), heldOut.value()); !st) {
+                if (Status st = diagnose(ev, tier, technique, training.value(), heldOut.value(), views, o.variants); !st) {
                     std::cerr << "fit_ao: " << label << ": " << st.toString() << "\n";
                     return 1;
                 }

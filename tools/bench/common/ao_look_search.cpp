@@ -17,6 +17,9 @@ double LookParameter::fromUnit(double u) const {
 }
 
 std::vector<LookParameter> lookParametersOf(AoTechnique t) {
+    // Horizon estimates the visibility itself: its one look parameter is a power p on it (the
+    // contrast k, intensity staying 1), which leaves an open surface's 1 and a hidden one's 0 as they are.
+    if (t == AoTechnique::Horizon) return {{"power", &AoSettings::contrast, nullptr, 0.5, 4.0, true}};
     std::vector<LookParameter> p{{"intensity", &AoSettings::intensity, nullptr, 0.05, 20.0, true},
                                  {"contrast", &AoSettings::contrast, nullptr, 0.1, 10.0, true}};
     if (t == AoTechnique::Alchemy) p.push_back({"bias", &AoSettings::bias, nullptr, 1e-7, 0.3, true});
