@@ -173,20 +173,20 @@ Preset variant(const char* name, TierProfile p, AoTechnique technique, AoRes res
 // (tools/run_trade.sh) on llvmpipe; the figures of docs/trade.md.
 std::vector<Preset> currentPresets() {
     const TierProfile d = currentDefault();
-    return {{kDefaultPreset, d, {{28.95, 28.41, 27.14, 28.86}, 26.53}},
-            variant("low", d, AoTechnique::Scalable, AoRes::Half, 3, 2, {2, 2}, 1, 3, 8.0f, {{27.67, 27.37, 27.14, 26.72}, 22.80}),
-            variant("medium", d, AoTechnique::Alchemy, AoRes::Half, 6, 4, {2, 4}, 2, 5, 14.0f, {{28.95, 28.41, 27.14, 28.86}, 25.42}),
-            variant("high", d, AoTechnique::Horizon, AoRes::Half, 10, 6, {2, 8}, 3, 9, 24.0f, {{29.52, 29.28, 27.18, 30.83}, 27.85}),
-            variant("ultra", d, AoTechnique::Horizon, AoRes::Full, 16, 10, {2, 12}, 4, 13, 24.0f, {{29.99, 30.55, 26.35, 31.84}, 28.31})};
+    return {{kDefaultPreset, d, {{28.95, 28.41, 27.14, 30.55}, 26.53}},
+            variant("low", d, AoTechnique::Scalable, AoRes::Half, 3, 2, {2, 2}, 1, 3, 8.0f, {{27.67, 27.37, 27.14, 28.22}, 22.80}),
+            variant("medium", d, AoTechnique::Alchemy, AoRes::Half, 6, 4, {2, 4}, 2, 5, 14.0f, {{28.95, 28.41, 27.14, 30.55}, 25.42}),
+            variant("high", d, AoTechnique::Horizon, AoRes::Half, 10, 6, {2, 8}, 3, 9, 24.0f, {{29.52, 29.28, 27.18, 31.75}, 27.85}),
+            variant("ultra", d, AoTechnique::Horizon, AoRes::Full, 16, 10, {2, 12}, 4, 13, 24.0f, {{29.99, 30.55, 26.35, 32.25}, 28.31})};
 }
 
 std::vector<Preset> highPresets() {
     const TierProfile d = highDefault();
-    return {{kDefaultPreset, d, {{29.69, 29.95, 26.74, 30.16}, 27.76}},
-            variant("low", d, AoTechnique::Scalable, AoRes::Half, 4, 4, {2, 3}, 2, 5, 14.0f, {{28.26, 27.75, 26.66, 28.01}, 25.42}),
-            variant("medium", d, AoTechnique::Scalable, AoRes::Half, 8, 6, {2, 4}, 4, 7, 24.0f, {{29.56, 28.99, 26.70, 29.06}, 27.42}),
-            variant("high", d, AoTechnique::Horizon, AoRes::Half, 12, 9, {2, 8}, 6, 13, 24.0f, {{29.69, 29.95, 26.74, 30.83}, 28.31}),
-            variant("ultra", d, AoTechnique::Horizon, AoRes::Full, 24, 16, {2, 12}, 8, 17, 24.0f, {{30.02, 30.33, 26.45, 31.57}, 28.53})};
+    return {{kDefaultPreset, d, {{29.69, 29.95, 26.74, 31.59}, 27.76}},
+            variant("low", d, AoTechnique::Scalable, AoRes::Half, 4, 4, {2, 3}, 2, 5, 14.0f, {{28.26, 27.75, 26.66, 29.82}, 25.42}),
+            variant("medium", d, AoTechnique::Scalable, AoRes::Half, 8, 6, {2, 4}, 4, 7, 24.0f, {{29.56, 28.99, 26.70, 30.81}, 27.42}),
+            variant("high", d, AoTechnique::Horizon, AoRes::Half, 12, 9, {2, 8}, 6, 13, 24.0f, {{29.69, 29.95, 26.74, 31.78}, 28.31}),
+            variant("ultra", d, AoTechnique::Horizon, AoRes::Full, 24, 16, {2, 12}, 8, 17, 24.0f, {{30.02, 30.33, 26.45, 31.97}, 28.53})};
 }
 
 std::vector<TierRow> makeTable() {
