@@ -34,13 +34,18 @@ std::vector<Opened> openAll(Tier tier);
 void requireNoValidation(std::vector<Opened>& devices);
 
 // The worst absolute difference of two equally long outputs (each value finite: a REQUIRE),
-// where it is, and how many values differ by more than `bound`.
+// where it is, and how many values differ by more than `bound`; with a bound per value
+// (`bounds`, as long as the outputs, each above 0), also the worst difference / bound and
+// where it is.
 struct Worst {
     double value = 0;
     size_t at = 0;
     size_t beyond = 0;
+    double ratio = 0;
+    size_t ratioAt = 0;
 };
 Worst worstDifference(const std::vector<double>& a, const std::vector<double>& b, double bound);
+Worst worstDifference(const std::vector<double>& a, const std::vector<double>& b, const std::vector<double>& bounds);
 
 // Every pair of backends' outputs (one value per channel and pixel): the worst difference is
 // within `bound`; the measured worst is printed so the bound stays honest. With `tieFraction`
