@@ -13,6 +13,10 @@
 #   4. trade_presets - cost and accuracy of every tier preset (AO on the held-out families, motion
 #                      blur), XeGTAO's presets beside them, and the Pareto plots
 #                      (docs/trade_presets.csv, docs/images/pareto_*.svg, the preset table);
+#   4b. ao_front     - a grid of AO configurations per tier (technique, counts, blur, resolution)
+#                      scored on the held-out families and timed on every backend: the front the
+#                      presets are chosen from (docs/ao_front.csv, docs/images/ao_front_*.svg, the
+#                      front table of docs/trade.md; about 8 minutes);
 #   5. bench_families - every technique x tier x backend at its defaults per scene family, and the
 #                      peer on the same inputs against the same truth (docs/ao_families.md, .csv,
 #                      _cost.csv, docs/images/ao_family_*.png).
@@ -34,7 +38,7 @@
 # under $SFX_TRUTH_CACHE (default build/truth-cache): a second run only renders the effects.
 # The fitted looks are data of the tier table: fit_ao prints them, and adopting them is an edit of
 # tiers/src/tier_table.cpp (with the preset accuracies trade_presets prints), then a rerun; so are
-# the motion blur presets fit_mb's front gives.
+# the motion blur presets fit_mb's front gives, and the AO presets ao_front's front gives.
 # Usage: tools/run_trade.sh [--backends vulkan,gles] [--sweeps]
 # --sweeps adds the motion blur speed sweeps of step 6 (10-16 minutes on 2 cores, beyond the
 # rest's 20-minute budget); without it they are skipped, and the script says so.
@@ -55,9 +59,9 @@ start=$(date +%s)
 step() { echo "== [$(( $(date +%s) - start )) s] $*"; }
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
 
-step "configure and build bench_trade, fit_ao, trade_presets, bench_families, bench_mb_families, bench_mb_flicker, fit_mb"
+step "configure and build bench_trade, fit_ao, trade_presets, ao_front, bench_families, bench_mb_families, bench_mb_flicker, fit_mb"
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build "$BUILD_DIR" -j"$(nproc)" --target bench_trade fit_ao trade_presets bench_families bench_mb_families bench_mb_flicker fit_mb sfx_cli >/dev/null
+cmake --build "$BUILD_DIR" -j"$(nproc)" --target bench_trade fit_ao trade_presets bench_families bench_mb_families bench_mb_flicker fit_mb ao_front sfx_cli >/dev/null
 step "fit_ao: the looks, fitted on the training families, scored on the held-out ones"
 "$BUILD_DIR"/tools/bench/fit_ao --start tier --refinements 3 --cache-dir "$CACHE" --out-dir docs --backend "${BACKENDS%%,*}"
 step "bench_trade: the defaults against the truth, every backend"
@@ -69,6 +73,8 @@ step "XeGTAO (the peer, measured beside the project) on the same inputs"
 tools/run_xegtao.sh "$PEER_DIR"
 step "trade_presets: cost and accuracy of every preset and of the peer, Pareto plots"
 "$BUILD_DIR"/tools/bench/trade_presets --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS" --peer-dir "$PEER_DIR"
+step "ao_front: the AO front over technique x counts x blur x resolution, every backend"
+"$BUILD_DIR"/tools/bench/ao_front --runs 5 --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS"
 step "bench_families: the defaults and the peer against the truth, per scene family"
 "$BUILD_DIR"/tools/bench/bench_families --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS" --peer-dir "$PEER_DIR"
 step "bench_mb_families: motion blur on the held-out scene families"
@@ -88,4 +94,4 @@ step "bench_mb_flicker: motion blur's flicker over frame sequences of the scene 
 "$BUILD_DIR"/tools/bench/bench_mb_flicker --csv docs/mb_flicker.csv --backends "$BACKENDS"
 step "fit_mb: motion blur's front over taps x maximum radius at 720 rows"
 "$BUILD_DIR"/tools/bench/fit_mb --taps 3,5,7,9,11,13,15,17 --radii 8,10,12,14,18,24 --backend "${BACKENDS%%,*}" --csv docs/mb_fit.csv
-step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg, docs/mb_families.csv, docs/mb_raster_families.csv, docs/mb_sweep.csv, docs/mb_raster_sweep.csv, docs/images/mb_*px.png, docs/mb_flicker.csv, docs/mb_fit.csv, docs/ao_families.*"
+step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg, docs/ao_front.csv, docs/images/ao_front_*.svg, docs/mb_families.csv, docs/mb_raster_families.csv, docs/mb_sweep.csv, docs/mb_raster_sweep.csv, docs/images/mb_*px.png, docs/mb_flicker.csv, docs/mb_fit.csv, docs/ao_families.*"
