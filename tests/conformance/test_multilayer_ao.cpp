@@ -128,6 +128,14 @@ TEST_CASE("multilayer ao: bad layer counts, resolutions and layer textures are n
     REQUIRE_FALSE(half.isOk());
     CHECK(half.status().message().find("AoSettings.resolution") != std::string::npos);
     s.resolution = AoResolution::Tier;  // resolves to full size with layers
+    // Horizon reads the first layer only; where it is the profile's technique (the high tier's
+    // default) and none is named, the error says to name one.
+    if (profile.aoTechnique == AoTechnique::Horizon) {
+        auto horizon = AmbientObscurance::create(dev, {64, 32, profile, s, DepthKind::Linear});
+        REQUIRE_FALSE(horizon.isOk());
+        CHECK(horizon.status().message().find("set AoSettings.technique to Alchemy, Scalable or Crease") != std::string::npos);
+    }
+    s.technique = AoTechnique::Scalable;
     auto ao = AmbientObscurance::create(dev, {64, 32, profile, s, DepthKind::Linear});
     REQUIRE(ao.isOk());
     CHECK_FALSE(ao.value()->config().halfResolution);

@@ -69,9 +69,9 @@ TEST_CASE("tier table: a row per tier, in order, each with its default preset fi
 TEST_CASE("tier table: each preset names its AO technique, and no two presets of a tier are alike", "[tiers][ao]") {
     for (Tier tier : {Tier::Current, Tier::High}) {
         const std::vector<Preset>& presets = tiers::row(tier).presets;
-        // The default runs Scalable, the front's best at the tier's default time; the presets
-        // above it buy horizon's accuracy (docs/trade.md).
-        CHECK(presets.front().params.aoTechnique == AoTechnique::Scalable);
+        // The default runs the front's best at the tier's default cost: Scalable on the current
+        // tier, horizon on the high tier; the presets above it buy horizon's accuracy (docs/trade.md).
+        CHECK(presets.front().params.aoTechnique == (tier == Tier::High ? AoTechnique::Horizon : AoTechnique::Scalable));
         for (const char* name : {"high", "ultra"}) CHECK(tiers::preset(tier, name)->aoTechnique == AoTechnique::Horizon);
         for (const Preset& p : presets) {
             INFO(toString(tier) << "/" << p.name);
@@ -91,7 +91,8 @@ TEST_CASE("tier table: each preset names its AO technique, and no two presets of
                 const TierProfile &a = presets[i].params, &b = presets[j].params;
                 INFO(presets[i].name << " vs " << presets[j].name);
                 CHECK((a.aoTechnique != b.aoTechnique || a.aoAlchemySamples != b.aoAlchemySamples || a.aoScalableTaps != b.aoScalableTaps ||
-                       a.aoHorizonSteps != b.aoHorizonSteps || a.aoHalfResolution != b.aoHalfResolution));
+                       a.aoHorizonSlices != b.aoHorizonSlices || a.aoHorizonSteps != b.aoHorizonSteps || a.aoBlurRadiusPx != b.aoBlurRadiusPx ||
+                       a.aoHalfResolution != b.aoHalfResolution));
             }
     }
     TierProfile bad = tiers::profile(Tier::High);

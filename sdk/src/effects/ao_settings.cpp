@@ -130,7 +130,10 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
         return invalidArgument("AoSettings.resolution", "Half with depthLayers " + std::to_string(s.depthLayers),
                                "Full or Tier (multilayer AO runs at full resolution: the layers are full size)");
     if (s.depthLayers > 1 && technique == AoTechnique::Horizon)
-        return invalidArgument("AoSettings.depthLayers", std::to_string(s.depthLayers), "1 for Horizon (its horizons read the first visible layer)");
+        return invalidArgument("AoSettings.depthLayers", std::to_string(s.depthLayers),
+                               s.technique ? "1 for Horizon (its horizons read the first visible layer)"
+                                           : "1 for Horizon, the profile's technique when AoSettings.technique is unset (its horizons read the "
+                                             "first visible layer); for multilayer AO set AoSettings.technique to Alchemy, Scalable or Crease");
     if (s.bentNormals && technique != AoTechnique::Horizon)
         return invalidArgument("AoSettings.bentNormals", std::string("true with technique ") + toString(technique),
                                "false, or true with technique horizon (the bent normals come from its horizons)");
