@@ -16,17 +16,17 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <cmath>
 #include <map>
 #include <sstream>
 
 #include "ao_scoring.hpp"
-#include "markdown_section.hpp"
 #include "bench_device.hpp"
 #include "copy_pass.hpp"
+#include "markdown_section.hpp"
 #include "scene_families.hpp"
 #include "sfx/tiers.hpp"
 #include "svg_plot.hpp"
@@ -51,13 +51,15 @@ struct Options {
 struct Config {
     AoTechnique technique = AoTechnique::Scalable;
     bool half = true;
-    uint32_t count = 0;                      // Alchemy samples or Scalable taps; crease: the tier's
+    uint32_t count = 0;                        // Alchemy samples or Scalable taps; crease: the tier's
     uint32_t slices = 0, steps = 0, blur = 0;  // horizon's counts; blur half-width, output pixels
     std::string counts() const {
         if (technique == AoTechnique::Horizon) return std::to_string(slices) + "x" + std::to_string(steps);
         return std::to_string(count);
     }
-    std::string name() const { return std::string(toString(technique)) + " " + counts() + " blur " + std::to_string(blur) + (half ? " half" : " full"); }
+    std::string name() const {
+        return std::string(toString(technique)) + " " + counts() + " blur " + std::to_string(blur) + (half ? " half" : " full");
+    }
     TierProfile apply(TierProfile p) const {
         p.aoTechnique = technique;
         p.aoHalfResolution = half;
@@ -94,8 +96,8 @@ std::vector<Config> grid(const TierProfile& d, const std::vector<std::string>& t
     if (wanted(AoTechnique::Crease))
         for (uint32_t b : blurs) out.push_back({AoTechnique::Crease, true, d.aoCreaseTaps, 0, 0, b});
     if (wanted(AoTechnique::Horizon)) {
-        const std::pair<uint32_t, uint32_t> counts[] = {{1, 2}, {1, 3}, {1, 4}, {1, 6}, {2, 2}, {2, 3}, {2, 4},
-                                                        {2, 6}, {2, 8}, {3, 4}, {3, 6}, {3, 8}, {2, 12}, {4, 6}, {4, 8}, {3, 12}};
+        const std::pair<uint32_t, uint32_t> counts[] = {{1, 2}, {1, 3}, {1, 4}, {1, 6}, {2, 2},  {2, 3}, {2, 4}, {2, 6},
+                                                        {2, 8}, {3, 4}, {3, 6}, {3, 8}, {2, 12}, {4, 6}, {4, 8}, {3, 12}};
         for (auto [slices, steps] : counts) {
             for (uint32_t b : blurs) out.push_back({AoTechnique::Horizon, true, 0, slices, steps, b});
             if (slices * steps >= 8) out.push_back({AoTechnique::Horizon, false, 0, slices, steps, fullBlur});
@@ -134,9 +136,9 @@ struct Cost {
 struct Row {
     Tier tier;
     Config config;
-    tools::AoScore training, score;  // score: on the held-out families
+    tools::AoScore training, score;                  // score: on the held-out families
     std::map<std::string, tools::AoScore> families;  // each held-out family's
-    std::map<std::string, Cost> cost;  // by backend: the fastest round
+    std::map<std::string, Cost> cost;                // by backend: the fastest round
     std::map<std::string, std::vector<Cost>> rounds;
 };
 
@@ -181,29 +183,31 @@ Status timeRows(Device& dev, const std::string& backend, Tier tier, const Option
     // (a 4-tap Scalable pass: 13.9 ms in one round, 19.3 and 18.5 in the next two), and the slow
     // level is the machine's state, not the configuration's cost.
     for (uint32_t round = 0; round < o.rounds && status; ++round)
-    for (Row& r : rows) {
-        if (r.tier != tier) continue;
-        AoSettings s;
-        s.technique = r.config.technique;
-        s.normals = AoNormals::FromTexture;
-        Result<std::unique_ptr<AmbientObscurance>> ao =
-            AmbientObscurance::create(dev, {o.costWidth, o.costHeight, r.config.apply(d), s, in.value()->depthKind()});
-        if (!ao) {
-            status = ao.status();
-            break;
+        for (Row& r : rows) {
+            if (r.tier != tier) continue;
+            AoSettings s;
+            s.technique = r.config.technique;
+            s.normals = AoNormals::FromTexture;
+            Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(
+                dev, {o.costWidth, o.costHeight, r.config.apply(d), s, in.value()->depthKind()});
+            if (!ao) {
+                status = ao.status();
+                break;
+            }
+            const AoInputs inputs{DepthSource{in.value()->depth(), in.value()->depthKind(), in.value()->camera()}, in.value()->normals(),
+                                  out.value()};
+            Result<tools::CopyPass::Interleaved> t = copy.value()->timeAgainst(o.runs, [&] { return ao.value()->dispatch(inputs); });
+            if (!t) {
+                status = t.status();
+                break;
+            }
+            std::vector<Cost>& measured = r.rounds[backend];
+            measured.push_back({t->effectMs, t->ratio});
+            r.cost[backend] = *std::min_element(measured.begin(), measured.end(), [](const Cost& a, const Cost& b) { return a.ms < b.ms; });
+            progress(backend + "/" + toString(tier) + " round " + std::to_string(round + 1) + " " + r.config.name() + ": " + fixed(t->effectMs, 2) +
+                     " ms = " + fixed(t->ratio, 1) + " copy passes, PSNR " + fixed(r.training.psnr, 2) + " dB training, " + fixed(r.score.psnr, 2) +
+                     " dB held out");
         }
-        const AoInputs inputs{DepthSource{in.value()->depth(), in.value()->depthKind(), in.value()->camera()}, in.value()->normals(), out.value()};
-        Result<tools::CopyPass::Interleaved> t = copy.value()->timeAgainst(o.runs, [&] { return ao.value()->dispatch(inputs); });
-        if (!t) {
-            status = t.status();
-            break;
-        }
-        std::vector<Cost>& measured = r.rounds[backend];
-        measured.push_back({t->effectMs, t->ratio});
-        r.cost[backend] = *std::min_element(measured.begin(), measured.end(), [](const Cost& a, const Cost& b) { return a.ms < b.ms; });
-        progress(backend + "/" + toString(tier) + " round " + std::to_string(round + 1) + " " + r.config.name() + ": " + fixed(t->effectMs, 2) + " ms = " + fixed(t->ratio, 1) +
-                 " copy passes, PSNR " + fixed(r.training.psnr, 2) + " dB training, " + fixed(r.score.psnr, 2) + " dB held out");
-    }
     (void)dev.destroyTexture(out.value());
     return status;
 }
@@ -276,12 +280,12 @@ std::string markdown(const Options& o, const std::vector<Row>& rows, const std::
        << " configurations (technique; samples, taps or horizon's slices x steps; blur half-width in output pixels; half or full "
           "resolution), each scored against the ray-traced truth (320x180, each view at its own radius) on the training scene families, "
           "which the front reads, and on the held-out families beside them, and timed at "
-       << o.costWidth << "x" << o.costHeight << " (median of " << o.runs
-       << " HAL-timed runs interleaved with copies, in each of " << o.rounds
+       << o.costWidth << "x" << o.costHeight << " (median of " << o.runs << " HAL-timed runs interleaved with copies, in each of " << o.rounds
        << " passes over the grid; a cost is its fastest pass, as a CPU rasteriser's times switch between two levels for seconds at a "
           "time). `mean ms` is the geometric mean of the backends' medians, the cost a preset, which "
           "every backend runs, is chosen on. The table lists each tier's front on it (nothing at least as accurate on the training "
-          "families for 10% less time or more: costs closer than that are not told apart here) and every preset's point; the plots draw training PSNR against each backend's milliseconds; `ao_front.csv` has the "
+          "families for 10% less time or more: costs closer than that are not told apart here) and every preset's point; the plots draw training "
+          "PSNR against each backend's milliseconds; `ao_front.csv` has the "
           "whole grid.\n\n";
     for (const std::string& b : o.backends)
         for (Tier tier : {Tier::High, Tier::Current})
@@ -303,9 +307,8 @@ std::string markdown(const Options& o, const std::vector<Row>& rows, const std::
                << (r.config.half ? "half" : "full") << " |";
             for (const std::string& b : o.backends) md << " " << (r.cost.count(b) ? fixed(r.cost.at(b).ms, 2) : "-") << " |";
             md << " " << fixed(meanMs(r), 2) << " | " << fixed(r.training.psnr, 2) << " | " << fixed(r.training.signedOccluded, 3) << " | "
-               << fixed(r.score.psnr, 2) << " | " << fixed(r.score.psnrOccluded, 2) << " | "
-               << fixed(r.score.signedOccluded, 3) << " | " << (onFront ? "yes" : "no") << " | " << (presets.empty() ? "" : "**" + presets + "**")
-               << " |\n";
+               << fixed(r.score.psnr, 2) << " | " << fixed(r.score.psnrOccluded, 2) << " | " << fixed(r.score.signedOccluded, 3) << " | "
+               << (onFront ? "yes" : "no") << " | " << (presets.empty() ? "" : "**" + presets + "**") << " |\n";
         }
     }
     return md.str();
@@ -324,7 +327,8 @@ Status writePlots(const Options& o, const std::vector<Row>& rows, const std::map
                 const Row& r = rows[i];
                 if (r.tier != tier || !r.cost.count(backend)) continue;
                 // Only the front's points are named: the grid has some seventy per plot.
-                const std::string label = front.at(backend)[i] ? r.config.counts() + "/" + std::to_string(r.config.blur) + (r.config.half ? "" : "F") : "";
+                const std::string label = front.at(backend)[i] ? r.config.counts() + "/" + std::to_string(r.config.blur) + (r.config.half ? "" : "F")
+                                                               : "";
                 plot.points.push_back({r.cost.at(backend).ms, r.training.psnr, label, toString(r.config.technique)});
             }
             if (plot.points.empty()) continue;
@@ -344,7 +348,9 @@ int main(int argc, char** argv) {
     app.add_option("--cost-width", o.costWidth, "pixels of the timed runs")->capture_default_str();
     app.add_option("--cost-height", o.costHeight, "pixels of the timed runs")->capture_default_str();
     app.add_option("--runs", o.runs, "timed runs per configuration and round (median)")->capture_default_str();
-    app.add_option("--rounds", o.rounds, "passes over the grid per backend; a cost is its fastest round")->capture_default_str()->check(CLI::Range(1u, 15u));
+    app.add_option("--rounds", o.rounds, "passes over the grid per backend; a cost is its fastest round")
+        ->capture_default_str()
+        ->check(CLI::Range(1u, 15u));
     app.add_option("--cache-dir", o.truth.cacheDir, "where truth images are cached")->capture_default_str();
     app.add_option("--out-dir", o.outDir, "ao_front.csv and images/ao_front_*.svg")->capture_default_str();
     CLI11_PARSE(app, argc, argv);
@@ -371,7 +377,8 @@ int main(int argc, char** argv) {
     std::vector<tools::TradeView> views = trainingViews;
     views.insert(views.end(), heldOutViews.begin(), heldOutViews.end());
     Result<std::vector<tools::AoCase>> training = tools::loadCases(views, 0, trainingViews.size(), {}, o.truth, progress);
-    Result<std::vector<tools::AoCase>> cases = training ? tools::loadCases(views, trainingViews.size(), views.size(), {}, o.truth, progress) : training;
+    Result<std::vector<tools::AoCase>> cases = training ? tools::loadCases(views, trainingViews.size(), views.size(), {}, o.truth, progress)
+                                                        : training;
     if (!cases) {
         std::cerr << "ao_front: " << cases.status().toString() << "\n";
         return 1;
@@ -415,8 +422,7 @@ int main(int argc, char** argv) {
         const Row& r = rows[i];
         csv << toString(r.tier) << "," << toString(r.config.technique) << "," << r.config.counts() << "," << r.config.blur << ","
             << (r.config.half ? "half" : "full") << "," << fixed(r.training.psnr, 3) << "," << fixed(r.training.psnrOccluded, 3) << ","
-            << fixed(r.training.signedOccluded, 4) << ","
-            << fixed(r.score.psnr, 3) << "," << fixed(r.score.psnrOccluded, 3) << ","
+            << fixed(r.training.signedOccluded, 4) << "," << fixed(r.score.psnr, 3) << "," << fixed(r.score.psnrOccluded, 3) << ","
             << fixed(r.score.signedOccluded, 4) << "," << fixed(r.score.worstPsnr, 3);
         csv << "," << familyPsnrs(r.families);
         for (const std::string& b : o.backends) {
