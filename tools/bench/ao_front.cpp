@@ -19,8 +19,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "ao_scoring.hpp"
@@ -72,6 +74,10 @@ struct Config {
     }
 };
 
+bool wanted(const std::vector<std::string>& techniques, AoTechnique t) {
+    return std::find(techniques.begin(), techniques.end(), toString(t)) != techniques.end();
+}
+
 // The grid: every technique at counts from its cheapest useful to beyond the tier's ultra preset,
 // at half resolution with three blur widths and at full resolution with the widest.
 std::vector<Config> grid(const TierProfile& d, const std::vector<std::string>& techniques) {
@@ -80,22 +86,21 @@ std::vector<Config> grid(const TierProfile& d, const std::vector<std::string>& t
     // are the same pass and only 2 is measured.
     const std::vector<uint32_t> blurs = high ? std::vector<uint32_t>{2, 4, 6} : std::vector<uint32_t>{2, 4};
     const uint32_t fullBlur = high ? 8 : 4;
-    auto wanted = [&](AoTechnique t) { return std::find(techniques.begin(), techniques.end(), toString(t)) != techniques.end(); };
     std::vector<Config> out;
-    if (wanted(AoTechnique::Alchemy))
+    if (wanted(techniques, AoTechnique::Alchemy))
         for (uint32_t n : {3u, 4u, 6u, 8u, 12u, 16u}) {
             for (uint32_t b : blurs) out.push_back({AoTechnique::Alchemy, true, n, 0, 0, b});
             if (n >= 8) out.push_back({AoTechnique::Alchemy, false, n, 0, 0, fullBlur});
         }
-    if (wanted(AoTechnique::Scalable))
+    if (wanted(techniques, AoTechnique::Scalable))
         // Mirrored taps come in pairs (the current tier's).
         for (uint32_t n : d.aoScalableMirrored ? std::vector<uint32_t>{2, 4, 6, 8, 12, 16} : std::vector<uint32_t>{2, 4, 6, 9, 12, 16}) {
             for (uint32_t b : blurs) out.push_back({AoTechnique::Scalable, true, n, 0, 0, b});
             if (n >= 6) out.push_back({AoTechnique::Scalable, false, n, 0, 0, fullBlur});
         }
-    if (wanted(AoTechnique::Crease))
+    if (wanted(techniques, AoTechnique::Crease))
         for (uint32_t b : blurs) out.push_back({AoTechnique::Crease, true, d.aoCreaseTaps, 0, 0, b});
-    if (wanted(AoTechnique::Horizon)) {
+    if (wanted(techniques, AoTechnique::Horizon)) {
         const std::pair<uint32_t, uint32_t> counts[] = {{1, 2}, {1, 3}, {1, 4}, {1, 6}, {2, 2},  {2, 3}, {2, 4}, {2, 6},
                                                         {2, 8}, {3, 4}, {3, 6}, {3, 8}, {2, 12}, {4, 6}, {4, 8}, {3, 12}};
         for (auto [slices, steps] : counts) {
@@ -123,7 +128,7 @@ std::vector<Config> configsOf(Tier tier, const std::vector<std::string>& techniq
     std::vector<Config> out = grid(tiers::profile(tier), techniques);
     for (const Preset& preset : tiers::row(tier).presets) {
         const Config c = presetConfig(preset.params);
-        if (std::find(techniques.begin(), techniques.end(), toString(c.technique)) == techniques.end()) continue;
+        if (!wanted(techniques, c.technique)) continue;
         if (std::none_of(out.begin(), out.end(), [&](const Config& g) { return sameConfig(g, c); })) out.push_back(c);
     }
     return out;
@@ -227,44 +232,47 @@ std::vector<size_t> measuredFront(const std::vector<tools::PlotPoint>& points) {
     return out;
 }
 
-// Per backend and tier: whether each row is on the front of (milliseconds, training PSNR).
-std::map<std::string, std::vector<bool>> fronts(const Options& o, const std::vector<Row>& rows) {
-    std::map<std::string, std::vector<bool>> out;
-    for (const std::string& backend : o.backends)
-        for (Tier tier : {Tier::High, Tier::Current}) {
-            std::vector<tools::PlotPoint> points;
-            std::vector<size_t> index;
-            for (size_t i = 0; i < rows.size(); ++i)
-                if (rows[i].tier == tier && rows[i].cost.count(backend)) {
-                    points.push_back({rows[i].cost.at(backend).ms, rows[i].training.psnr, "", ""});
-                    index.push_back(i);
-                }
-            std::vector<bool>& on = out[backend];
-            on.resize(rows.size(), false);
-            for (size_t k : measuredFront(points)) on[index[k]] = true;
+// The tier's rows on the front of (cost, training PSNR), `cost` giving a row's cost where it has
+// one (nullopt: not timed there).
+std::vector<size_t> frontOf(const std::vector<Row>& rows, Tier tier, const std::function<std::optional<double>(const Row&)>& cost) {
+    std::vector<tools::PlotPoint> points;
+    std::vector<size_t> index;
+    for (size_t i = 0; i < rows.size(); ++i)
+        if (const std::optional<double> c = rows[i].tier == tier ? cost(rows[i]) : std::nullopt) {
+            points.push_back({*c, rows[i].training.psnr, "", ""});
+            index.push_back(i);
         }
+    std::vector<size_t> out;
+    for (size_t k : measuredFront(points)) out.push_back(index[k]);
     return out;
 }
 
-// The cost a backend-independent choice is made on: the geometric mean of the backends' medians.
+// Per backend: whether each row is on its tier's front of (that backend's milliseconds, training PSNR).
+std::map<std::string, std::vector<bool>> fronts(const Options& o, const std::vector<Row>& rows) {
+    std::map<std::string, std::vector<bool>> out;
+    for (const std::string& backend : o.backends) {
+        std::vector<bool>& on = out[backend];
+        on.resize(rows.size(), false);
+        for (Tier tier : {Tier::High, Tier::Current})
+            for (size_t i : frontOf(rows, tier, [&](const Row& r) -> std::optional<double> {
+                     const auto c = r.cost.find(backend);
+                     return c == r.cost.end() ? std::nullopt : std::optional<double>(c->second.ms);
+                 }))
+                on[i] = true;
+    }
+    return out;
+}
+
+// The cost a backend-independent choice is made on: the geometric mean of the backends' costs.
 double meanMs(const Row& r) {
     double logSum = 0;
     for (const auto& [backend, cost] : r.cost) logSum += std::log(cost.ms);
     return r.cost.empty() ? 0 : std::exp(logSum / double(r.cost.size()));
 }
 
-// The tier's rows on the front of (meanMs, training PSNR), by increasing cost.
+// The tier's rows on the front of (meanMs, training PSNR).
 std::vector<size_t> meanFront(const std::vector<Row>& rows, Tier tier) {
-    std::vector<tools::PlotPoint> points;
-    std::vector<size_t> index;
-    for (size_t i = 0; i < rows.size(); ++i)
-        if (rows[i].tier == tier && !rows[i].cost.empty()) {
-            points.push_back({meanMs(rows[i]), rows[i].training.psnr, "", ""});
-            index.push_back(i);
-        }
-    std::vector<size_t> out;
-    for (size_t k : measuredFront(points)) out.push_back(index[k]);
-    return out;
+    return frontOf(rows, tier, [](const Row& r) { return r.cost.empty() ? std::nullopt : std::optional<double>(meanMs(r)); });
 }
 
 std::string presetsAt(Tier tier, const Config& c) {
