@@ -36,15 +36,16 @@ void main() {
     float speedC = length(vC);
     float speedN = length(vN);
     float jitter = mbJitter(p.x, p.y, kJitterSize);
-    int pairs = mbActivePairs(speedN, kPairs);
+    int pairs = mbActivePairs(mbTexelSteps(vN), kPairs);
 
     vec4 sum = vec4(0.0);
     float total = 0.0;
     float window = 0.0;
     [[unroll]] for (int i = 0; i < kPairs; ++i) {
         if (i >= pairs) break;
-        vec2 v = mbPairUsesCentre(i, speedC, speedN) ? vC : vN;
-        float speedV = length(v);
+        bool followsCentre = mbPairUsesCentre(i, speedC, speedN);
+        vec2 v = followsCentre ? vC : vN;
+        float speedV = followsCentre ? speedC : speedN;
         [[unroll]] for (int s = 0; s < 2; ++s) {
             vec2 off = roundAway(mbSampleT(i, pairs, jitter, s == 0 ? 1.0 : -1.0, speedV) * v);
             // Clamped to the image: a sample never leaves it, however large the velocity.

@@ -119,8 +119,9 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
             const double speedN = std::sqrt(length2(vN));
             const bool table = candidate.ditherPairs || candidate.jitterAlways;
             const double jitter = mbJitter(x, y, table ? 4 : int(p.jitterSize));
-            const int pairs = candidate.ditherPairs ? std::clamp(int(std::floor(speedN + 0.5 + jitter)), 1, int(p.pairs))
-                                                    : mbActivePairs(speedN, int(p.pairs));
+            const double stepsN = shared::mbTexelSteps(glm::dvec2(vN[0], vN[1]));
+            const int pairs = candidate.ditherPairs ? std::clamp(int(std::floor(stepsN + 0.5 + jitter)), 1, int(p.pairs))
+                                                    : mbActivePairs(stepsN, int(p.pairs));
             std::array<double, 4> sum{}, hiddenSum{};
             double total = 0, window = 0, hiddenWeight = 0, hiddenNear = 0;
             for (int i = 0; i < pairs; ++i) {
