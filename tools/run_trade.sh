@@ -14,9 +14,10 @@
 #                      blur), XeGTAO's presets beside them, and the Pareto plots
 #                      (docs/trade_presets.csv, docs/images/pareto_*.svg, the preset table);
 #   4b. ao_front     - a grid of AO configurations per tier (technique, counts, blur, resolution)
-#                      scored on the held-out families and timed on every backend: the front the
-#                      presets are chosen from (docs/ao_front.csv, docs/images/ao_front_*.svg, the
-#                      front table of docs/trade.md; about 8 minutes);
+#                      scored on the training families (the front) and the held-out ones (beside)
+#                      and timed on every backend: the front the presets are chosen from
+#                      (docs/ao_front.csv, docs/images/ao_front_*.svg, the front table of
+#                      docs/trade.md; about 6 minutes);
 #   5. bench_families - every technique x tier x backend at its defaults per scene family, and the
 #                      peer on the same inputs against the same truth (docs/ao_families.md, .csv,
 #                      _cost.csv, docs/images/ao_family_*.png).

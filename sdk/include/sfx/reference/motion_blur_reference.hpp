@@ -62,9 +62,9 @@ struct MotionBlurCandidate {
     // average of those samples weighted by distance^-hiddenNearExponent (nearer samples likelier
     // to look like it); the weights, and so the background's share, are unchanged.
     double hiddenNearExponent = 0;
-    // Per-pixel dither of the pair count: round(|v_N| + j) pairs instead of round(|v_N|), j the
-    // 4 x 4 table's offset (mbJitter size 4), so a fractional length uses the pair counts either
-    // side of it in proportion.
+    // Per-pixel dither of the pair count: round(s + j) pairs instead of round(s), s the texel
+    // steps of v_N (mbTexelSteps) and j the 4 x 4 table's offset (mbJitter size 4), so a
+    // fractional count uses the pair counts either side of it in proportion.
     bool ditherPairs = false;
     // Jitter the sample positions at full share (s = 1) even where the pairs read every texel,
     // with the 4 x 4 table's offsets.
