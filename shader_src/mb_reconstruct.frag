@@ -46,6 +46,8 @@ void main() {
         bool followsCentre = mbPairUsesCentre(i, speedC, speedN);
         vec2 v = followsCentre ? vC : vN;
         float speedV = followsCentre ? speedC : speedN;
+        float stretch = mbSampleStretch(speedV, pairs);
+        float windowRamp = mbRampWidth(speedV, stretch, params.radius);
         [[unroll]] for (int s = 0; s < 2; ++s) {
             vec2 off = roundAway(mbSampleT(i, pairs, jitter, s == 0 ? 1.0 : -1.0, speedV) * v);
             // Clamped to the image: a sample never leaves it, however large the velocity.
@@ -54,8 +56,8 @@ void main() {
             vec4 packedS = sfxTexel(uPacked, q, 0);
             float speedS = length(packedS.xy);
             float zS = packedS.z + packedS.w;
-            float w = mbSampleWeight(zC, zS, speedC, speedS, dist, params.softExtent);
-            window += mbSpread(dist, speedV);
+            float w = mbSampleWeight(zC, zS, speedC, speedS, dist, params.softExtent, stretch, params.radius);
+            window += mbSpread(dist, speedV, windowRamp);
             vec4 colorS = sfxTexel(uColor, q, 0);
             if (!sfxColorIsFinite(colorS)) continue;  // a non-finite sample is left out (sfx_shared.h)
             sum += sfxColor(colorS) * w;

@@ -200,18 +200,39 @@ SFX_MB_FN bool mbPairUsesCentre(int i, SFX_MB_REAL centreSpeed, SFX_MB_REAL neig
 SFX_MB_FN SFX_MB_REAL mbBackgroundShare(SFX_MB_REAL zC, SFX_MB_REAL zS, SFX_MB_REAL extent) {
     return clamp(0.5 + (zS - zC) / extent, 0.0, 1.0);
 }
-// Spread: whether a point moving at `speed` (blur radius) reaches `dist` pixels away, with a
-// 1 px linear ramp centred on speed == dist. Offsets are whole texels and a texel's centre
+// Spread: how much of the stretch of blur a sample stands for lies within the reach of a point
+// moving at `speed` (blur radius): a linear ramp centred on speed == dist, `width` pixels wide.
+// With samples a texel apart the width is 1 px: offsets are whole texels and a texel's centre
 // reaches the next texel's centre half a pixel before the edge between them does, so the ramp
 // is centred there; it also keeps the weight continuous in the last bit of the fp16 velocity.
-SFX_MB_FN SFX_MB_REAL mbSpread(SFX_MB_REAL dist, SFX_MB_REAL speed) { return clamp(speed - dist + 0.5, 0.0, 1.0); }
+// With samples farther apart each stands for that much of the blur (mbSampleStretch), and the
+// ramp is as wide: a sample just inside the reach of an object's end weighs the part of its
+// stretch the object covers, not a whole sample (a 1 px ramp gave a thin post 15 px away, whose
+// blur reaches 15.5 px, a full twelfth of the pixel where it covers 2 % of the shutter).
+SFX_MB_FN SFX_MB_REAL mbSpread(SFX_MB_REAL dist, SFX_MB_REAL speed, SFX_MB_REAL width) { return clamp((speed - dist) / width + 0.5, 0.0, 1.0); }
+
+// The stretch of blur each sample of a pair along a velocity of length `speed` stands for: the
+// distance between samples, at least a texel.
+SFX_MB_FN SFX_MB_REAL mbSampleStretch(SFX_MB_REAL speed, int pairs) { return max(speed / SFX_MB_REAL(pairs), 1.0); }
+
+// The ramp width for a point moving at `speed` under a blur radius `radius`: the samples'
+// stretch, narrowing to a texel over the last pixel below the radius. A point at the radius was
+// clamped there (mbClampVelocity) and its true blur reaches farther, so its reach ends no
+// earlier than the window's end; measured, the stretch-wide ramp there took 0.1-0.2 dB from
+// blurs past the radius. Linear in the speed, so the weight has no step a float and a double
+// could fall either side of.
+SFX_MB_FN SFX_MB_REAL mbRampWidth(SFX_MB_REAL speed, SFX_MB_REAL stretch, SFX_MB_REAL radius) {
+    return stretch + (1.0 - stretch) * clamp(speed - radius + 1.0, 0.0, 1.0);
+}
 
 // Weight of sample S at distance `dist` from centre C, at most 1: as background (behind C) it
 // shows where C's own blur reaches; as foreground (in front of C) where its own blur reaches.
+// `stretch` is the pair's (mbSampleStretch), `radius` the blur radius k.
 SFX_MB_FN SFX_MB_REAL mbSampleWeight(SFX_MB_REAL zC, SFX_MB_REAL zS, SFX_MB_REAL speedC, SFX_MB_REAL speedS, SFX_MB_REAL dist,
-                                     SFX_MB_REAL softExtent) {
+                                     SFX_MB_REAL softExtent, SFX_MB_REAL stretch, SFX_MB_REAL radius) {
     SFX_MB_REAL background = mbBackgroundShare(zC, zS, softExtent);
-    return background * mbSpread(dist, speedC) + (1.0 - background) * mbSpread(dist, speedS);
+    return background * mbSpread(dist, speedC, mbRampWidth(speedC, stretch, radius)) +
+           (1.0 - background) * mbSpread(dist, speedS, mbRampWidth(speedS, stretch, radius));
 }
 
 // The centre's weight: what the samples leave of the blur window they stand for (never
@@ -219,7 +240,7 @@ SFX_MB_FN SFX_MB_REAL mbSampleWeight(SFX_MB_REAL zC, SFX_MB_REAL zS, SFX_MB_REAL
 // more of the pixel's own colour). Output = (sum of w * colour + this * centre colour) /
 // (sum of w + this). The window is what the samples would weigh in an area moving uniformly
 // with the velocities they follow (`windowWeights`: the sum of mbSpread at each sample's
-// distance and followed speed) plus one sample's worth for the centre (with samples a texel
+// distance and followed speed, with the same ramp) plus one sample's worth for the centre (with samples a texel
 // apart its own texel; with samples skipping texels, its share of the gaps, as each sample's).
 // So a uniformly moving area gets the box filter over its blur length at any length: a window
 // of 2 * pairs, as the 2012 course normalises, is right only when |v| is a whole number of
@@ -236,7 +257,7 @@ SFX_MB_FN int mbNeighborReachTiles(int radius, int tile) { return (radius + tile
 // (pixels) can carry its blur into the centre tile (after Guertin et al.): a tile in
 // line with it along a side needs motion along that axis, one off both axes motion along the
 // diagonal toward it; a tile beyond the adjacent ones also needs a radius that crosses the
-// pixels between the two tiles (Chebyshev; the 0.5 px of mbSpread's ramp). Keeps the dominant
+// pixels between the two tiles (Chebyshev; the 0.5 px of a texel-wide mbSpread ramp). Keeps the dominant
 // velocity from being one that never reaches the pixels.
 SFX_MB_FN bool mbNeighborReaches(int dx, int dy, SFX_MB_VEC2 v, int tile) {
     if (dx == 0 && dy == 0) return true;
@@ -276,7 +297,8 @@ SFX_BLOCK_END(params)
 SFX_BLOCK(MbReconstructParams, 3)
     SFX_M_FLOAT(softExtent)    // soft depth comparison extent, scene units
     SFX_M_FLOAT(centreWeight)  // MotionBlurSettings.centreWeight
-    SFX_M_FLOAT(pad0) SFX_M_FLOAT(pad1)
+    SFX_M_FLOAT(radius)        // k: the blur radius in pixels (mbRampWidth)
+    SFX_M_FLOAT(pad1)
     SFX_M_INT(tileSize)        // N: pixel -> tile of the neighbour-max texture
     SFX_M_INT(pad2) SFX_M_INT(pad3) SFX_M_INT(pad4)  // pairs, jitter: constants above
 SFX_BLOCK_END(params)

@@ -315,6 +315,7 @@ Status MotionBlur::recordPasses(const MotionBlurInputs& in, const MotionBlurPara
     ReconstructParams rec{};
     rec.softExtent = float(p.softDepthExtent);
     rec.centreWeight = float(p.centreWeight);
+    rec.radius = float(p.radiusPx);
     rec.tileSize = int32_t(p.tileSizePx);
     SFX_TRY(uniforms_->write(device_, reconstructParams_, rec));
 
