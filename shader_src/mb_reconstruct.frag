@@ -37,6 +37,9 @@ void main() {
     float speedN = length(vN);
     float jitter = mbJitter(p.x, p.y, kJitterSize);
     int pairs = mbActivePairs(mbTexelSteps(vN), kPairs);
+    // A pair follows v_C or v_N, so its ramp is one of two, computed once.
+    float inverseWidthC = mbInverseRampWidth(speedC, pairs, params.radius);
+    float inverseWidthN = mbInverseRampWidth(speedN, pairs, params.radius);
 
     vec4 sum = vec4(0.0);
     float total = 0.0;
@@ -46,8 +49,7 @@ void main() {
         bool followsCentre = mbPairUsesCentre(i, speedC, speedN);
         vec2 v = followsCentre ? vC : vN;
         float speedV = followsCentre ? speedC : speedN;
-        float stretch = mbSampleStretch(speedV, pairs);
-        float windowRamp = mbRampWidth(speedV, stretch, params.radius);
+        float inverseWidth = followsCentre ? inverseWidthC : inverseWidthN;
         [[unroll]] for (int s = 0; s < 2; ++s) {
             vec2 off = roundAway(mbSampleT(i, pairs, jitter, s == 0 ? 1.0 : -1.0, speedV) * v);
             // Clamped to the image: a sample never leaves it, however large the velocity.
@@ -56,8 +58,8 @@ void main() {
             vec4 packedS = sfxTexel(uPacked, q, 0);
             float speedS = length(packedS.xy);
             float zS = packedS.z + packedS.w;
-            float w = mbSampleWeight(zC, zS, speedC, speedS, dist, params.softExtent, stretch, params.radius);
-            window += mbSpread(dist, speedV, windowRamp);
+            float w = mbSampleWeight(zC, zS, speedC, speedS, dist, params.softExtent, inverseWidth);
+            window += mbSpread(dist, speedV, inverseWidth);
             vec4 colorS = sfxTexel(uColor, q, 0);
             if (!sfxColorIsFinite(colorS)) continue;  // a non-finite sample is left out (sfx_shared.h)
             sum += sfxColor(colorS) * w;

@@ -201,38 +201,39 @@ SFX_MB_FN SFX_MB_REAL mbBackgroundShare(SFX_MB_REAL zC, SFX_MB_REAL zS, SFX_MB_R
     return clamp(0.5 + (zS - zC) / extent, 0.0, 1.0);
 }
 // Spread: how much of the stretch of blur a sample stands for lies within the reach of a point
-// moving at `speed` (blur radius): a linear ramp centred on speed == dist, `width` pixels wide.
-// With samples a texel apart the width is 1 px: offsets are whole texels and a texel's centre
-// reaches the next texel's centre half a pixel before the edge between them does, so the ramp
-// is centred there; it also keeps the weight continuous in the last bit of the fp16 velocity.
-// With samples farther apart each stands for that much of the blur (mbSampleStretch), and the
-// ramp is as wide: a sample just inside the reach of an object's end weighs the part of its
-// stretch the object covers, not a whole sample (a 1 px ramp gave a thin post 15 px away, whose
-// blur reaches 15.5 px, a full twelfth of the pixel where it covers 2 % of the shutter).
-SFX_MB_FN SFX_MB_REAL mbSpread(SFX_MB_REAL dist, SFX_MB_REAL speed, SFX_MB_REAL width) { return clamp((speed - dist) / width + 0.5, 0.0, 1.0); }
+// moving at `speed` (blur radius): a linear ramp centred on speed == dist, 1 / inverseWidth
+// pixels wide (mbInverseRampWidth).
+SFX_MB_FN SFX_MB_REAL mbSpread(SFX_MB_REAL dist, SFX_MB_REAL speed, SFX_MB_REAL inverseWidth) {
+    return clamp((speed - dist) * inverseWidth + 0.5, 0.0, 1.0);
+}
 
-// The stretch of blur each sample of a pair along a velocity of length `speed` stands for: the
-// distance between samples, at least a texel.
-SFX_MB_FN SFX_MB_REAL mbSampleStretch(SFX_MB_REAL speed, int pairs) { return max(speed / SFX_MB_REAL(pairs), 1.0); }
-
-// The ramp width for a point moving at `speed` under a blur radius `radius`: the samples'
-// stretch, narrowing to a texel over the last pixel below the radius. A point at the radius was
-// clamped there (mbClampVelocity) and its true blur reaches farther, so its reach ends no
-// earlier than the window's end; measured, the stretch-wide ramp there took 0.1-0.2 dB from
-// blurs past the radius. Linear in the speed, so the weight has no step a float and a double
-// could fall either side of.
-SFX_MB_FN SFX_MB_REAL mbRampWidth(SFX_MB_REAL speed, SFX_MB_REAL stretch, SFX_MB_REAL radius) {
-    return stretch + (1.0 - stretch) * clamp(speed - radius + 1.0, 0.0, 1.0);
+// The inverse width of the spread ramps of a pair of samples along a velocity of length `speed`
+// (the one the pair follows), with `pairs` pairs under a blur radius `radius` (pixels).
+// - With samples a texel apart the ramp is 1 px wide: offsets are whole texels and a texel's
+//   centre reaches the next texel's centre half a pixel before the edge between them does, so
+//   the ramp is centred there; it also keeps the weight continuous in the last bit of the fp16
+//   velocity.
+// - With samples farther apart, each stands for that stretch of the blur (speed / pairs) and
+//   the ramp is as wide: a sample just inside the reach of an object's end weighs the part of
+//   its stretch the object covers, not a whole sample (a 1 px ramp gave a thin post 15 px away,
+//   whose blur reaches 15.5 px, a full twelfth of a pixel it covers for 2 % of the shutter).
+// - Over the last pixel below the radius the ramp narrows to 1 px again (the inverse width rises
+//   linearly): a velocity at the radius was clamped there (mbClampVelocity) and the true blurs
+//   around it reach farther, past the window's end (measured, the wide ramp there took 0.1-0.2
+//   dB from blurs past the radius). Linear, so no float and double fall either side of a step.
+// Per pair, not per sample: the samples' weights cost what they did with the 1 px ramp.
+SFX_MB_FN SFX_MB_REAL mbInverseRampWidth(SFX_MB_REAL speed, int pairs, SFX_MB_REAL radius) {
+    SFX_MB_REAL inverseStretch = 1.0 / max(speed / SFX_MB_REAL(pairs), 1.0);
+    return inverseStretch + (1.0 - inverseStretch) * clamp(speed - radius + 1.0, 0.0, 1.0);
 }
 
 // Weight of sample S at distance `dist` from centre C, at most 1: as background (behind C) it
 // shows where C's own blur reaches; as foreground (in front of C) where its own blur reaches.
-// `stretch` is the pair's (mbSampleStretch), `radius` the blur radius k.
+// `inverseWidth` is the pair's (mbInverseRampWidth).
 SFX_MB_FN SFX_MB_REAL mbSampleWeight(SFX_MB_REAL zC, SFX_MB_REAL zS, SFX_MB_REAL speedC, SFX_MB_REAL speedS, SFX_MB_REAL dist,
-                                     SFX_MB_REAL softExtent, SFX_MB_REAL stretch, SFX_MB_REAL radius) {
+                                     SFX_MB_REAL softExtent, SFX_MB_REAL inverseWidth) {
     SFX_MB_REAL background = mbBackgroundShare(zC, zS, softExtent);
-    return background * mbSpread(dist, speedC, mbRampWidth(speedC, stretch, radius)) +
-           (1.0 - background) * mbSpread(dist, speedS, mbRampWidth(speedS, stretch, radius));
+    return background * mbSpread(dist, speedC, inverseWidth) + (1.0 - background) * mbSpread(dist, speedS, inverseWidth);
 }
 
 // The centre's weight: what the samples leave of the blur window they stand for (never
@@ -297,7 +298,7 @@ SFX_BLOCK_END(params)
 SFX_BLOCK(MbReconstructParams, 3)
     SFX_M_FLOAT(softExtent)    // soft depth comparison extent, scene units
     SFX_M_FLOAT(centreWeight)  // MotionBlurSettings.centreWeight
-    SFX_M_FLOAT(radius)        // k: the blur radius in pixels (mbRampWidth)
+    SFX_M_FLOAT(radius)        // k: the blur radius in pixels (mbInverseRampWidth)
     SFX_M_FLOAT(pad1)
     SFX_M_INT(tileSize)        // N: pixel -> tile of the neighbour-max texture
     SFX_M_INT(pad2) SFX_M_INT(pad3) SFX_M_INT(pad4)  // pairs, jitter: constants above

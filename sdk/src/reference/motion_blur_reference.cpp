@@ -127,7 +127,7 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
             for (int i = 0; i < pairs; ++i) {
                 const std::array<double, 2> v = mbPairUsesCentre(i, speedC, speedN) ? vC : vN;
                 const double speedV = std::sqrt(length2(v));
-                const double stretch = shared::mbSampleStretch(speedV, pairs), radius = double(p.radiusPx);
+                const double inverseWidth = shared::mbInverseRampWidth(speedV, pairs, double(p.radiusPx));
                 for (double side : {1.0, -1.0}) {
                     const double t = candidate.jitterAlways ? side * std::min((i + 1.0 + side * jitter) / pairs, 1.0)
                                                             : mbSampleT(i, pairs, jitter, side, speedV);
@@ -138,16 +138,15 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
                     r.maxSampleOffsetPx = std::max(r.maxSampleOffsetPx, dist);
                     const double speedS = std::sqrt(length2(r.radiusPx.at(uint32_t(qx), uint32_t(qy))));
                     const double zS = depth.at(uint32_t(qx), uint32_t(qy));
-                    const double wS = mbSampleWeight(zC, zS, speedC, speedS, dist, p.softDepthExtent, stretch, radius);
-                    window += shared::mbSpread(dist, speedV, shared::mbRampWidth(speedV, stretch, radius));
+                    const double wS = mbSampleWeight(zC, zS, speedC, speedS, dist, p.softDepthExtent, inverseWidth);
+                    window += shared::mbSpread(dist, speedV, inverseWidth);
                     const std::array<double, 4>& rawS = color.at(uint32_t(qx), uint32_t(qy));
                     if (!shared::sfxColorIsFinite(rawS)) continue;  // never spread (sfx_shared.h)
                     const std::array<double, 4> colorS = shared::sfxColor(rawS);
                     double wShown = wS;
                     if (candidate.hiddenNearExponent > 0) {
                         const double hidden = std::clamp(2.0 * (zS - zC) / p.softDepthExtent, 0.0, 1.0) *
-                            shared::mbBackgroundShare(zC, zS, p.softDepthExtent) *
-                            shared::mbSpread(dist, speedC, shared::mbRampWidth(speedC, stretch, radius));
+                            shared::mbBackgroundShare(zC, zS, p.softDepthExtent) * shared::mbSpread(dist, speedC, inverseWidth);
                         const double near = hidden * std::pow(std::max(dist, 1.0), -candidate.hiddenNearExponent);
                         for (int c = 0; c < 4; ++c) hiddenSum[c] += colorS[c] * near;
                         hiddenWeight += hidden, hiddenNear += near, wShown -= hidden;
