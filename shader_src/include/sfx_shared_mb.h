@@ -241,8 +241,9 @@ SFX_MB_FN SFX_MB_REAL mbSampleWeight(SFX_MB_REAL zC, SFX_MB_REAL zS, SFX_MB_REAL
 // more of the pixel's own colour). Output = (sum of w * colour + this * centre colour) /
 // (sum of w + this). The window is what the samples would weigh in an area moving uniformly
 // with the velocities they follow (`windowWeights`: the sum of mbSpread at each sample's
-// distance and followed speed, with the same ramp) plus one sample's worth for the centre (with samples a texel
-// apart its own texel; with samples skipping texels, its share of the gaps, as each sample's).
+// distance and followed speed, with the same ramp) plus one sample's worth for the centre
+// (with samples a texel apart its own texel; with samples skipping texels, its share of the
+// gaps, as each sample's).
 // So a uniformly moving area gets the box filter over its blur length at any length: a window
 // of 2 * pairs, as the 2012 course normalises, is right only when |v| is a whole number of
 // texels, and gave the centre up to 1.6 (|v| = 2.7 px, 3 pairs) or 0.76 (3.12 px) of its share.
@@ -258,8 +259,8 @@ SFX_MB_FN int mbNeighborReachTiles(int radius, int tile) { return (radius + tile
 // (pixels) can carry its blur into the centre tile (after Guertin et al.): a tile in
 // line with it along a side needs motion along that axis, one off both axes motion along the
 // diagonal toward it; a tile beyond the adjacent ones also needs a radius that crosses the
-// pixels between the two tiles (Chebyshev; the 0.5 px of a texel-wide mbSpread ramp). Keeps the dominant
-// velocity from being one that never reaches the pixels.
+// pixels between the two tiles (Chebyshev; the 0.5 px of a texel-wide mbSpread ramp). Keeps
+// the dominant velocity from being one that never reaches the pixels.
 SFX_MB_FN bool mbNeighborReaches(int dx, int dy, SFX_MB_VEC2 v, int tile) {
     if (dx == 0 && dy == 0) return true;
     int gap = (max(abs(dx), abs(dy)) - 1) * tile;
