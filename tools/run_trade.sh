@@ -22,19 +22,20 @@
 #                      peer on the same inputs against the same truth (docs/ao_families.md, .csv,
 #                      _cost.csv, docs/images/ao_family_*.png).
 #   6. bench_mb_families - motion blur per scene family, speed, tier and backend against its
-#                      truth (docs/mb_families.csv, the family tables of docs/motion_blur.md), and
+#                      truth (docs/mb_families.csv, and from it the family tables of docs/motion_blur.md
+#                      against the 2012 reconstruction's figures in docs/mb_families_2012.csv), and
 #                      each family's pictures (docs/images/mb_<family>_<speed>px.png); then with
 #                      --raster the rasterised families, drawn by the first backend's raster pass
 #                      (docs/mb_raster_families.csv, docs/images/mb_{models,camera,turning}_12px.png).
 #                      With --sweeps, both every 0.5 px past both tiers' blur, CPU reference
-#                      (docs/mb_sweep.csv, docs/mb_raster_sweep.csv, "The tier promise
+#                      (docs/mb_sweep.csv, docs/mb_raster_sweep.csv and their tables in "The tier promise
 #                      between the scored speeds" in docs/motion_blur.md).
 #   7. bench_mb_flicker - motion blur's frame-to-frame change against the truth's over frame
-#                      sequences of the same families, and both jitter patterns (docs/mb_flicker.csv,
-#                      "Stable under motion" in docs/motion_blur.md);
+#                      sequences of the same families, and both jitter patterns (docs/mb_flicker.csv and
+#                      its tables in "Stable under motion" in docs/motion_blur.md);
 #   8. fit_mb        - motion blur's accuracy on the training and held-out families and its cost
 #                      per taps x maximum radius at 720 rows, the front its presets are chosen from
-#                      (docs/mb_fit.csv; about 4 minutes).
+#                      (docs/mb_fit.csv and its grid in docs/motion_blur.md; about 4 minutes).
 # Truth images are traced once and cached by scene, view, size, radius, sample count and seed
 # under $SFX_TRUTH_CACHE (default build/truth-cache): a second run only renders the effects.
 # The fitted looks are data of the tier table: fit_ao prints them, and adopting them is an edit of
@@ -79,20 +80,24 @@ step "ao_front: the AO front over technique x counts x blur x resolution, every 
 step "bench_families: the defaults and the peer against the truth, per scene family"
 "$BUILD_DIR"/tools/bench/bench_families --cache-dir "$CACHE" --out-dir docs --backends "$BACKENDS" --peer-dir "$PEER_DIR"
 step "bench_mb_families: motion blur on the held-out scene families"
-"$BUILD_DIR"/tools/bench/bench_mb_families --csv docs/mb_families.csv --backends "$BACKENDS" --images docs/images
+"$BUILD_DIR"/tools/bench/bench_mb_families --csv docs/mb_families.csv --backends "$BACKENDS" --images docs/images \
+    --doc docs/motion_blur.md --before docs/mb_families_2012.csv
 step "bench_mb_families --raster: motion blur on the rasterised held-out families"
 "$BUILD_DIR"/tools/bench/bench_mb_families --raster --raster-backend "${BACKENDS%%,*}" --instants 128 --csv docs/mb_raster_families.csv \
-    --backends "$BACKENDS" --images docs/images --image-speeds 12
+    --backends "$BACKENDS" --images docs/images --image-speeds 12 --doc docs/motion_blur.md
 if [ "$SWEEPS" = 1 ]; then
     step "bench_mb_families --sweep: the tier promise every 0.5 px, CPU reference (10-16 minutes)"
-    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --backends none --csv docs/mb_sweep.csv
+    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --backends none --csv docs/mb_sweep.csv --doc docs/motion_blur.md
     "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --raster --raster-backend "${BACKENDS%%,*}" --instants 64 --backends none \
-        --csv docs/mb_raster_sweep.csv
+        --csv docs/mb_raster_sweep.csv --doc docs/motion_blur.md
 else
     step "bench_mb_families --sweep: skipped (10-16 minutes; run with --sweeps): docs/mb_sweep.csv and docs/mb_raster_sweep.csv keep their last run"
+    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --csv docs/mb_sweep.csv --doc docs/motion_blur.md --doc-only
+    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --raster --raster-backend "${BACKENDS%%,*}" --instants 64 --csv docs/mb_raster_sweep.csv \
+        --doc docs/motion_blur.md --doc-only
 fi
 step "bench_mb_flicker: motion blur's flicker over frame sequences of the scene families"
-"$BUILD_DIR"/tools/bench/bench_mb_flicker --csv docs/mb_flicker.csv --backends "$BACKENDS"
+"$BUILD_DIR"/tools/bench/bench_mb_flicker --csv docs/mb_flicker.csv --backends "$BACKENDS" --doc docs/motion_blur.md
 step "fit_mb: motion blur's front over taps x maximum radius at 720 rows"
-"$BUILD_DIR"/tools/bench/fit_mb --taps 3,5,7,9,11,13,15,17 --radii 8,10,12,14,18,24 --backend "${BACKENDS%%,*}" --csv docs/mb_fit.csv
+"$BUILD_DIR"/tools/bench/fit_mb --taps 3,5,7,9,11,13,15,17 --radii 8,10,12,14,18,24 --backend "${BACKENDS%%,*}" --csv docs/mb_fit.csv --doc docs/motion_blur.md
 step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg, docs/ao_front.csv, docs/images/ao_front_*.svg, docs/mb_families.csv, docs/mb_raster_families.csv, docs/mb_sweep.csv, docs/mb_raster_sweep.csv, docs/images/mb_*px.png, docs/mb_flicker.csv, docs/mb_fit.csv, docs/ao_families.*"

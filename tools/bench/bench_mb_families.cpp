@@ -28,6 +28,7 @@
 #include "bench_args.hpp"
 #include "bench_device.hpp"
 #include "markdown_section.hpp"
+#include "mb_doc_tables.hpp"
 #include "mb_family_scoring.hpp"
 #include "mb_raster_families.hpp"
 #include "motion_cases.hpp"
@@ -114,13 +115,56 @@ bool scoreRasterFamilies(const std::string& backend, const std::string& families
     return true;
 }
 
+// The sentence that opens a generated section: what was run.
+std::string setupText(bool raster, bool sweep, uint32_t w, uint32_t h, uint32_t instants, uint32_t seed, const std::string& rasterBackend,
+                      const TierProfile (&profiles)[2], const MotionBlurSettings& settings, const std::vector<double>& speeds) {
+    auto px = [](double v) {
+        char b[16];
+        std::snprintf(b, sizeof b, "%g", v);
+        return std::string(b);
+    };
+    std::string text = std::string("Measured by `bench_mb_families") + (raster ? " --raster" : "") + (sweep ? " --sweep" : "") + "` at " +
+        std::to_string(w) + " × " + std::to_string(h) + ", ";
+    if (sweep) {
+        text += "every 0.5 px from " + px(speeds.front()) + " to " + px(speeds.back()) + " px";
+    } else {
+        text += "speeds";
+        for (size_t i = 0; i < speeds.size(); ++i) text += (i ? ", " : " ") + px(speeds[i]);
+        text += " px";
+    }
+    text += ", the truth the average of " + std::to_string(instants) + " instants" +
+        (raster ? ", drawn by " + rasterBackend + "'s raster pass" : ", layout seed " + std::to_string(seed));
+    for (int t = 0; t < 2; ++t)
+        if (Result<MotionBlurParams> p = resolveMotionBlur(profiles[t], settings, h))
+            text += std::string(t ? "; high tier " : "; current tier ") + std::to_string(p->taps) + " taps, radius " + std::to_string(p->radiusPx) +
+                " px";
+    return text + " at this height.";
+}
+
+Status writeDocSection(const std::string& docPath, const std::string& section, const std::string& csvPath, const std::string& beforePath,
+                       const std::string& setup) {
+    Result<std::vector<tools::MbFamilyRow>> rows = tools::readMbFamilyCsv(csvPath);
+    if (!rows) return rows.status();
+    std::vector<tools::MbFamilyRow> before;
+    if (!beforePath.empty()) {
+        Result<std::vector<tools::MbFamilyRow>> b = tools::readMbFamilyCsv(beforePath);
+        if (!b) return b.status();
+        before = std::move(b.value());
+    }
+    const bool raster = section.find("_raster") != std::string::npos, sweep = section.find("_sweep") != std::string::npos;
+    const std::string text = sweep ? tools::mbSweepTable(rows.value(), setup)
+        : raster                   ? tools::mbRasterTables(rows.value(), setup)
+                                   : tools::mbFamilyTables(rows.value(), before, setup);
+    return tools::replaceMarkdownSection(docPath, section, text);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"bench_mb_families: motion blur per scene family, speed, tier and backend against temporal supersampling"};
     uint32_t width = 320, height = 240, instants = 256, seed = 1;
     std::string csvPath = "mb_families.csv", backendsFlag = "vulkan,gles", speedsFlag = "0.5,2,6,12,24,40", familiesFlag = "all";
-    std::string imagesDir, imageSpeedsFlag = "6,12,24";
+    std::string imagesDir, imageSpeedsFlag = "6,12,24", docPath, beforePath;
     std::string rasterBackend = "vulkan";
     bool raster = false, sweep = false;
     double sweepFrom = 0.5;
@@ -155,6 +199,11 @@ int main(int argc, char** argv) {
     app.add_option("--images", imagesDir, "write DIR/mb_<family>_<speed>px.png: input, truth, current, high tier (CPU reference) and errors x4");
     app.add_option("--image-speeds", imageSpeedsFlag, "speeds of the --images pictures, comma-separated (each also in --speeds)")
         ->capture_default_str();
+    app.add_option("--doc", docPath,
+                   "write this run's tables into the page's generated section (bench_mb_families, _raster, _sweep or _raster_sweep)");
+    app.add_option("--before", beforePath, "with --doc (2D families): the baseline CSV the tables compare with");
+    bool docOnly = false;
+    app.add_flag("--doc-only", docOnly, "with --doc: write the section from --csv as it is, without running anything");
     CLI11_PARSE(app, argc, argv);
     if (width == 0 || height == 0 || instants < 2) {
         std::cerr << "bench_mb_families: --width and --height must be > 0, --instants >= 2\n";
@@ -165,12 +214,39 @@ int main(int argc, char** argv) {
         return 1;
     }
     candidates[0].hiddenNearExponent = candidates[1].hiddenNearExponent = hiddenNear;
+    if (docOnly && docPath.empty()) {
+        std::cerr << "bench_mb_families: --doc-only needs --doc\n";
+        return 1;
+    }
     MotionBlurSettings settings;
     settings.samples = taps, settings.maxRadiusPx = radius;
     TierProfile profiles[2] = {tiers::profile(Tier::Current), tiers::profile(Tier::High)};  // indexed by tier == High
     if (highTaps) profiles[1].mbTaps = *highTaps;
     if (highRadius) profiles[1].mbMaxRadiusPx = *highRadius;
 
+    if (docOnly) {
+        std::vector<double> speedList = tools::splitNumberList(speedsFlag);
+        const std::string section = std::string("bench_mb_families") + (raster ? "_raster" : "") + (sweep ? "_sweep" : "");
+        Result<std::vector<tools::MbFamilyRow>> rows = tools::readMbFamilyCsv(csvPath);
+        if (!rows) {
+            std::cerr << "bench_mb_families: " << rows.status().toString() << "\n";
+            return 1;
+        }
+        if (sweep) {  // the speeds the CSV holds
+            speedList.clear();
+            for (const tools::MbFamilyRow& r : rows.value())
+                if (std::find(speedList.begin(), speedList.end(), r.speed) == speedList.end()) speedList.push_back(r.speed);
+            std::sort(speedList.begin(), speedList.end());
+        }
+        if (Status st = writeDocSection(docPath, section, csvPath, beforePath,
+                                        setupText(raster, sweep, width, height, instants, seed, rasterBackend, profiles, settings, speedList));
+            !st) {
+            std::cerr << "bench_mb_families: " << st.toString() << "\n";
+            return 1;
+        }
+        std::cout << "wrote the section " << section << " of " << docPath << " from " << csvPath << "\n";
+        return 0;
+    }
     std::vector<Runner> runners;
     for (Tier tier : {Tier::Current, Tier::High})
         for (const BackendConfig& config : compiledBackends()) {
@@ -330,6 +406,17 @@ int main(int argc, char** argv) {
             std::printf(" %d of %d speeds\n", sweepIdentical[family][0], sweepIdentical[family][1]);
         }
     }
+    csv.close();
     std::cout << "wrote " << csvPath << "\n";
+    if (!docPath.empty()) {
+        const std::string section = std::string("bench_mb_families") + (raster ? "_raster" : "") + (sweep ? "_sweep" : "");
+        if (Status st = writeDocSection(docPath, section, csvPath, beforePath,
+                                        setupText(raster, sweep, width, height, instants, seed, rasterBackend, profiles, settings, speeds));
+            !st) {
+            std::cerr << "bench_mb_families: " << st.toString() << "\n";
+            return 1;
+        }
+        std::cout << "wrote the section " << section << " of " << docPath << "\n";
+    }
     return 0;
 }

@@ -20,6 +20,7 @@
 #include "bench_device.hpp"
 #include "markdown_section.hpp"
 #include "mb_family_scoring.hpp"
+#include "mb_flicker_tables.hpp"
 #include "mb_sequence.hpp"
 #include "motion_cases.hpp"
 #include "sfx/backends.hpp"
@@ -195,7 +196,27 @@ int main(int argc, char** argv) {
                    "long enough for the jitter to act; 0 = not")
         ->capture_default_str();
     app.add_option("--csv", csvPath, "CSV output file")->capture_default_str();
+    std::string docPath;
+    bool docOnly = false;
+    app.add_option("--doc", docPath, "write the flicker tables into this page's section bench_mb_flicker");
+    app.add_flag("--doc-only", docOnly, "with --doc: write the section from --csv as it is, without running anything");
     CLI11_PARSE(app, argc, argv);
+    auto writeDoc = [&]() -> int {
+        char setup[256];
+        std::snprintf(setup, sizeof setup,
+                      "Measured by `bench_mb_flicker` at %u × %u: %u frames per sequence, %g shutter intervals apart, a pan of %g px per interval, "
+                      "each frame's truth the average of %u instants.",
+                      width, height, frames, period, pan, instants);
+        Result<std::string> text = tools::mbFlickerTables(csvPath, setup);
+        Status st = text ? tools::replaceMarkdownSection(docPath, "bench_mb_flicker", text.value()) : text.status();
+        if (!st) {
+            std::cerr << "bench_mb_flicker: " << st.toString() << "\n";
+            return 1;
+        }
+        std::printf("wrote the section bench_mb_flicker of %s\n", docPath.c_str());
+        return 0;
+    };
+    if (docOnly) return docPath.empty() ? (std::cerr << "bench_mb_flicker: --doc-only needs --doc\n", 1) : writeDoc();
     if (width == 0 || height == 0 || instants < 2 || frames < 2 || !(period > 0)) {
         std::cerr << "bench_mb_flicker: --width and --height must be > 0, --instants and --frames >= 2, --period > 0\n";
         return 1;
@@ -303,5 +324,6 @@ int main(int argc, char** argv) {
         }
     }
     std::printf("(* = the other tier's jitter pattern) %.1f s\nwrote %s\n", elapsed(), csvPath.c_str());
-    return 0;
+    csv.close();
+    return docPath.empty() ? 0 : writeDoc();
 }

@@ -12,11 +12,15 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <map>
+#include <sstream>
 
 #include "bench_device.hpp"
+#include "markdown_section.hpp"
 #include "mb_family_scoring.hpp"
 #include "motion_cases.hpp"
 #include "sfx/backends.hpp"
@@ -43,6 +47,82 @@ double meanPsnr(const std::vector<tools::ScoredFamilyCase>& cases, const TierPro
     return sum / double(cases.size());
 }
 
+// The points of a CSV this program wrote (--doc-only).
+Result<std::vector<Point>> readPoints(const std::string& path) {
+    std::ifstream in(path);
+    std::string line;
+    if (!in || !std::getline(in, line)) return Status{StatusCode::FileError, path + ": cannot read"};
+    if (line.rfind("taps,max_radius_px,training_psnr_moving,heldout_psnr_moving,ms,", 0) != 0)
+        return Status{StatusCode::InvalidArgument, path + ": not a fit_mb CSV (header " + line + ")"};
+    std::vector<Point> points;
+    while (std::getline(in, line)) {
+        Point p;
+        if (std::sscanf(line.c_str(), "%u,%f,%lf,%lf,%lf", &p.taps, &p.radius, &p.training, &p.heldOut, &p.ms) == 5) points.push_back(p);
+    }
+    return points;
+}
+
+// The page's section "fit_mb": the grid (training PSNR, held-out in brackets, per taps x radius;
+// the cost's range per taps) and each tier's presets placed on it, ordered by training PSNR.
+std::string docSection(const std::vector<Point>& points, const std::string& backend, uint32_t w, uint32_t h, uint32_t costW, uint32_t costH,
+                       uint32_t instants) {
+    std::vector<float> radii;
+    std::vector<uint32_t> taps;
+    for (const Point& p : points) {
+        if (std::find(radii.begin(), radii.end(), p.radius) == radii.end()) radii.push_back(p.radius);
+        if (std::find(taps.begin(), taps.end(), p.taps) == taps.end()) taps.push_back(p.taps);
+    }
+    std::sort(radii.begin(), radii.end());
+    std::sort(taps.begin(), taps.end());
+    auto find = [&](uint32_t t, float r) -> const Point* {
+        for (const Point& p : points)
+            if (p.taps == t && p.radius == r) return &p;
+        return nullptr;
+    };
+    auto px = [](double v) {
+        char b[16];
+        std::snprintf(b, sizeof b, "%g", v);
+        return std::string(b);
+    };
+    std::ostringstream md;
+    md << "Measured by `fit_mb` at " << w << " × " << h << " (truth of " << instants << " instants), cost at " << costW << " × " << costH << " on "
+       << backend << ". Training PSNR (held-out in brackets), dB:\n\n| taps |";
+    for (float r : radii) md << " " << px(r) << " px |";
+    md << " cost (ms, the radii's range) |\n| --- |";
+    for (size_t i = 0; i <= radii.size(); ++i) md << " --- |";
+    md << "\n";
+    for (uint32_t t : taps) {
+        md << "| " << t << " |";
+        double lo = INFINITY, hi = -INFINITY;
+        for (float r : radii) {
+            const Point* p = find(t, r);
+            md << " " << (p ? tools::fixed(p->training, 2) + " (" + tools::fixed(p->heldOut, 2) + ")" : std::string("-")) << " |";
+            if (p && p->ms >= 0) lo = std::min(lo, p->ms), hi = std::max(hi, p->ms);
+        }
+        md << " " << (std::isfinite(lo) ? px(std::round(lo)) + "-" + px(std::round(hi)) : std::string("-")) << " |\n";
+    }
+    md << "\nEach tier's presets on the grid (taps / radius at 720 rows: training PSNR), in the order of their training PSNR, and the "
+          "gain of each step:\n\n| tier | presets | steps (dB) |\n| --- | --- | --- |\n";
+    for (const tiers::TierRow& row : tiers::table()) {
+        std::vector<std::pair<double, std::string>> placed;
+        for (const Preset& preset : row.presets) {
+            const Point* p = find(preset.params.mbTaps, preset.params.mbMaxRadiusPx);
+            placed.push_back({p ? p->training : NAN,
+                              preset.name + " " + std::to_string(preset.params.mbTaps) + " / " + px(preset.params.mbMaxRadiusPx) +
+                                  " px: " + (p ? tools::fixed(p->training, 2) : "not in the grid")});
+        }
+        std::sort(placed.begin(), placed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        md << "| " << toString(row.tier) << " |";
+        std::string steps;
+        for (size_t i = 0; i < placed.size(); ++i) {
+            md << (i ? ", " : " ") << placed[i].second;
+            if (i) steps += (i > 1 ? ", " : "") + tools::fixedOrDash(placed[i].first - placed[i - 1].first, 2);
+        }
+        md << " | " << steps << " |\n";
+    }
+    return md.str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -51,7 +131,7 @@ int main(int argc, char** argv) {
     std::vector<float> radii{6, 8, 10, 12, 14, 18, 24};
     uint32_t instants = 256, width = 960, height = 720, costWidth = 1280, costHeight = 720, runs = 7;
     std::vector<double> speeds;
-    std::string backend = "vulkan", csvPath = "mb_fit.csv";
+    std::string backend = "vulkan", csvPath = "mb_fit.csv", docPath;
     app.add_option("--taps", taps, "tap counts (centre included, odd)")->delimiter(',')->capture_default_str();
     app.add_option("--radii", radii, "maximum radii, pixels at 720 rows")->delimiter(',')->capture_default_str();
     app.add_option("--instants", instants, "instants averaged for the truth")->capture_default_str();
@@ -64,7 +144,31 @@ int main(int argc, char** argv) {
     app.add_option("--cost-height", costHeight, "pixels of the timed runs")->capture_default_str();
     app.add_option("--runs", runs, "timed runs per configuration (median)")->capture_default_str();
     app.add_option("--csv", csvPath, "CSV output file")->capture_default_str();
+    app.add_option("--doc", docPath, "write the grid and the presets on it into this page's section fit_mb");
+    bool docOnly = false;
+    app.add_flag("--doc-only", docOnly, "with --doc: write the section from --csv as it is, without running anything");
     CLI11_PARSE(app, argc, argv);
+    auto writeDoc = [&](const std::vector<Point>& points) -> int {
+        if (Status st = tools::replaceMarkdownSection(docPath, "fit_mb", docSection(points, backend, width, height, costWidth, costHeight, instants));
+            !st) {
+            std::cerr << "fit_mb: " << st.toString() << "\n";
+            return 1;
+        }
+        std::cout << "wrote the section fit_mb of " << docPath << "\n";
+        return 0;
+    };
+    if (docOnly) {
+        if (docPath.empty()) {
+            std::cerr << "fit_mb: --doc-only needs --doc\n";
+            return 1;
+        }
+        Result<std::vector<Point>> points = readPoints(csvPath);
+        if (!points) {
+            std::cerr << "fit_mb: " << points.status().toString() << "\n";
+            return 1;
+        }
+        return writeDoc(points.value());
+    }
     const auto started = std::chrono::steady_clock::now();
     const auto progress = [&](const std::string& line) {
         std::printf("[%.1f s] %s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(), line.c_str());
@@ -130,6 +234,7 @@ int main(int argc, char** argv) {
         if (!dominated)
             std::printf("  %2u taps, radius %4.1f: training %.2f, held-out %.2f dB, %.2f ms\n", p.taps, p.radius, p.training, p.heldOut, p.ms);
     }
+    csv.close();
     std::cout << "wrote " << csvPath << "\n";
-    return 0;
+    return docPath.empty() ? 0 : writeDoc(points);
 }
