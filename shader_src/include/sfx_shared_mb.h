@@ -162,14 +162,15 @@ SFX_MB_FN SFX_MB_REAL mbRankKey(SFX_MB_VEC2 v) { return v.x * v.x + v.y * v.y; }
 SFX_MB_FN SFX_MB_REAL mbTexelSteps(SFX_MB_VEC2 v) { return max(abs(v.x), abs(v.y)); }
 
 // Sample pairs used at a pixel: one per texel the blur along the neighbourhood velocity v_N passes
-// through on each side, its texel steps (mbTexelSteps) rounded to nearest, at most the tier's.
-// More pairs than those texels would read some texels twice and weight them double: rounding up
-// did, for every length just past an integer, and so did counting by the Euclidean length along a
+// through on each side, its texel steps (mbTexelSteps) rounded half away from zero as the sample
+// offsets are, at most the tier's; so the last pair's offset along v_N is that count, and no
+// texel is read twice. More pairs than those texels would weight some double: rounding up did,
+// for every length just past an integer, and so did counting by the Euclidean length along a
 // leaning velocity (|v_N| = 3.5 px at 9 degrees off the column crosses 3 rows, not 4, and a fourth
-// pair read row 3 a second time at 0.84 of a full weight). The step sits 0.01 px below the half:
-// integer and half-integer counts, on the velocity grid, stay away from it in float and double
-// alike (a half-integer count takes the pair whose end texel weighs 0).
-SFX_MB_FN int mbActivePairs(SFX_MB_REAL stepsN, int pairs) { return clamp(int(ceil(stepsN - 0.49)), 1, pairs); }
+// pair read row 3 a second time at 0.84 of a full weight), and so did a count stepping at
+// k + 0.49 (texel steps of 3.49-3.5 took 4 pairs whose last offset rounded to 3). The steps are on
+// the velocity grid, where steps + 0.5 is exact in float and double alike.
+SFX_MB_FN int mbActivePairs(SFX_MB_REAL stepsN, int pairs) { return clamp(int(floor(stepsN + 0.5)), 1, pairs); }
 
 // Pair i of `pairs` sits at +t and -t' along one velocity of length `speed`:
 //   t = (i + 1 + jitter * s) / pairs,   t' = (i + 1 - jitter * s) / pairs,   both at most 1.

@@ -100,28 +100,35 @@ TEST_CASE("motion blur reference: uniform horizontal motion blurs only along row
 TEST_CASE("motion blur reference: a leaning uniform blur reads each texel row once", "[motion_blur]") {
     // Radius (0.75, 3.4375) px: 3.52 px long but crossing 3 rows on each side, so three pairs read
     // rows 1, 2 and 3. A fourth pair (the Euclidean length rounded) landed on row 3 a second time,
-    // and a bright row three rows away showed at 0.20 instead of about 1/7.
-    for (Tier tier : kTiers) {
-        const uint32_t w = 48, h = 48, line = 24;
-        const MotionBlurParams p = params(tier, 8);
-        const VelocityGrid v(w, h, {1.5, 6.875});  // displacement across the shutter: twice the radius
-        const Grid z(w, h, 5.0);
-        ColorGrid c(w, h, {0, 0, 0, 1});
-        for (uint32_t x = 0; x < w; ++x) c.at(x, line) = {1, 1, 1, 1};
-        const ColorGrid out = motionBlur(c, z, v, p).color;
-        const double middle = out.at(w / 2, line)[0];
-        double sum = 0;
-        for (uint32_t y = line - 4; y <= line + 4; ++y) {
-            INFO("tier " << toString(tier) << " row " << y);
-            const double share = out.at(w / 2, y)[0];
-            sum += share;
-            CHECK(share <= middle + 1e-12);                          // no row of the blur weighs more than the centre's
-            if (y + 3 >= line && y <= line + 3) CHECK(share > 0.1);  // and all seven rows are in it
+    // and a bright row three rows away showed at 0.20 instead of about 1/7. Radius (0, 3.4921875):
+    // 3.49 texel steps, whose last offset rounds to row 3; a count stepping at 3.49 took four pairs
+    // and read row 3 twice too.
+    const glm::dvec2 radii[] = {{0.75, 3.4375}, {0.0, 3.4921875}};
+    for (const glm::dvec2 radius : radii)
+        for (Tier tier : kTiers) {
+            const uint32_t w = 48, h = 48, line = 24;
+            const MotionBlurParams p = params(tier, 8);
+            const VelocityGrid v(w, h, {2 * radius.x, 2 * radius.y});  // displacement across the shutter: twice the radius
+            const Grid z(w, h, 5.0);
+            ColorGrid c(w, h, {0, 0, 0, 1});
+            for (uint32_t x = 0; x < w; ++x) c.at(x, line) = {1, 1, 1, 1};
+            const ColorGrid out = motionBlur(c, z, v, p).color;
+            const double middle = out.at(w / 2, line)[0];
+            double sum = 0;
+            for (uint32_t y = line - 4; y <= line + 4; ++y) {
+                INFO("radius " << radius.x << ", " << radius.y << " tier " << toString(tier) << " row " << y);
+                const double share = out.at(w / 2, y)[0];
+                sum += share;
+                CHECK(share <= middle + 1e-12);                          // no row of the blur weighs more than the centre's
+                if (y + 3 >= line && y <= line + 3) CHECK(share > 0.1);  // and all seven rows are in it
+            }
+            CHECK(sum == Approx(1.0).margin(1e-9));  // a box filter keeps the line's energy
+            CHECK(shared::mbActivePairs(shared::mbTexelSteps(radius), 6) == 3);
         }
-        CHECK(sum == Approx(1.0).margin(1e-9));  // a box filter keeps the line's energy
-        CHECK(shared::mbTexelSteps(glm::dvec2(0.75, 3.4375)) == 3.4375);
-        CHECK(shared::mbActivePairs(shared::mbTexelSteps(glm::dvec2(0.75, 3.4375)), 6) == 3);
-    }
+    CHECK(shared::mbTexelSteps(glm::dvec2(0.75, 3.4375)) == 3.4375);
+    CHECK(shared::mbActivePairs(3.5, 6) == 4);  // a half-integer count takes the pair whose end texel weighs 0
+    CHECK(shared::mbActivePairs(0.5, 6) == 1);
+    CHECK(shared::mbActivePairs(2.4921875, 6) == 2);
 }
 
 TEST_CASE("motion blur reference: moving object blurs past its silhouette; still objects stay sharp", "[motion_blur]") {

@@ -92,10 +92,9 @@ std::string backendAgreement(const std::vector<MbFamilyRow>& rows, const Referen
         }
     }
     if (sources.empty()) return "No backend was run: the CPU reference's figures only.\n\n";
-    if (worst < 0.005)
-        return "The backends (" + sources + ") give the CPU reference's figures to the CSV's 0.01 dB on every score below 60 dB.\n\n";
-    return "The backends (" + sources + ") are within " + fixed(worst, 2) + " dB of the CPU reference on every score below 60 dB (the largest: " +
-           where + "); the tables give the reference's figures.\n\n";
+    if (worst < 0.005) return "The backends (" + sources + ") give the CPU reference's figures to the CSV's 0.01 dB on every score below 60 dB.\n\n";
+    return "The backends (" + sources + ") are within " + fixed(worst, 2) +
+        " dB of the CPU reference on every score below 60 dB (the largest: " + where + "); the tables give the reference's figures.\n\n";
 }
 
 template <class Get>
@@ -132,19 +131,18 @@ Result<std::vector<MbFamilyRow>> readMbFamilyCsv(const std::string& path) {
         return it == header.end() ? -1 : int(it - header.begin());
     };
     const int family = column("family"), split = column("split"), speed = column("speed_px"), tier = column("tier"), source = column("source");
-    if (family < 0 || speed < 0 || tier < 0)
-        return Status{StatusCode::InvalidArgument, path + ": the header must name family, speed_px and tier"};
-    const int numbers[] = {column("psnr_moving"),       column("psnr_frame"),          column("psnr_leading"),
-                           column("psnr_trailing"),     column("psnr_rows"),           column("input_psnr_moving"),
-                           column("input_psnr_leading"), column("input_psnr_trailing"), column("input_psnr_rows"),
-                           column("truth_residual_psnr")};
+    if (family < 0 || speed < 0 || tier < 0) return Status{StatusCode::InvalidArgument, path + ": the header must name family, speed_px and tier"};
+    const int numbers[] = {column("psnr_moving"),     column("psnr_frame"),         column("psnr_leading"),       column("psnr_trailing"),
+                           column("psnr_rows"),       column("input_psnr_moving"),  column("input_psnr_leading"), column("input_psnr_trailing"),
+                           column("input_psnr_rows"), column("truth_residual_psnr")};
     std::vector<MbFamilyRow> rows;
     for (int lineNo = 2; std::getline(in, line); ++lineNo) {
         if (line.empty()) continue;
         const std::vector<std::string> cells = splitCsvLine(line);
         if (cells.size() != header.size())
             return Status{StatusCode::InvalidArgument,
-                          path + ":" + std::to_string(lineNo) + ": " + std::to_string(cells.size()) + " columns, the header has " + std::to_string(header.size())};
+                          path + ":" + std::to_string(lineNo) + ": " + std::to_string(cells.size()) + " columns, the header has " +
+                              std::to_string(header.size())};
         auto get = [&](int c) { return c < 0 ? NAN : number(cells[size_t(c)]); };
         MbFamilyRow r;
         r.family = cells[size_t(family)];
@@ -152,7 +150,8 @@ Result<std::vector<MbFamilyRow>> readMbFamilyCsv(const std::string& path) {
         r.tier = cells[size_t(tier)];
         r.source = source < 0 ? "reference" : cells[size_t(source)];
         r.speed = number(cells[size_t(speed)]);
-        double* fields[] = {&r.moving, &r.frame, &r.leading, &r.trailing, &r.rows, &r.inputMoving, &r.inputLeading, &r.inputTrailing, &r.inputRows, &r.residual};
+        double* fields[] = {&r.moving,      &r.frame,        &r.leading,       &r.trailing,  &r.rows,
+                            &r.inputMoving, &r.inputLeading, &r.inputTrailing, &r.inputRows, &r.residual};
         for (size_t i = 0; i < std::size(fields); ++i) *fields[i] = get(numbers[i]);
         rows.push_back(std::move(r));
     }
@@ -165,7 +164,8 @@ std::string mbFamilyTables(const std::vector<MbFamilyRow>& rows, const std::vect
     md << setup << " " << backendAgreement(rows, now);
     md << "PSNR in dB over the moving region, current / high tier, then the edges (before: the 2012 reconstruction, recorded to 0.1 dB; "
           "after: this run):\n\n";
-    md << "| family | px | input | before cur / high | after cur / high | after − before cur / high | leading edge: input, before, after (cur / high) | "
+    md << "| family | px | input | before cur / high | after cur / high | after − before cur / high | leading edge: input, before, after (cur / "
+          "high) | "
           "trailing edge: input, before, after (cur / high) |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n";
     auto edge = [](double input, const MbFamilyRow* bc, const MbFamilyRow* bh, double c, double h, double MbFamilyRow::*field) {
         if (std::isnan(input)) return std::string("-, - / -, - / -");
@@ -204,8 +204,8 @@ std::string mbFamilyTables(const std::vector<MbFamilyRow>& rows, const std::vect
             worstOther = std::min(worstOther, worstHighMinusCurrent(now, f, [field](const MbFamilyRow& r) { return r.*field; }));
         md << "| " << f << " | " << now.find(f, now.speeds.at(f).front(), "current")->split << " | " << fixedOrDash(bc) << " / " << fixedOrDash(bh)
            << " | " << fixedOrDash(ac) << " / " << fixedOrDash(ah) << " | " << signedFixed(ac - bc, 2) << " / " << signedFixed(ah - bh, 2) << " | "
-           << signedFixed(haveBefore ? worstHighMinusCurrent(then, f, moving) : NAN, 2) << " / " << signedFixed(worstHighMinusCurrent(now, f, moving), 2)
-           << " | " << signedFixed(worstOther, 2) << " |\n";
+           << signedFixed(haveBefore ? worstHighMinusCurrent(then, f, moving) : NAN, 2) << " / "
+           << signedFixed(worstHighMinusCurrent(now, f, moving), 2) << " | " << signedFixed(worstOther, 2) << " |\n";
     }
     if (now.speeds.count("square")) {
         md << "\nThe independent square over the rows it spans (its report measured 25.5 / 24.7 dB at 6 px on its own layout, with 15.5 dB "
@@ -259,8 +259,9 @@ std::string mbRasterTables(const std::vector<MbFamilyRow>& rows, const std::stri
 std::string mbSweepTable(const std::vector<MbFamilyRow>& rows, const std::string& setup) {
     const ReferenceRows now = referenceRows(rows, true);
     std::ostringstream md;
-    md << setup << "\n\nWorst high − current tier in dB and its speed, per region (CPU reference); the last column counts the speeds "
-                   "where the high tier is below the current one by more than 0.005 dB in some region:\n\n"
+    md << setup
+       << "\n\nWorst high − current tier in dB and its speed, per region (CPU reference); the last column counts the speeds "
+          "where the high tier is below the current one by more than 0.005 dB in some region:\n\n"
           "| family | moving | frame | leading edges | trailing edges | speeds below |\n| --- | --- | --- | --- | --- | --- |\n";
     double MbFamilyRow::*fields[] = {&MbFamilyRow::moving, &MbFamilyRow::frame, &MbFamilyRow::leading, &MbFamilyRow::trailing};
     for (const std::string& f : now.families) {
@@ -273,7 +274,10 @@ std::string mbSweepTable(const std::vector<MbFamilyRow>& rows, const std::string
                 const double d = h->*field - c->*field;
                 if (std::isfinite(d) && d < worst) worst = d, at = s;
             }
-            md << " | " << (!std::isfinite(worst) ? std::string("-") : worst < -0.005 ? signedFixed(worst, 2) + " at " + speedText(at) + " px" : "+0.00");
+            md << " | "
+               << (!std::isfinite(worst) ? std::string("-")
+                       : worst < -0.005  ? signedFixed(worst, 2) + " at " + speedText(at) + " px"
+                                         : "+0.00");
         }
         int below = 0, total = 0;
         for (double s : now.speeds.at(f)) {

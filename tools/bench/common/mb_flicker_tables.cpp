@@ -151,8 +151,7 @@ Result<std::string> mbFlickerTables(const std::string& csvPath, const std::strin
             for (const char* column : {"temporal_psnr_mean", "temporal_psnr_worst", "psnr_mean"})
                 backendWorst = std::max(backendWorst, std::fabs(num(r, column) - num(*ref, column)));
     }
-    if (!backends.empty())
-        md << " The backends (" << backends << ") are within " << two(backendWorst) << " dB of the CPU reference on every row.";
+    if (!backends.empty()) md << " The backends (" << backends << ") are within " << two(backendWorst) << " dB of the CPU reference on every row.";
     md << "\n";
 
     // The jitter patterns at the longer radius, where the jitter acts at its full share.
@@ -185,7 +184,7 @@ Result<std::string> mbFlickerTables(const std::string& csvPath, const std::strin
                     if (d - dp > beyond.db) beyond = {d - dp, dp, where};
                     if (radiusKind && std::strtod(speed.c_str(), nullptr) >= 12)
                         cells[t] = two(num(*a, "temporal_psnr_mean")) + " (" + two(num(*a, "temporal_psnr_worst")) + ") / " +
-                                   two(num(*b, "temporal_psnr_mean")) + " (" + two(num(*b, "temporal_psnr_worst")) + ")";
+                            two(num(*b, "temporal_psnr_mean")) + " (" + two(num(*b, "temporal_psnr_worst")) + ")";
                 }
             if (!cells[0].empty() || !cells[1].empty())
                 md << "| " << family << " | " << speed << " | " << (cells[0].empty() ? "-" : cells[0]) << " | " << (cells[1].empty() ? "-" : cells[1])
