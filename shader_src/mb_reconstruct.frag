@@ -44,6 +44,8 @@ void main() {
     vec4 sum = vec4(0.0);
     float total = 0.0;
     float window = 0.0;
+    // The previous pair's texel offset on each side: a sample on the same texel is left out.
+    ivec2 lastAhead = ivec2(0), lastBehind = ivec2(0);
     [[unroll]] for (int i = 0; i < kPairs; ++i) {
         if (i >= pairs) break;
         bool followsCentre = mbPairUsesCentre(i, speedC, speedN);
@@ -51,15 +53,22 @@ void main() {
         float speedV = followsCentre ? speedC : speedN;
         float inverseWidth = followsCentre ? inverseWidthC : inverseWidthN;
         [[unroll]] for (int s = 0; s < 2; ++s) {
-            vec2 off = roundAway(mbSampleT(i, pairs, jitter, s == 0 ? 1.0 : -1.0, speedV) * v);
+            ivec2 off = ivec2(roundAway(mbSampleT(i, pairs, jitter, s == 0 ? 1.0 : -1.0, speedV) * v));
+            // Repeated texels (sfx_shared_mb.h): weighed 0 rather than skipped, since a branch
+            // here cost llvmpipe a third of the pass.
+            float kept = (i > 0 && off == (s == 0 ? lastAhead : lastBehind)) ? 0.0 : 1.0;
+            if (s == 0)
+                lastAhead = off;
+            else
+                lastBehind = off;
             // Clamped to the image: a sample never leaves it, however large the velocity.
-            ivec2 q = clamp(p + ivec2(off), ivec2(0), size - 1);
+            ivec2 q = clamp(p + off, ivec2(0), size - 1);
             float dist = length(vec2(q - p));
             vec4 packedS = sfxTexel(uPacked, q, 0);
             float speedS = length(packedS.xy);
             float zS = packedS.z + packedS.w;
-            float w = mbSampleWeight(zC, zS, speedC, speedS, dist, params.softExtent, inverseWidth);
-            window += mbSpread(dist, speedV, inverseWidth);
+            float w = kept * mbSampleWeight(zC, zS, speedC, speedS, dist, params.softExtent, inverseWidth);
+            window += kept * mbSpread(dist, speedV, inverseWidth);
             vec4 colorS = sfxTexel(uColor, q, 0);
             if (!sfxColorIsFinite(colorS)) continue;  // a non-finite sample is left out (sfx_shared.h)
             sum += sfxColor(colorS) * w;

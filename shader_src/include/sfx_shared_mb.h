@@ -186,6 +186,15 @@ SFX_MB_FN SFX_MB_REAL mbSampleT(int i, int pairs, SFX_MB_REAL jitter, SFX_MB_REA
     SFX_MB_REAL share = clamp(speed / SFX_MB_REAL(pairs) - 1.0, 0.0, 1.0);
     return side * min((SFX_MB_REAL(i) + 1.0 + side * jitter * share) / SFX_MB_REAL(pairs), 1.0);
 }
+// Repeated texels: a sample whose texel offset (before clamping to the image) equals the previous
+// pair's on the same side weighs 0, in the weights and in the window, so one texel's colour counts
+// once where two adjacent stretches of the blur round onto it. Along a uniform blur it never
+// happens (pair i reads texel i + 1). It happens where the pairs follow v_C, shorter than the v_N
+// their count comes from: on a slow surface beside a fast one every short offset rounds onto the
+// same texel or two (the centre itself among them), and their colour outweighed the fast
+// surface's blur over the pixel; and where a pair along v_N and the next along a slightly shorter
+// v_C end on the same texel. Only the previous pair: leaving out every earlier repeat as well
+// scored lower on the rasterised families (docs/motion_blur.md).
 // Which velocity a pair follows. Odd pairs follow the centre's own velocity v_C, even ones the
 // neighbourhood's v_N (the course's alternation, hiding tile edges), except that a centre moving
 // at least half as fast as v_N sends every pair along v_C: sampling along only the dominant

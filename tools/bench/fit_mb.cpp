@@ -236,5 +236,12 @@ int main(int argc, char** argv) {
     }
     csv.close();
     std::cout << "wrote " << csvPath << "\n";
-    return docPath.empty() ? 0 : writeDoc(points);
+    if (docPath.empty()) return 0;
+    // From the CSV as written, so the section is what --doc-only gives from it.
+    Result<std::vector<Point>> written = readPoints(csvPath);
+    if (!written) {
+        std::cerr << "fit_mb: " << written.status().toString() << "\n";
+        return 1;
+    }
+    return writeDoc(written.value());
 }

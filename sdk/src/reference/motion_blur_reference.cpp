@@ -124,6 +124,7 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
                                                     : mbActivePairs(stepsN, int(p.pairs));
             std::array<double, 4> sum{}, hiddenSum{};
             double total = 0, window = 0, hiddenWeight = 0, hiddenNear = 0;
+            int lastOffset[2][2] = {{0, 0}, {0, 0}};  // per side, the previous pair's texel offset (repeated texels, sfx_shared_mb.h)
             for (int i = 0; i < pairs; ++i) {
                 const std::array<double, 2> v = mbPairUsesCentre(i, speedC, speedN) ? vC : vN;
                 const double speedV = std::sqrt(length2(v));
@@ -132,6 +133,13 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
                     const double t = candidate.jitterAlways ? side * std::min((i + 1.0 + side * jitter) / pairs, 1.0)
                                                             : mbSampleT(i, pairs, jitter, side, speedV);
                     const int ox = int(roundAway(t * v[0])), oy = int(roundAway(t * v[1]));
+                    int* last = lastOffset[side > 0 ? 0 : 1];
+                    const bool repeat = i > 0 && ox == last[0] && oy == last[1];
+                    last[0] = ox, last[1] = oy;
+                    if (repeat) {
+                        ++r.repeatedSamples;
+                        continue;
+                    }
                     const int qx = std::clamp(x + ox, 0, int(w) - 1), qy = std::clamp(y + oy, 0, int(h) - 1);
                     if (qx != x + ox || qy != y + oy) ++r.samplesOutside;
                     const double dist = std::hypot(double(qx - x), double(qy - y));

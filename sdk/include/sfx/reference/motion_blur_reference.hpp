@@ -47,6 +47,7 @@ struct MotionBlurReferenceResult {
     double maxSampleOffsetPx = 0;  // longest centre -> sample distance read
     uint64_t samplesOutside = 0;   // sample positions that needed clamping into the image
     uint64_t stillPixels = 0;      // pixels returned unchanged by the velocity branch
+    uint64_t repeatedSamples = 0;  // samples left out on the texel the previous pair read (sfx_shared_mb.h)
 };
 
 // SFX_SKY_DEPTH of sfx_shared.h (the .cpp asserts they are equal): an infinite projection's maxDepth.
