@@ -195,6 +195,7 @@ SFX_MB_FN SFX_MB_REAL mbSampleT(int i, int pairs, SFX_MB_REAL jitter, SFX_MB_REA
 // surface's blur over the pixel; and where a pair along v_N and the next along a slightly shorter
 // v_C end on the same texel. Only the previous pair: leaving out every earlier repeat as well
 // scored lower on the rasterised families (docs/motion_blur.md).
+
 // Which velocity a pair follows. Odd pairs follow the centre's own velocity v_C, even ones the
 // neighbourhood's v_N (the course's alternation, hiding tile edges), except that a centre moving
 // at least half as fast as v_N sends every pair along v_C: sampling along only the dominant

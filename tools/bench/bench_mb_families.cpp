@@ -115,34 +115,38 @@ bool scoreRasterFamilies(const std::string& backend, const std::string& families
     return true;
 }
 
-// The sentence that opens a generated section: what was run.
-std::string setupText(bool raster, bool sweep, uint32_t w, uint32_t h, uint32_t instants, uint32_t seed, const std::string& rasterBackend,
-                      const TierProfile (&profiles)[2], const MotionBlurSettings& settings, const std::vector<double>& speeds) {
-    auto px = [](double v) {
-        char b[16];
-        std::snprintf(b, sizeof b, "%g", v);
-        return std::string(b);
-    };
-    std::string text = std::string("Measured by `bench_mb_families") + (raster ? " --raster" : "") + (sweep ? " --sweep" : "") + "` at " +
-        std::to_string(w) + " × " + std::to_string(h) + ", ";
-    if (sweep) {
-        text += "every 0.5 px from " + px(speeds.front()) + " to " + px(speeds.back()) + " px";
+// What a generated section was measured with (its opening sentence).
+struct DocSetup {
+    bool raster = false, sweep = false;
+    uint32_t width = 0, height = 0, instants = 0, seed = 0;
+    std::string rasterBackend;
+    const TierProfile* profiles = nullptr;  // current, high
+    MotionBlurSettings settings;
+};
+
+// The sentence that opens a generated section, for the speeds the CSV holds.
+std::string setupText(const DocSetup& d, const std::vector<double>& speeds) {
+    std::string text = std::string("Measured by `bench_mb_families") + (d.raster ? " --raster" : "") + (d.sweep ? " --sweep" : "") + "` at " +
+        std::to_string(d.width) + " × " + std::to_string(d.height) + ", ";
+    if (d.sweep) {
+        text += "every 0.5 px from " + tools::compactNumber(speeds.front()) + " to " + tools::compactNumber(speeds.back()) + " px";
     } else {
         text += "speeds";
-        for (size_t i = 0; i < speeds.size(); ++i) text += (i ? ", " : " ") + px(speeds[i]);
+        for (size_t i = 0; i < speeds.size(); ++i) text += (i ? ", " : " ") + tools::compactNumber(speeds[i]);
         text += " px";
     }
-    text += ", the truth the average of " + std::to_string(instants) + " instants" +
-        (raster ? ", drawn by " + rasterBackend + "'s raster pass" : ", layout seed " + std::to_string(seed));
+    text += ", the truth the average of " + std::to_string(d.instants) + " instants" +
+        (d.raster ? ", drawn by " + d.rasterBackend + "'s raster pass" : ", layout seed " + std::to_string(d.seed));
     for (int t = 0; t < 2; ++t)
-        if (Result<MotionBlurParams> p = resolveMotionBlur(profiles[t], settings, h))
+        if (Result<MotionBlurParams> p = resolveMotionBlur(d.profiles[t], d.settings, d.height))
             text += std::string(t ? "; high tier " : "; current tier ") + std::to_string(p->taps) + " taps, radius " + std::to_string(p->radiusPx) +
                 " px";
     return text + " at this height.";
 }
 
-Status writeDocSection(const std::string& docPath, const std::string& section, const std::string& csvPath, const std::string& beforePath,
-                       const std::string& setup) {
+// Writes the page's section of this mode (bench_mb_families, _raster, _sweep or _raster_sweep)
+// from the CSV at `csvPath`, as a run wrote it or as --doc-only finds it.
+Status writeDocSection(const std::string& docPath, const std::string& csvPath, const std::string& beforePath, const DocSetup& setup) {
     Result<std::vector<tools::MbFamilyRow>> rows = tools::readMbFamilyCsv(csvPath);
     if (!rows) return rows.status();
     std::vector<tools::MbFamilyRow> before;
@@ -151,11 +155,17 @@ Status writeDocSection(const std::string& docPath, const std::string& section, c
         if (!b) return b.status();
         before = std::move(b.value());
     }
-    const bool raster = section.find("_raster") != std::string::npos, sweep = section.find("_sweep") != std::string::npos;
-    const std::string text = sweep ? tools::mbSweepTable(rows.value(), setup)
-        : raster                   ? tools::mbRasterTables(rows.value(), setup)
-                                   : tools::mbFamilyTables(rows.value(), before, setup);
-    return tools::replaceMarkdownSection(docPath, section, text);
+    std::vector<double> speeds;
+    for (const tools::MbFamilyRow& r : rows.value())
+        if (std::find(speeds.begin(), speeds.end(), r.speed) == speeds.end()) speeds.push_back(r.speed);
+    std::sort(speeds.begin(), speeds.end());
+    if (speeds.empty()) return Status{StatusCode::InvalidArgument, csvPath + ": no rows"};
+    const std::string text = setupText(setup, speeds);
+    const std::string section = std::string("bench_mb_families") + (setup.raster ? "_raster" : "") + (setup.sweep ? "_sweep" : "");
+    return tools::replaceMarkdownSection(docPath, section,
+                                         setup.sweep        ? tools::mbSweepTable(rows.value(), text)
+                                             : setup.raster ? tools::mbRasterTables(rows.value(), text)
+                                                            : tools::mbFamilyTables(rows.value(), before, text));
 }
 
 }  // namespace
@@ -224,29 +234,16 @@ int main(int argc, char** argv) {
     if (highTaps) profiles[1].mbTaps = *highTaps;
     if (highRadius) profiles[1].mbMaxRadiusPx = *highRadius;
 
-    if (docOnly) {
-        std::vector<double> speedList = tools::splitNumberList(speedsFlag);
-        const std::string section = std::string("bench_mb_families") + (raster ? "_raster" : "") + (sweep ? "_sweep" : "");
-        Result<std::vector<tools::MbFamilyRow>> rows = tools::readMbFamilyCsv(csvPath);
-        if (!rows) {
-            std::cerr << "bench_mb_families: " << rows.status().toString() << "\n";
-            return 1;
-        }
-        if (sweep) {  // the speeds the CSV holds
-            speedList.clear();
-            for (const tools::MbFamilyRow& r : rows.value())
-                if (std::find(speedList.begin(), speedList.end(), r.speed) == speedList.end()) speedList.push_back(r.speed);
-            std::sort(speedList.begin(), speedList.end());
-        }
-        if (Status st = writeDocSection(docPath, section, csvPath, beforePath,
-                                        setupText(raster, sweep, width, height, instants, seed, rasterBackend, profiles, settings, speedList));
-            !st) {
+    auto writeDoc = [&]() -> int {
+        const DocSetup setup{raster, sweep, width, height, instants, seed, rasterBackend, profiles, settings};
+        if (Status st = writeDocSection(docPath, csvPath, beforePath, setup); !st) {
             std::cerr << "bench_mb_families: " << st.toString() << "\n";
             return 1;
         }
-        std::cout << "wrote the section " << section << " of " << docPath << " from " << csvPath << "\n";
+        std::cout << "wrote " << docPath << "'s generated section from " << csvPath << "\n";
         return 0;
-    }
+    };
+    if (docOnly) return writeDoc();
     std::vector<Runner> runners;
     for (Tier tier : {Tier::Current, Tier::High})
         for (const BackendConfig& config : compiledBackends()) {
@@ -408,15 +405,5 @@ int main(int argc, char** argv) {
     }
     csv.close();
     std::cout << "wrote " << csvPath << "\n";
-    if (!docPath.empty()) {
-        const std::string section = std::string("bench_mb_families") + (raster ? "_raster" : "") + (sweep ? "_sweep" : "");
-        if (Status st = writeDocSection(docPath, section, csvPath, beforePath,
-                                        setupText(raster, sweep, width, height, instants, seed, rasterBackend, profiles, settings, speeds));
-            !st) {
-            std::cerr << "bench_mb_families: " << st.toString() << "\n";
-            return 1;
-        }
-        std::cout << "wrote the section " << section << " of " << docPath << "\n";
-    }
-    return 0;
+    return docPath.empty() ? 0 : writeDoc();
 }

@@ -79,11 +79,7 @@ std::string docSection(const std::vector<Point>& points, const std::string& back
             if (p.taps == t && p.radius == r) return &p;
         return nullptr;
     };
-    auto px = [](double v) {
-        char b[16];
-        std::snprintf(b, sizeof b, "%g", v);
-        return std::string(b);
-    };
+    const auto px = tools::compactNumber;
     std::ostringstream md;
     md << "Measured by `fit_mb` at " << w << " × " << h << " (truth of " << instants << " instants), cost at " << costW << " × " << costH << " on "
        << backend << ". Training PSNR (held-out in brackets), dB:\n\n| taps |";

@@ -30,4 +30,19 @@ std::string fixed(double v, int digits) {
 
 std::string fixedOrDash(double v, int digits) { return std::isnan(v) ? "-" : fixed(v, digits); }
 
+std::string signedFixed(double v, int digits) {
+    if (!std::isfinite(v)) return "-";
+    const double scale = std::pow(10.0, digits);
+    const double r = std::round(v * scale) / scale + 0.0;  // + 0.0: -0 -> +0
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%+.*f", digits, r);
+    return buf;
+}
+
+std::string compactNumber(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
 }  // namespace sfx::tools

@@ -16,5 +16,9 @@ Status replaceMarkdownSection(const std::string& path, const std::string& name, 
 std::string fixed(double v, int digits);
 // The same with "-" for NaN (a mask with no pixel, a case not run).
 std::string fixedOrDash(double v, int digits = 2);
+// A signed difference with `digits` decimals ("+0.00", never "-0.00"), "-" when not finite.
+std::string signedFixed(double v, int digits);
+// v as %g writes it: a speed, a radius (6, 7.5, 0.5).
+std::string compactNumber(double v);
 
 }  // namespace sfx::tools

@@ -33,21 +33,6 @@ double number(const std::string& s) {
 
 // "a / b" with one decimal each.
 std::string pair1(double a, double b) { return fixedOrDash(a, 1) + " / " + fixedOrDash(b, 1); }
-// A signed difference, no "-0.0": a value that rounds to zero prints as +0.0.
-std::string signedFixed(double v, int digits) {
-    if (std::isnan(v)) return "-";
-    const double scale = std::pow(10.0, digits);
-    double r = std::round(v * scale) / scale;
-    if (r == 0) r = 0;  // -0 -> +0
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%+.*f", digits, r);
-    return buf;
-}
-std::string speedText(double s) {
-    char buf[16];
-    std::snprintf(buf, sizeof buf, "%g", s);
-    return buf;
-}
 
 // The CPU reference's rows by (family, speed, tier), and the families in file order.
 struct ReferenceRows {
@@ -87,7 +72,7 @@ std::string backendAgreement(const std::vector<MbFamilyRow>& rows, const Referen
             if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || p[1] > kExactDb) continue;
             if (std::fabs(p[0] - p[1]) > worst) {
                 worst = std::fabs(p[0] - p[1]);
-                where = row.family + " at " + speedText(row.speed) + " px, " + row.tier + " tier, " + row.source;
+                where = row.family + " at " + compactNumber(row.speed) + " px, " + row.tier + " tier, " + row.source;
             }
         }
     }
@@ -177,14 +162,14 @@ std::string mbFamilyTables(const std::vector<MbFamilyRow>& rows, const std::vect
             const MbFamilyRow *c = now.find(f, s, "current"), *h = now.find(f, s, "high");
             if (!c || !h) continue;
             if (c->inputMoving > kExactDb) {
-                exact += (exact.empty() ? "" : ", ") + f + " at " + speedText(s) + " px";
+                exact += (exact.empty() ? "" : ", ") + f + " at " + compactNumber(s) + " px";
                 continue;
             }
             const MbFamilyRow *bc = then.find(f, s, "current"), *bh = then.find(f, s, "high");
             const double bcm = bc ? bc->moving : NAN, bhm = bh ? bh->moving : NAN;
             // The change of the rounded figures, so a row's columns agree with each other.
             const double dc = std::round(c->moving * 10) / 10 - bcm, dh = std::round(h->moving * 10) / 10 - bhm;
-            md << "| " << f << " (" << c->split << ") | " << speedText(s) << " | " << fixedOrDash(c->inputMoving, 1) << " | " << pair1(bcm, bhm)
+            md << "| " << f << " (" << c->split << ") | " << compactNumber(s) << " | " << fixedOrDash(c->inputMoving, 1) << " | " << pair1(bcm, bhm)
                << " | " << pair1(c->moving, h->moving) << " | " << signedFixed(dc, 1) << " / " << signedFixed(dh, 1) << " | "
                << edge(c->inputLeading, bc, bh, c->leading, h->leading, &MbFamilyRow::leading) << " | "
                << edge(c->inputTrailing, bc, bh, c->trailing, h->trailing, &MbFamilyRow::trailing) << " |\n";
@@ -214,7 +199,7 @@ std::string mbFamilyTables(const std::vector<MbFamilyRow>& rows, const std::vect
             const MbFamilyRow *c = now.find("square", s, "current"), *h = now.find("square", s, "high");
             const MbFamilyRow *bc = then.find("square", s, "current"), *bh = then.find("square", s, "high");
             if (!c || !h || std::isnan(c->rows) || c->inputRows > kExactDb) continue;
-            md << "| " << speedText(s) << " px | " << pair1(bc ? bc->rows : NAN, bh ? bh->rows : NAN) << " | " << pair1(c->rows, h->rows) << " | "
+            md << "| " << compactNumber(s) << " px | " << pair1(bc ? bc->rows : NAN, bh ? bh->rows : NAN) << " | " << pair1(c->rows, h->rows) << " | "
                << fixedOrDash(c->inputRows, 1) << " |\n";
         }
     }
@@ -234,7 +219,7 @@ std::string mbRasterTables(const std::vector<MbFamilyRow>& rows, const std::stri
             if (!c || !h) continue;
             char residual[32] = "-";
             if (std::isfinite(c->residual)) std::snprintf(residual, sizeof residual, "%.5f", std::pow(10.0, -c->residual / 20.0));
-            md << "| " << f << " | " << speedText(s) << " | " << fixedOrDash(c->inputMoving, 1) << " | " << pair1(c->moving, h->moving) << " | "
+            md << "| " << f << " | " << compactNumber(s) << " | " << fixedOrDash(c->inputMoving, 1) << " | " << pair1(c->moving, h->moving) << " | "
                << signedFixed(c->moving - c->inputMoving, 1) << " / " << signedFixed(h->moving - h->inputMoving, 1) << " | "
                << signedFixed(h->moving - c->moving, 2) << " | " << pair1(c->frame, h->frame) << " | " << fixedOrDash(c->inputLeading, 1) << ", "
                << pair1(c->leading, h->leading) << " | " << fixedOrDash(c->inputTrailing, 1) << ", " << pair1(c->trailing, h->trailing) << " | "
@@ -276,7 +261,7 @@ std::string mbSweepTable(const std::vector<MbFamilyRow>& rows, const std::string
             }
             md << " | "
                << (!std::isfinite(worst) ? std::string("-")
-                       : worst < -0.005  ? signedFixed(worst, 2) + " at " + speedText(at) + " px"
+                       : worst < -0.005  ? signedFixed(worst, 2) + " at " + compactNumber(at) + " px"
                                          : "+0.00");
         }
         int below = 0, total = 0;

@@ -23,12 +23,6 @@ double num(const Row& r, const char* column) {
 
 std::string one(double v) { return fixedOrDash(v, 1); }
 std::string two(double v) { return fixedOrDash(v, 2); }
-std::string signedTwo(double v) {
-    if (!std::isfinite(v)) return "-";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%+.2f", std::round(v * 100) / 100 + 0.0);
-    return buf;
-}
 
 // The CSV's rows, and per family the speeds and per tier the radii, in file order.
 struct FlickerRows {
@@ -137,8 +131,8 @@ Result<std::string> mbFlickerTables(const std::string& csvPath, const std::strin
             worstWorst = std::min(worstWorst, num(*h, "temporal_psnr_worst") - num(*c, "temporal_psnr_worst"));
         }
     md << "\nOver these cases: each tier's temporal PSNR is " << gain.text(1) << " dB above the input's and " << belowPerFrame.text(1)
-       << " dB below its own per-frame PSNR; the high tier less the current one is at least " << signedTwo(worstMean) << " dB on the mean and "
-       << signedTwo(worstWorst) << " on the worst pair.";
+       << " dB below its own per-frame PSNR; the high tier less the current one is at least " << signedFixed(worstMean, 2) << " dB on the mean and "
+       << signedFixed(worstWorst, 2) << " on the worst pair.";
     // The backends against the reference, each tier as it is.
     double backendWorst = 0;
     std::string backends;
