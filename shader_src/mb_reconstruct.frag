@@ -56,7 +56,8 @@ void main() {
             ivec2 off = ivec2(roundAway(mbSampleT(i, pairs, jitter, s == 0 ? 1.0 : -1.0, speedV) * v));
             // Repeated texels (sfx_shared_mb.h): weighed 0 rather than skipped, since a branch
             // here cost llvmpipe a third of the pass.
-            float kept = (i > 0 && off == (s == 0 ? lastAhead : lastBehind)) ? 0.0 : 1.0;
+            ivec2 last = s == 0 ? lastAhead : lastBehind;
+            float kept = mbRepeatsTexel(i, off.x, off.y, last.x, last.y) ? 0.0 : 1.0;
             if (s == 0)
                 lastAhead = off;
             else

@@ -194,7 +194,9 @@ SFX_MB_FN SFX_MB_REAL mbSampleT(int i, int pairs, SFX_MB_REAL jitter, SFX_MB_REA
 // same texel or two (the centre itself among them), and their colour outweighed the fast
 // surface's blur over the pixel; and where a pair along v_N and the next along a slightly shorter
 // v_C end on the same texel. Only the previous pair: leaving out every earlier repeat as well
-// scored lower on the rasterised families (docs/motion_blur.md).
+// scored lower on the rasterised families (docs/motion_blur.md). Pair i's offset (x, y) against
+// the previous pair's on its side (lastX, lastY); pair 0 has none.
+SFX_MB_FN bool mbRepeatsTexel(int i, int x, int y, int lastX, int lastY) { return i > 0 && x == lastX && y == lastY; }
 
 // Which velocity a pair follows. Odd pairs follow the centre's own velocity v_C, even ones the
 // neighbourhood's v_N (the course's alternation, hiding tile edges), except that a centre moving

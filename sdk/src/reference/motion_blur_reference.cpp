@@ -134,7 +134,7 @@ MotionBlurReferenceResult motionBlur(const ColorGrid& color, const Grid& linearD
                                                             : mbSampleT(i, pairs, jitter, side, speedV);
                     const int ox = int(roundAway(t * v[0])), oy = int(roundAway(t * v[1]));
                     int* last = lastOffset[side > 0 ? 0 : 1];
-                    const bool repeat = i > 0 && ox == last[0] && oy == last[1];
+                    const bool repeat = shared::mbRepeatsTexel(i, ox, oy, last[0], last[1]);
                     last[0] = ox, last[1] = oy;
                     if (repeat) {
                         ++r.repeatedSamples;
