@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> configs{"13:18", "9:18", "7:14"};
     std::string backend = "vulkan", sceneName = "pan";
     uint32_t width = 1280, height = 720, runs = 5, rounds = 7;
+    float exposure = 1.0f;
     app.add_option("--configs", configs, "taps:radius, comma-separated")->delimiter(',')->capture_default_str();
     app.add_option("--backend", backend, "the backend timing them")->capture_default_str();
     app.add_option("--scene", sceneName, "the procedural scene timed: ball, pan or crossing")->capture_default_str();
@@ -46,7 +47,15 @@ int main(int argc, char** argv) {
     app.add_option("--height", height, "pixels of the timed runs")->capture_default_str();
     app.add_option("--runs", runs, "timed runs per configuration and round (median)")->capture_default_str();
     app.add_option("--rounds", rounds, "rounds, the configurations' order alternating")->capture_default_str();
+    app.add_option("--exposure", exposure, "MotionBlurSettings::exposure: scales the scene's velocities (a slower scene), (0, 4]")
+        ->capture_default_str();
     CLI11_PARSE(app, argc, argv);
+    if (!(exposure > 0.0f && exposure <= 4.0f)) {
+        std::cerr << "bench_mb_cost: --exposure " << exposure << ": allowed (0, 4]\n";
+        return 1;
+    }
+    MotionBlurSettings settings;
+    settings.exposure = exposure;
 
     const TierProfile high = tiers::profile(Tier::High);
     std::vector<Config> list;
@@ -89,7 +98,7 @@ int main(int argc, char** argv) {
     for (uint32_t round = 0; round < rounds; ++round) {
         for (size_t k = 0; k < list.size(); ++k) {
             Config& c = list[round % 2 == 0 ? k : list.size() - 1 - k];
-            Result<tools::MotionBlurRun> run = tools::runMotionBlur(*device, c.profile, {}, frame, cam, runs);
+            Result<tools::MotionBlurRun> run = tools::runMotionBlur(*device, c.profile, settings, frame, cam, runs);
             if (!run) {
                 std::cerr << "bench_mb_cost: " << c.label << ": " << run.status().toString() << "\n";
                 return 1;
@@ -107,8 +116,8 @@ int main(int argc, char** argv) {
         std::printf("\n");
         std::fflush(stdout);
     }
-    std::printf("%s at %ux%u, medians of %u rounds (each a median of %u runs); copy pass %.2f ms\n", backend.c_str(), width, height, rounds, runs,
-                median(copyMs));
+    std::printf("%s at %ux%u, exposure %.2f, medians of %u rounds (each a median of %u runs); copy pass %.2f ms\n", backend.c_str(), width, height,
+                exposure, rounds, runs, median(copyMs));
     for (const Config& c : list) std::printf("  %-10s %.2f ms (%.1f copy passes)\n", c.label.c_str(), median(c.ms), median(c.ms) / median(copyMs));
     return 0;
 }

@@ -55,6 +55,7 @@ struct Options {
     tools::LookSearch search;
     bool leaveOneOut = false;           // fit on every family and on every family but one, score each
     std::vector<std::string> variants;  // --diagnose: only the variants whose names contain one of these (none: all)
+    std::optional<float> epsilon;       // AoSettings::epsilon for the fit (unset: the settings' default)
 };
 
 // Each family's score from a run's comparisons (one per case; AoCase::view indexes `views`).
@@ -247,6 +248,7 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--frame-weight", o.search.frameWeight, "the objective: this x frame PSNR + PSNR where occluded (0: occluded only)")
         ->capture_default_str();
+    app.add_option("--epsilon", o.epsilon, "AoSettings::epsilon during the fit, in units of radius^2 (unset: the settings' default)");
     app.add_flag("--leave-one-out", o.leaveOneOut,
                  "from the tier table's look, fit on every family and on every family but one, score each family under each "
                  "(<out-dir>/ao_loo.csv, ao_families.md)");
@@ -312,9 +314,11 @@ int main(int argc, char** argv) {
                 }
                 continue;
             }
-            const AoSettings start = o.start == "tier" || o.leaveOneOut
+            const AoSettings startLook = o.start == "tier" || o.leaveOneOut
                 ? tools::tierLook(technique, tiers::choose(dev.value()->caps(), tier)->profile)
                 : tools::paperLook(technique);
+            AoSettings start = startLook;
+            if (o.epsilon) start.epsilon = *o.epsilon;
             if (o.leaveOneOut) {
                 Result<tools::LeaveOneOut> r = tools::leaveOneOut(ev, views, allCases, start, o.search, label);
                 if (!r) {
