@@ -58,7 +58,7 @@ if(TARGET sfx_backend_vulkan)
 endif()
 if(TARGET sfx_backend_gl)
   string(APPEND SFX_PC_LIBS " -lsfx_backend_gl")
-  set(SFX_PC_REQUIRES "osmesa egl")
+  set(SFX_PC_REQUIRES "egl")  # libOSMesa is opened at run time
 endif()
 list(TRANSFORM CMAKE_DL_LIBS PREPEND "-l" OUTPUT_VARIABLE SFX_PC_DL)
 list(JOIN SFX_PC_DL " " SFX_PC_DL)

@@ -1,6 +1,7 @@
 // openBestDevice with some backends hidden by the environment (CTest's ENVIRONMENT property:
 // VK_ICD_FILENAMES=/nonexistent hides the Vulkan driver, __EGL_VENDOR_LIBRARY_FILENAMES=
-// /nonexistent every EGL vendor, LD_LIBRARY_PATH to osmesa_stub's libOSMesa.so.8 OSMesa).
+// /nonexistent every EGL vendor, LD_LIBRARY_PATH to osmesa_stub's libOSMesa.so.8, or to a file of
+// that name that is not a library, OSMesa).
 // Usage: sfx_best_device_fallback <hidden>... where each hidden backend is a name of
 // toString(BackendConfig). Checks that
 //   - each hidden backend really fails to open, with BackendUnavailable;

@@ -1,8 +1,8 @@
 // A stand-in for libOSMesa.so.8 that has no renderer: every context creation fails, as the real
 // library's does on a machine without its software rasteriser. Tests only (fallback.none):
-// LD_LIBRARY_PATH puts it before the system's library, which is how OSMesa, linked rather than
-// loaded at run time, is hidden from openBestDevice. (Mesa's own switch, GALLIUM_DRIVER set to
-// an unknown driver, crashes inside OSMesaCreateContextAttribs instead of failing.)
+// LD_LIBRARY_PATH puts it before the system's library, which the backend opens by its soname.
+// (Mesa's own switch, GALLIUM_DRIVER set to an unknown driver, crashes inside
+// OSMesaCreateContextAttribs instead of failing.)
 #include <GL/osmesa.h>
 
 extern "C" {
