@@ -163,7 +163,7 @@ TEST_CASE("multilayer ao: bad layer counts, resolutions and layer textures are n
 
 namespace {
 
-std::string scenePath(const char* name) { return std::string(SFX_SOURCE_DIR) + "/tests/data/scenes/" + name; }
+std::string scenePath(const char* name) { return test::sourceDir() + "/tests/data/scenes/" + name; }
 
 }  // namespace
 

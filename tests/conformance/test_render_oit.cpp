@@ -50,7 +50,7 @@ constexpr double kWeightedTolerance = 4.0 / 510.0;
 // (docs/oit.md, "The scene renderer").
 constexpr double kWeightedVsExact = 0.25;
 
-std::string scenePath(const char* name) { return std::string(SFX_SOURCE_DIR) + "/tools/scenes/files/" + name; }
+std::string scenePath(const char* name) { return test::sourceDir() + "/tools/scenes/files/" + name; }
 
 scene::Scene loadScene(const char* name) {
     Result<scene::Scene> s = scene::loadSceneFile(scenePath(name));

@@ -41,6 +41,11 @@ std::string outputDir() {
     return dir;
 }
 
+std::string sourceDir() {
+    const char* env = std::getenv("SFX_SOURCE_DIR");
+    return env && *env ? env : SFX_SOURCE_DIR;
+}
+
 }  // namespace sfx::test
 
 int main(int argc, char** argv) {

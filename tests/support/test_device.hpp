@@ -27,6 +27,10 @@ std::vector<std::string> takeValidationMessages();
 // test-output (whatever the working directory, so nothing lands in the source tree).
 std::string outputDir();
 
+// The repository's root, where tests read scene files: $SFX_SOURCE_DIR, or the tree the binary was
+// built from (a copy of the binary run elsewhere, on a device machine, names its own).
+std::string sourceDir();
+
 // The driver's name without its build details ("llvmpipe (LLVM 15.0.6, 256 bits)" is
 // "llvmpipe"): the vector width varies with the machine, a documented row's key must not.
 inline std::string driverName() {
