@@ -2,7 +2,9 @@
 // comparison on a machine shared with other work. Each configuration (taps : radius at 720 rows,
 // the rest the high tier's) is timed on the "pan" scene (as fit_mb and trade_presets time; --scene picks another) once
 // per round, in an order that alternates between rounds, beside a copy pass of the same size as
-// the load indicator; printed are the medians over the rounds. A program, not a test; docs/motion_blur.md shows its figures.
+// the load indicator; printed are the medians over the rounds. --exposure scales every velocity
+// (a slower scene: the pair count follows the speed). A program, not a test; docs/motion_blur.md
+// shows its figures.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>

@@ -10,8 +10,9 @@
 // <out-dir>/ao_fit.csv and the tables into <out-dir>/trade.md between its markers. With
 // --leave-one-out it measures instead how the fit generalises, one family left out at a time
 // (ao_leave_one_out.hpp): <out-dir>/ao_loo.csv and its section of <out-dir>/ao_families.md. The
-// search is tools/bench/common/ao_look_search.*. The truth comes from the same cache as
-// bench_trade. A program, not a test.
+// search is tools/bench/common/ao_look_search.*. --epsilon holds AoSettings::epsilon (Alchemy's
+// falloff guard) at a value through the fit (docs/ao_families.md measures it as a look
+// parameter). The truth comes from the same cache as bench_trade. A program, not a test.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
