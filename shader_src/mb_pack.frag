@@ -33,7 +33,8 @@ void main() {
     float zc = min(z, SFX_MB_MAX_PACKED_DEPTH);
     // hi keeps the top 11 significant bits of z, which fp16 stores exactly; lo the rest.
     // (Computed by hand: packHalf2x16 is missing from GLSL 330, the desktop current tier.)
-    float step = exp2(floor(log2(max(zc, 1.0e-4)))) / 1024.0;
+    uint exponent = max(floatBitsToUint(zc) & 0x7F800000u, 0x38800000u);  // 2^floor(log2 z), at least 2^-14
+    float step = uintBitsToFloat(exponent - (10u << 23));                   // that over 1024
     float hi = floor(zc / step) * step;
     outPacked = vec4(stored, hi, zc - hi);
 }
