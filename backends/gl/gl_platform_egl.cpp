@@ -1,12 +1,21 @@
-// EGL platform: a surfaceless display (EGL_MESA_platform_surfaceless) and a context with no
-// surface (EGL_KHR_surfaceless_context); the driver renders only into framebuffer objects.
+// EGL platform: a display with no window system and a context with no surface
+// (EGL_KHR_surfaceless_context); the driver renders only into framebuffer objects. The display
+// is the first of these that gives such a context:
+//   - surfaceless: EGL_MESA_platform_surfaceless (Mesa, every driver this project is tested on);
+//   - device: the first EGL device (EGL_EXT_platform_device), how NVIDIA's drivers run headless,
+//     with no surfaceless platform;
+//   - default: eglGetDisplay(EGL_DEFAULT_DISPLAY), the one display of Android and similar systems.
+// SFX_EGL_PLATFORM=surfaceless|device|default in the environment tries that one alone.
 #define EGL_NO_X11 1
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
+#include <cstdlib>
 #include <cstring>
+#include <map>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "gl_platform.hpp"
 
@@ -27,14 +36,17 @@ bool hasExtension(const char* list, const char* name) {
     return false;
 }
 
-// Every surfaceless display handle is the same object, so eglTerminate would end the other
-// devices' contexts too: count the users and terminate with the last one.
+// Every display handle of a kind is the same object, so eglTerminate would end the other
+// devices' contexts too: count each display's users and terminate with the last one.
 std::mutex gDisplayMutex;
-int gDisplayUsers = 0;
+std::map<EGLDisplay, int> gDisplayUsers;
 
 void releaseDisplay(EGLDisplay display) {
     std::lock_guard<std::mutex> lock(gDisplayMutex);
-    if (--gDisplayUsers == 0) eglTerminate(display);
+    if (--gDisplayUsers[display] == 0) {
+        gDisplayUsers.erase(display);
+        eglTerminate(display);
+    }
 }
 
 class EglPlatform final : public GlPlatform {
@@ -67,25 +79,66 @@ struct Version {
     int major, minor;
 };
 
-}  // namespace
+enum class DisplayKind { Surfaceless, Device, Default };
+constexpr DisplayKind kDisplayKinds[] = {DisplayKind::Surfaceless, DisplayKind::Device, DisplayKind::Default};
 
-Result<std::unique_ptr<GlPlatform>> openEglPlatform(Api api, bool debugContext) {
+const char* toString(DisplayKind kind) {
+    switch (kind) {
+        case DisplayKind::Surfaceless: return "surfaceless";
+        case DisplayKind::Device: return "device";
+        case DisplayKind::Default: return "default";
+    }
+    return "?";
+}
+
+Status unavailable(const std::string& why) { return Status{StatusCode::BackendUnavailable, why}; }
+
+// The display of `kind`, not yet initialised, or why there is none.
+Result<EGLDisplay> findDisplay(DisplayKind kind) {
     const char* clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    if (!hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless"))
-        return Status{StatusCode::BackendUnavailable, "EGL: the client has no EGL_MESA_platform_surfaceless"};
     auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-    if (!getPlatformDisplay) return Status{StatusCode::BackendUnavailable, "EGL: no eglGetPlatformDisplayEXT"};
-    EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-    if (display == EGL_NO_DISPLAY) return Status{StatusCode::BackendUnavailable, "EGL: " + eglErrorText("eglGetPlatformDisplayEXT(surfaceless)")};
+    EGLDisplay display = EGL_NO_DISPLAY;
+    switch (kind) {
+        case DisplayKind::Surfaceless:
+            if (!hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless"))
+                return unavailable("the client has no EGL_MESA_platform_surfaceless");
+            if (!getPlatformDisplay) return unavailable("no eglGetPlatformDisplayEXT");
+            display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+            if (display == EGL_NO_DISPLAY) return unavailable(eglErrorText("eglGetPlatformDisplayEXT(surfaceless)"));
+            return display;
+        case DisplayKind::Device: {
+            if (!hasExtension(clientExtensions, "EGL_EXT_platform_device")) return unavailable("the client has no EGL_EXT_platform_device");
+            auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+            if (!queryDevices || !getPlatformDisplay) return unavailable("no eglQueryDevicesEXT or eglGetPlatformDisplayEXT");
+            EGLDeviceEXT device = nullptr;
+            EGLint count = 0;
+            if (!queryDevices(1, &device, &count) || count < 1) return unavailable("eglQueryDevicesEXT found no device");
+            display = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, device, nullptr);
+            if (display == EGL_NO_DISPLAY) return unavailable(eglErrorText("eglGetPlatformDisplayEXT(device)"));
+            return display;
+        }
+        case DisplayKind::Default:
+            display = eglGetDisplay(EGL_DEFAULT_DISPLAY);
+            if (display == EGL_NO_DISPLAY) return unavailable("eglGetDisplay(EGL_DEFAULT_DISPLAY) gave no display");
+            return display;
+    }
+    return unavailable("unknown display kind");
+}
+
+// A context of `api` with no surface on the display of `kind`.
+Result<std::unique_ptr<GlPlatform>> openOn(DisplayKind kind, Api api, bool debugContext) {
+    Result<EGLDisplay> found = findDisplay(kind);
+    if (!found) return found.status();
+    const EGLDisplay display = found.value();
     {
         std::lock_guard<std::mutex> lock(gDisplayMutex);
         EGLint major = 0, minor = 0;
-        if (!eglInitialize(display, &major, &minor)) return Status{StatusCode::BackendUnavailable, "EGL: " + eglErrorText("eglInitialize")};
-        ++gDisplayUsers;
+        if (!eglInitialize(display, &major, &minor)) return unavailable(eglErrorText("eglInitialize"));
+        ++gDisplayUsers[display];
     }
     auto fail = [&](const std::string& why) -> Result<std::unique_ptr<GlPlatform>> {
         releaseDisplay(display);
-        return Status{StatusCode::BackendUnavailable, "EGL: " + why};
+        return unavailable(why);
     };
     const char* displayExtensions = eglQueryString(display, EGL_EXTENSIONS);
     if (!hasExtension(displayExtensions, "EGL_KHR_surfaceless_context")) return fail("the display has no EGL_KHR_surfaceless_context");
@@ -145,6 +198,27 @@ Result<std::unique_ptr<GlPlatform>> openEglPlatform(Api api, bool debugContext) 
         return fail(why);
     }
     return std::unique_ptr<GlPlatform>(new EglPlatform(display, context, eglApi));
+}
+
+}  // namespace
+
+Result<std::unique_ptr<GlPlatform>> openEglPlatform(Api api, bool debugContext) {
+    std::vector<DisplayKind> kinds(std::begin(kDisplayKinds), std::end(kDisplayKinds));
+    if (const char* forced = std::getenv("SFX_EGL_PLATFORM"); forced && *forced) {
+        kinds.clear();
+        for (DisplayKind k : kDisplayKinds)
+            if (std::strcmp(forced, toString(k)) == 0) kinds.push_back(k);
+        if (kinds.empty())
+            return unavailable(std::string("EGL: SFX_EGL_PLATFORM is '") + forced +
+                               "'; allowed surfaceless, device, default (or unset: each in turn)");
+    }
+    std::string reasons;
+    for (DisplayKind kind : kinds) {
+        Result<std::unique_ptr<GlPlatform>> platform = openOn(kind, api, debugContext);
+        if (platform) return platform;
+        reasons += (reasons.empty() ? "" : "; ") + std::string(toString(kind)) + " display: " + platform.status().message();
+    }
+    return unavailable("EGL: " + reasons);
 }
 
 }  // namespace sfx::gl
