@@ -28,6 +28,21 @@ bool hasExtension(const char* list, const char* name) {
 
 EGLenum eglApi(ContextApi api) { return api == ContextApi::GLES ? EGL_OPENGL_ES_API : EGL_OPENGL_API; }
 
+// A display with no window system: Mesa's surfaceless platform where the client has it, else the
+// first EGL device (how NVIDIA's drivers run headless). EGL_NO_DISPLAY when neither is there.
+EGLDisplay headlessDisplay() {
+    const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    if (!getPlatformDisplay) return EGL_NO_DISPLAY;
+    if (hasExtension(client, "EGL_MESA_platform_surfaceless")) return getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+    EGLDeviceEXT first = nullptr;
+    EGLint found = 0;
+    if (hasExtension(client, "EGL_EXT_platform_device") && queryDevices && queryDevices(1, &first, &found) && found > 0)
+        return getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, first, nullptr);
+    return EGL_NO_DISPLAY;
+}
+
 }  // namespace
 
 const char* toString(ContextApi api) { return api == ContextApi::GLES ? "gles" : "gl"; }
@@ -35,15 +50,13 @@ const char* toString(ContextApi api) { return api == ContextApi::GLES ? "gles" :
 void* EglContext::getProcAddress(const char* name) { return reinterpret_cast<void*>(eglGetProcAddress(name)); }
 
 sfx::Result<std::unique_ptr<EglContext>> EglContext::open(ContextApi api) {
-    if (!hasExtension(eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS), "EGL_MESA_platform_surfaceless"))
-        return unavailable("the EGL client has no EGL_MESA_platform_surfaceless");
-    auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-    if (!getPlatformDisplay) return unavailable("no eglGetPlatformDisplayEXT");
-    EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    EGLDisplay display = headlessDisplay();
+    if (display == EGL_NO_DISPLAY)
+        return unavailable("the EGL client has neither EGL_MESA_platform_surfaceless nor an EGL device (EGL_EXT_platform_device)");
     EGLint major = 0, minor = 0;
-    if (display == EGL_NO_DISPLAY || !eglInitialize(display, &major, &minor)) return unavailable(eglFailed("eglInitialize"));
-    // The surfaceless display is one object per process: it is not terminated here, so that an
-    // SDK device (or anyone else) using it keeps working after this context is gone.
+    if (!eglInitialize(display, &major, &minor)) return unavailable(eglFailed("eglInitialize"));
+    // The display is one object per process: it is not terminated here, so that an SDK device
+    // (or anyone else) using it keeps working after this context is gone.
     if (!hasExtension(eglQueryString(display, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context"))
         return unavailable("the display has no EGL_KHR_surfaceless_context");
     if (!eglBindAPI(eglApi(api))) return unavailable(eglFailed("eglBindAPI"));
