@@ -23,11 +23,11 @@ struct OsmesaFunctions {
     std::string error;  // empty when every entry point was found
 };
 
+// The first entry point missing is the one the error names.
 template <typename Fn>
-bool loadSymbol(void* library, const char* name, Fn* out, std::string& error) {
+void loadSymbol(void* library, const char* name, Fn* out, std::string& error) {
     *out = reinterpret_cast<Fn>(dlsym(library, name));
     if (!*out && error.empty()) error = std::string("OSMesa: libOSMesa.so.8 has no ") + name;
-    return *out != nullptr;
 }
 
 // Opened once per process and never closed: contexts made current on any thread keep Mesa's

@@ -17,6 +17,7 @@
 #include "copy_pass.hpp"
 #include "motion_cases.hpp"
 #include "sfx/backends.hpp"
+#include "sfx/settings_ranges.hpp"
 #include "sfx/tiers.hpp"
 
 using namespace sfx;
@@ -52,8 +53,12 @@ int main(int argc, char** argv) {
     app.add_option("--exposure", exposure, "MotionBlurSettings::exposure: scales the scene's velocities (a slower scene), (0, 4]")
         ->capture_default_str();
     CLI11_PARSE(app, argc, argv);
-    if (!(exposure > 0.0f && exposure <= 4.0f)) {
-        std::cerr << "bench_mb_cost: --exposure " << exposure << ": allowed (0, 4]\n";
+    if (Status st = checkSetting(Setting::MbExposure, exposure, "--exposure"); !st) {
+        std::cerr << "bench_mb_cost: " << st.toString() << "\n";
+        return 1;
+    }
+    if (exposure == 0.0f) {
+        std::cerr << "bench_mb_cost: --exposure 0 turns the blur off: nothing to time\n";
         return 1;
     }
     MotionBlurSettings settings;

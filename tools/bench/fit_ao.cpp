@@ -315,10 +315,8 @@ int main(int argc, char** argv) {
                 }
                 continue;
             }
-            const AoSettings startLook = o.start == "tier" || o.leaveOneOut
-                ? tools::tierLook(technique, tiers::choose(dev.value()->caps(), tier)->profile)
-                : tools::paperLook(technique);
-            AoSettings start = startLook;
+            AoSettings start = o.start == "tier" || o.leaveOneOut ? tools::tierLook(technique, tiers::choose(dev.value()->caps(), tier)->profile)
+                                                                  : tools::paperLook(technique);
             if (o.epsilon) start.epsilon = *o.epsilon;
             if (o.leaveOneOut) {
                 Result<tools::LeaveOneOut> r = tools::leaveOneOut(ev, views, allCases, start, o.search, label);
