@@ -29,7 +29,9 @@
 #                      (docs/mb_raster_families.csv, docs/images/mb_{models,camera,turning}_12px.png).
 #                      With --sweeps, both every 0.5 px past both tiers' blur, CPU reference
 #                      (docs/mb_sweep.csv, docs/mb_raster_sweep.csv and their tables in "The tier promise
-#                      between the scored speeds" in docs/motion_blur.md).
+#                      between the scored speeds" in docs/motion_blur.md), and each 2D family laid
+#                      out from 16 seeds every 0.5 px from 5 px, where the tiers' pictures can
+#                      differ (docs/mb_layouts.csv and its table there; two processes).
 #   7. bench_mb_flicker - motion blur's frame-to-frame change against the truth's over frame
 #                      sequences of the same families, and both jitter patterns (docs/mb_flicker.csv and
 #                      its tables in "Stable under motion" in docs/motion_blur.md);
@@ -42,7 +44,7 @@
 # tiers/src/tier_table.cpp (with the preset accuracies trade_presets prints), then a rerun; so are
 # the motion blur presets fit_mb's front gives, and the AO presets ao_front's front gives.
 # Usage: tools/run_trade.sh [--backends vulkan,gles] [--sweeps]
-# --sweeps adds the motion blur speed sweeps of step 6 (10-16 minutes on 2 cores, beyond the
+# --sweeps adds the motion blur speed sweeps of step 6 (15-25 minutes on 2 cores, beyond the
 # rest's 20-minute budget); without it they are skipped, and the script says so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -90,11 +92,23 @@ if [ "$SWEEPS" = 1 ]; then
     "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --backends none --csv docs/mb_sweep.csv --doc docs/motion_blur.md
     "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --raster --raster-backend "${BACKENDS%%,*}" --instants 64 --backends none \
         --csv docs/mb_raster_sweep.csv --doc docs/motion_blur.md
+    step "bench_mb_families --layouts: the tier promise over 16 layouts of each family, CPU reference (5-8 minutes)"
+    layouts_dir=$(mktemp -d)
+    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --sweep-from 5 --layouts 8 --seed 9 --instants 64 --backends none \
+        --csv "$layouts_dir/b.csv" > "$layouts_dir/b.log" 2>&1 &
+    second=$!
+    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --sweep-from 5 --layouts 8 --seed 1 --instants 64 --backends none \
+        --csv "$layouts_dir/a.csv"
+    wait "$second" || { cat "$layouts_dir/b.log" >&2; exit 1; }
+    { cat "$layouts_dir/a.csv"; tail -n +2 "$layouts_dir/b.csv"; } > docs/mb_layouts.csv
+    rm -rf "$layouts_dir"
+    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --layouts 16 --instants 64 --csv docs/mb_layouts.csv --doc docs/motion_blur.md --doc-only
 else
-    step "bench_mb_families --sweep: skipped (10-16 minutes; run with --sweeps): docs/mb_sweep.csv and docs/mb_raster_sweep.csv keep their last run"
+    step "bench_mb_families --sweep and --layouts: skipped (15-25 minutes; run with --sweeps): docs/mb_sweep.csv, mb_raster_sweep.csv and mb_layouts.csv keep their last run"
     "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --csv docs/mb_sweep.csv --doc docs/motion_blur.md --doc-only
     "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --raster --raster-backend "${BACKENDS%%,*}" --instants 64 --csv docs/mb_raster_sweep.csv \
         --doc docs/motion_blur.md --doc-only
+    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --layouts 16 --instants 64 --csv docs/mb_layouts.csv --doc docs/motion_blur.md --doc-only
 fi
 step "bench_mb_flicker: motion blur's flicker over frame sequences of the scene families"
 "$BUILD_DIR"/tools/bench/bench_mb_flicker --csv docs/mb_flicker.csv --backends "$BACKENDS" --doc docs/motion_blur.md

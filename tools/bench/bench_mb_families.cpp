@@ -9,7 +9,9 @@
 // truth averaging --instants rendered instants. With --sweep, every 0.5 px from 0.5 px to past
 // both tiers' blur (the high tier's radius at this height, doubled, plus 4 px) and, per family
 // and region, the worst high - current tier and its speed: the tier promise checked between the
-// scored speeds too. --hidden-near, --high-dither-pairs and --high-jitter-always score the CPU
+// scored speeds too. With --layouts N, each 2D family laid out from N seeds, and per family and
+// region the high - current tier's mean over the layouts: the promise for the family, not one
+// layout of it. --hidden-near, --high-dither-pairs and --high-jitter-always score the CPU
 // reference's candidate reconstructions (MotionBlurCandidate) instead of today's. Not a test:
 // docs/motion_blur.md shows its CSVs and pictures. About two minutes on 2 cores (a sweep: see
 // docs/motion_blur.md).
@@ -118,7 +120,7 @@ bool scoreRasterFamilies(const std::string& backend, const std::string& families
 // What a generated section was measured with (its opening sentence).
 struct DocSetup {
     bool raster = false, sweep = false;
-    uint32_t width = 0, height = 0, instants = 0, seed = 0;
+    uint32_t width = 0, height = 0, instants = 0, seed = 0, layouts = 1;
     std::string rasterBackend;
     const TierProfile* profiles = nullptr;  // current, high
     MotionBlurSettings settings;
@@ -136,7 +138,9 @@ std::string setupText(const DocSetup& d, const std::vector<double>& speeds) {
         text += " px";
     }
     text += ", the truth the average of " + std::to_string(d.instants) + " instants" +
-        (d.raster ? ", drawn by " + d.rasterBackend + "'s raster pass" : ", layout seed " + std::to_string(d.seed));
+        (d.raster            ? ", drawn by " + d.rasterBackend + "'s raster pass"
+             : d.layouts > 1 ? ", layouts from seeds " + std::to_string(d.seed) + "-" + std::to_string(d.seed + d.layouts - 1)
+                             : ", layout seed " + std::to_string(d.seed));
     for (int t = 0; t < 2; ++t)
         if (Result<MotionBlurParams> p = resolveMotionBlur(d.profiles[t], d.settings, d.height))
             text += std::string(t ? "; high tier " : "; current tier ") + std::to_string(p->taps) + " taps, radius " + std::to_string(p->radiusPx) +
@@ -144,7 +148,7 @@ std::string setupText(const DocSetup& d, const std::vector<double>& speeds) {
     return text + " at this height.";
 }
 
-// Writes the page's section of this mode (bench_mb_families, _raster, _sweep or _raster_sweep)
+// Writes the page's section of this mode (bench_mb_families, _raster, _sweep, _raster_sweep or _layouts)
 // from the CSV at `csvPath`, as a run wrote it or as --doc-only finds it.
 Status writeDocSection(const std::string& docPath, const std::string& csvPath, const std::string& beforePath, const DocSetup& setup) {
     Result<std::vector<tools::MbFamilyRow>> rows = tools::readMbFamilyCsv(csvPath);
@@ -161,6 +165,7 @@ Status writeDocSection(const std::string& docPath, const std::string& csvPath, c
     std::sort(speeds.begin(), speeds.end());
     if (speeds.empty()) return Status{StatusCode::InvalidArgument, csvPath + ": no rows"};
     const std::string text = setupText(setup, speeds);
+    if (setup.layouts > 1) return tools::replaceMarkdownSection(docPath, "bench_mb_families_layouts", tools::mbLayoutsTable(rows.value(), text));
     const std::string section = std::string("bench_mb_families") + (setup.raster ? "_raster" : "") + (setup.sweep ? "_sweep" : "");
     return tools::replaceMarkdownSection(docPath, section,
                                          setup.sweep        ? tools::mbSweepTable(rows.value(), text)
@@ -172,7 +177,7 @@ Status writeDocSection(const std::string& docPath, const std::string& csvPath, c
 
 int main(int argc, char** argv) {
     CLI::App app{"bench_mb_families: motion blur per scene family, speed, tier and backend against temporal supersampling"};
-    uint32_t width = 320, height = 240, instants = 256, seed = 1;
+    uint32_t width = 320, height = 240, instants = 256, seed = 1, layouts = 1;
     std::string csvPath = "mb_families.csv", backendsFlag = "vulkan,gles", speedsFlag = "0.5,2,6,12,24,40", familiesFlag = "all";
     std::string imagesDir, imageSpeedsFlag = "6,12,24", docPath, beforePath;
     std::string rasterBackend = "vulkan";
@@ -188,6 +193,10 @@ int main(int argc, char** argv) {
     app.add_option("--height", height, "picture height")->capture_default_str();
     app.add_option("--instants", instants, "instants averaged for the truth")->capture_default_str();
     app.add_option("--seed", seed, "layout seed of every family")->capture_default_str();
+    app.add_option("--layouts", layouts,
+                   "lay out each 2D family from seeds --seed to --seed + N - 1 and print the high - current tier's mean over them "
+                   "(with --doc, the section bench_mb_families_layouts)")
+        ->capture_default_str();
     app.add_option("--speeds", speedsFlag, "displacements across the shutter, pixels, comma-separated")->capture_default_str();
     app.add_option("--families", familiesFlag, "comma-separated families, or all")->capture_default_str();
     app.add_flag("--raster", raster, "score the rasterised families (models, camera, turning) instead of the 2D ones");
@@ -210,13 +219,17 @@ int main(int argc, char** argv) {
     app.add_option("--image-speeds", imageSpeedsFlag, "speeds of the --images pictures, comma-separated (each also in --speeds)")
         ->capture_default_str();
     app.add_option("--doc", docPath,
-                   "write this run's tables into the page's generated section (bench_mb_families, _raster, _sweep or _raster_sweep)");
+                   "write this run's tables into the page's generated section (bench_mb_families, _raster, _sweep, _raster_sweep or _layouts)");
     app.add_option("--before", beforePath, "with --doc (2D families): the baseline CSV the tables compare with");
     bool docOnly = false;
     app.add_flag("--doc-only", docOnly, "with --doc: write the section from --csv as it is, without running anything");
     CLI11_PARSE(app, argc, argv);
     if (width == 0 || height == 0 || instants < 2) {
         std::cerr << "bench_mb_families: --width and --height must be > 0, --instants >= 2\n";
+        return 1;
+    }
+    if (layouts < 1 || layouts > 1000 || (layouts > 1 && (raster || !imagesDir.empty()))) {
+        std::cerr << "bench_mb_families: --layouts must be in [1, 1000], and 1 with --raster (one layout per family) or --images\n";
         return 1;
     }
     if (!(hiddenNear >= 0 && hiddenNear <= 8)) {
@@ -235,7 +248,7 @@ int main(int argc, char** argv) {
     if (highRadius) profiles[1].mbMaxRadiusPx = *highRadius;
 
     auto writeDoc = [&]() -> int {
-        const DocSetup setup{raster, sweep, width, height, instants, seed, rasterBackend, profiles, settings};
+        const DocSetup setup{raster, sweep, width, height, instants, seed, layouts, rasterBackend, profiles, settings};
         if (Status st = writeDocSection(docPath, csvPath, beforePath, setup); !st) {
             std::cerr << "bench_mb_families: " << st.toString() << "\n";
             return 1;
@@ -260,7 +273,7 @@ int main(int argc, char** argv) {
     const CameraProjection cam = makePerspective(pd).value();
 
     std::ofstream csv(csvPath);
-    csv << "family,split,speed_px,tier,source,taps,radius_px,psnr_moving,psnr_frame,input_psnr_moving,gain_db,psnr_leading,psnr_trailing,"
+    csv << "family,split,speed_px,layout,tier,source,taps,radius_px,psnr_moving,psnr_frame,input_psnr_moving,gain_db,psnr_leading,psnr_trailing,"
            "psnr_rows,input_psnr_leading,input_psnr_trailing,input_psnr_rows,truth_residual_psnr\n";
     // Per family x tier (CPU reference): the sum of gains, for the summary.
     std::map<std::string, std::array<double, 2>> gainSum;
@@ -295,6 +308,7 @@ int main(int argc, char** argv) {
             if (std::find(speeds.begin(), speeds.end(), s) == speeds.end())
                 std::cerr << "bench_mb_families: image speed " << s << " is not in --speeds\n";
     }
+    uint32_t layout = 0;  // the 2D family's layout seed, for the CSV; 0: a rasterised family
     // One scored case: the family's truth, masks and the input frame the effect gets.
     auto scoreCase = [&](const std::string& family, bool heldOut, double speed, const ColorGrid& truth, double residual,
                          const tools::FamilyMasks& masks, const SceneFrame& frame, const std::vector<bool>& rowsMask) -> bool {
@@ -309,11 +323,12 @@ int main(int argc, char** argv) {
                         source.c_str(), p.taps, p.radiusPx, tools::fixedOrDash(s.moving).c_str(), s.moving - in.moving,
                         tools::fixedOrDash(s.frame).c_str(), tools::fixedOrDash(s.leading).c_str(), tools::fixedOrDash(s.trailing).c_str(),
                         tools::fixedOrDash(s.rows).c_str());
-            csv << family << "," << (heldOut ? "held-out" : "training") << "," << speed << "," << toString(tier) << "," << source << "," << p.taps
-                << "," << p.radiusPx << "," << tools::fixedOrDash(s.moving) << "," << tools::fixedOrDash(s.frame) << ","
-                << tools::fixedOrDash(in.moving) << "," << tools::fixedOrDash(s.moving - in.moving) << "," << tools::fixedOrDash(s.leading) << ","
-                << tools::fixedOrDash(s.trailing) << "," << tools::fixedOrDash(s.rows) << "," << tools::fixedOrDash(in.leading) << ","
-                << tools::fixedOrDash(in.trailing) << "," << tools::fixedOrDash(in.rows) << "," << tools::fixedOrDash(residual) << "\n";
+            csv << family << "," << (heldOut ? "held-out" : "training") << "," << speed << "," << (layout ? std::to_string(layout) : "-") << ","
+                << toString(tier) << "," << source << "," << p.taps << "," << p.radiusPx << "," << tools::fixedOrDash(s.moving) << ","
+                << tools::fixedOrDash(s.frame) << "," << tools::fixedOrDash(in.moving) << "," << tools::fixedOrDash(s.moving - in.moving) << ","
+                << tools::fixedOrDash(s.leading) << "," << tools::fixedOrDash(s.trailing) << "," << tools::fixedOrDash(s.rows) << ","
+                << tools::fixedOrDash(in.leading) << "," << tools::fixedOrDash(in.trailing) << "," << tools::fixedOrDash(in.rows) << ","
+                << tools::fixedOrDash(residual) << "\n";
             return s;
         };
         ColorGrid referenceOut[2];  // the CPU reference's output, current and high tier
@@ -373,14 +388,16 @@ int main(int argc, char** argv) {
     } else {
         for (const std::string& family : tools::familyNames()) {
             if (familiesFlag != "all" && !tools::inList(familiesFlag, family)) continue;
-            for (double speed : speeds) {
-                const tools::FamilyCase fc = tools::makeFamilyCase(family, speed, seed, width, height);
-                const ColorGrid truth = fc.scene.truth(instants);
-                // Residual noise of the truth: how far half the instants are from all of them.
-                const double residual = familyPsnr(fc.scene.truth(instants / 2), truth, {});
-                const SceneFrame frame = fc.scene.render(0);
-                if (!scoreCase(family, fc.heldOut, speed, truth, residual, tools::familyMasks(fc.scene, 64), frame, fc.rowsMask)) return 1;
-            }
+            for (layout = seed; layout < seed + layouts; ++layout)
+                for (double speed : speeds) {
+                    if (layouts > 1) std::printf("layout %u: ", layout);
+                    const tools::FamilyCase fc = tools::makeFamilyCase(family, speed, layout, width, height);
+                    const ColorGrid truth = fc.scene.truth(instants);
+                    // Residual noise of the truth: how far half the instants are from all of them.
+                    const double residual = familyPsnr(fc.scene.truth(instants / 2), truth, {});
+                    const SceneFrame frame = fc.scene.render(0);
+                    if (!scoreCase(family, fc.heldOut, speed, truth, residual, tools::familyMasks(fc.scene, 64), frame, fc.rowsMask)) return 1;
+                }
         }
     }
     std::printf("mean gain over the input on the moving region (CPU reference), current / high:\n");
@@ -405,5 +422,13 @@ int main(int argc, char** argv) {
     }
     csv.close();
     std::cout << "wrote " << csvPath << "\n";
+    if (layouts > 1) {
+        Result<std::vector<tools::MbFamilyRow>> rows = tools::readMbFamilyCsv(csvPath);
+        if (!rows) {
+            std::cerr << "bench_mb_families: " << rows.status().toString() << "\n";
+            return 1;
+        }
+        std::printf("over layouts %u-%u:\n%s", seed, seed + layouts - 1, tools::mbLayoutsTable(rows.value(), "").c_str());
+    }
     return docPath.empty() ? 0 : writeDoc();
 }

@@ -185,11 +185,16 @@ FamilyCase makeFamilyCase(const std::string& family, double speedPx, uint32_t se
         }
     } else {
         // The independent scene: a checkered square moving right over static vertical stripes.
+        // Layout 1 is the scene as it was given: the square centred, its edges on stripe
+        // boundaries at mid-shutter, so the stripe a moving edge hides is never the one beside it.
+        // Other layouts shift the square by up to one period of the stripes (two stripes), so
+        // its edges meet the stripes at every phase.
         obj.push_back(background(Texture::Stripes, 4 * s, w, h));
         obj[0].colorA = grey(0.1), obj[0].colorB = grey(0.9);
         FamilyObject sq;
         sq.texture = Texture::Checker, sq.cell = 8 * s, sq.halfSize = {32 * s, 32 * s}, sq.depth = 5;
-        sq.centre = {w * 0.5, h * 0.5}, sq.colorA = {0.9, 0.2, 0.2, 1}, sq.colorB = {0.2, 0.2, 0.9, 1}, sq.velocityPx = {speedPx, 0};
+        const double shift = seed == 1 ? 0.0 : d(0, 8) * s;
+        sq.centre = {w * 0.5 + shift, h * 0.5}, sq.colorA = {0.9, 0.2, 0.2, 1}, sq.colorB = {0.2, 0.2, 0.9, 1}, sq.velocityPx = {speedPx, 0};
         obj.push_back(sq);
         c.rowsMask.assign(size_t(w) * h, false);
         for (uint32_t y = 0; y < h; ++y)

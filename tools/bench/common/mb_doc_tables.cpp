@@ -1,6 +1,7 @@
 #include "mb_doc_tables.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -115,7 +116,8 @@ Result<std::vector<MbFamilyRow>> readMbFamilyCsv(const std::string& path) {
         auto it = std::find(header.begin(), header.end(), name);
         return it == header.end() ? -1 : int(it - header.begin());
     };
-    const int family = column("family"), split = column("split"), speed = column("speed_px"), tier = column("tier"), source = column("source");
+    const int family = column("family"), split = column("split"), speed = column("speed_px"), tier = column("tier"), source = column("source"),
+              layout = column("layout");
     if (family < 0 || speed < 0 || tier < 0) return Status{StatusCode::InvalidArgument, path + ": the header must name family, speed_px and tier"};
     const int numbers[] = {column("psnr_moving"),     column("psnr_frame"),         column("psnr_leading"),       column("psnr_trailing"),
                            column("psnr_rows"),       column("input_psnr_moving"),  column("input_psnr_leading"), column("input_psnr_trailing"),
@@ -135,6 +137,8 @@ Result<std::vector<MbFamilyRow>> readMbFamilyCsv(const std::string& path) {
         r.tier = cells[size_t(tier)];
         r.source = source < 0 ? "reference" : cells[size_t(source)];
         r.speed = number(cells[size_t(speed)]);
+        const double layoutNumber = layout < 0 ? NAN : number(cells[size_t(layout)]);
+        r.layout = std::isfinite(layoutNumber) ? int(layoutNumber) : 0;
         double* fields[] = {&r.moving,      &r.frame,        &r.leading,       &r.trailing,  &r.rows,
                             &r.inputMoving, &r.inputLeading, &r.inputTrailing, &r.inputRows, &r.residual};
         for (size_t i = 0; i < std::size(fields); ++i) *fields[i] = get(numbers[i]);
@@ -274,6 +278,58 @@ std::string mbSweepTable(const std::vector<MbFamilyRow>& rows, const std::string
             below += any;
         }
         md << " | " << below << " of " << total << " |\n";
+    }
+    return md.str();
+}
+
+std::string mbLayoutsTable(const std::vector<MbFamilyRow>& rows, const std::string& setup) {
+    // The CPU reference's current and high tier rows by family, speed and layout.
+    std::vector<std::string> families;
+    std::map<std::string, std::map<double, std::map<int, std::array<const MbFamilyRow*, 2>>>> cases;
+    std::map<std::string, std::vector<int>> layouts;
+    for (const MbFamilyRow& r : rows) {
+        if (r.source != "reference" || (r.tier != "current" && r.tier != "high")) continue;
+        if (std::find(families.begin(), families.end(), r.family) == families.end()) families.push_back(r.family);
+        std::vector<int>& l = layouts[r.family];
+        if (std::find(l.begin(), l.end(), r.layout) == l.end()) l.push_back(r.layout);
+        cases[r.family][r.speed][r.layout][r.tier == "high"] = &r;
+    }
+    std::ostringstream md;
+    md << setup
+       << "\n\nHigh − current tier per region (CPU reference): the worst of the means over the layouts, dB, and its speed; "
+          "then how many cases (speed × layout) have the high tier below the current one by more than 0.005 dB, and the worst "
+          "single case:\n\n"
+          "| family | layouts | moving | frame | leading edges | trailing edges |\n| --- | --- | --- | --- | --- | --- |\n";
+    double MbFamilyRow::*fields[] = {&MbFamilyRow::moving, &MbFamilyRow::frame, &MbFamilyRow::leading, &MbFamilyRow::trailing};
+    for (const std::string& f : families) {
+        md << "| " << f << " | " << layouts[f].size();
+        for (double MbFamilyRow::*field : fields) {
+            double worstMean = INFINITY, worstMeanSpeed = 0, worstCase = INFINITY, worstCaseSpeed = 0;
+            int worstCaseLayout = 0, below = 0, total = 0;
+            for (const auto& [speed, byLayout] : cases[f]) {
+                double sum = 0;
+                int n = 0;
+                for (const auto& [layout, tiers] : byLayout) {
+                    if (!tiers[0] || !tiers[1]) continue;
+                    const double d = tiers[1]->*field - tiers[0]->*field;
+                    if (!std::isfinite(d)) continue;
+                    sum += d, ++n, ++total;
+                    below += d < -0.005;
+                    if (d < worstCase) worstCase = d, worstCaseSpeed = speed, worstCaseLayout = layout;
+                }
+                if (n && sum / n < worstMean) worstMean = sum / n, worstMeanSpeed = speed;
+            }
+            md << " | ";
+            if (!total) {
+                md << "-";
+                continue;
+            }
+            md << (worstMean < -0.005 ? signedFixed(worstMean, 2) + " at " + compactNumber(worstMeanSpeed) + " px" : "+0.00") << "; " << below
+               << " of " << total;
+            if (below)
+                md << ", worst " << signedFixed(worstCase, 2) << " (" << compactNumber(worstCaseSpeed) << " px, layout " << worstCaseLayout << ")";
+        }
+        md << " |\n";
     }
     return md.str();
 }

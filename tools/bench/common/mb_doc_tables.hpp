@@ -1,7 +1,8 @@
 // The motion blur family tables of docs/motion_blur.md, written from bench_mb_families' CSVs so
 // that tools/run_trade.sh regenerates the page's figures with the CSVs: per family and speed the
 // scores against a stored baseline (the 2012 reconstruction), per-family means, the independent
-// square's rows, the rasterised families, and the tier promise over a speed sweep.
+// square's rows, the rasterised families, and the tier promise over a speed sweep and over many
+// layouts of each family.
 #pragma once
 
 #include <string>
@@ -16,6 +17,7 @@ namespace sfx::tools {
 struct MbFamilyRow {
     std::string family, split, tier, source;
     double speed = 0;
+    int layout = 0;  // the seed a 2D family was laid out from; 0 where the CSV has none
     double moving = 0, frame = 0, leading = 0, trailing = 0, rows = 0;
     double inputMoving = 0, inputLeading = 0, inputTrailing = 0, inputRows = 0;
     double residual = 0;  // the truth's residual noise as PSNR (dB)
@@ -35,5 +37,9 @@ std::string mbRasterTables(const std::vector<MbFamilyRow>& rows, const std::stri
 // A sweep: per family and region the worst high - current tier and its speed, and at how many
 // speeds the high tier is below the current one by more than 0.005 dB somewhere.
 std::string mbSweepTable(const std::vector<MbFamilyRow>& rows, const std::string& setup);
+// Many layouts of each family (bench_mb_families --layouts): per family and region the worst
+// mean over the layouts of high - current tier and its speed, how many cases (speed x layout)
+// have the high tier below the current one by more than 0.005 dB, and the worst single case.
+std::string mbLayoutsTable(const std::vector<MbFamilyRow>& rows, const std::string& setup);
 
 }  // namespace sfx::tools
