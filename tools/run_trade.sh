@@ -44,7 +44,7 @@
 # tiers/src/tier_table.cpp (with the preset accuracies trade_presets prints), then a rerun; so are
 # the motion blur presets fit_mb's front gives, and the AO presets ao_front's front gives.
 # Usage: tools/run_trade.sh [--backends vulkan,gles] [--sweeps]
-# --sweeps adds the motion blur speed sweeps of step 6 (15-25 minutes on 2 cores, beyond the
+# --sweeps adds the motion blur speed sweeps of step 6 (20-25 minutes on 2 cores, beyond the
 # rest's 20-minute budget); without it they are skipped, and the script says so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -92,7 +92,7 @@ if [ "$SWEEPS" = 1 ]; then
     "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --backends none --csv docs/mb_sweep.csv --doc docs/motion_blur.md
     "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --raster --raster-backend "${BACKENDS%%,*}" --instants 64 --backends none \
         --csv docs/mb_raster_sweep.csv --doc docs/motion_blur.md
-    step "bench_mb_families --layouts: the tier promise over 16 layouts of each family, CPU reference (5-8 minutes)"
+    step "bench_mb_families --layouts: the tier promise over 16 layouts of each family, CPU reference (about 9 minutes)"
     layouts_dir=$(mktemp -d)
     "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --sweep-from 5 --layouts 8 --seed 9 --instants 64 --backends none \
         --csv "$layouts_dir/b.csv" > "$layouts_dir/b.log" 2>&1 &
@@ -104,7 +104,7 @@ if [ "$SWEEPS" = 1 ]; then
     rm -rf "$layouts_dir"
     "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --layouts 16 --instants 64 --csv docs/mb_layouts.csv --doc docs/motion_blur.md --doc-only
 else
-    step "bench_mb_families --sweep and --layouts: skipped (15-25 minutes; run with --sweeps): docs/mb_sweep.csv, mb_raster_sweep.csv and mb_layouts.csv keep their last run"
+    step "bench_mb_families --sweep and --layouts: skipped (20-25 minutes; run with --sweeps): docs/mb_sweep.csv, mb_raster_sweep.csv and mb_layouts.csv keep their last run"
     "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --csv docs/mb_sweep.csv --doc docs/motion_blur.md --doc-only
     "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --raster --raster-backend "${BACKENDS%%,*}" --instants 64 --csv docs/mb_raster_sweep.csv \
         --doc docs/motion_blur.md --doc-only
