@@ -308,7 +308,7 @@ int main(int argc, char** argv) {
             if (std::find(speeds.begin(), speeds.end(), s) == speeds.end())
                 std::cerr << "bench_mb_families: image speed " << s << " is not in --speeds\n";
     }
-    uint32_t layout = 0;  // the 2D family's layout seed, for the CSV; 0: a rasterised family
+    uint32_t layout = seed;  // the 2D family's layout seed, for the CSV (a rasterised family has none)
     // One scored case: the family's truth, masks and the input frame the effect gets.
     auto scoreCase = [&](const std::string& family, bool heldOut, double speed, const ColorGrid& truth, double residual,
                          const tools::FamilyMasks& masks, const SceneFrame& frame, const std::vector<bool>& rowsMask) -> bool {
@@ -323,7 +323,7 @@ int main(int argc, char** argv) {
                         source.c_str(), p.taps, p.radiusPx, tools::fixedOrDash(s.moving).c_str(), s.moving - in.moving,
                         tools::fixedOrDash(s.frame).c_str(), tools::fixedOrDash(s.leading).c_str(), tools::fixedOrDash(s.trailing).c_str(),
                         tools::fixedOrDash(s.rows).c_str());
-            csv << family << "," << (heldOut ? "held-out" : "training") << "," << speed << "," << (layout ? std::to_string(layout) : "-") << ","
+            csv << family << "," << (heldOut ? "held-out" : "training") << "," << speed << "," << (raster ? "-" : std::to_string(layout)) << ","
                 << toString(tier) << "," << source << "," << p.taps << "," << p.radiusPx << "," << tools::fixedOrDash(s.moving) << ","
                 << tools::fixedOrDash(s.frame) << "," << tools::fixedOrDash(in.moving) << "," << tools::fixedOrDash(s.moving - in.moving) << ","
                 << tools::fixedOrDash(s.leading) << "," << tools::fixedOrDash(s.trailing) << "," << tools::fixedOrDash(s.rows) << ","
