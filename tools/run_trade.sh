@@ -31,7 +31,8 @@
 #                      (docs/mb_sweep.csv, docs/mb_raster_sweep.csv and their tables in "The tier promise
 #                      between the scored speeds" in docs/motion_blur.md), and each 2D family laid
 #                      out from 16 seeds every 0.5 px from 5 px, where the tiers' pictures can
-#                      differ (docs/mb_layouts.csv and its table there; two processes).
+#                      differ, 2D and rasterised (docs/mb_layouts.csv, docs/mb_raster_layouts.csv
+#                      and their tables there; two processes each).
 #   7. bench_mb_flicker - motion blur's frame-to-frame change against the truth's over frame
 #                      sequences of the same families, and both jitter patterns (docs/mb_flicker.csv and
 #                      its tables in "Stable under motion" in docs/motion_blur.md);
@@ -44,7 +45,7 @@
 # tiers/src/tier_table.cpp (with the preset accuracies trade_presets prints), then a rerun; so are
 # the motion blur presets fit_mb's front gives, and the AO presets ao_front's front gives.
 # Usage: tools/run_trade.sh [--backends vulkan,gles] [--sweeps]
-# --sweeps adds the motion blur speed sweeps of step 6 (20-25 minutes on 2 cores, beyond the
+# --sweeps adds the motion blur speed sweeps of step 6 (30-35 minutes on 2 cores, beyond the
 # rest's 20-minute budget); without it they are skipped, and the script says so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -61,6 +62,27 @@ while [ $# -gt 0 ]; do
 done
 start=$(date +%s)
 step() { echo "== [$(( $(date +%s) - start )) s] $*"; }
+# bench_mb_families over layouts 1-16 from 5 px (below it the tiers' pictures are the same at any
+# layout), as two processes of 8 layouts; their CSVs joined into $1. Further arguments go to both.
+layouts_run() {
+    local csv=$1 dir second
+    shift
+    dir=$(mktemp -d)
+    "$BUILD_DIR"/tools/bench/bench_mb_families "$@" --sweep --sweep-from 5 --layouts 8 --seed 9 --instants 64 --backends none \
+        --csv "$dir/b.csv" > "$dir/b.log" 2>&1 &
+    second=$!
+    "$BUILD_DIR"/tools/bench/bench_mb_families "$@" --sweep --sweep-from 5 --layouts 8 --seed 1 --instants 64 --backends none \
+        --csv "$dir/a.csv"
+    wait "$second" || { cat "$dir/b.log" >&2; exit 1; }
+    { cat "$dir/a.csv"; tail -n +2 "$dir/b.csv"; } > "$csv"
+    rm -rf "$dir"
+}
+# The layouts' sections of docs/motion_blur.md from their CSVs.
+layouts_doc() {
+    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --layouts 16 --instants 64 --csv docs/mb_layouts.csv --doc docs/motion_blur.md --doc-only
+    "$BUILD_DIR"/tools/bench/bench_mb_families --raster --raster-backend "${BACKENDS%%,*}" --sweep --layouts 16 --instants 64 \
+        --csv docs/mb_raster_layouts.csv --doc docs/motion_blur.md --doc-only
+}
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
 
 step "configure and build bench_trade, fit_ao, trade_presets, ao_front, bench_families, bench_mb_families, bench_mb_flicker, fit_mb"
@@ -93,22 +115,16 @@ if [ "$SWEEPS" = 1 ]; then
     "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --raster --raster-backend "${BACKENDS%%,*}" --instants 64 --backends none \
         --csv docs/mb_raster_sweep.csv --doc docs/motion_blur.md
     step "bench_mb_families --layouts: the tier promise over 16 layouts of each family, CPU reference (about 9 minutes)"
-    layouts_dir=$(mktemp -d)
-    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --sweep-from 5 --layouts 8 --seed 9 --instants 64 --backends none \
-        --csv "$layouts_dir/b.csv" > "$layouts_dir/b.log" 2>&1 &
-    second=$!
-    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --sweep-from 5 --layouts 8 --seed 1 --instants 64 --backends none \
-        --csv "$layouts_dir/a.csv"
-    wait "$second" || { cat "$layouts_dir/b.log" >&2; exit 1; }
-    { cat "$layouts_dir/a.csv"; tail -n +2 "$layouts_dir/b.csv"; } > docs/mb_layouts.csv
-    rm -rf "$layouts_dir"
-    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --layouts 16 --instants 64 --csv docs/mb_layouts.csv --doc docs/motion_blur.md --doc-only
+    layouts_run docs/mb_layouts.csv
+    step "bench_mb_families --raster --layouts: the same for the rasterised families (about 9 minutes)"
+    layouts_run docs/mb_raster_layouts.csv --raster --raster-backend "${BACKENDS%%,*}"
+    layouts_doc
 else
-    step "bench_mb_families --sweep and --layouts: skipped (20-25 minutes; run with --sweeps): docs/mb_sweep.csv, mb_raster_sweep.csv and mb_layouts.csv keep their last run"
+    step "bench_mb_families --sweep and --layouts: skipped (30-35 minutes; run with --sweeps): docs/mb_sweep.csv, mb_raster_sweep.csv, mb_layouts.csv and mb_raster_layouts.csv keep their last run"
     "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --csv docs/mb_sweep.csv --doc docs/motion_blur.md --doc-only
     "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --raster --raster-backend "${BACKENDS%%,*}" --instants 64 --csv docs/mb_raster_sweep.csv \
         --doc docs/motion_blur.md --doc-only
-    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --layouts 16 --instants 64 --csv docs/mb_layouts.csv --doc docs/motion_blur.md --doc-only
+    layouts_doc
 fi
 step "bench_mb_flicker: motion blur's flicker over frame sequences of the scene families"
 "$BUILD_DIR"/tools/bench/bench_mb_flicker --csv docs/mb_flicker.csv --backends "$BACKENDS" --doc docs/motion_blur.md

@@ -9,7 +9,7 @@
 // truth averaging --instants rendered instants. With --sweep, every 0.5 px from 0.5 px to past
 // both tiers' blur (the high tier's radius at this height, doubled, plus 4 px) and, per family
 // and region, the worst high - current tier and its speed: the tier promise checked between the
-// scored speeds too. With --layouts N, each 2D family laid out from N seeds, and per family and
+// scored speeds too. With --layouts N, each family laid out from N seeds, and per family and
 // region the high - current tier's mean over the layouts: the promise for the family, not one
 // layout of it. --hidden-near, --high-dither-pairs and --high-jitter-always score the CPU
 // reference's candidate reconstructions (MotionBlurCandidate) instead of today's. Not a test:
@@ -86,9 +86,11 @@ using CaseScorer = std::function<bool(const std::string& family, bool heldOut, d
                                       const tools::FamilyMasks& masks, const SceneFrame& frame, const std::vector<bool>& rowsMask)>;
 
 // The rasterised families (tools/scenes/mb_raster_families.hpp), all held out: each case drawn by
-// `backend`'s raster pass, its truth the average of `instants` rendered instants, then scored.
+// `backend`'s raster pass, its truth the average of `instants` rendered instants, then scored;
+// each family laid out from `firstLayout` to firstLayout + layouts - 1, `layout` set to the one
+// being scored.
 bool scoreRasterFamilies(const std::string& backend, const std::string& familiesFlag, const std::vector<double>& speeds, uint32_t w, uint32_t h,
-                         uint32_t instants, const CaseScorer& scoreCase) {
+                         uint32_t instants, uint32_t firstLayout, uint32_t layouts, uint32_t& layout, const CaseScorer& scoreCase) {
     Result<std::unique_ptr<Device>> opened = tools::openNamedForTier(backend, Tier::Current);
     if (!opened) {
         std::cerr << "bench_mb_families: raster backend " << backend << ": " << opened.status().toString() << "\n";
@@ -102,17 +104,19 @@ bool scoreRasterFamilies(const std::string& backend, const std::string& families
     }
     for (const std::string& family : tools::rasterFamilyNames()) {
         if (familiesFlag != "all" && !tools::inList(familiesFlag, family)) continue;
-        for (double speed : speeds) {
-            Result<tools::RasterFamilyCase> c = tools::makeRasterFamilyCase(*device, *renderer.value(), family, speed, w, h, instants);
-            if (!c) {
-                std::cerr << "bench_mb_families: " << family << " at " << speed << " px: " << c.status().toString() << "\n";
-                return false;
+        for (layout = firstLayout; layout < firstLayout + layouts; ++layout)
+            for (double speed : speeds) {
+                Result<tools::RasterFamilyCase> c = tools::makeRasterFamilyCase(*device, *renderer.value(), family, speed, w, h, instants, layout);
+                if (!c) {
+                    std::cerr << "bench_mb_families: " << family << " at " << speed << " px, layout " << layout << ": " << c.status().toString()
+                              << "\n";
+                    return false;
+                }
+                std::printf("[%s %.1f px, layout %u] rendered by %s: fastest point %.3f px; truth's residual noise rmse %.5f (%u/2 vs %u instants)\n",
+                            family.c_str(), speed, layout, backend.c_str(), c->measuredSpeedPx, c->residualRmse, instants, instants);
+                const double residualPsnr = c->residualRmse > 0 ? -20.0 * std::log10(c->residualRmse) : 99.0;
+                if (!scoreCase(family, true, speed, c->truth, residualPsnr, c->masks, c->frame, {})) return false;
             }
-            std::printf("[%s %.1f px] rendered by %s: fastest point %.3f px; truth's residual noise rmse %.5f (%u/2 vs %u instants)\n",
-                        family.c_str(), speed, backend.c_str(), c->measuredSpeedPx, c->residualRmse, instants, instants);
-            const double residualPsnr = c->residualRmse > 0 ? -20.0 * std::log10(c->residualRmse) : 99.0;
-            if (!scoreCase(family, true, speed, c->truth, residualPsnr, c->masks, c->frame, {})) return false;
-        }
     }
     return true;
 }
@@ -138,9 +142,10 @@ std::string setupText(const DocSetup& d, const std::vector<double>& speeds) {
         text += " px";
     }
     text += ", the truth the average of " + std::to_string(d.instants) + " instants" +
-        (d.raster            ? ", drawn by " + d.rasterBackend + "'s raster pass"
-             : d.layouts > 1 ? ", layouts from seeds " + std::to_string(d.seed) + "-" + std::to_string(d.seed + d.layouts - 1)
-                             : ", layout seed " + std::to_string(d.seed));
+        (d.raster ? ", drawn by " + d.rasterBackend + "'s raster pass" : "") +
+        (d.layouts > 1  ? ", layouts from seeds " + std::to_string(d.seed) + "-" + std::to_string(d.seed + d.layouts - 1)
+             : d.raster ? ""
+                        : ", layout seed " + std::to_string(d.seed));
     for (int t = 0; t < 2; ++t)
         if (Result<MotionBlurParams> p = resolveMotionBlur(d.profiles[t], d.settings, d.height))
             text += std::string(t ? "; high tier " : "; current tier ") + std::to_string(p->taps) + " taps, radius " + std::to_string(p->radiusPx) +
@@ -148,7 +153,8 @@ std::string setupText(const DocSetup& d, const std::vector<double>& speeds) {
     return text + " at this height.";
 }
 
-// Writes the page's section of this mode (bench_mb_families, _raster, _sweep, _raster_sweep or _layouts)
+// Writes the page's section of this mode (bench_mb_families, _raster, _sweep, _raster_sweep,
+// _layouts or _raster_layouts)
 // from the CSV at `csvPath`, as a run wrote it or as --doc-only finds it.
 Status writeDocSection(const std::string& docPath, const std::string& csvPath, const std::string& beforePath, const DocSetup& setup) {
     Result<std::vector<tools::MbFamilyRow>> rows = tools::readMbFamilyCsv(csvPath);
@@ -165,7 +171,9 @@ Status writeDocSection(const std::string& docPath, const std::string& csvPath, c
     std::sort(speeds.begin(), speeds.end());
     if (speeds.empty()) return Status{StatusCode::InvalidArgument, csvPath + ": no rows"};
     const std::string text = setupText(setup, speeds);
-    if (setup.layouts > 1) return tools::replaceMarkdownSection(docPath, "bench_mb_families_layouts", tools::mbLayoutsTable(rows.value(), text));
+    if (setup.layouts > 1)
+        return tools::replaceMarkdownSection(docPath, std::string("bench_mb_families") + (setup.raster ? "_raster" : "") + "_layouts",
+                                             tools::mbLayoutsTable(rows.value(), text));
     const std::string section = std::string("bench_mb_families") + (setup.raster ? "_raster" : "") + (setup.sweep ? "_sweep" : "");
     return tools::replaceMarkdownSection(docPath, section,
                                          setup.sweep        ? tools::mbSweepTable(rows.value(), text)
@@ -194,8 +202,8 @@ int main(int argc, char** argv) {
     app.add_option("--instants", instants, "instants averaged for the truth")->capture_default_str();
     app.add_option("--seed", seed, "layout seed of every family")->capture_default_str();
     app.add_option("--layouts", layouts,
-                   "lay out each 2D family from seeds --seed to --seed + N - 1 and print the high - current tier's mean over them "
-                   "(with --doc, the section bench_mb_families_layouts)")
+                   "lay out each family from seeds --seed to --seed + N - 1 and print the high - current tier's mean over them "
+                   "(with --doc, the section bench_mb_families_layouts or _raster_layouts)")
         ->capture_default_str();
     app.add_option("--speeds", speedsFlag, "displacements across the shutter, pixels, comma-separated")->capture_default_str();
     app.add_option("--families", familiesFlag, "comma-separated families, or all")->capture_default_str();
@@ -218,8 +226,9 @@ int main(int argc, char** argv) {
     app.add_option("--images", imagesDir, "write DIR/mb_<family>_<speed>px.png: input, truth, current, high tier (CPU reference) and errors x4");
     app.add_option("--image-speeds", imageSpeedsFlag, "speeds of the --images pictures, comma-separated (each also in --speeds)")
         ->capture_default_str();
-    app.add_option("--doc", docPath,
-                   "write this run's tables into the page's generated section (bench_mb_families, _raster, _sweep, _raster_sweep or _layouts)");
+    app.add_option(
+        "--doc", docPath,
+        "write this run's tables into the page's generated section (bench_mb_families, _raster, _sweep, _raster_sweep, _layouts or _raster_layouts)");
     app.add_option("--before", beforePath, "with --doc (2D families): the baseline CSV the tables compare with");
     bool docOnly = false;
     app.add_flag("--doc-only", docOnly, "with --doc: write the section from --csv as it is, without running anything");
@@ -228,8 +237,8 @@ int main(int argc, char** argv) {
         std::cerr << "bench_mb_families: --width and --height must be > 0, --instants >= 2\n";
         return 1;
     }
-    if (layouts < 1 || layouts > 1000 || (layouts > 1 && (raster || !imagesDir.empty()))) {
-        std::cerr << "bench_mb_families: --layouts must be in [1, 1000], and 1 with --raster (one layout per family) or --images\n";
+    if (layouts < 1 || layouts > 1000 || (layouts > 1 && !imagesDir.empty())) {
+        std::cerr << "bench_mb_families: --layouts must be in [1, 1000], and 1 with --images\n";
         return 1;
     }
     if (!(hiddenNear >= 0 && hiddenNear <= 8)) {
@@ -308,7 +317,7 @@ int main(int argc, char** argv) {
             if (std::find(speeds.begin(), speeds.end(), s) == speeds.end())
                 std::cerr << "bench_mb_families: image speed " << s << " is not in --speeds\n";
     }
-    uint32_t layout = seed;  // the 2D family's layout seed, for the CSV (a rasterised family has none)
+    uint32_t layout = seed;  // the layout being scored, for the CSV
     // One scored case: the family's truth, masks and the input frame the effect gets.
     auto scoreCase = [&](const std::string& family, bool heldOut, double speed, const ColorGrid& truth, double residual,
                          const tools::FamilyMasks& masks, const SceneFrame& frame, const std::vector<bool>& rowsMask) -> bool {
@@ -323,12 +332,11 @@ int main(int argc, char** argv) {
                         source.c_str(), p.taps, p.radiusPx, tools::fixedOrDash(s.moving).c_str(), s.moving - in.moving,
                         tools::fixedOrDash(s.frame).c_str(), tools::fixedOrDash(s.leading).c_str(), tools::fixedOrDash(s.trailing).c_str(),
                         tools::fixedOrDash(s.rows).c_str());
-            csv << family << "," << (heldOut ? "held-out" : "training") << "," << speed << "," << (raster ? "-" : std::to_string(layout)) << ","
-                << toString(tier) << "," << source << "," << p.taps << "," << p.radiusPx << "," << tools::fixedOrDash(s.moving) << ","
-                << tools::fixedOrDash(s.frame) << "," << tools::fixedOrDash(in.moving) << "," << tools::fixedOrDash(s.moving - in.moving) << ","
-                << tools::fixedOrDash(s.leading) << "," << tools::fixedOrDash(s.trailing) << "," << tools::fixedOrDash(s.rows) << ","
-                << tools::fixedOrDash(in.leading) << "," << tools::fixedOrDash(in.trailing) << "," << tools::fixedOrDash(in.rows) << ","
-                << tools::fixedOrDash(residual) << "\n";
+            csv << family << "," << (heldOut ? "held-out" : "training") << "," << speed << "," << layout << "," << toString(tier) << "," << source
+                << "," << p.taps << "," << p.radiusPx << "," << tools::fixedOrDash(s.moving) << "," << tools::fixedOrDash(s.frame) << ","
+                << tools::fixedOrDash(in.moving) << "," << tools::fixedOrDash(s.moving - in.moving) << "," << tools::fixedOrDash(s.leading) << ","
+                << tools::fixedOrDash(s.trailing) << "," << tools::fixedOrDash(s.rows) << "," << tools::fixedOrDash(in.leading) << ","
+                << tools::fixedOrDash(in.trailing) << "," << tools::fixedOrDash(in.rows) << "," << tools::fixedOrDash(residual) << "\n";
             return s;
         };
         ColorGrid referenceOut[2];  // the CPU reference's output, current and high tier
@@ -384,7 +392,7 @@ int main(int argc, char** argv) {
         return true;
     };
     if (raster) {
-        if (!scoreRasterFamilies(rasterBackend, familiesFlag, speeds, width, height, instants, scoreCase)) return 1;
+        if (!scoreRasterFamilies(rasterBackend, familiesFlag, speeds, width, height, instants, seed, layouts, layout, scoreCase)) return 1;
     } else {
         for (const std::string& family : tools::familyNames()) {
             if (familiesFlag != "all" && !tools::inList(familiesFlag, family)) continue;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
+#include <random>
 
 #include "mb_raster.hpp"
 #include "model_meshes.hpp"
@@ -33,8 +34,23 @@ Result<Mesh> standing(const std::string& variant, double height, glm::dvec3 at, 
     return m;
 }
 
+// Layout `layout` of a family: 1 is the family as designed; any other moves its objects, turns
+// them and tilts its motion within the ranges below, from a stream that is the same everywhere
+// (mt19937 is specified bit for bit; the standard's distributions are not).
+struct LayoutDraw {
+    std::mt19937 gen;
+    bool designed;
+    explicit LayoutDraw(uint32_t layout) : gen(layout * 2654435761u + 97u), designed(layout == 1) {}
+    // The designed value on layout 1, else uniform in [designed - spread, designed + spread].
+    double operator()(double value, double spread) {
+        const double u = double(gen()) / 4294967296.0;
+        return designed ? value : value + spread * (2 * u - 1);
+    }
+};
+
 // The scene with unit motion: object velocities / eye velocity in world units per shutter.
-Result<RasterScene> unitScene(const std::string& family) {
+Result<RasterScene> unitScene(const std::string& family, uint32_t layout) {
+    LayoutDraw d(layout);
     RasterScene s;
     s.name = family;
     s.fovYDegrees = 50;
@@ -43,12 +59,15 @@ Result<RasterScene> unitScene(const std::string& family) {
         // camera) before a checkered wall and floor; a still camera.
         s.meshes.push_back(quad({-8, -1, -2}, {8, -1, -2}, {8, 6, -2}, {-8, 6, -2}));
         s.meshes.push_back(quad({-8, 0, 6}, {8, 0, 6}, {8, 0, -2}, {-8, 0, -2}));
-        Result<Mesh> horse = standing("horse", 1.0, {-0.3, 0, 1.0}, 90, lambert(0.75, 0.42, 0.22));
+        // One draw per statement: the order of a call's arguments is the compiler's.
+        const double horseX = d(-0.3, 0.3), horseZ = d(1.0, 0.3), horseYaw = d(90, 25), horseDz = d(0, 0.3);
+        const double catX = d(0.4, 0.3), catZ = d(-0.6, 0.3), catYaw = d(0, 40), catDz = d(0.3, 0.3);
+        Result<Mesh> horse = standing("horse", 1.0, {horseX, 0, horseZ}, horseYaw, lambert(0.75, 0.42, 0.22));
         if (!horse) return horse.status();
-        horse->velocity = {1, 0, 0};
-        Result<Mesh> cat = standing("cat", 0.8, {0.4, 0, -0.6}, 0, lambert(0.35, 0.45, 0.8));
+        horse->velocity = {1, 0, horseDz};
+        Result<Mesh> cat = standing("cat", 0.8, {catX, 0, catZ}, catYaw, lambert(0.35, 0.45, 0.8));
         if (!cat) return cat.status();
-        cat->velocity = {-0.7, 0, 0.3};
+        cat->velocity = {-0.7, 0, catDz};
         s.meshes.push_back(std::move(horse.value()));
         s.meshes.push_back(std::move(cat.value()));
         s.eye = {0, 0.8, 3.2};
@@ -57,39 +76,46 @@ Result<RasterScene> unitScene(const std::string& family) {
         // Nothing moves but the camera, which pans right and dollies in: a sphere at depth 2.5,
         // a thin post at 4, the bunny (floating) at 5.5, a box at 8.5 and the wall at 12.
         s.meshes.push_back(quad({-12, -6, -8}, {12, -6, -8}, {12, 8, -8}, {-12, 8, -8}));
-        Mesh sphere(scene::sphereMesh({0.9f, 1.2f, 1.5f}, 0.35f));
+        const float sphereX = float(d(0.9, 0.4)), sphereY = float(d(1.2, 0.3)), postX = float(d(-0.5, 0.5));
+        const double bunnyX = d(-1.6, 0.4), bunnyYaw = d(30, 60);
+        const float boxX = float(d(1.6, 0.5));
+        const double eyeDy = d(0, 0.3), eyeDz = d(-0.3, 0.3);
+        Mesh sphere(scene::sphereMesh({sphereX, sphereY, 1.5f}, 0.35f));
         s.meshes.push_back(std::move(sphere));
-        s.meshes.push_back(Mesh(scene::cylinderMesh({-0.5f, -0.5f, 0}, 0.06f, 3.0f)));
+        s.meshes.push_back(Mesh(scene::cylinderMesh({postX, -0.5f, 0}, 0.06f, 3.0f)));
         s.meshes.back().surface = lambert(0.9, 0.9, 0.85);
-        Result<Mesh> bunny = standing("bunny", 1.0, {-1.6, 0.4, -1.5}, 30, lambert(0.8, 0.55, 0.5));
+        Result<Mesh> bunny = standing("bunny", 1.0, {bunnyX, 0.4, -1.5}, bunnyYaw, lambert(0.8, 0.55, 0.5));
         if (!bunny) return bunny.status();
         s.meshes.push_back(std::move(bunny.value()));
-        s.meshes.push_back(Mesh(scene::boxMesh({1.6f, -1.6f, -4.6f}, {3.0f, -0.4f, -3.6f})));
+        s.meshes.push_back(Mesh(scene::boxMesh({boxX, -1.6f, -4.6f}, {boxX + 1.4f, -0.4f, -3.6f})));
         s.eye = {0, 1.0, 4.0};
         s.target = {0, 1.0, 0};
-        s.eyeVelocity = {1, 0, -0.3};
+        s.eyeVelocity = {1, eyeDy, eyeDz};
     } else if (family == "turning") {
         // Turning objects, still camera: a two-bladed cross spinning in the picture plane (its
         // blade tips fastest, its hub still) and the horse turning on the spot about the
         // vertical (nose and tail swinging across and in depth), before a checkered wall and floor.
         s.meshes.push_back(quad({-8, -1, -2}, {8, -1, -2}, {8, 6, -2}, {-8, 6, -2}));
         s.meshes.push_back(quad({-8, 0, 6}, {8, 0, 6}, {8, 0, -2}, {-8, 0, -2}));
-        const glm::dvec3 hub{0.75, 1.2, -0.4};
+        const double hubX = d(0.75, 0.3), hubY = d(1.2, 0.2), bladeSpin = d(1.0, 0.5), horseSpin = d(0.6, 0.3);
+        const double standX = d(-0.7, 0.3), standZ = d(0.6, 0.3), horseYaw = d(70, 40);
+        const glm::dvec3 hub{hubX, hubY, -0.4};
         for (int blade = 0; blade < 2; ++blade) {
             // Different thicknesses: the blades' front faces are not coplanar where they cross.
             const glm::vec3 half = blade == 0 ? glm::vec3(0.7f, 0.06f, 0.03f) : glm::vec3(0.06f, 0.7f, 0.05f);
             Mesh m(scene::boxMesh(glm::vec3(hub) - half, glm::vec3(hub) + half));
             m.surface = blade == 0 ? lambert(0.85, 0.8, 0.3) : lambert(0.3, 0.75, 0.5);
-            m.spinRadians = 1.0;
+            m.spinRadians = bladeSpin;
             m.spinAxis = {0, 0, 1};
             m.spinCentre = hub;
             s.meshes.push_back(std::move(m));
         }
-        Result<Mesh> horse = standing("horse", 0.9, {-0.7, 0, 0.6}, 70, lambert(0.75, 0.42, 0.22));
+        const glm::dvec3 stand{standX, 0, standZ};
+        Result<Mesh> horse = standing("horse", 0.9, stand, horseYaw, lambert(0.75, 0.42, 0.22));
         if (!horse) return horse.status();
-        horse->spinRadians = 0.6;
+        horse->spinRadians = horseSpin;
         horse->spinAxis = {0, 1, 0};
-        horse->spinCentre = {-0.7, 0, 0.6};
+        horse->spinCentre = stand;
         s.meshes.push_back(std::move(horse.value()));
         s.eye = {0, 0.8, 3.2};
         s.target = {0, 0.7, 0};
@@ -151,8 +177,9 @@ struct MaskBuilder {
 
 std::vector<std::string> rasterFamilyNames() { return {"models", "camera", "turning"}; }
 
-Result<RasterScene> rasterFamilyScene(Device& device, SceneRenderer& renderer, const std::string& family, double speedPx, uint32_t w, uint32_t h) {
-    Result<RasterScene> s = unitScene(family);
+Result<RasterScene> rasterFamilyScene(Device& device, SceneRenderer& renderer, const std::string& family, double speedPx, uint32_t w, uint32_t h,
+                                      uint32_t layout) {
+    Result<RasterScene> s = unitScene(family, layout);
     if (!s) return s;
     SFX_TRY(renderer.load(s.value()));
     // Three rescalings: exact for a motion parallel to the picture, within 1e-3 with the dolly
@@ -168,8 +195,8 @@ Result<RasterScene> rasterFamilyScene(Device& device, SceneRenderer& renderer, c
 }
 
 Result<RasterFamilyCase> makeRasterFamilyCase(Device& device, SceneRenderer& renderer, const std::string& family, double speedPx, uint32_t w,
-                                              uint32_t h, uint32_t instants) {
-    Result<RasterScene> s = rasterFamilyScene(device, renderer, family, speedPx, w, h);
+                                              uint32_t h, uint32_t instants, uint32_t layout) {
+    Result<RasterScene> s = rasterFamilyScene(device, renderer, family, speedPx, w, h, layout);
     if (!s) return s.status();
     const RasterScene scene = std::move(s.value());
     SFX_TRY(renderer.load(scene));  // render() reads the motion from the loaded meshes

@@ -20,8 +20,11 @@ std::vector<std::string> rasterFamilyNames();
 // The family's scene with its motion scaled so that its fastest visible point moves `speedPx`
 // across the shutter in a w x h frame (the velocity buffer's largest length at t = 0, set by
 // rendering, as the motion is not quite linear in the speed once it has a depth component).
-// InvalidArgument for an unknown family; FileError when a glmark2 model is missing.
-Result<RasterScene> rasterFamilyScene(Device& device, SceneRenderer& renderer, const std::string& family, double speedPx, uint32_t w, uint32_t h);
+// Layout 1 is the family as designed; other layouts move, turn and tilt its objects and motion
+// (drawn from the layout number). InvalidArgument for an unknown family; FileError when a
+// glmark2 model is missing.
+Result<RasterScene> rasterFamilyScene(Device& device, SceneRenderer& renderer, const std::string& family, double speedPx, uint32_t w, uint32_t h,
+                                      uint32_t layout = 1);
 
 struct RasterFamilyCase {
     std::string family;
@@ -37,6 +40,6 @@ struct RasterFamilyCase {
 };
 // `renderer` is loaded with the family's scene (replacing what it held).
 Result<RasterFamilyCase> makeRasterFamilyCase(Device& device, SceneRenderer& renderer, const std::string& family, double speedPx, uint32_t w,
-                                              uint32_t h, uint32_t instants);
+                                              uint32_t h, uint32_t instants, uint32_t layout = 1);
 
 }  // namespace sfx::tools
