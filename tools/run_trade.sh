@@ -116,7 +116,7 @@ if [ "$SWEEPS" = 1 ]; then
         --csv docs/mb_raster_sweep.csv --doc docs/motion_blur.md
     step "bench_mb_families --layouts: the tier promise over 16 layouts of each family, CPU reference (about 9 minutes)"
     layouts_run docs/mb_layouts.csv
-    step "bench_mb_families --raster --layouts: the same for the rasterised families (about 9 minutes)"
+    step "bench_mb_families --raster --layouts: the same for the rasterised families (about 11 minutes)"
     layouts_run docs/mb_raster_layouts.csv --raster --raster-backend "${BACKENDS%%,*}"
     layouts_doc
 else
