@@ -17,7 +17,7 @@ namespace sfx::tools {
 struct MbFamilyRow {
     std::string family, split, tier, source;
     double speed = 0;
-    int layout = 0;  // the seed a 2D family was laid out from; 0 where the CSV has none
+    int layout = 0;  // the seed the family was laid out from; 0 where the CSV has none
     double moving = 0, frame = 0, leading = 0, trailing = 0, rows = 0;
     double inputMoving = 0, inputLeading = 0, inputTrailing = 0, inputRows = 0;
     double residual = 0;  // the truth's residual noise as PSNR (dB)
