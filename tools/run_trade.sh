@@ -29,9 +29,9 @@
 #                      (docs/mb_raster_families.csv, docs/images/mb_{models,camera,turning}_12px.png).
 #                      With --sweeps, both every 0.5 px past both tiers' blur, CPU reference
 #                      (docs/mb_sweep.csv, docs/mb_raster_sweep.csv and their tables in "The tier promise
-#                      between the scored speeds" in docs/motion_blur.md), and each 2D family laid
-#                      out from 16 seeds every 0.5 px from 5 px, where the tiers' pictures can
-#                      differ, 2D and rasterised (docs/mb_layouts.csv, docs/mb_raster_layouts.csv
+#                      between the scored speeds" in docs/motion_blur.md), and every family, 2D
+#                      and rasterised, laid out from 16 seeds every 0.5 px from 5 px, where the
+#                      tiers' pictures can differ (docs/mb_layouts.csv, docs/mb_raster_layouts.csv
 #                      and their tables there; two processes each).
 #   7. bench_mb_flicker - motion blur's frame-to-frame change against the truth's over frame
 #                      sequences of the same families, and both jitter patterns (docs/mb_flicker.csv and

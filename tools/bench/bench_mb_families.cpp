@@ -172,11 +172,12 @@ Status writeDocSection(const std::string& docPath, const std::string& csvPath, c
     if (speeds.empty()) return Status{StatusCode::InvalidArgument, csvPath + ": no rows"};
     // Every table but the layouts' keys its rows by family, speed and tier: one layout only.
     const int firstLayout = rows->front().layout;
-    for (const tools::MbFamilyRow& r : rows.value())
-        if (setup.layouts == 1 && r.layout != firstLayout)
-            return Status{StatusCode::InvalidArgument,
-                          csvPath + ": rows of layouts " + std::to_string(firstLayout) + " and " + std::to_string(r.layout) +
-                              "; pass --layouts N for a CSV of N layouts"};
+    if (setup.layouts == 1)
+        for (const tools::MbFamilyRow& r : rows.value())
+            if (r.layout != firstLayout)
+                return Status{StatusCode::InvalidArgument,
+                              csvPath + ": rows of layouts " + std::to_string(firstLayout) + " and " + std::to_string(r.layout) +
+                                  "; pass --layouts N for a CSV of N layouts"};
     const std::string text = setupText(setup, speeds);
     if (setup.layouts > 1)
         return tools::replaceMarkdownSection(docPath, std::string("bench_mb_families") + (setup.raster ? "_raster" : "") + "_layouts",

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
+
+#include "seeded_draw.hpp"
 
 namespace sfx::tools {
 
@@ -34,14 +35,6 @@ bool shade(const FamilyObject& o, const Pose& q, double px, double py, std::arra
     color = b ? o.colorB : o.colorA;
     return true;
 }
-
-// A reproducible [0, 1) stream from a seed (mt19937 is specified bit for bit; the standard
-// distributions are not, so the conversion is done here).
-struct Draw {
-    std::mt19937 gen;
-    explicit Draw(uint32_t seed) : gen(seed) {}
-    double operator()(double lo, double hi) { return lo + (hi - lo) * (gen() / 4294967296.0); }
-};
 
 std::array<double, 4> grey(double v) { return {v, v, v, 1}; }
 std::array<double, 4> hue(Draw& d) { return {d(0.15, 0.95), d(0.15, 0.95), d(0.15, 0.95), 1}; }

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
-#include <random>
 
 #include "mb_raster.hpp"
 #include "model_meshes.hpp"
+#include "seeded_draw.hpp"
 #include "sfx_shared_raster.h"
 
 namespace sfx::tools {
@@ -35,16 +35,15 @@ Result<Mesh> standing(const std::string& variant, double height, glm::dvec3 at, 
 }
 
 // Layout `layout` of a family: 1 is the family as designed; any other moves its objects, turns
-// them and tilts its motion within the ranges below, from a stream that is the same everywhere
-// (mt19937 is specified bit for bit; the standard's distributions are not).
+// them and tilts its motion within the ranges below (seeded_draw.hpp: the same on every compiler).
 struct LayoutDraw {
-    std::mt19937 gen;
+    Draw draw;
     bool designed;
-    explicit LayoutDraw(uint32_t layout) : gen(layout * 2654435761u + 97u), designed(layout == 1) {}
-    // The designed value on layout 1, else uniform in [designed - spread, designed + spread].
+    explicit LayoutDraw(uint32_t layout) : draw(layout * 2654435761u + 97u), designed(layout == 1) {}
+    // The designed value on layout 1, else uniform in [value - spread, value + spread).
     double operator()(double value, double spread) {
-        const double u = double(gen()) / 4294967296.0;
-        return designed ? value : value + spread * (2 * u - 1);
+        const double drawn = draw(value - spread, value + spread);
+        return designed ? value : drawn;
     }
 };
 
