@@ -28,8 +28,8 @@
 #                      --raster the rasterised families, drawn by the first backend's raster pass
 #                      (docs/mb_raster_families.csv, docs/images/mb_{models,camera,turning}_12px.png).
 #                      With --sweeps, both every 0.5 px past both tiers' blur, CPU reference
-#                      (docs/mb_sweep.csv, docs/mb_raster_sweep.csv and their tables in "The tier promise
-#                      between the scored speeds" in docs/motion_blur.md), and every family, 2D
+#                      (docs/mb_sweep.csv, docs/mb_raster_sweep.csv and their tables in
+#                      docs/motion_blur_studies.md), and every family, 2D
 #                      and rasterised, laid out from 16 seeds every 0.5 px from 5 px, where the
 #                      tiers' pictures can differ (docs/mb_layouts.csv, docs/mb_raster_layouts.csv
 #                      and their tables there; two processes each).
@@ -77,11 +77,11 @@ layouts_run() {
     { cat "$dir/a.csv"; tail -n +2 "$dir/b.csv"; } > "$csv"
     rm -rf "$dir"
 }
-# The layouts' sections of docs/motion_blur.md from their CSVs.
+# The layouts' sections of docs/motion_blur_studies.md from their CSVs.
 layouts_doc() {
-    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --layouts 16 --instants 64 --csv docs/mb_layouts.csv --doc docs/motion_blur.md --doc-only
+    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --layouts 16 --instants 64 --csv docs/mb_layouts.csv --doc docs/motion_blur_studies.md --doc-only
     "$BUILD_DIR"/tools/bench/bench_mb_families --raster --raster-backend "${BACKENDS%%,*}" --sweep --layouts 16 --instants 64 \
-        --csv docs/mb_raster_layouts.csv --doc docs/motion_blur.md --doc-only
+        --csv docs/mb_raster_layouts.csv --doc docs/motion_blur_studies.md --doc-only
 }
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
 
@@ -111,9 +111,9 @@ step "bench_mb_families --raster: motion blur on the rasterised held-out familie
     --backends "$BACKENDS" --images docs/images --image-speeds 12 --doc docs/motion_blur.md
 if [ "$SWEEPS" = 1 ]; then
     step "bench_mb_families --sweep: the tier promise every 0.5 px, CPU reference (10-16 minutes)"
-    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --backends none --csv docs/mb_sweep.csv --doc docs/motion_blur.md
+    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --backends none --csv docs/mb_sweep.csv --doc docs/motion_blur_studies.md
     "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --raster --raster-backend "${BACKENDS%%,*}" --instants 64 --backends none \
-        --csv docs/mb_raster_sweep.csv --doc docs/motion_blur.md
+        --csv docs/mb_raster_sweep.csv --doc docs/motion_blur_studies.md
     step "bench_mb_families --layouts: the tier promise over 16 layouts of each family, CPU reference (about 9 minutes)"
     layouts_run docs/mb_layouts.csv
     step "bench_mb_families --raster --layouts: the same for the rasterised families (about 11 minutes)"
@@ -121,9 +121,9 @@ if [ "$SWEEPS" = 1 ]; then
     layouts_doc
 else
     step "bench_mb_families --sweep and --layouts: skipped (30-35 minutes; run with --sweeps): docs/mb_sweep.csv, mb_raster_sweep.csv, mb_layouts.csv and mb_raster_layouts.csv keep their last run"
-    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --csv docs/mb_sweep.csv --doc docs/motion_blur.md --doc-only
+    "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --csv docs/mb_sweep.csv --doc docs/motion_blur_studies.md --doc-only
     "$BUILD_DIR"/tools/bench/bench_mb_families --sweep --raster --raster-backend "${BACKENDS%%,*}" --instants 64 --csv docs/mb_raster_sweep.csv \
-        --doc docs/motion_blur.md --doc-only
+        --doc docs/motion_blur_studies.md --doc-only
     layouts_doc
 fi
 step "bench_mb_flicker: motion blur's flicker over frame sequences of the scene families"

@@ -13,8 +13,8 @@
 // region the high - current tier's mean over the layouts: the promise for the family, not one
 // layout of it. --hidden-near, --high-dither-pairs and --high-jitter-always score the CPU
 // reference's candidate reconstructions (MotionBlurCandidate) instead of today's. Not a test:
-// docs/motion_blur.md shows its CSVs and pictures. About two minutes on 2 cores (a sweep: see
-// docs/motion_blur.md).
+// docs/motion_blur.md shows its CSVs and pictures, docs/motion_blur_studies.md its sweeps and
+// layouts. About two minutes on 2 cores (a sweep: see docs/motion_blur_studies.md).
 #include <CLI/CLI.hpp>
 
 #include <algorithm>

@@ -53,9 +53,9 @@ struct MotionBlurReferenceResult {
 // SFX_SKY_DEPTH of sfx_shared.h (the .cpp asserts they are equal): an infinite projection's maxDepth.
 inline constexpr double kSkyDepth = 1.0e8;
 
-// Candidate reconstructions the benches can score against today's (docs/motion_blur.md, "The
-// tier promise between the scored speeds"); the shaders have none of them, and the defaults are
-// today's reconstruction exactly.
+// Candidate reconstructions the benches can score against today's (docs/motion_blur_studies.md,
+// "Reconstruction candidates scored on the CPU reference"); the shaders have none of them, and
+// the defaults are today's reconstruction exactly.
 struct MotionBlurCandidate {
     // > 0: of each sample's background weight, the part behind the centre (the weight times
     // clamp(2 (z_S - z_C) / softDepthExtent, 0, 1): none when level, so a uniformly moving area
