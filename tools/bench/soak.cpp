@@ -3,9 +3,11 @@
 // of host memory or device objects, and validation errors on rare transitions.
 //   soak [--backends vulkan,gles,gl-egl,gl-osmesa] [--frames 10000] [--progress 1000] [--no-validation]
 //        [--memory-report-only]
-// Every frame: AO (technique cycling) and motion blur (settings cycling) dispatched and flushed.
-// Every kFramesPerChange frames the size changes; the tier changes every kSizes.size() changes
-// (both effects are made again). Checks per backend:
+// Every frame: AO (technique cycling, horizon with and without bent normals) and motion blur
+// (settings cycling) dispatched and flushed. Every kFramesPerChange frames the size changes; the
+// tier changes every kSizes.size() changes (both effects are made again) and the AO technique
+// every kSizes.size() x tiers changes, so one cycle meets every size x technique x tier. Checks
+// per backend:
 //   - resident memory after the warm-up (one full cycle of every size x technique x tier, or a
 //     tenth of the frames if more) peaks at most 1% above its peak in the warm-up's last cycle;
 //   - Device::stats() live counts are what they were before the first frame once everything is
@@ -22,6 +24,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -57,11 +60,11 @@ double residentMiB() {
 // The host's per-size inputs and AO output.
 struct HostTargets {
     Device& dev;
-    TextureHandle depth, color, velocity, aoOut;
+    TextureHandle depth, color, velocity, aoOut, bentNormals;
     explicit HostTargets(Device& d) : dev(d) {}
     ~HostTargets() { release(); }
     void release() {
-        for (TextureHandle* t : {&depth, &color, &velocity, &aoOut})
+        for (TextureHandle* t : {&depth, &color, &velocity, &aoOut, &bentNormals})
             if (!t->isNull()) (void)dev.destroyTexture(*t), *t = {};
     }
     Status make(Size s) {
@@ -86,7 +89,8 @@ struct HostTargets {
         const Make makes[] = {{&depth, {s.w, s.h, 1, Format::R32F, kTextureSampled, "soak-depth"}, z.data(), z.size() * 4},
                               {&color, {s.w, s.h, 1, Format::RGBA16F, kTextureSampled, "soak-colour"}, c.data(), c.size() * 2},
                               {&velocity, {s.w, s.h, 1, Format::RG32F, kTextureSampled, "soak-velocity"}, v.data(), v.size() * 4},
-                              {&aoOut, {s.w, s.h, 1, aoFormat, kTextureSampled | kTextureRenderTarget, "soak-ao"}, nullptr, 0}};
+                              {&aoOut, {s.w, s.h, 1, aoFormat, kTextureSampled | kTextureRenderTarget, "soak-ao"}, nullptr, 0},
+                              {&bentNormals, {s.w, s.h, 1, Format::RGBA8, kTextureSampled | kTextureRenderTarget, "soak-bent-normals"}, nullptr, 0}};
         for (const Make& m : makes) {
             Result<TextureHandle> t = dev.createTexture(m.desc);
             if (!t) return t.status();
@@ -146,7 +150,8 @@ bool soak(const BackendConfig& config, int frames, int progressEvery, bool valid
     }
     std::vector<Tier> tiersToRun{best->tier};
     if (best->tier != Tier::Current) tiersToRun.push_back(Tier::Current);
-    const int cycle = int(kSizes.size()) * 3 * int(tiersToRun.size()) * kFramesPerChange;
+    const int techniques = int(std::size(kTechniques));
+    const int cycle = int(kSizes.size()) * techniques * int(tiersToRun.size()) * kFramesPerChange;
     const int warmup = std::max(cycle, frames / 10);
     std::printf("soak %s: %s; %d frames, warm-up %d, tiers %zu, sizes %zu\n", name.c_str(), dev.caps().summary().c_str(), frames, warmup,
                 tiersToRun.size(), kSizes.size());
@@ -172,8 +177,9 @@ bool soak(const BackendConfig& config, int frames, int progressEvery, bool valid
                 const Size s = kSizes[size_t(phase) % kSizes.size()];
                 const int tierIndex = (phase / int(kSizes.size())) % int(tiersToRun.size());
                 AoSettings aoSettings;
-                aoSettings.technique = kTechniques[phase % 3];
+                aoSettings.technique = kTechniques[(phase / (int(kSizes.size()) * int(tiersToRun.size()))) % techniques];
                 aoSettings.radius = 0.25f + 0.25f * float(phase % 4);
+                aoSettings.bentNormals = aoSettings.technique == AoTechnique::Horizon && phase % 2 == 0;
                 const TierProfile& profile = tiers::profile(tiersToRun[size_t(tierIndex)]);
                 if (Status st = host.make(s); !st) fail(f, "host textures: " + st.toString());
                 if (tierIndex != lastTier) {
@@ -199,6 +205,7 @@ bool soak(const BackendConfig& config, int frames, int progressEvery, bool valid
             AoInputs aoIn;
             aoIn.depth = DepthSource{host.depth, DepthKind::Linear, camera(size)};
             aoIn.output = host.aoOut;
+            if (fx.ao->desc().settings.bentNormals) aoIn.bentNormals = host.bentNormals;
             MotionBlurInputs mbIn;
             mbIn.color = host.color;
             mbIn.depth = aoIn.depth;
