@@ -1,5 +1,5 @@
 #version 450
-// Motion blur pass 2: per N x N tile (N = the tile edge, SFX_MB_TILE_PX scaled), the velocity of largest
+// Motion blur pass 2: per N x N tile (N = the tile edge, TierProfile::mbTilePx scaled), the velocity of largest
 // magnitude, ranked by mbRankKey as the CPU reference ranks them.
 // Ties keep the first in row-major scan order, as the CPU reference does.
 #include "sfx_shared.h"

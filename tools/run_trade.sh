@@ -37,8 +37,9 @@
 #                      sequences of the same families, and both jitter patterns (docs/mb_flicker.csv and
 #                      its tables in "Stable under motion" in docs/motion_blur.md);
 #   8. fit_mb        - motion blur's accuracy on the training and held-out families and its cost
-#                      per taps x maximum radius at 720 rows, the front its presets are chosen from
-#                      (docs/mb_fit.csv and its grid in docs/motion_blur.md; about 4 minutes).
+#                      per taps x maximum radius at 720 rows, the front its presets are chosen from,
+#                      and each tier's default at five tile edges (docs/mb_fit.csv, its grid and
+#                      tile table in docs/motion_blur.md; about 5 minutes).
 # Truth images are traced once and cached by scene, view, size, radius, sample count and seed
 # under $SFX_TRUTH_CACHE (default build/truth-cache): a second run only renders the effects.
 # The fitted looks are data of the tier table: fit_ao prints them, and adopting them is an edit of
@@ -129,5 +130,5 @@ fi
 step "bench_mb_flicker: motion blur's flicker over frame sequences of the scene families"
 "$BUILD_DIR"/tools/bench/bench_mb_flicker --csv docs/mb_flicker.csv --backends "$BACKENDS" --doc docs/motion_blur.md
 step "fit_mb: motion blur's front over taps x maximum radius at 720 rows"
-"$BUILD_DIR"/tools/bench/fit_mb --taps 3,5,7,9,11,13,15,17 --radii 8,10,12,14,18,24 --backend "${BACKENDS%%,*}" --csv docs/mb_fit.csv --doc docs/motion_blur.md
+"$BUILD_DIR"/tools/bench/fit_mb --taps 3,5,7,9,11,13,15,17 --radii 8,10,12,14,18,24 --tiles 5,7,10,14,18 --backend "${BACKENDS%%,*}" --csv docs/mb_fit.csv --doc docs/motion_blur.md
 step "done: docs/trade.md, docs/trade.csv, docs/ao_fit.csv, docs/trade_presets.csv, docs/images/pareto_*.svg, docs/ao_front.csv, docs/images/ao_front_*.svg, docs/mb_families.csv, docs/mb_raster_families.csv, docs/mb_sweep.csv, docs/mb_raster_sweep.csv, docs/images/mb_*px.png, docs/mb_flicker.csv, docs/mb_fit.csv, docs/ao_families.*"

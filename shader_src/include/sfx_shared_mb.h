@@ -59,11 +59,6 @@ SFX_CONST(float, SFX_MB_REFERENCE_ROWS, 720.0)
 // Largest radius (output pixels, after resolution scaling) the shaders loop over; with the
 // tile edge it bounds what tile max reads (N x N texels, N at most the radius).
 SFX_CONST(int, SFX_MB_MAX_RADIUS_LIMIT_PX, 64)
-// Tile edge N of tile max and neighbour max: output pixels at SFX_MB_REFERENCE_ROWS, scaled
-// with the rows as the radius is, at most the radius. The same on every tier: the tile is how
-// finely the dominant velocity v_N follows the picture, which has nothing to do with how long
-// a blur may be; a larger radius widens the neighbourhood (mbNeighborReachTiles) instead.
-SFX_CONST(float, SFX_MB_TILE_PX, 10.0)
 // Most tiles neighbour max looks out on each side; the tile is made larger where the radius
 // would need more (a user radius far beyond the tile).
 SFX_CONST(int, SFX_MB_MAX_NEIGHBOR_REACH, 4)

@@ -86,6 +86,7 @@ inline TierProfile hostileProfile(FuzzedDataProvider& in) {
     p.aoPackedDepthTarget = in.ConsumeBool();
     p.mbTaps = hostileCount(in);
     p.mbMaxRadiusPx = hostileFloat(in);
+    p.mbTilePx = hostileFloat(in);
     p.mbJitterSize = hostileCount(in);
     p.abufferOit = in.ConsumeBool();
     return p;

@@ -359,16 +359,26 @@ TEST_CASE("motion blur reference: camera-only velocity of a pure translation", "
 }
 
 TEST_CASE("motion blur: tier parameters come from the profile; an empty one is a named error", "[motion_blur][bad-input]") {
-    // The resolved taps, radius and jitter are the profile's, whatever its tier enum says.
+    // The resolved taps, radius, tile and jitter are the profile's, whatever its tier enum says.
     TierProfile custom = tiers::profile(Tier::Current);
     custom.mbTaps = 11;
     custom.mbMaxRadiusPx = 5;
+    custom.mbTilePx = 3;
     custom.mbJitterSize = 4;
     Result<MotionBlurParams> p = resolveMotionBlur(custom, {}, 720);
     REQUIRE(p.isOk());
     CHECK(p->taps == 11);
     CHECK(p->radiusPx == 5);
+    CHECK(p->tileSizePx == 3);
     CHECK(p->jitterSize == 4);
+    CHECK(resolveMotionBlur(custom, {}, 1440)->tileSizePx == 6);  // scaled with the rows as the radius is
+    // A tile edge below a pixel, or not a number, is no profile the tier table makes.
+    for (float tile : {0.0f, 0.5f, std::nanf(""), 65.0f}) {
+        custom.mbTilePx = tile;
+        Result<MotionBlurParams> bad = resolveMotionBlur(custom, {}, 720);
+        REQUIRE_FALSE(bad.isOk());
+        CHECK(bad.status().message().find("MotionBlurDesc.profile") != std::string::npos);
+    }
 
     Result<MotionBlurParams> empty = resolveMotionBlur(TierProfile{}, {}, 720);
     REQUIRE_FALSE(empty.isOk());

@@ -22,7 +22,7 @@ namespace {
 auto fields(const TierProfile& p) {
     return std::make_tuple(p.tier, p.aoScalableTaps, p.aoScalableMirrored, p.aoScalableMaxRadiusPx, p.aoUsesDepthMip, p.aoDepthMipLevels,
                            p.aoAlchemySamples, p.aoBlurRadiusPx, p.aoCreaseTaps, p.aoCreaseSpacingPx, p.aoPackedDepthTarget, p.mbTaps,
-                           p.mbMaxRadiusPx, p.mbJitterSize, p.abufferOit);
+                           p.mbMaxRadiusPx, p.mbTilePx, p.mbJitterSize, p.abufferOit);
 }
 
 bool sameStructure(const TierProfile& a, const TierProfile& b) {
@@ -121,6 +121,7 @@ TEST_CASE("tier table: the default presets hold the parameters the tiers always 
                    .aoPackedDepthTarget = true,
                    .mbTaps = 7,
                    .mbMaxRadiusPx = 14.0f,
+                   .mbTilePx = 10.0f,
                    .mbJitterSize = 2,
                    .abufferOit = false};
     expected[1] = {.tier = Tier::High,
@@ -136,6 +137,7 @@ TEST_CASE("tier table: the default presets hold the parameters the tiers always 
                    .aoPackedDepthTarget = false,
                    .mbTaps = 13,
                    .mbMaxRadiusPx = 18.0f,
+                   .mbTilePx = 10.0f,
                    .mbJitterSize = 2,
                    .abufferOit = true};
     for (uint32_t i = 0; i < kTierCount; ++i) {

@@ -104,6 +104,11 @@ TierProfile currentDefault() {
     // same cost (fit_mb; the radius costs nothing measurable on lavapipe), and still below the
     // high tier's default on every held-out family and speed (docs/motion_blur.md).
     p.mbMaxRadiusPx = 14.0f;
+    // 10 px on both tiers: a tier promise needs the same tiles (with the 2012 filter's N = k the
+    // high tier's longer radius took its sampling direction from farther features), and from 5 to
+    // 18 px the training families' PSNR moves by 0.03 dB at most (fit_mb --tiles,
+    // docs/motion_blur.md), so the tile is no preset's dimension.
+    p.mbTilePx = 10.0f;
     p.mbJitterSize = 2;  // checkerboard
     p.abufferOit = false;
     return p;
@@ -145,6 +150,7 @@ TierProfile highDefault() {
     // afar no more often on the tier with the longer blur (docs/motion_blur.md, scene families).
     p.mbTaps = 13;
     p.mbMaxRadiusPx = 18.0f;
+    p.mbTilePx = 10.0f;  // the current tier's tile (above)
     // The current tier's checkerboard: with the velocity stored alike on both tiers, a blur both
     // radii contain is then reconstructed exactly as on the current tier (the 4x4 pattern lost
     // up to 0.03 dB there on the held-out families and gained nothing at longer blurs).

@@ -1,6 +1,7 @@
 // fit_mb: the measured front of motion blur's settings, from which each tier's presets are
 // chosen. For every taps x maximum radius of a grid (the tile, jitter and everything else as
-// the tiers have them, which both tiers share), the CPU reference's PSNR over the moving region
+// the tiers have them, which both tiers share), and for each tier's default at every tile edge
+// of --tiles, the CPU reference's PSNR over the moving region
 // on the TRAINING motion families (tools/scenes/mb_families.*) and, only to report, on the
 // HELD-OUT ones, each the mean over the scored speeds (2-40 px at 240 rows, scaled; by default at
 // 960x720, the rows the tiers' radii are given at, so the taps' spacing is the one they get at
@@ -34,7 +35,7 @@ namespace {
 
 struct Point {
     uint32_t taps = 0;
-    float radius = 0;
+    float radius = 0, tile = 0;
     double training = 0, heldOut = 0, ms = -1;
 };
 
@@ -52,20 +53,23 @@ Result<std::vector<Point>> readPoints(const std::string& path) {
     std::ifstream in(path);
     std::string line;
     if (!in || !std::getline(in, line)) return Status{StatusCode::FileError, path + ": cannot read"};
-    if (line.rfind("taps,max_radius_px,training_psnr_moving,heldout_psnr_moving,ms,", 0) != 0)
+    if (line.rfind("taps,max_radius_px,tile_px,training_psnr_moving,heldout_psnr_moving,ms,", 0) != 0)
         return Status{StatusCode::InvalidArgument, path + ": not a fit_mb CSV (header " + line + ")"};
     std::vector<Point> points;
     while (std::getline(in, line)) {
         Point p;
-        if (std::sscanf(line.c_str(), "%u,%f,%lf,%lf,%lf", &p.taps, &p.radius, &p.training, &p.heldOut, &p.ms) == 5) points.push_back(p);
+        if (std::sscanf(line.c_str(), "%u,%f,%f,%lf,%lf,%lf", &p.taps, &p.radius, &p.tile, &p.training, &p.heldOut, &p.ms) == 6) points.push_back(p);
     }
     return points;
 }
 
 // The page's section "fit_mb": the grid (training PSNR, held-out in brackets, per taps x radius;
 // the cost's range per taps) and each tier's presets placed on it, ordered by training PSNR.
-std::string docSection(const std::vector<Point>& points, const std::string& backend, uint32_t w, uint32_t h, uint32_t costW, uint32_t costH,
+std::string docSection(const std::vector<Point>& all, const std::string& backend, uint32_t w, uint32_t h, uint32_t costW, uint32_t costH,
                        uint32_t instants) {
+    const float gridTile = tiers::profile(Tier::High).mbTilePx;
+    std::vector<Point> points;
+    std::copy_if(all.begin(), all.end(), std::back_inserter(points), [&](const Point& p) { return p.tile == gridTile; });
     std::vector<float> radii;
     std::vector<uint32_t> taps;
     for (const Point& p : points) {
@@ -82,7 +86,7 @@ std::string docSection(const std::vector<Point>& points, const std::string& back
     const auto px = tools::compactNumber;
     std::ostringstream md;
     md << "Measured by `fit_mb` at " << w << " × " << h << " (truth of " << instants << " instants), cost at " << costW << " × " << costH << " on "
-       << backend << ". Training PSNR (held-out in brackets), dB:\n\n| taps |";
+       << backend << ", the tiers' tile edge (" << px(gridTile) << " px at 720 rows). Training PSNR (held-out in brackets), dB:\n\n| taps |";
     for (float r : radii) md << " " << px(r) << " px |";
     md << " cost (ms, the radii's range) |\n| --- |";
     for (size_t i = 0; i <= radii.size(); ++i) md << " --- |";
@@ -119,17 +123,51 @@ std::string docSection(const std::vector<Point>& points, const std::string& back
     return md.str();
 }
 
+// The page's section "fit_mb_tiles": each tier's default at every tile edge measured.
+std::string tileSection(const std::vector<Point>& points, const std::string& backend) {
+    std::vector<float> tiles;
+    for (const Point& p : points)
+        if (std::find(tiles.begin(), tiles.end(), p.tile) == tiles.end()) tiles.push_back(p.tile);
+    std::sort(tiles.begin(), tiles.end());
+    const auto px = tools::compactNumber;
+    std::ostringstream md;
+    md << "Each tier's default at each tile edge (px at 720 rows; a tile is never larger than the radius, so the current tier's 18 px "
+          "tile is 14 px): training PSNR (held-out in brackets), dB, and the cost on "
+       << backend << ", ms:\n\n| tier default |";
+    for (float t : tiles) md << " " << px(t) << " px |";
+    md << "\n| --- |";
+    for (size_t i = 0; i < tiles.size(); ++i) md << " --- |";
+    md << "\n";
+    for (const tiers::TierRow& row : tiers::table()) {
+        const TierProfile& d = row.presets.front().params;  // the default preset comes first
+        md << "| " << toString(row.tier) << ", " << d.mbTaps << " taps / " << px(d.mbMaxRadiusPx) << " px |";
+        for (float t : tiles) {
+            auto it = std::find_if(points.begin(), points.end(),
+                                   [&](const Point& p) { return p.taps == d.mbTaps && p.radius == d.mbMaxRadiusPx && p.tile == t; });
+            md << " "
+               << (it == points.end() ? std::string("-")
+                                      : tools::fixed(it->training, 2) + " (" + tools::fixed(it->heldOut, 2) + ")" +
+                           (it->ms >= 0 ? ", " + tools::fixed(it->ms, 1) : std::string()))
+               << " |";
+        }
+        md << "\n";
+    }
+    return md.str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"fit_mb: motion blur's accuracy (training and held-out families) and cost per taps x maximum radius", "fit_mb"};
     std::vector<uint32_t> taps{3, 5, 7, 9, 11, 13, 15, 17};
     std::vector<float> radii{6, 8, 10, 12, 14, 18, 24};
+    std::vector<float> tiles{5, 7, 10, 14, 18};
     uint32_t instants = 256, width = 960, height = 720, costWidth = 1280, costHeight = 720, runs = 7;
     std::vector<double> speeds;
     std::string backend = "vulkan", csvPath = "mb_fit.csv", docPath;
     app.add_option("--taps", taps, "tap counts (centre included, odd)")->delimiter(',')->capture_default_str();
     app.add_option("--radii", radii, "maximum radii, pixels at 720 rows")->delimiter(',')->capture_default_str();
+    app.add_option("--tiles", tiles, "tile edges for each tier's default, pixels at 720 rows, [1, 64]")->delimiter(',')->capture_default_str();
     app.add_option("--instants", instants, "instants averaged for the truth")->capture_default_str();
     app.add_option("--width", width, "family picture width")->capture_default_str();
     app.add_option("--height", height, "family picture height")->capture_default_str();
@@ -144,13 +182,20 @@ int main(int argc, char** argv) {
     bool docOnly = false;
     app.add_flag("--doc-only", docOnly, "with --doc: write the section from --csv as it is, without running anything");
     CLI11_PARSE(app, argc, argv);
-    auto writeDoc = [&](const std::vector<Point>& points) -> int {
-        if (Status st = tools::replaceMarkdownSection(docPath, "fit_mb", docSection(points, backend, width, height, costWidth, costHeight, instants));
-            !st) {
-            std::cerr << "fit_mb: " << st.toString() << "\n";
+    for (float t : tiles)
+        if (!(t >= 1.0f && t <= 64.0f)) {
+            std::cerr << "fit_mb: --tiles " << t << " is outside [1, 64] px\n";
             return 1;
         }
-        std::cout << "wrote the section fit_mb of " << docPath << "\n";
+    auto writeDoc = [&](const std::vector<Point>& points) -> int {
+        for (const auto& [name, text] : {std::pair{"fit_mb", docSection(points, backend, width, height, costWidth, costHeight, instants)},
+                                         {"fit_mb_tiles", tileSection(points, backend)}}) {
+            if (Status st = tools::replaceMarkdownSection(docPath, name, text); !st) {
+                std::cerr << "fit_mb: " << st.toString() << "\n";
+                return 1;
+            }
+            std::cout << "wrote the section " << name << " of " << docPath << "\n";
+        }
         return 0;
     };
     if (docOnly) {
@@ -196,38 +241,69 @@ int main(int argc, char** argv) {
     const CameraProjection cam = makePerspective(pd).value();
     const reference::SceneFrame costFrame = tools::makeMotionScenes(costWidth, costHeight)[1].scene.render(0);
 
+    // One configuration measured: accuracy on both family sets, and the cost where a backend times it.
+    auto measure = [&](const TierProfile& profile) -> Result<Point> {
+        Point pt{profile.mbTaps, profile.mbMaxRadiusPx, profile.mbTilePx, meanPsnr(training, profile), meanPsnr(heldOut, profile)};
+        if (device) {
+            Result<tools::MotionBlurRun> run = tools::runMotionBlur(*device, profile, {}, costFrame, cam, runs);
+            if (!run) return run.status();
+            pt.ms = run->medianMs;
+        }
+        char line[192];
+        std::snprintf(line, sizeof line, "%2u taps, radius %4.1f px, tile %4.1f px: training %.2f dB, held-out %.2f dB, %.2f ms", pt.taps, pt.radius,
+                      pt.tile, pt.training, pt.heldOut, pt.ms);
+        progress(line);
+        return pt;
+    };
     std::vector<Point> points;
     for (uint32_t t : taps)
         for (float r : radii) {
             TierProfile profile = base;
             profile.mbTaps = t, profile.mbMaxRadiusPx = r;
             if (!resolveMotionBlur(profile, {}, height)) continue;
-            Point pt{t, r, meanPsnr(training, profile), meanPsnr(heldOut, profile)};
-            if (device) {
-                Result<tools::MotionBlurRun> run = tools::runMotionBlur(*device, profile, {}, costFrame, cam, runs);
-                if (!run) {
-                    std::cerr << "fit_mb: " << run.status().toString() << "\n";
-                    return 1;
-                }
-                pt.ms = run->medianMs;
+            Result<Point> pt = measure(profile);
+            if (!pt) {
+                std::cerr << "fit_mb: " << pt.status().toString() << "\n";
+                return 1;
             }
-            char line[160];
-            std::snprintf(line, sizeof line, "%2u taps, radius %4.1f px: training %.2f dB, held-out %.2f dB, %.2f ms", t, r, pt.training, pt.heldOut,
-                          pt.ms);
-            progress(line);
-            points.push_back(pt);
+            points.push_back(pt.value());
         }
+    // The tile edge at each tier's default (the grid above has the tiers' own tile).
+    const size_t gridPoints = points.size();
+    for (const tiers::TierRow& row : tiers::table()) {
+        const TierProfile& d = row.presets.front().params;  // the default preset comes first
+        for (float tile : tiles) {
+            const bool measured = std::any_of(points.begin(), points.end(),
+                                              [&](const Point& p) { return p.taps == d.mbTaps && p.radius == d.mbMaxRadiusPx && p.tile == tile; });
+            if (measured) continue;
+            TierProfile profile = base;
+            profile.mbTaps = d.mbTaps, profile.mbMaxRadiusPx = d.mbMaxRadiusPx, profile.mbTilePx = tile;
+            Result<Point> pt = measure(profile);
+            if (!pt) {
+                std::cerr << "fit_mb: " << pt.status().toString() << "\n";
+                return 1;
+            }
+            points.push_back(pt.value());
+        }
+    }
     std::ofstream csv(csvPath);
-    csv << "taps,max_radius_px,training_psnr_moving,heldout_psnr_moving,ms,backend,cost_width,cost_height,front\n";
-    std::printf("front (no configuration both more accurate on training and cheaper):\n");
-    for (const Point& p : points) {
-        const bool dominated = std::any_of(points.begin(), points.end(), [&](const Point& q) {
+    csv << "taps,max_radius_px,tile_px,training_psnr_moving,heldout_psnr_moving,ms,backend,cost_width,cost_height,front\n";
+    std::printf("front (no configuration both more accurate on training and cheaper; the grid at the tiers' tile):\n");
+    for (size_t i = 0; i < points.size(); ++i) {
+        const Point& p = points[i];
+        // The front is the grid's; a tile row is not on the grid ("-").
+        const bool onGrid = i < gridPoints;
+        const bool dominated = std::any_of(points.begin(), points.begin() + long(gridPoints), [&](const Point& q) {
             const bool cheaper = device ? q.ms <= p.ms : q.taps <= p.taps && q.radius <= p.radius;
             return &q != &p && q.training > p.training && cheaper;
         });
-        csv << p.taps << "," << p.radius << "," << p.training << "," << p.heldOut << "," << p.ms << "," << backend << "," << costWidth << ","
-            << costHeight << "," << (dominated ? 0 : 1) << "\n";
-        if (!dominated)
+        csv << p.taps << "," << p.radius << "," << p.tile << "," << p.training << "," << p.heldOut << "," << p.ms << "," << backend << ","
+            << costWidth << "," << costHeight << ","
+            << (!onGrid         ? "-"
+                    : dominated ? "0"
+                                : "1")
+            << "\n";
+        if (onGrid && !dominated)
             std::printf("  %2u taps, radius %4.1f: training %.2f, held-out %.2f dB, %.2f ms\n", p.taps, p.radius, p.training, p.heldOut, p.ms);
     }
     csv.close();

@@ -63,6 +63,7 @@ const ParameterRow kParameterRows[] = {
     {"crease AO look (intensity, contrast, range, bias)", [](const TierProfile& p) { return look(p.aoLook[2], LookOf::Crease); }},
     {"motion blur taps (centre included)", [](const TierProfile& p) { return std::to_string(p.mbTaps); }},
     {"motion blur max radius (px at 720 rows)", [](const TierProfile& p) { return std::to_string(int(p.mbMaxRadiusPx)); }},
+    {"motion blur tile edge (px at 720 rows)", [](const TierProfile& p) { return std::to_string(int(p.mbTilePx)); }},
     {"motion blur jitter", [](const TierProfile& p) { return std::string(p.mbJitterSize == 2 ? "checkerboard" : "4x4 randomised"); }},
     {"A-buffer OIT", [](const TierProfile& p) { return std::string(p.abufferOit ? "yes" : "no (documented fallback)"); }},
 };

@@ -63,8 +63,8 @@ struct MotionBlurParams {
     uint32_t pairs = 0;       // (taps - 1) / 2 mirrored sample pairs
     uint32_t jitterSize = 0;  // 2 = checkerboard, 4 = 4x4 randomised
     uint32_t radiusPx = 0;    // k: clamp radius, output pixels, [1, 64]
-    // N: tile edge of tile max and neighbour max, output pixels, [1, k] (SFX_MB_TILE_PX scaled
-    // as the radius is, made larger where the neighbourhood would reach past
+    // N: tile edge of tile max and neighbour max, output pixels, [1, k] (TierProfile::mbTilePx
+    // scaled as the radius is, made larger where the neighbourhood would reach past
     // SFX_MB_MAX_NEIGHBOR_REACH tiles).
     uint32_t tileSizePx = 0;
     // The tier-default radius scaled to the output height exceeded the 64 px limit and

@@ -90,6 +90,7 @@ struct TierProfile {
     // Motion blur
     uint32_t mbTaps = 0;        // reconstruction taps including the centre
     float mbMaxRadiusPx = 0;    // maximum blur radius at the reference resolution
+    float mbTilePx = 0;         // tile edge of tile max and neighbour max at the reference resolution
     uint32_t mbJitterSize = 0;  // 2 (checkerboard) or 4 (4x4 randomised)
     // Order-independent transparency
     bool abufferOit = false;

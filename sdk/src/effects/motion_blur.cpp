@@ -38,8 +38,11 @@ std::string num(double v) {
 // tiers::profile() or tiers::choose(), whose values the shaders' loops and tables accept.
 Status checkProfile(const TierProfile& p) {
     if (uint32_t(p.tier) >= kTierCount || p.mbTaps < 3 || p.mbTaps > uint32_t(shared::SFX_MB_MAX_TAPS) || p.mbTaps % 2 == 0 ||
-        !(p.mbMaxRadiusPx > 0.0f && p.mbMaxRadiusPx <= float(shared::SFX_MB_MAX_RADIUS_LIMIT_PX)) || (p.mbJitterSize != 2 && p.mbJitterSize != 4))
-        return invalidArgument("MotionBlurDesc.profile", "an empty or unknown tier profile (mbTaps " + std::to_string(p.mbTaps) + ")",
+        !(p.mbMaxRadiusPx > 0.0f && p.mbMaxRadiusPx <= float(shared::SFX_MB_MAX_RADIUS_LIMIT_PX)) ||
+        !(p.mbTilePx >= 1.0f && p.mbTilePx <= float(shared::SFX_MB_MAX_RADIUS_LIMIT_PX)) || (p.mbJitterSize != 2 && p.mbJitterSize != 4))
+        return invalidArgument("MotionBlurDesc.profile",
+                               "an empty or unknown tier profile (mbTaps " + std::to_string(p.mbTaps) + ", mbMaxRadiusPx " + num(p.mbMaxRadiusPx) +
+                                   ", mbTilePx " + num(p.mbTilePx) + ", mbJitterSize " + std::to_string(p.mbJitterSize) + ")",
                                "tiers::profile(tier) or tiers::choose(caps)->profile");
     return Status::ok();
 }
@@ -83,9 +86,9 @@ Result<MotionBlurParams> resolveMotionBlur(const TierProfile& profile, const Mot
                                std::to_string(*s.maxRadiusPx) + " (" + std::to_string(radius) + " px at " + std::to_string(height) + " rows)",
                                "a scaled radius <= 64 px");
     p.radiusPx = uint32_t(radius);
-    // The tile: the same pixels at referenceRows on every tier, never beyond the radius, and
-    // large enough that neighbour max reaches the radius within its limit of tiles.
-    const double tileBase = double(shared::SFX_MB_TILE_PX);
+    // The tile: the profile's pixels at referenceRows (both tiers the same), never beyond the
+    // radius, and large enough that neighbour max reaches the radius within its limit of tiles.
+    const double tileBase = double(profile.mbTilePx);
     const double tile = std::round(s.referenceRows == 0 ? tileBase : tileBase * double(height) / double(s.referenceRows));
     const double fewestTiles = std::ceil(radius / double(shared::SFX_MB_MAX_NEIGHBOR_REACH));
     p.tileSizePx = uint32_t(std::clamp(std::max(tile, fewestTiles), 1.0, radius));
