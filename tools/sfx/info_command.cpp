@@ -61,6 +61,12 @@ const ParameterRow kParameterRows[] = {
     {"alchemy AO look (intensity, contrast, bias)", [](const TierProfile& p) { return look(p.aoLook[0], LookOf::Alchemy); }},
     {"scalable AO look (intensity, contrast, bias, sum exponent)", [](const TierProfile& p) { return look(p.aoLook[1], LookOf::Scalable); }},
     {"crease AO look (intensity, contrast, range, bias)", [](const TierProfile& p) { return look(p.aoLook[2], LookOf::Crease); }},
+    {"horizon AO look (a power on the visibility)",
+     [](const TierProfile& p) {
+         char buf[32];
+         std::snprintf(buf, sizeof buf, "%g", p.aoLook[3].contrast);
+         return std::string(buf);
+     }},
     {"motion blur taps (centre included)", [](const TierProfile& p) { return std::to_string(p.mbTaps); }},
     {"motion blur max radius (px at 720 rows)", [](const TierProfile& p) { return std::to_string(int(p.mbMaxRadiusPx)); }},
     {"motion blur tile edge (px at 720 rows)", [](const TierProfile& p) { return std::to_string(int(p.mbTilePx)); }},
