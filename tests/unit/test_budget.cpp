@@ -16,7 +16,7 @@ using namespace sfx::budget;
 namespace {
 
 CostTable table() {
-    CostTable t{"Test GPU 1.0", Tier::High, Effect::AmbientObscurance, 1920, 1080, {}};
+    CostTable t{"Test GPU 1.0", Tier::High, Effect::AmbientObscurance, 1920, 1080, {}, 0x0123456789abcdefull};
     t.entries = {{{Effect::AmbientObscurance, "low", AoTechnique::Alchemy, 24.0}, 0.8},
                  {{Effect::AmbientObscurance, "medium", AoTechnique::Alchemy, 26.0}, 1.4},
                  {{Effect::AmbientObscurance, "medium", AoTechnique::Scalable, 26.0}, 1.1},
@@ -70,6 +70,7 @@ TEST_CASE("budget: a cost table survives its file and a stale one is refused", "
     CHECK(back->device == t.device);
     CHECK(back->tier == Tier::High);
     CHECK(back->width == 1920);
+    CHECK(back->fingerprint == t.fingerprint);
     REQUIRE(back->entries.size() == t.entries.size());
     for (size_t i = 0; i < t.entries.size(); ++i) CHECK(back->entries[i].milliseconds == Approx(t.entries[i].milliseconds));
     CHECK(choose(back.value(), 1.5)->chosen.candidate.name() == "medium/scalable");
@@ -113,4 +114,55 @@ TEST_CASE("budget: the cost table wants one tier's presets", "[budget]") {
     Status mixedStatus = costTable(*device, mixed, Effect::MotionBlur, 64, 64, options).status();
     CHECK(mixedStatus.code() == StatusCode::InvalidArgument);
     CHECK_THAT(mixedStatus.message(), Catch::Contains("presets of one tier"));
+}
+
+TEST_CASE("budget: the fingerprint follows the device, the presets and the shaders", "[budget]") {
+    std::unique_ptr<Device> device = null::createDevice();
+    const DeviceCaps& caps = device->caps();
+    const std::vector<Preset>& high = tiers::row(Tier::High).presets;
+    const uint64_t base = fingerprint(caps, Effect::MotionBlur, high);
+    CHECK(fingerprint(caps, Effect::MotionBlur, high) == base);  // the same inputs, the same number
+    CHECK(fingerprint(caps, Effect::AmbientObscurance, high) != base);
+    CHECK(fingerprint(caps, Effect::MotionBlur, tiers::row(Tier::Current).presets) != base);  // other presets and programs
+    std::vector<Preset> changed = high;
+    changed.back().params.mbTaps += 2;
+    CHECK(fingerprint(caps, Effect::MotionBlur, changed) != base);
+    changed = high;
+    changed.front().params.aoLook[1].intensity *= 2.0f;
+    CHECK(fingerprint(caps, Effect::MotionBlur, changed) != base);
+    DeviceCaps otherDriver = caps;
+    otherDriver.apiName += " (another driver)";
+    CHECK(fingerprint(otherDriver, Effect::MotionBlur, high) != base);
+    DeviceCaps otherBackend = caps;
+    otherBackend.backend = BackendKind::GLES;
+    CHECK(fingerprint(otherBackend, Effect::MotionBlur, high) != base);
+    CHECK(costTablePath("cache", otherBackend, Effect::MotionBlur, 64, 64) != costTablePath("cache", caps, Effect::MotionBlur, 64, 64));
+}
+
+TEST_CASE("budget: a cached cost table is read back only while it measures the same presets", "[budget]") {
+    const std::string dir = (std::filesystem::temp_directory_path() / "sfx-budget-cache-test").string();
+    std::filesystem::remove_all(dir);
+    std::unique_ptr<Device> device = null::createDevice();
+    CalibrationOptions options;
+    options.cacheDir = dir;
+    options.runs = 1;
+    std::vector<Preset> presets = tiers::row(Tier::High).presets;
+    Result<CostTable> first = costTable(*device, presets, Effect::MotionBlur, 32, 16, options);
+    REQUIRE(first.isOk());
+    const std::string path = costTablePath(dir, device->caps(), Effect::MotionBlur, 32, 16);
+    REQUIRE(std::filesystem::exists(path));
+    // Mark the file's figures, so a table read from it can be told from one measured.
+    CostTable marked = first.value();
+    for (CostEntry& e : marked.entries) e.milliseconds = 123.0;
+    REQUIRE(writeCostTable(path, marked).isOk());
+    Result<CostTable> cached = costTable(*device, presets, Effect::MotionBlur, 32, 16, options);
+    REQUIRE(cached.isOk());
+    CHECK(cached->entries.front().milliseconds == 123.0);
+    // Another preset under the same name: the cached figures are not this preset's.
+    presets.back().params.mbTaps -= 2;
+    Result<CostTable> remeasured = costTable(*device, presets, Effect::MotionBlur, 32, 16, options);
+    REQUIRE(remeasured.isOk());
+    CHECK(remeasured->fingerprint != marked.fingerprint);
+    CHECK(remeasured->entries.front().milliseconds != 123.0);
+    std::filesystem::remove_all(dir);
 }

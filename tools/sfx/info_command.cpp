@@ -191,7 +191,7 @@ int printBudgetChoice(const BudgetFlags& f) {
     Result<budget::CostTable> table = budget::costTable(dev, tiers::row(best->tier.tier).presets, effect, w, h, options);
     if (!table) return fail(cmd, table.status());
     std::cout << "cost table (" << budget::toString(effect) << ", " << w << "x" << h << ", tier " << toString(table->tier)
-              << "; measured on this device, cached in " << budget::costTablePath(f.cacheDir, dev.caps().deviceName, effect, w, h) << "):\n";
+              << "; measured on this device, cached in " << budget::costTablePath(f.cacheDir, dev.caps(), effect, w, h) << "):\n";
     for (const budget::CostEntry& e : table->entries) {
         char line[160];
         std::snprintf(line, sizeof line, "  %-20s %9.3f ms  PSNR %6.2f dB\n", e.candidate.name().c_str(), e.milliseconds, e.candidate.psnrDb);

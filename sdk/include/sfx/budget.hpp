@@ -40,6 +40,7 @@ struct CostTable {
     Effect effect = Effect::AmbientObscurance;
     uint32_t width = 0, height = 0;
     std::vector<CostEntry> entries;
+    uint64_t fingerprint = 0;  // what was measured (budget::fingerprint); a cached table must match it
 };
 
 struct Choice {
@@ -64,10 +65,10 @@ struct CalibrationOptions {
 };
 
 // The cost table of `effect` at width x height on `device` for `presets` (one tier's, the tier
-// the device runs): read from the cache when one for this device name, effect, size and
-// candidate list exists, else measured (every candidate rendered on synthetic inputs, timed
-// with the HAL's timers) and cached. InvalidArgument naming presets when the list is empty or
-// mixes tiers.
+// the device runs): read from the cache when one for this backend, device, effect, size and
+// candidate list exists and its fingerprint is this run's, else measured (every candidate
+// rendered on synthetic inputs, timed with the HAL's timers) and cached. InvalidArgument naming
+// presets when the list is empty or mixes tiers.
 Result<CostTable> costTable(Device& device, const std::vector<Preset>& presets, Effect effect, uint32_t width, uint32_t height,
                             const CalibrationOptions& options);
 
@@ -76,9 +77,17 @@ Result<CostTable> costTable(Device& device, const std::vector<Preset>& presets, 
 // which the benchmarks share. InvalidArgument naming runs when it is 0.
 Result<TimerReading> timeMedian(Device& device, uint32_t runs, const std::function<Status()>& record);
 
+// What a cost table of `effect` over `presets` on a device measures, as one number: the backend,
+// API and device names, every preset's parameters and the code of the presets' tier's programs.
+// A cached table with another fingerprint was measured on something else and is measured again.
+uint64_t fingerprint(const DeviceCaps& caps, Effect effect, const std::vector<Preset>& presets);
+
 // The cache file of a table, and the file's text form (one entry per line); readCostTable is
-// FileError when the file is missing or not a cost table of these candidates.
+// FileError when the file is missing or not a cost table of these candidates. The first form
+// names the file by a device string; the second by the backend and device of `caps`, so a
+// device's Vulkan and GL costs are cached apart (costTable uses it).
 std::string costTablePath(const std::string& cacheDir, const std::string& device, Effect effect, uint32_t width, uint32_t height);
+std::string costTablePath(const std::string& cacheDir, const DeviceCaps& caps, Effect effect, uint32_t width, uint32_t height);
 Status writeCostTable(const std::string& path, const CostTable& table);
 Result<CostTable> readCostTable(const std::string& path, const std::vector<Candidate>& expected);
 

@@ -16,7 +16,7 @@ std::string ms(double v) {
     return buf;
 }
 
-constexpr const char* kFileHeader = "sfx-cost-table 1";
+constexpr const char* kFileHeader = "sfx-cost-table 2";
 
 }  // namespace
 
@@ -63,9 +63,17 @@ std::string costTablePath(const std::string& cacheDir, const std::string& device
     return cacheDir + "/costs_" + safe + "_" + toString(effect) + "_" + std::to_string(width) + "x" + std::to_string(height) + ".txt";
 }
 
+std::string costTablePath(const std::string& cacheDir, const DeviceCaps& caps, Effect effect, uint32_t width, uint32_t height) {
+    return costTablePath(cacheDir, std::string(toString(caps.backend)) + " " + caps.deviceName, effect, width, height);
+}
+
 Status writeCostTable(const std::string& path, const CostTable& t) {
     std::ofstream out(path);
-    out << kFileHeader << "\n" << t.device << "\n" << toString(t.tier) << " " << toString(t.effect) << " " << t.width << " " << t.height << "\n";
+    char fingerprint[24];
+    std::snprintf(fingerprint, sizeof fingerprint, "%016llx", static_cast<unsigned long long>(t.fingerprint));
+    out << kFileHeader << "\n"
+        << t.device << "\n"
+        << toString(t.tier) << " " << toString(t.effect) << " " << t.width << " " << t.height << " " << fingerprint << "\n";
     for (const CostEntry& e : t.entries) {
         char buf[32];
         std::snprintf(buf, sizeof buf, "%.6f", e.milliseconds);
@@ -77,11 +85,13 @@ Status writeCostTable(const std::string& path, const CostTable& t) {
 Result<CostTable> readCostTable(const std::string& path, const std::vector<Candidate>& expected) {
     std::ifstream in(path);
     if (!in) return Status{StatusCode::FileError, path + ": no cost table"};
-    std::string header, tierName, effectName;
+    std::string header, tierName, effectName, fingerprint;
     CostTable t;
-    if (!std::getline(in, header) || header != kFileHeader || !std::getline(in, t.device) || !(in >> tierName >> effectName >> t.width >> t.height) ||
-        !parseTier(tierName, &t.tier) || !parseEffect(effectName, &t.effect))
+    if (!std::getline(in, header) || header != kFileHeader || !std::getline(in, t.device) ||
+        !(in >> tierName >> effectName >> t.width >> t.height >> fingerprint) || !parseTier(tierName, &t.tier) ||
+        !parseEffect(effectName, &t.effect) || fingerprint.size() != 16 || fingerprint.find_first_not_of("0123456789abcdef") != std::string::npos)
         return Status{StatusCode::FileError, path + ": not a cost table (bad header)"};
+    t.fingerprint = std::stoull(fingerprint, nullptr, 16);
     for (const Candidate& c : expected) {
         std::string name;
         double milliseconds = 0;

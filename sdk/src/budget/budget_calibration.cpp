@@ -1,6 +1,6 @@
 // The calibration run behind settings by budget: every candidate of the device's tier rendered on
 // synthetic inputs of the asked size and timed with the HAL's timers; the table is cached per
-// device name, effect and size.
+// backend, device, effect and size, and read back only while its fingerprint holds.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -158,12 +158,15 @@ Result<CostTable> costTable(Device& dev, const std::vector<Preset>& presets, Eff
             return invalidArgument("presets", "'" + p.name + "' of tier " + toString(p.params.tier) + " among presets of tier " + toString(tier),
                                    "presets of one tier");
     const std::vector<Candidate> list = candidates(effect, presets);
-    const std::string path = options.cacheDir.empty() ? "" : costTablePath(options.cacheDir, dev.caps().deviceName, effect, width, height);
+    const uint64_t measures = fingerprint(dev.caps(), effect, presets);
+    const std::string path = options.cacheDir.empty() ? "" : costTablePath(options.cacheDir, dev.caps(), effect, width, height);
     if (!path.empty() && !options.recalibrate) {
         Result<CostTable> cached = readCostTable(path, list);
-        if (cached && cached->device == dev.caps().deviceName && cached->tier == tier) return cached;
+        if (cached && cached->device == dev.caps().deviceName && cached->tier == tier && cached->fingerprint == measures && cached->width == width &&
+            cached->height == height && cached->effect == effect)
+            return cached;
     }
-    CostTable table{dev.caps().deviceName, tier, effect, width, height, {}};
+    CostTable table{dev.caps().deviceName, tier, effect, width, height, {}, measures};
     for (const Candidate& c : list) {
         const auto preset = std::find_if(presets.begin(), presets.end(), [&](const Preset& p) { return p.name == c.preset; });
         Result<double> ms = effect == Effect::MotionBlur ? timeMotionBlur(dev, preset->params, width, height, options.runs)
