@@ -106,7 +106,7 @@ TierProfile currentDefault() {
     p.mbMaxRadiusPx = 14.0f;
     // 10 px on both tiers: a tier promise needs the same tiles (with the 2012 filter's N = k the
     // high tier's longer radius took its sampling direction from farther features), and from 5 to
-    // 18 px the training families' PSNR moves by 0.03 dB at most (fit_mb --tiles,
+    // 18 px the training families' PSNR moves by 0.05 dB at most (fit_mb --tiles,
     // docs/motion_blur.md), so the tile is no preset's dimension.
     p.mbTilePx = 10.0f;
     p.mbJitterSize = 2;  // checkerboard
