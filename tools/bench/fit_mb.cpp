@@ -139,7 +139,7 @@ std::string tileSection(const std::vector<Point>& points, const std::string& bac
     for (size_t i = 0; i < tiles.size(); ++i) md << " --- |";
     md << "\n";
     for (const tiers::TierRow& row : tiers::table()) {
-        const TierProfile& d = row.presets.front().params;  // the default preset comes first
+        const TierProfile& d = tiers::profile(row.tier);  // the tier's default
         md << "| " << toString(row.tier) << ", " << d.mbTaps << " taps / " << px(d.mbMaxRadiusPx) << " px |";
         for (float t : tiles) {
             auto it = std::find_if(points.begin(), points.end(),
@@ -241,49 +241,43 @@ int main(int argc, char** argv) {
     const CameraProjection cam = makePerspective(pd).value();
     const reference::SceneFrame costFrame = tools::makeMotionScenes(costWidth, costHeight)[1].scene.render(0);
 
-    // One configuration measured: accuracy on both family sets, and the cost where a backend times it.
-    auto measure = [&](const TierProfile& profile) -> Result<Point> {
+    // One configuration measured and added: accuracy on both family sets, and the cost where a
+    // backend times it; false (after saying why) when the backend could not run it.
+    std::vector<Point> points;
+    auto measure = [&](const TierProfile& profile) -> bool {
         Point pt{profile.mbTaps, profile.mbMaxRadiusPx, profile.mbTilePx, meanPsnr(training, profile), meanPsnr(heldOut, profile)};
         if (device) {
             Result<tools::MotionBlurRun> run = tools::runMotionBlur(*device, profile, {}, costFrame, cam, runs);
-            if (!run) return run.status();
+            if (!run) {
+                std::cerr << "fit_mb: " << run.status().toString() << "\n";
+                return false;
+            }
             pt.ms = run->medianMs;
         }
         char line[192];
         std::snprintf(line, sizeof line, "%2u taps, radius %4.1f px, tile %4.1f px: training %.2f dB, held-out %.2f dB, %.2f ms", pt.taps, pt.radius,
                       pt.tile, pt.training, pt.heldOut, pt.ms);
         progress(line);
-        return pt;
+        points.push_back(pt);
+        return true;
     };
-    std::vector<Point> points;
     for (uint32_t t : taps)
         for (float r : radii) {
             TierProfile profile = base;
             profile.mbTaps = t, profile.mbMaxRadiusPx = r;
-            if (!resolveMotionBlur(profile, {}, height)) continue;
-            Result<Point> pt = measure(profile);
-            if (!pt) {
-                std::cerr << "fit_mb: " << pt.status().toString() << "\n";
-                return 1;
-            }
-            points.push_back(pt.value());
+            if (resolveMotionBlur(profile, {}, height) && !measure(profile)) return 1;
         }
     // The tile edge at each tier's default (the grid above has the tiers' own tile).
     const size_t gridPoints = points.size();
     for (const tiers::TierRow& row : tiers::table()) {
-        const TierProfile& d = row.presets.front().params;  // the default preset comes first
+        const TierProfile& d = tiers::profile(row.tier);
         for (float tile : tiles) {
             const bool measured = std::any_of(points.begin(), points.end(),
                                               [&](const Point& p) { return p.taps == d.mbTaps && p.radius == d.mbMaxRadiusPx && p.tile == tile; });
             if (measured) continue;
             TierProfile profile = base;
             profile.mbTaps = d.mbTaps, profile.mbMaxRadiusPx = d.mbMaxRadiusPx, profile.mbTilePx = tile;
-            Result<Point> pt = measure(profile);
-            if (!pt) {
-                std::cerr << "fit_mb: " << pt.status().toString() << "\n";
-                return 1;
-            }
-            points.push_back(pt.value());
+            if (!measure(profile)) return 1;
         }
     }
     std::ofstream csv(csvPath);

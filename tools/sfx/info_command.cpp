@@ -14,13 +14,15 @@ namespace {
 
 std::string yesNo(bool b) { return b ? "yes" : "no"; }
 
-enum class LookOf { Alchemy, Scalable, Crease };
+enum class LookOf { Alchemy, Scalable, Crease, Horizon };
 std::string look(const AoLook& l, LookOf t) {
     char buf[96];
     if (t == LookOf::Crease)
         std::snprintf(buf, sizeof buf, "%g, %g, %g, %g", l.intensity, l.contrast, l.creaseRange, l.creaseBias);
     else if (t == LookOf::Scalable)
         std::snprintf(buf, sizeof buf, "%g, %g, %g, %g", l.intensity, l.contrast, l.bias, l.sumExponent);
+    else if (t == LookOf::Horizon)
+        std::snprintf(buf, sizeof buf, "%g", l.contrast);  // its look is the power alone
     else
         std::snprintf(buf, sizeof buf, "%g, %g, %g", l.intensity, l.contrast, l.bias);
     return buf;
@@ -61,12 +63,7 @@ const ParameterRow kParameterRows[] = {
     {"alchemy AO look (intensity, contrast, bias)", [](const TierProfile& p) { return look(p.aoLook[0], LookOf::Alchemy); }},
     {"scalable AO look (intensity, contrast, bias, sum exponent)", [](const TierProfile& p) { return look(p.aoLook[1], LookOf::Scalable); }},
     {"crease AO look (intensity, contrast, range, bias)", [](const TierProfile& p) { return look(p.aoLook[2], LookOf::Crease); }},
-    {"horizon AO look (a power on the visibility)",
-     [](const TierProfile& p) {
-         char buf[32];
-         std::snprintf(buf, sizeof buf, "%g", p.aoLook[3].contrast);
-         return std::string(buf);
-     }},
+    {"horizon AO look (a power on the visibility)", [](const TierProfile& p) { return look(p.aoLook[3], LookOf::Horizon); }},
     {"motion blur taps (centre included)", [](const TierProfile& p) { return std::to_string(p.mbTaps); }},
     {"motion blur max radius (px at 720 rows)", [](const TierProfile& p) { return std::to_string(int(p.mbMaxRadiusPx)); }},
     {"motion blur tile edge (px at 720 rows)", [](const TierProfile& p) { return std::to_string(int(p.mbTilePx)); }},

@@ -162,9 +162,8 @@ Result<CostTable> costTable(Device& dev, const std::vector<Preset>& presets, Eff
     const std::string path = options.cacheDir.empty() ? "" : costTablePath(options.cacheDir, dev.caps(), effect, width, height);
     if (!path.empty() && !options.recalibrate) {
         Result<CostTable> cached = readCostTable(path, list);
-        if (cached && cached->device == dev.caps().deviceName && cached->tier == tier && cached->fingerprint == measures && cached->width == width &&
-            cached->height == height && cached->effect == effect)
-            return cached;
+        // The fingerprint covers the device, effect, tier and presets; the size names the file.
+        if (cached && cached->fingerprint == measures && cached->width == width && cached->height == height) return cached;
     }
     CostTable table{dev.caps().deviceName, tier, effect, width, height, {}, measures};
     for (const Candidate& c : list) {
