@@ -6,8 +6,8 @@
 #define SFX_AO_PASS 1
 #include "sfx_shared_ao.h"
 
-float creaseTap(ivec2 p, ivec2 offset, vec3 C, vec3 n, ivec2 size) {
-    ivec2 q = clamp(p + offset * params.creaseStride, ivec2(0), size - 1);
+float creaseTap(ivec2 p, ivec2 offset, float stride, vec3 C, vec3 n, ivec2 size) {
+    ivec2 q = aoTap(p, stride, vec2(offset), size);
     vec3 v = aoPosition(q, aoDepth(q)) - C;
     float term = aoCreaseTerm(dot(v, v), dot(v, n), params.creaseRange, params.creaseMinimum, params.creaseBias, params.epsilon);
 #ifdef SFX_AO_MULTILAYER
@@ -26,6 +26,7 @@ void main() {
     if (!(z < params.maxDepth)) { aoWrite(1.0, z, true); return; }
     vec3 C = aoPosition(p, z);
     vec3 n = aoNormal(p, C, z, size);
+    float stride = aoCreaseStride(aoScreenRadius(params.radius, params.pixelsPerUnit, z));
     int parity = aoCreaseParity(p.x, p.y);
     float total = 0.0;
     // The loop runs over the halves' length so that compilers unroll it and every offset is a
@@ -34,10 +35,10 @@ void main() {
     // from memory, 26-46 ms for the 12 taps at half of 1280x720 against 16 ms for 24 unrolled.
     for (int j = 0; j < SFX_AO_CREASE_HALF_TAPS; ++j) {
         if (kAoSamples >= SFX_AO_CREASE_TAPS) {
-            total += creaseTap(p, SFX_AO_CREASE_HALF_0[j], C, n, size) + creaseTap(p, SFX_AO_CREASE_HALF_1[j], C, n, size);
+            total += creaseTap(p, SFX_AO_CREASE_HALF_0[j], stride, C, n, size) + creaseTap(p, SFX_AO_CREASE_HALF_1[j], stride, C, n, size);
         } else {
             // The pixel selects between two constants: no per-pixel index into a table.
-            total += creaseTap(p, parity == 0 ? SFX_AO_CREASE_HALF_0[j] : SFX_AO_CREASE_HALF_1[j], C, n, size);
+            total += creaseTap(p, parity == 0 ? SFX_AO_CREASE_HALF_0[j] : SFX_AO_CREASE_HALF_1[j], stride, C, n, size);
         }
     }
     float fade = 1.0 - clamp((z - params.fadeStart) * params.invFadeRange, 0.0, 1.0);

@@ -152,9 +152,13 @@ SFX_ARRAY_BEGIN(ivec2, SFX_AO_CREASE_HALF_1, 12)
     SFX_IVEC2(3, 1), SFX_IVEC2(1, 3), SFX_IVEC2(-1, 3), SFX_IVEC2(-3, 1),
     SFX_IVEC2(-3, -1), SFX_IVEC2(-1, -3), SFX_IVEC2(1, -3), SFX_IVEC2(3, -1)
 SFX_ARRAY_END
-// The diamond's offsets are in units of a stride (AoConfig::creaseStride, pass pixels): the
-// tier's tap spacing (TierProfile::aoCreaseSpacingPx) is output pixels at this many rows, scaled
-// with the output's rows, and so is Scalable's radius clamp (TierProfile::aoScalableMaxRadiusPx).
+// The diamond's offsets are in units of a stride that follows the radius: its outer ring (4
+// strides) lies at the pixel's screen radius, as Alchemy's disk reaches it, and no closer than
+// one pass pixel per stride. A stride fixed in pixels would tie a crease's world extent to its
+// distance from the camera instead of the radius the truth measures within (docs/ao_families.md).
+// A tap lands where aoTap puts it, offset times stride.
+SFX_FN float aoCreaseStride(float screenRadius) { return max(1.0f, screenRadius * 0.25f); }
+// Scalable's radius clamp (TierProfile::aoScalableMaxRadiusPx) is output pixels at this many rows.
 SFX_CONST(float, SFX_AO_REFERENCE_ROWS, 720.0)
 // The half (0 or 1) a pixel takes when it takes 12 taps.
 SFX_FN int aoCreaseParity(int x, int y) { return (x + y) & 1; }
@@ -423,7 +427,7 @@ SFX_BLOCK(AoParams, 2)
     SFX_M_FLOAT(radius) SFX_M_FLOAT(intensity) SFX_M_FLOAT(contrast) SFX_M_FLOAT(bias)
     SFX_M_FLOAT(epsilon) SFX_M_FLOAT(pixelsPerUnit) SFX_M_FLOAT(maxRadiusPx) SFX_M_FLOAT(maxDepth)
     SFX_M_INT(fullWidth) SFX_M_INT(fullHeight)  // the full-size image (aoFullResPixel's clamp)
-    SFX_M_INT(creaseStride) SFX_M_INT(pad5)  // crease: pass pixels between diamond taps; counts: constants above
+    SFX_M_INT(pad4) SFX_M_INT(pad5)  // counts: the constants above
     SFX_M_INT(spiralHalfStepQ16) SFX_M_FLOAT(keyBase) SFX_M_FLOAT(pad2) SFX_M_FLOAT(sumExponent)
     SFX_M_FLOAT(creaseRange) SFX_M_FLOAT(creaseBias) SFX_M_FLOAT(creaseAverager) SFX_M_FLOAT(creaseMinimum)
     SFX_M_FLOAT(fadeStart) SFX_M_FLOAT(invFadeRange) SFX_M_FLOAT(horizonThickness) SFX_M_FLOAT(horizonInvFalloffWidth)

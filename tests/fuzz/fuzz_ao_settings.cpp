@@ -51,9 +51,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (c.mirrored && c.samples % 2 != 0) std::abort();
     if (c.blurRadius > uint32_t(shared::SFX_AO_MAX_BLUR_RADIUS)) std::abort();
     if (c.depthMipLevels < 1 || c.depthMipLevels > mipLevelsAllowed) std::abort();
-    // Crease's stride: at least 1, and the spacing's bound (64 px at 720 rows) keeps it within
-    // what 16384 rows scale it to.
-    if (c.creaseStride < 1 || c.creaseStride > 2048) std::abort();
+    // Crease's range in world units: the range (in radii) times the radius, both bounded.
+    if (!(c.crease.range > 0) || !std::isfinite(c.crease.range)) std::abort();
     if (c.maxRadiusPx < 0) std::abort();
     // Horizon's loops are specialisation constants the shader is built for; its thickness and
     // falloff make a finite blend and a finite 1 / (falloff * radius).

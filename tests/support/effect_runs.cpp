@@ -152,7 +152,7 @@ AoSettings aoTestSettings(AoTechnique t, double scale) {
     s.contrast = 1.0f;
     if (t == AoTechnique::Alchemy || t == AoTechnique::Scalable) s.bias = t == AoTechnique::Alchemy ? kAoAlchemyDefaultBias : kAoScalableDefaultBias;
     s.crease.bias = 0.25f;
-    s.crease.range = float(scale);
+    s.crease.range = 2.0f;  // the article's 1 world unit (times scale), in units of the radius
     s.crease.fadeStart = float(50 * scale);
     s.crease.fadeEnd = float(100 * scale);
     return s;

@@ -40,7 +40,7 @@ AoConfig configFor(AoTechnique t, Tier tier, double scale = 1.0, bool blur = tru
     if (t != AoTechnique::Crease) s.bias = t == AoTechnique::Alchemy ? kAoAlchemyDefaultBias : kAoScalableDefaultBias;
     s.sumExponent = kAoScalableCourseSumExponent;
     s.crease.bias = 0.25f;
-    s.crease.range = float(1.0 * scale);
+    s.crease.range = float(1.0 / radius);  // the article's 1 world unit at scale 1, in units of the radius
     s.crease.fadeStart = float(50 * scale);
     s.crease.fadeEnd = float(100 * scale);
     Result<AoConfig> c = resolveAoConfig(s, tiers::profile(tier), 5, rows);
@@ -87,9 +87,9 @@ TEST_CASE("ao settings: out-of-range values are named errors", "[ao][bad-input]"
     s.epsilon = 1e-8f;  // the documented minimum, as a float
     CHECK(validateAoSettings(s, high).isOk());
     s = {};
-    s.crease.range = kAoMinRadius;
+    s.crease.range = 0.01f;  // the documented minimum, in units of the radius
     CHECK(validateAoSettings(s, high).isOk());
-    for (float tiny : {9e-5f, 1e-21f, 1e-40f}) {
+    for (float tiny : {0.0099f, 1e-21f, 1e-40f}) {
         s.crease.range = tiny;
         st = validateAoSettings(s, high);
         CHECK(st.code() == StatusCode::InvalidArgument);
@@ -173,13 +173,13 @@ TEST_CASE("ao settings resolve to the tier table", "[ao]") {
             CHECK(c.contrast == Approx(look.contrast));
             if (t != AoTechnique::Crease) CHECK(c.bias == Approx(look.bias));
             if (t == AoTechnique::Scalable) CHECK(c.sumExponent == Approx(look.sumExponent));
-            CHECK(c.crease.range == Approx(look.creaseRange));
+            CHECK(c.crease.range == Approx(look.creaseRange * d.radius));  // in units of the radius
             CHECK(c.crease.bias == Approx(look.creaseBias));
             d.intensity = 3.0f, d.contrast = 2.0f, d.crease.range = 0.7f;
             const AoConfig set = resolveAoConfig(d, tiers::profile(tier), 5, 64).value();
             CHECK(set.intensity == Approx(3.0));
             CHECK(set.contrast == Approx(2.0));
-            CHECK(set.crease.range == Approx(0.7));
+            CHECK(set.crease.range == Approx(0.7 * d.radius));
         }
     const AoConfig aHigh = configFor(AoTechnique::Alchemy, Tier::High);
     CHECK(aHigh.samples == 12);
@@ -432,11 +432,7 @@ TEST_CASE("ao reference: doubling resolution changes AO only within tolerance", 
                 }
                 meanAbs /= double(lo.values.size());
                 const double meanShift = std::abs(meanLo - meanHi) / double(lo.values.size());
-                // Crease's tap spacing is a whole number of pass pixels, at least 1: at 64 and
-                // 128 rows it is 1 pixel at both sizes and spans half the world distance at the
-                // larger, so it is allowed to change more here (test_ao_resolution.cpp: where the
-                // spacing doubles with the rows).
-                const double tol = t == AoTechnique::Crease ? 0.05 : 0.03;
+                const double tol = 0.03;
                 CHECK(meanAbs < tol);
                 CHECK(meanShift < tol / 2);
             }

@@ -1,6 +1,6 @@
-// AO at different output sizes: the tier's pixel extents defined at SFX_AO_REFERENCE_ROWS
-// (Scalable's radius clamp, crease's tap spacing) follow the output's rows, so a look fitted at
-// one size holds at another (docs/trade.md, "The looks").
+// AO at different output sizes: Scalable's radius clamp, defined at SFX_AO_REFERENCE_ROWS,
+// follows the output's rows, and crease's diamond follows the projected radius, so a look fitted
+// at one size holds at another (docs/trade.md, "The looks").
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -33,9 +33,9 @@ AoConfig resolved(AoTechnique t, Tier tier, uint32_t rows, AoResolution resoluti
 
 }  // namespace
 
-TEST_CASE("ao config: Scalable's clamp and crease's tap spacing follow the output's rows", "[ao]") {
-    // Both are output pixels at SFX_AO_REFERENCE_ROWS (720), scaled with the rows and halved at
-    // half size, so the look fitted at 320x180 covers the same share of the image at every size.
+TEST_CASE("ao config: Scalable's clamp follows the output's rows", "[ao]") {
+    // Output pixels at SFX_AO_REFERENCE_ROWS (720), scaled with the rows and halved at half size,
+    // so the look fitted at 320x180 covers the same share of the image at every size.
     const auto clamp = [](uint32_t rows, AoResolution r) { return resolved(AoTechnique::Scalable, Tier::Current, rows, r).maxRadiusPx; };
     CHECK(clamp(180, AoResolution::Half) == Approx(20));
     CHECK(clamp(720, AoResolution::Half) == Approx(80));
@@ -43,57 +43,66 @@ TEST_CASE("ao config: Scalable's clamp and crease's tap spacing follow the outpu
     CHECK(clamp(720, AoResolution::Full) == Approx(160));
     CHECK(clamp(1, AoResolution::Half) == Approx(1));                          // at least one pass pixel
     CHECK(resolved(AoTechnique::Scalable, Tier::High, 720).maxRadiusPx == 0);  // no clamp
+}
+
+TEST_CASE("ao config: crease's range is in units of the radius", "[ao]") {
     for (Tier tier : kTiers) {
         INFO(toString(tier));
-        const auto stride = [tier](uint32_t rows, AoResolution r) { return resolved(AoTechnique::Crease, tier, rows, r).creaseStride; };
-        CHECK(stride(1, AoResolution::Half) == 1);  // at least one pixel
-        CHECK(stride(64, AoResolution::Half) == 1);
-        CHECK(stride(180, AoResolution::Half) == 2);  // 12 px at 720 rows: 1.5 half-size pixels, rounded
-        CHECK(stride(360, AoResolution::Half) == 3);
-        CHECK(stride(720, AoResolution::Half) == 6);
-        CHECK(stride(1080, AoResolution::Half) == 9);
-        CHECK(stride(180, AoResolution::Full) == 3);
-        CHECK(stride(720, AoResolution::Full) == 12);
-    }
-    // The reference's taps step by the stride.
-    const auto rec = tools::facingPlaneScene(64, 48).reconstruction;
-    const AoConfig c = resolved(AoTechnique::Crease, Tier::High, 480, AoResolution::Half);
-    REQUIRE(c.creaseStride == 4);
-    const std::vector<reference::AoTap> taps = reference::aoTaps(c, rec, 64, 48, 30, 20, 5.0);
-    REQUIRE(taps.size() == 24);
-    for (int j = 0; j < shared::SFX_AO_CREASE_HALF_TAPS; ++j) {
-        CHECK(taps[2 * j].x == 30 + 4 * shared::SFX_AO_CREASE_HALF_0[j].x);
-        CHECK(taps[2 * j].y == 20 + 4 * shared::SFX_AO_CREASE_HALF_0[j].y);
-        CHECK(taps[2 * j + 1].x == 30 + 4 * shared::SFX_AO_CREASE_HALF_1[j].x);
+        AoSettings s;
+        s.technique = AoTechnique::Crease;
+        for (float radius : {0.25f, 0.5f, 2.0f}) {
+            s.radius = radius;
+            Result<AoConfig> c = resolveAoConfig(s, tiers::profile(tier), 5, 720);
+            REQUIRE(c.isOk());
+            CHECK(c->crease.range == Approx(tiers::profile(tier).aoLook[uint32_t(AoTechnique::Crease)].creaseRange * radius));
+        }
+        s.crease.range = 3.0f;
+        Result<AoConfig> c = resolveAoConfig(s, tiers::profile(tier), 5, 720);
+        REQUIRE(c.isOk());
+        CHECK(c->crease.range == Approx(6.0));
     }
 }
 
-TEST_CASE("ao config: no output rows or a hand-filled crease spacing out of range is a named error", "[ao][bad-input]") {
+TEST_CASE("ao reference: crease's diamond reaches the radius, one pass pixel per stride at least", "[ao]") {
+    // The outer ring (4 strides along the axes) lands at the pixel's screen radius, rounded as
+    // every tap is (aoTap); where the radius projects below 4 pixels the stride stays 1.
+    const auto rec = tools::facingPlaneScene(64, 48).reconstruction;
+    for (double radius : {0.5, 0.05, 1e-3}) {
+        INFO("radius " << radius);
+        AoConfig c = resolved(AoTechnique::Crease, Tier::High, 48, AoResolution::Full);
+        c.radius = radius;
+        const double z = 5.0;
+        const double screenRadius = radius * rec.pixelsPerUnitAtUnitDepth / z;
+        const double stride = std::max(1.0, screenRadius / 4);
+        const std::vector<reference::AoTap> taps = reference::aoTaps(c, rec, 64, 48, 30, 20, z);
+        REQUIRE(taps.size() == 24);
+        for (int j = 0; j < shared::SFX_AO_CREASE_HALF_TAPS; ++j) {
+            for (int half = 0; half < 2; ++half) {
+                const auto o = half == 0 ? shared::SFX_AO_CREASE_HALF_0[j] : shared::SFX_AO_CREASE_HALF_1[j];
+                const reference::AoTap& t = taps[size_t(2 * j + half)];
+                CHECK(t.x == std::clamp(30 + int(std::floor(0.5 + o.x * stride)), 0, 63));
+                CHECK(t.y == std::clamp(20 + int(std::floor(0.5 + o.y * stride)), 0, 47));
+            }
+        }
+        if (screenRadius < 4) CHECK(taps[8].x == 30 + 4);  // HALF_0[4] is (4, 0): one pixel per stride
+    }
+}
+
+TEST_CASE("ao config: no output rows is a named error", "[ao][bad-input]") {
     const Status rows = resolveAoConfig(AoSettings{}, tiers::profile(Tier::Current), 1, 0).status();
     CHECK(rows.code() == StatusCode::InvalidArgument);
     CHECK(rows.message().find("outputRows") != std::string::npos);
-    for (float spacing : {0.0f, -1.0f, 65.0f, std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
-        INFO("aoCreaseSpacingPx " << spacing);
-        TierProfile p = tiers::profile(Tier::High);
-        p.aoCreaseSpacingPx = spacing;
-        const Status s = validateAoSettings(AoSettings{}, p);
-        CHECK(s.code() == StatusCode::InvalidArgument);
-        CHECK(s.message().find("AoDesc.profile") != std::string::npos);
-    }
 }
 
-TEST_CASE("ao reference: where crease's spacing doubles with the rows, its band keeps its width", "[ao]") {
-    // From 360 to 720 rows crease's spacing doubles with them (3 then 6 half-size pixels), so its
+TEST_CASE("ao reference: where the resolution doubles, crease's band keeps its width", "[ao]") {
+    // From 360 to 720 rows the projected radius doubles, and with it the diamond's stride, so the
     // diamond spans the same world distance and the band it darkens along the corner's crease
     // keeps its width: compared where either is occluded, with the tier's look (the papers' is
-    // too faint to tell): 0.009 and 0.011 (high, current); a spacing left at 3 pixels at 720
-    // rows differs by more than 0.1.
+    // too faint to tell).
     for (Tier tier : kTiers) {
         INFO(toString(tier));
         const AoConfig lo = resolved(AoTechnique::Crease, tier, 360);
         const AoConfig hi = resolved(AoTechnique::Crease, tier, 720);
-        REQUIRE(lo.creaseStride == 3);
-        REQUIRE(hi.creaseStride == 6);
         const Grid a = reference::ambientVisibility(tools::cornerScene(640, 360, 1.0).aoInput(false), lo);
         const Grid b = tools::downsample2x(reference::ambientVisibility(tools::cornerScene(1280, 720, 1.0).aoInput(false), hi));
         double meanAbs = 0;

@@ -21,8 +21,8 @@ namespace {
 // Every parameter of a profile, for comparing whole profiles.
 auto fields(const TierProfile& p) {
     return std::make_tuple(p.tier, p.aoScalableTaps, p.aoScalableMirrored, p.aoScalableMaxRadiusPx, p.aoUsesDepthMip, p.aoDepthMipLevels,
-                           p.aoAlchemySamples, p.aoBlurRadiusPx, p.aoCreaseTaps, p.aoCreaseSpacingPx, p.aoPackedDepthTarget, p.mbTaps,
-                           p.mbMaxRadiusPx, p.mbTilePx, p.mbJitterSize, p.abufferOit);
+                           p.aoAlchemySamples, p.aoBlurRadiusPx, p.aoCreaseTaps, p.aoPackedDepthTarget, p.mbTaps, p.mbMaxRadiusPx, p.mbTilePx,
+                           p.mbJitterSize, p.abufferOit);
 }
 
 bool sameStructure(const TierProfile& a, const TierProfile& b) {
@@ -69,9 +69,10 @@ TEST_CASE("tier table: a row per tier, in order, each with its default preset fi
 TEST_CASE("tier table: each preset names its AO technique, and no two presets of a tier are alike", "[tiers][ao]") {
     for (Tier tier : {Tier::Current, Tier::High}) {
         const std::vector<Preset>& presets = tiers::row(tier).presets;
-        // The default runs the front's best at the tier's default cost: Scalable on the current
-        // tier, horizon on the high tier; the presets above it buy horizon's accuracy (docs/trade.md).
-        CHECK(presets.front().params.aoTechnique == (tier == Tier::High ? AoTechnique::Horizon : AoTechnique::Scalable));
+        // The default runs the most accurate configuration at the tier's default cost that lowers
+        // no held-out family: crease on the current tier, horizon on the high tier; the presets
+        // above it buy horizon's accuracy (docs/trade.md).
+        CHECK(presets.front().params.aoTechnique == (tier == Tier::High ? AoTechnique::Horizon : AoTechnique::Crease));
         for (const char* name : {"high", "ultra"}) CHECK(tiers::preset(tier, name)->aoTechnique == AoTechnique::Horizon);
         for (const Preset& p : presets) {
             INFO(toString(tier) << "/" << p.name);
@@ -104,9 +105,8 @@ TEST_CASE("tier table: each preset names its AO technique, and no two presets of
 
 TEST_CASE("tier table: the default presets hold the parameters the tiers always had", "[tiers]") {
     // Written out here, apart from the table, so that moving the values into it changed none.
-    // Scalable's clamp and crease's spacing are output pixels at 720 rows: the clamp is 20
-    // half-size texels at 320x180, where the looks were fitted; the spacing 2 half-size pixels
-    // there, which scored better held out than 1 (docs/trade.md).
+    // Scalable's clamp is output pixels at 720 rows: 20 half-size texels at 320x180, where the
+    // looks were fitted (docs/trade.md).
     TierProfile expected[kTierCount];
     expected[0] = {.tier = Tier::Current,
                    .aoScalableTaps = 4,
@@ -117,7 +117,6 @@ TEST_CASE("tier table: the default presets hold the parameters the tiers always 
                    .aoAlchemySamples = 6,
                    .aoBlurRadiusPx = 2,
                    .aoCreaseTaps = 12,
-                   .aoCreaseSpacingPx = 12.0f,
                    .aoPackedDepthTarget = true,
                    .mbTaps = 7,
                    .mbMaxRadiusPx = 14.0f,
@@ -133,7 +132,6 @@ TEST_CASE("tier table: the default presets hold the parameters the tiers always 
                    .aoAlchemySamples = 12,
                    .aoBlurRadiusPx = 6,
                    .aoCreaseTaps = 24,
-                   .aoCreaseSpacingPx = 12.0f,
                    .aoPackedDepthTarget = false,
                    .mbTaps = 13,
                    .mbMaxRadiusPx = 18.0f,

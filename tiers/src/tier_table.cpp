@@ -69,23 +69,22 @@ TierProfile currentDefault() {
     // Crease's diamond halved by checkerboard (the blur completes it): its 24 fetches made the
     // current tier's crease the one default over the 12-copy-pass cost goal (docs/trade.md).
     p.aoCreaseTaps = 12;
-    // The diamond's tap spacing: 12 output pixels at 720 rows, so 2 half-size pixels at 320x180
-    // and 6 at 1280x720. The look was fitted at 1 pixel (320x180); held out, 12 beat 8 (1 pixel
-    // at 320x180) and 16 at both 320x180 and 1280x720 (fit_ao --diagnose, docs/trade.md).
-    p.aoCreaseSpacingPx = 12.0f;
     // The look fitted against ray-traced truth (tools/bench/fit_ao, docs/trade.md); before the
     // calibration every tier had the papers' 1, 1, 1e-4 / 0.02, range 1, bias 0.25.
     p.aoLook[0] = {.intensity = 0.472871f, .contrast = 1.38237f, .bias = 1.59371e-7f};  // alchemy
     // Scalable fitted at half resolution with the 20 px clamp in half-size texels, its sum
     // exponent fitted too (tools/bench/fit_ao --start tier): below 1 where the course squares.
     p.aoLook[1] = {.intensity = 0.0654423f, .contrast = 7.23394f, .bias = 0.0f, .sumExponent = 0.569394f};  // scalable
-    // Crease fitted at half resolution, the default, with its 12 px tap spacing
-    // (tools/bench/fit_ao --start tier; docs/trade.md has the held-out scores).
-    p.aoLook[2] = {.intensity = 2.16482f, .contrast = 6.85391f, .bias = 0, .creaseRange = 0.834435f, .creaseBias = 0.165467f};  // crease
-    // Scalable at the default preset: the measured front's most accurate point at the tier's
-    // default cost (tools/bench/ao_front on the training families; horizon 1 x 6 costs 1.19-1.35
-    // times as much, docs/trade.md).
-    p.aoTechnique = AoTechnique::Scalable;
+    // Crease with its diamond reaching the radius, fitted at half resolution: the better training
+    // score of the searches from the tier's previous look and from the article's (tools/bench/fit_ao
+    // --start tier; docs/ao_families.md has the held-out scores).
+    p.aoLook[2] = {.intensity = 1.48865f, .contrast = 10.0f, .bias = 0, .creaseRange = 2.324f, .creaseBias = 0.165467f};  // crease
+    // Crease at the default preset: at the cost of the 4-tap Scalable default it replaced
+    // (1.00-1.06 times, inside the runs' spread), the configuration most accurate on the training
+    // families that lowers no held-out family (tools/bench/ao_front, docs/trade.md): 2.4 dB over
+    // Scalable on the training families, 2.3 dB held out; horizon 1 x 6 costs 1.18-1.19 times as
+    // much for less.
+    p.aoTechnique = AoTechnique::Crease;
     // Horizon: 1 slice of 6 steps a side at half size (12 fetches), its look the geometry's own,
     // as the high tier's default; on the front, where 2 x 4 is not, and where the truth is
     // occluded too bright by 0.030 held out against 2 x 4's 0.053 (docs/trade.md).
@@ -125,12 +124,11 @@ TierProfile highDefault() {
     p.aoAlchemySamples = 12;                                                      // the paper's 12 samples per pixel
     p.aoBlurRadiusPx = 6;                                                         // 13-tap, as Alchemy's filter
     p.aoCreaseTaps = 24;                                                          // the article's whole diamond
-    p.aoCreaseSpacingPx = 12.0f;                                                  // as the current tier
     p.aoLook[0] = {.intensity = 0.392128f, .contrast = 1.77828f, .bias = 1e-7f};  // alchemy
     // Scalable with its sum exponent fitted (tools/bench/fit_ao --start tier, at half resolution).
     p.aoLook[1] = {.intensity = 0.187609f, .contrast = 7.36525f, .bias = 0.0468752f, .sumExponent = 0.707107f};  // scalable
-    // Crease fitted at half resolution, the default (tools/bench/fit_ao --start tier).
-    p.aoLook[2] = {.intensity = 13.7531f, .contrast = 1.2864f, .bias = 0, .creaseRange = 0.73699f, .creaseBias = 0.126689f};  // crease
+    // Crease as on the current tier, the search from the article's look the better (fit_ao --start paper).
+    p.aoLook[2] = {.intensity = 4.47214f, .contrast = 1.77828f, .bias = 0, .creaseRange = 2.78512f, .creaseBias = 0.25f};  // crease
     // Horizon at the default preset (tools/bench/ao_front, docs/trade.md): at the cost of the
     // 9-tap Scalable default it replaced (0.95-1.09 times over six runs, inside the runs'
     // spread), the configuration most accurate on the training families that lowers no held-out
@@ -188,21 +186,20 @@ Preset variant(const char* name, TierProfile p, AoTechnique technique, AoRes res
 // same measure on the CPU reference: docs/mb_fit.csv).
 std::vector<Preset> currentPresets() {
     const TierProfile d = currentDefault();
-    return {{kDefaultPreset, d, {{28.95, 28.41, 27.14, 29.03}, 26.62}},
-            variant("low", d, AoTechnique::Scalable, AoRes::Half, 3, 2, {1, 3}, 2, 3, 8.0f, {{27.67, 27.37, 27.14, 28.52}, 23.03}),
-            // Above the default's cost: below it the front holds only `low`.
-            variant("medium", d, AoTechnique::Scalable, AoRes::Half, 8, 8, {2, 4}, 2, 5, 14.0f, {{29.16, 29.48, 27.14, 30.55}, 25.56}),
-            variant("high", d, AoTechnique::Horizon, AoRes::Half, 10, 12, {2, 6}, 2, 9, 24.0f, {{29.33, 30.35, 27.14, 31.26}, 27.95}),
-            variant("ultra", d, AoTechnique::Horizon, AoRes::Half, 16, 16, {3, 12}, 2, 13, 24.0f, {{29.61, 30.48, 27.14, 32.03}, 28.38})};
+    return {{kDefaultPreset, d, {{28.95, 28.41, 30.70, 29.03}, 26.62}},
+            variant("low", d, AoTechnique::Scalable, AoRes::Half, 3, 2, {1, 3}, 2, 3, 8.0f, {{27.67, 27.37, 30.70, 28.52}, 23.03}),
+            variant("medium", d, AoTechnique::Scalable, AoRes::Half, 4, 6, {1, 4}, 2, 5, 14.0f, {{28.21, 28.85, 30.70, 28.95}, 25.56}),
+            variant("high", d, AoTechnique::Horizon, AoRes::Half, 10, 12, {2, 8}, 2, 9, 24.0f, {{29.33, 30.35, 30.70, 31.35}, 27.95}),
+            variant("ultra", d, AoTechnique::Horizon, AoRes::Half, 16, 16, {3, 12}, 2, 13, 24.0f, {{29.61, 30.48, 30.70, 32.03}, 28.38})};
 }
 
 std::vector<Preset> highPresets() {
     const TierProfile d = highDefault();
-    return {{kDefaultPreset, d, {{29.70, 29.95, 26.74, 30.62}, 27.82}},
-            variant("low", d, AoTechnique::Scalable, AoRes::Half, 4, 4, {1, 3}, 2, 5, 14.0f, {{28.26, 27.75, 26.66, 28.52}, 25.56}),
-            variant("medium", d, AoTechnique::Scalable, AoRes::Half, 8, 6, {1, 4}, 4, 7, 24.0f, {{29.56, 28.99, 26.70, 29.84}, 27.56}),
-            variant("high", d, AoTechnique::Horizon, AoRes::Half, 16, 12, {2, 6}, 2, 13, 24.0f, {{29.79, 29.82, 26.66, 31.24}, 28.38}),
-            variant("ultra", d, AoTechnique::Horizon, AoRes::Half, 24, 16, {3, 12}, 2, 17, 24.0f, {{29.95, 30.14, 26.66, 32.03}, 28.58})};
+    return {{kDefaultPreset, d, {{29.69, 29.95, 30.52, 30.62}, 27.82}},
+            variant("low", d, AoTechnique::Scalable, AoRes::Half, 4, 4, {1, 3}, 2, 5, 14.0f, {{28.26, 27.75, 30.42, 28.52}, 25.56}),
+            variant("medium", d, AoTechnique::Scalable, AoRes::Half, 8, 6, {1, 4}, 4, 7, 24.0f, {{29.56, 28.99, 30.47, 29.84}, 27.56}),
+            variant("high", d, AoTechnique::Horizon, AoRes::Half, 16, 12, {2, 8}, 2, 13, 24.0f, {{29.79, 29.82, 30.42, 31.35}, 28.38}),
+            variant("ultra", d, AoTechnique::Horizon, AoRes::Half, 24, 16, {3, 12}, 2, 17, 24.0f, {{29.95, 30.14, 30.42, 32.03}, 28.58})};
 }
 
 std::vector<TierRow> makeTable() {

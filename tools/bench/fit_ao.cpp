@@ -107,8 +107,6 @@ Status diagnose(tools::AoEvaluator& ev, Tier tier, AoTechnique technique, const 
         {"full resolution", [](AoSettings& s, TierProfile&) { s.resolution = AoResolution::Full; }},
         {"no radius clamp", [](AoSettings&, TierProfile& p) { p.aoScalableMaxRadiusPx = 0; }},
         {"radius clamp doubled", [](AoSettings&, TierProfile& p) { p.aoScalableMaxRadiusPx *= 2; }},
-        {"crease spacing x1.5", [](AoSettings&, TierProfile& p) { p.aoCreaseSpacingPx *= 1.5f; }},
-        {"crease spacing doubled", [](AoSettings&, TierProfile& p) { p.aoCreaseSpacingPx *= 2; }},
     };
     // Horizon's counts and falloff as a grid, the same on both tiers: its defaults are chosen on
     // the training score (docs/ao_families.md states the rule).

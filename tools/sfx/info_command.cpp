@@ -45,7 +45,6 @@ const ParameterRow kParameterRows[] = {
      [](const TierProfile& p) {
          return std::string(p.aoCreaseTaps == 24 ? "24 (the 11x11 stippled diamond)" : "12 (half the diamond, by checkerboard)");
      }},
-    {"crease AO tap spacing (px at 720 rows)", [](const TierProfile& p) { return std::to_string(int(p.aoCreaseSpacingPx)); }},
     {"horizon AO slices x steps per side",
      [](const TierProfile& p) { return std::to_string(p.aoHorizonSlices) + " x " + std::to_string(p.aoHorizonSteps); }},
     {"horizon AO thickness, falloff (share of the radius)",

@@ -36,7 +36,7 @@ enum class AoResolution : uint32_t {
 const char* toString(AoResolution resolution);  // "tier", "full", "half"
 bool parseAoResolution(const std::string& text, AoResolution* out);
 
-// Smallest AoSettings.radius and crease.range: below it epsilon * r^2 (the centre-tap guard) is
+// Smallest AoSettings.radius: below it epsilon * r^2 (the centre-tap guard) is
 // no longer a normal float, GPUs flush it to 0 and a centre tap would compute 0 / 0.
 inline constexpr float kAoMinRadius = 1e-4f;
 
@@ -44,7 +44,7 @@ inline constexpr float kAoMinRadius = 1e-4f;
 // field. An unset (nullopt) look field takes the tier preset's calibrated AoLook (docs/trade.md);
 // an unset count takes the tier's.
 struct AoCreaseSettings {
-    std::optional<float> range;  // world distance at which a tap's influence reaches 0
+    std::optional<float> range;  // distance at which a tap's influence reaches 0, in units of AoSettings.radius
     std::optional<float> bias;   // scales (cos - minimumCrease) before saturating
     float averager = 10.0f;      // divisor of the tap sum (scaled to 24 taps when 12 are taken)
     float minimumCrease = 0.3f;  // cosine below which a tap adds nothing (stops radial banding)
@@ -101,6 +101,7 @@ inline constexpr float kAoScalableCourseSumExponent = 2.0f;
 
 // Crease's resolved settings (AoCreaseSettings with the tier's look filled in).
 struct AoCreaseConfig {
+    // range in world units: AoCreaseSettings::range (or the look's) times the radius.
     float range = 1.0f, bias = 0.25f, averager = 10.0f, minimumCrease = 0.3f, fadeStart = 50.0f, fadeEnd = 100.0f;
 };
 
@@ -123,7 +124,6 @@ struct AoConfig {
     bool mirrored = false;        // Scalable: samples / 2 offsets, each also negated
     double spiralTurns = 7;       // Scalable spiral turns
     double maxRadiusPx = 0;       // Scalable: screen radius clamp, 0 = none
-    uint32_t creaseStride = 1;    // Crease: pixels between neighbouring taps of the diamond
     uint32_t depthMipLevels = 1;  // Scalable, Horizon: depth MIP levels read, from the pass's size (1 = that size only)
     uint32_t depthLayers = 1;     // multilayer AO: layers each tap tests (AoSettings.depthLayers)
     uint32_t blurRadius = 0;      // 0 = no blur
@@ -137,7 +137,7 @@ struct AoConfig {
 Status validateAoSettings(const AoSettings& settings, const TierProfile& profile);
 // Settings + tier -> config. mipLevelsAllowed: what the target size allows (maxMipLevels);
 // outputRows: the output's height, which scales the tier's pixel extents defined at
-// SFX_AO_REFERENCE_ROWS (Scalable's radius clamp, crease's tap spacing).
+// SFX_AO_REFERENCE_ROWS (Scalable's radius clamp).
 Result<AoConfig> resolveAoConfig(const AoSettings& settings, const TierProfile& profile, uint32_t mipLevelsAllowed, uint32_t outputRows);
 
 struct AoDesc {

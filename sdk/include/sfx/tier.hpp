@@ -41,7 +41,7 @@ struct AoLook {
     float contrast = 1.0f;     // k
     float bias = 0.0f;         // Alchemy: beta; Scalable: the cosine bias; unused by crease
     float sumExponent = 2.0f;  // Scalable only: the exponent of the normalised tap sum (the course's 2)
-    float creaseRange = 1.0f;  // crease only (world units)
+    float creaseRange = 2.0f;  // crease only (in units of AoSettings.radius)
     float creaseBias = 0.25f;  // crease only
 };
 
@@ -67,10 +67,6 @@ struct TierProfile {
     // Crease taps per pixel: 24 (the article's 11x11 stippled diamond) or 12 (its checkerboard
     // half, alternating between neighbours: the blur sees all 24 at half the fetches).
     uint32_t aoCreaseTaps = 24;
-    // Output pixels between neighbouring taps of crease's diamond at SFX_AO_REFERENCE_ROWS rows,
-    // scaled with the output's rows: the diamond covers the same share of the image at every
-    // size (AoConfig::creaseStride is it in the pass's pixels, at least 1).
-    float aoCreaseSpacingPx = 12;
     // Horizon: slices per pixel, steps per side, the thickness heuristic and the edge falloff
     // (AoHorizonSettings); it reads the depth MIP where aoUsesDepthMip says, as Scalable does.
     uint32_t aoHorizonSlices = 2;

@@ -29,11 +29,15 @@ struct Fnv1a {
     }
 };
 
-// Every field of the profile, so a changed preset changes the number.
+// Every field of the profile, so a changed preset changes the number. The size check stops a
+// field added to TierProfile (or removed from it) from building until it is listed here: one
+// left out would keep cached costs of presets that differ in it. Every member is 4 bytes or a
+// bool, laid out alike on the ABIs the SDK builds for.
+static_assert(sizeof(TierProfile) == 180, "TierProfile changed: fingerprint its fields in addProfile, then update this size");
 void addProfile(Fnv1a& f, const TierProfile& p) {
     f.value(p.tier), f.value(p.aoTechnique), f.value(p.aoScalableTaps), f.value(p.aoScalableMirrored), f.value(p.aoScalableMaxRadiusPx);
     f.value(p.aoUsesDepthMip), f.value(p.aoDepthMipLevels), f.value(p.aoAlchemySamples), f.value(p.aoBlurRadiusPx), f.value(p.aoCreaseTaps);
-    f.value(p.aoCreaseSpacingPx), f.value(p.aoHorizonSlices), f.value(p.aoHorizonSteps), f.value(p.aoHorizonThickness);
+    f.value(p.aoHorizonSlices), f.value(p.aoHorizonSteps), f.value(p.aoHorizonThickness);
     f.value(p.aoHorizonFalloff);
     for (const AoLook& l : p.aoLook)
         f.value(l.intensity), f.value(l.contrast), f.value(l.bias), f.value(l.sumExponent), f.value(l.creaseRange), f.value(l.creaseBias);

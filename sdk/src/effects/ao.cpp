@@ -310,7 +310,6 @@ Status AmbientObscurance::recordPasses(const AoInputs& in, const TextureDesc& ou
     // Screen radii are in the pass's pixels: half as many per unit at half size.
     p.pixelsPerUnit = float(rec.pixelsPerUnitAtUnitDepth * (half ? 0.5 : 1.0));
     p.maxRadiusPx = float(config_.maxRadiusPx);
-    p.creaseStride = int32_t(config_.creaseStride);
     p.maxDepth = float(rec.maxDepth);
     p.fullWidth = int32_t(desc_.width);
     p.fullHeight = int32_t(desc_.height);

@@ -20,9 +20,6 @@ std::string num(double v) {
 // NaN fails every comparison, so each check is written as "inside the range" negated.
 // Crease's other tap count: the checkerboard half of its diamond (shared::aoCreaseTapIndex).
 constexpr uint32_t kCreaseHalfTaps = uint32_t(shared::SFX_AO_CREASE_TAPS) / 2;
-// A hand-filled profile's crease spacing beyond this (output pixels at the reference rows) would
-// spread the 11x11 diamond over more than the image's height.
-constexpr float kMaxCreaseSpacingPx = 64.0f;
 
 // A look field's range (the table's row), for the value set or, unset, for the tier's look it
 // resolves to (a hand-filled profile may hold any value there).
@@ -83,8 +80,7 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
         (profile.aoScalableMirrored && profile.aoScalableTaps % 2 != 0) || profile.aoBlurRadiusPx > uint32_t(shared::SFX_AO_MAX_BLUR_RADIUS) ||
         !(profile.aoScalableMaxRadiusPx >= 0.0f) ||
         (profile.aoCreaseTaps != kCreaseHalfTaps && profile.aoCreaseTaps != uint32_t(shared::SFX_AO_CREASE_TAPS)) ||
-        std::isinf(profile.aoScalableMaxRadiusPx) || !(profile.aoCreaseSpacingPx > 0.0f && profile.aoCreaseSpacingPx <= kMaxCreaseSpacingPx) ||
-        !inRange(settingRange(Setting::AoHorizonSlices), profile.aoHorizonSlices) ||
+        std::isinf(profile.aoScalableMaxRadiusPx) || !inRange(settingRange(Setting::AoHorizonSlices), profile.aoHorizonSlices) ||
         !inRange(settingRange(Setting::AoHorizonSteps), profile.aoHorizonSteps) ||
         !inRange(settingRange(Setting::AoHorizonThickness), profile.aoHorizonThickness) ||
         !inRange(settingRange(Setting::AoHorizonFalloff), profile.aoHorizonFalloff))
@@ -164,14 +160,16 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
     c.epsilon = s.epsilon;
     c.normals = s.normals;
     const AoCreaseSettings& cs = s.crease;
-    c.crease = {cs.range.value_or(look.creaseRange), cs.bias.value_or(look.creaseBias), cs.averager, cs.minimumCrease, cs.fadeStart, cs.fadeEnd};
+    // Crease's range is in units of the radius, so the radius scales every technique alike.
+    c.crease = {
+        cs.range.value_or(look.creaseRange) * s.radius, cs.bias.value_or(look.creaseBias), cs.averager, cs.minimumCrease, cs.fadeStart, cs.fadeEnd};
     c.depthLayers = s.depthLayers;
     c.bentNormals = s.bentNormals;
     // Multilayer AO is full size (its layers are): the tier's half resolution does not apply.
     c.halfResolution = s.resolution == AoResolution::Half || (s.resolution == AoResolution::Tier && profile.aoHalfResolution && s.depthLayers == 1);
     // Pixel counts are the pass's: at half size the blur keeps its footprint in output pixels
-    // with (r + 1) / 2 taps each side. The tier's extents defined at the reference rows (the
-    // clamp, crease's spacing) scale with the output's rows, then halve at half size: the look
+    // with (r + 1) / 2 taps each side. Scalable's clamp, defined at the reference rows, scales
+    // with the output's rows, then halves at half size: the look
     // the fit calibrated (docs/trade.md) then holds at every resolution.
     const double passPxPerReferencePx = double(outputRows) / double(shared::SFX_AO_REFERENCE_ROWS) * (c.halfResolution ? 0.5 : 1.0);
     const uint32_t blurPx = s.blurRadius.value_or(profile.aoBlurRadiusPx);
@@ -202,7 +200,6 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
         case AoTechnique::Crease:
             c.bias = 0;
             c.samples = s.samples.value_or(profile.aoCreaseTaps);
-            c.creaseStride = uint32_t(std::max(1.0, std::round(double(profile.aoCreaseSpacingPx) * passPxPerReferencePx)));
             break;
         case AoTechnique::Horizon: {
             c.bias = 0;

@@ -20,10 +20,10 @@ constexpr bool kOpen = true, kClosed = false;
 
 // Bounds from the shaders' limits are the shared headers' constants; kAoMinRadius and
 // kMbMinSoftDepthExtent say why their minimums are what they are. The epsilon's minimum is the
-// float nearest 1e-8, so the documented minimum can be set.
+// float nearest 1e-8, and crease.range's the float nearest 0.01, so the documented minimums can be set.
 const SettingRange kRows[] = {
     {S::AoRadius, "AoSettings.radius", kAoMinRadius, 1000, kClosed, kClosed, "world units",
-     "world-space sampling radius (Alchemy, Scalable, Horizon)"},
+     "world-space sampling radius (every technique; Crease's range is in units of it)"},
     {S::AoIntensity, "AoSettings.intensity", 0, 100, kClosed, kClosed, "", "sigma: scales occlusion"},
     {S::AoContrast, "AoSettings.contrast", 0.1, 10, kClosed, kClosed, "", "k: visibility = max(0, 1 - occlusion)^k"},
     {S::AoBias, "AoSettings.bias", 0, 1, kClosed, kClosed, "", "Alchemy: beta per unit of depth; Scalable: subtracted from each tap's cosine"},
@@ -35,7 +35,7 @@ const SettingRange kRows[] = {
      "bilateral blur half-width in output pixels"},
     {S::AoDepthLayers, "AoSettings.depthLayers", 1, shared::SFX_AO_MAX_DEPTH_LAYERS, kClosed, kClosed, "layers",
      "opaque depth layers each tap tests: 1 = the visible layer; above 1 up to the tier's aoMaxDepthLayers (1 on current)"},
-    {S::AoCreaseRange, "AoSettings.crease.range", kAoMinRadius, 1000, kClosed, kClosed, "world units",
+    {S::AoCreaseRange, "AoSettings.crease.range", double(0.01f), 100, kClosed, kClosed, "radius",
      "Crease: distance at which a tap's influence reaches 0"},
     {S::AoCreaseBias, "AoSettings.crease.bias", 0, 100, kOpen, kClosed, "", "Crease: scales (cos - minimumCrease) before saturating"},
     {S::AoCreaseAverager, "AoSettings.crease.averager", 0, 1000, kOpen, kClosed, "", "Crease: divisor of the tap sum"},

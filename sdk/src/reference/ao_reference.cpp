@@ -70,15 +70,16 @@ std::vector<AoTap> aoTaps(const AoConfig& c, const DepthReconstruction& rec, uin
             }
             break;
         }
-        case AoTechnique::Crease:
+        case AoTechnique::Crease: {
+            const float stride = sh::aoCreaseStride(screenRadius);  // once per pixel, as ao_crease.frag
             for (int j = 0; j < sh::SFX_AO_CREASE_HALF_TAPS; ++j)
                 for (int half = 0; half < 2; ++half) {
                     if (!sh::aoCreaseTakesHalf(int(c.samples), half, sh::aoCreaseParity(int(x), int(y)))) continue;
                     const auto o = half == 0 ? sh::SFX_AO_CREASE_HALF_0[j] : sh::SFX_AO_CREASE_HALF_1[j];
-                    const int s = int(c.creaseStride);
-                    taps.push_back({std::clamp(int(x) + o.x * s, 0, int(w) - 1), std::clamp(int(y) + o.y * s, 0, int(h) - 1), 0});
+                    taps.push_back(tapAt(x, y, stride, sh::vec2{float(o.x), float(o.y)}, w, h, 0));
                 }
             break;
+        }
         case AoTechnique::Horizon: {
             // Per slice, per step, the + side's sample then the - side's (ao_horizon.frag's order).
             const int slices = int(c.horizon.slices), steps = int(c.horizon.steps);

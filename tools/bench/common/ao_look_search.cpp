@@ -41,7 +41,8 @@ AoSettings paperLook(AoTechnique t) {
     s.normals = AoNormals::FromTexture;  // the G-buffer's normals, as a deferred renderer would
     s.intensity = 1.0f, s.contrast = 1.0f;
     s.bias = t == AoTechnique::Alchemy ? kAoAlchemyDefaultBias : t == AoTechnique::Scalable ? kAoScalableDefaultBias : 0.0f;
-    s.crease.range = 1.0f, s.crease.bias = 0.25f;
+    // The article's range of 1 world unit at the default radius (0.5), in units of the radius.
+    s.crease.range = 2.0f, s.crease.bias = 0.25f;
     if (t == AoTechnique::Scalable) s.sumExponent = kAoScalableCourseSumExponent;
     return s;
 }
