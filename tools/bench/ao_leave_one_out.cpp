@@ -93,8 +93,10 @@ std::string breaksAdoption(const ScoredLook& look, const ScoredLook& table) {
 
 }  // namespace
 
-Result<LeaveOneOut> leaveOneOut(AoEvaluator& ev, const std::vector<TradeView>& views, const std::vector<AoCase>& cases, const AoSettings& start,
-                                const LookSearch& search, const std::string& label) {
+Result<LeaveOneOut> leaveOneOut(AoEvaluator& ev, const std::vector<TradeView>& views, const std::vector<AoCase>& cases,
+                                const std::vector<AoSettings>& starts, const LookSearch& search, const std::string& label) {
+    if (starts.empty()) return invalidArgument("leaveOneOut starts", "empty", "the tier table's look, then any others");
+    const AoSettings& start = starts.front();
     CaseMemo memo(ev, cases);
     std::vector<size_t> all, training;
     std::map<std::string, std::vector<size_t>> byFamily;
@@ -116,7 +118,7 @@ Result<LeaveOneOut> leaveOneOut(AoEvaluator& ev, const std::vector<TradeView>& v
         return look;
     };
     auto fitOn = [&](const std::vector<size_t>& which, const std::string& what) -> Result<ScoredLook> {
-        Result<AoSettings> fitted = searchLook([&](const AoSettings& s) { return memo.score(s, which); }, start, search, label + " " + what);
+        Result<AoSettings> fitted = searchLookFrom([&](const AoSettings& s) { return memo.score(s, which); }, starts, search, label + " " + what);
         if (!fitted) return fitted.status();
         return scored(fitted.value());
     };
@@ -144,12 +146,12 @@ Result<LeaveOneOut> leaveOneOut(AoEvaluator& ev, const std::vector<TradeView>& v
 }
 
 std::string leaveOneOutMarkdown(const std::vector<LeaveOneOut>& runs, const std::map<std::string, AoScore>& none, const std::string& machine,
-                                double seconds) {
+                                double seconds, const std::string& starts) {
     std::ostringstream md;
     std::vector<std::string> families;
     for (const SceneFamily& f : sceneFamilies()) families.push_back(f.name);
     md << "Measured by `build/tools/bench/fit_ao --leave-one-out` on " << machine << " in " << fixed(seconds / 60.0, 1)
-       << " minutes; each fit starts at the tier table's look, the search of the default run. Frame PSNR / PSNR where the truth < 0.95 (dB).\n\n";
+       << " minutes; each fit searches from " << starts << ", with the search of the default run. Frame PSNR / PSNR where the truth < 0.95 (dB).\n\n";
     md << "The gap: a family's score under the look fitted on every family less its score under the look fitted on the other four.\n\n";
     md << "| tier | technique |";
     for (const std::string& f : families) md << " " << f << " |";

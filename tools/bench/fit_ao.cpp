@@ -52,7 +52,7 @@ struct Options {
     std::string cacheDir = "build/truth-cache", outDir = "docs";
     std::vector<std::string> tiers{"high", "current"};
     bool diagnose = false;        // score the tier defaults' variants instead of fitting
-    std::string start = "paper";  // where the search starts: the papers' look, or the tier table's
+    std::string start = "paper";  // where the search starts: the papers' look, the tier table's, or both (the better fit)
     tools::LookSearch search;
     bool leaveOneOut = false;           // fit on every family and on every family but one, score each
     std::vector<std::string> variants;  // --diagnose: only the variants whose names contain one of these (none: all)
@@ -207,8 +207,11 @@ bool writeLeaveOneOut(const Options& o, const std::vector<tools::LeaveOneOut>& r
     for (const auto& [family, c] : byFamily) none[family] = tools::noAoScore(c);
     std::filesystem::create_directories(o.outDir);
     std::ofstream(o.outDir + "/ao_loo.csv") << tools::leaveOneOutCsv(runs);
-    if (Status st = tools::replaceMarkdownSection(o.outDir + "/ao_families.md", "fit_ao_loo",
-                                                  tools::leaveOneOutMarkdown(runs, none, machine, seconds));
+    if (Status st = tools::replaceMarkdownSection(
+            o.outDir + "/ao_families.md", "fit_ao_loo",
+            tools::leaveOneOutMarkdown(
+                runs, none, machine, seconds,
+                o.start == "both" ? "the tier table's look and the papers' look, the better fit kept" : "the tier table's look"));
         !st) {
         std::cerr << "fit_ao: " << st.toString() << "\n";
         return false;
@@ -238,8 +241,10 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--refinements", o.search.refinements, "halvings of the fine search's step")->capture_default_str();
     app.add_option("--tiers", o.tiers, "comma-separated: high, current")->delimiter(',')->capture_default_str();
-    app.add_option("--start", o.start, "where the search starts: paper (the papers' look) or tier (the tier table's)")
-        ->check(CLI::IsMember({"paper", "tier"}))
+    app.add_option("--start", o.start,
+                   "where the search starts: paper (the papers' look), tier (the tier table's) or both (a search from each, the better "
+                   "objective kept); --leave-one-out: tier or both")
+        ->check(CLI::IsMember({"paper", "tier", "both"}))
         ->capture_default_str();
     app.add_option("--bright-limit", o.search.brightLimit,
                    "training mean signed error where occluded above which the objective pays " + fixed(tools::kBrightPenaltyDb, 0) +
@@ -249,13 +254,17 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--epsilon", o.epsilon, "AoSettings::epsilon during the fit, in units of radius^2 (unset: the settings' default)");
     app.add_flag("--leave-one-out", o.leaveOneOut,
-                 "from the tier table's look, fit on every family and on every family but one, score each family under each "
+                 "fit on every family and on every family but one (from --start), score each family under each "
                  "(<out-dir>/ao_loo.csv, ao_families.md)");
     app.add_flag("--diagnose", o.diagnose, "score variants of the tier defaults on the training and the held-out views instead of fitting");
     app.add_option("--variants", o.variants, "--diagnose: comma-separated parts of the variants' names to run (none: every variant)")->delimiter(',');
     app.add_option("--cache-dir", o.cacheDir, "where truth images are cached")->capture_default_str();
     app.add_option("--out-dir", o.outDir, "ao_fit.csv and trade.md (tables between its fit_ao markers)")->capture_default_str();
     CLI11_PARSE(app, argc, argv);
+    if (o.leaveOneOut && o.start == "paper") {
+        std::cerr << "fit_ao: --start paper with --leave-one-out: allowed tier or both (the tier table's look is what the fits are judged against)\n";
+        return 2;
+    }
     const auto started = std::chrono::steady_clock::now();
     auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
     auto elapsed = [&] { return fixed(seconds(), 1); };
@@ -313,11 +322,16 @@ int main(int argc, char** argv) {
                 }
                 continue;
             }
-            AoSettings start = o.start == "tier" || o.leaveOneOut ? tools::tierLook(technique, tiers::choose(dev.value()->caps(), tier)->profile)
-                                                                  : tools::paperLook(technique);
-            if (o.epsilon) start.epsilon = *o.epsilon;
+            // The tier table's look first: it is the look a fit is judged against (and the search's
+            // "before"), and with --start both a tie keeps it.
+            std::vector<AoSettings> starts;
+            if (o.start != "paper") starts.push_back(tools::tierLook(technique, tiers::choose(dev.value()->caps(), tier)->profile));
+            if (o.start != "tier") starts.push_back(tools::paperLook(technique));
+            for (AoSettings& s : starts)
+                if (o.epsilon) s.epsilon = *o.epsilon;
+            const AoSettings& start = starts.front();
             if (o.leaveOneOut) {
-                Result<tools::LeaveOneOut> r = tools::leaveOneOut(ev, views, allCases, start, o.search, label);
+                Result<tools::LeaveOneOut> r = tools::leaveOneOut(ev, views, allCases, starts, o.search, label);
                 if (!r) {
                     std::cerr << "fit_ao: " << label << ": " << r.status().toString() << "\n";
                     return 1;
@@ -326,7 +340,8 @@ int main(int argc, char** argv) {
                 progress(label + ": leave-one-out done");
                 continue;
             }
-            Result<AoSettings> fitted = tools::searchLook([&](const AoSettings& s) { return ev.score(s, training.value()); }, start, o.search, label);
+            Result<AoSettings> fitted = tools::searchLookFrom([&](const AoSettings& s) { return ev.score(s, training.value()); }, starts, o.search,
+                                                              label);
             Result<tools::AoScore> before = fitted ? ev.score(start, heldOut.value()) : Result<tools::AoScore>(fitted.status());
             Result<tools::AoScore> trained = before ? ev.score(fitted.value(), training.value()) : Result<tools::AoScore>(before.status());
             Result<tools::AoScore> held = trained ? ev.score(fitted.value(), heldOut.value()) : Result<tools::AoScore>(trained.status());

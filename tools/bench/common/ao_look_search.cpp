@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "markdown_section.hpp"
@@ -128,6 +129,23 @@ Result<AoSettings> searchLook(const LookScorer& score, const AoSettings& start, 
         progress("fine, step " + fixed(step, 4));
     }
     return settingsAt(best);
+}
+
+Result<AoSettings> searchLookFrom(const LookScorer& score, const std::vector<AoSettings>& starts, const LookSearch& search,
+                                  const std::string& label) {
+    std::optional<AoSettings> best;
+    double bestObjective = 0;
+    for (size_t i = 0; i < starts.size(); ++i) {
+        const std::string from = starts.size() > 1 ? label + " (start " + std::to_string(i + 1) + " of " + std::to_string(starts.size()) + ")"
+                                                   : label;
+        Result<AoSettings> fitted = searchLook(score, starts[i], search, from);
+        if (!fitted) return fitted.status();
+        Result<AoScore> r = score(fitted.value());
+        if (!r) return r.status();
+        if (!best || search.objective(r.value()) > bestObjective + 1e-6) best = fitted.value(), bestObjective = search.objective(r.value());
+    }
+    if (!best) return invalidArgument("searchLookFrom starts", "empty", "at least one look");
+    return *best;
 }
 
 }  // namespace sfx::tools

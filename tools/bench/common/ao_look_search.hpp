@@ -58,5 +58,9 @@ using LookScorer = std::function<Result<AoScore>(const AoSettings&)>;
 // levels of a Hooke-Jeeves pattern search in the unit cube of the parameters. Prints each stage
 // after `label`.
 Result<AoSettings> searchLook(const LookScorer& score, const AoSettings& start, const LookSearch& search, const std::string& label);
+// searchLook from each start in turn; the look with the highest objective wins (the first on a
+// tie). A search ends on the ridge point nearest its start, so a fit that is to say where the
+// best look lies tries more than one.
+Result<AoSettings> searchLookFrom(const LookScorer& score, const std::vector<AoSettings>& starts, const LookSearch& search, const std::string& label);
 
 }  // namespace sfx::tools
