@@ -77,7 +77,7 @@ TierProfile currentDefault() {
     p.aoLook[1] = {.intensity = 0.0654423f, .contrast = 7.23394f, .bias = 0.0f, .sumExponent = 0.569394f};  // scalable
     // Crease with its diamond reaching the radius, fitted at half resolution: the better training
     // score of the searches from the tier's previous look and from the article's (tools/bench/fit_ao
-    // --start tier; docs/ao_families.md has the held-out scores).
+    // --start both; docs/ao_families.md has the held-out scores).
     p.aoLook[2] = {.intensity = 1.48865f, .contrast = 10.0f, .bias = 0, .creaseRange = 2.324f, .creaseBias = 0.165467f};  // crease
     // Crease at the default preset: at the cost of the 4-tap Scalable default it replaced
     // (1.00-1.06 times, inside the runs' spread), the configuration most accurate on the training
@@ -127,7 +127,7 @@ TierProfile highDefault() {
     p.aoLook[0] = {.intensity = 0.392128f, .contrast = 1.77828f, .bias = 1e-7f};  // alchemy
     // Scalable with its sum exponent fitted (tools/bench/fit_ao --start tier, at half resolution).
     p.aoLook[1] = {.intensity = 0.187609f, .contrast = 7.36525f, .bias = 0.0468752f, .sumExponent = 0.707107f};  // scalable
-    // Crease as on the current tier, the search from the article's look the better (fit_ao --start paper).
+    // Crease as on the current tier, the search from the article's look the better (fit_ao --start both).
     p.aoLook[2] = {.intensity = 4.47214f, .contrast = 1.77828f, .bias = 0, .creaseRange = 2.78512f, .creaseBias = 0.25f};  // crease
     // Horizon at the default preset (tools/bench/ao_front, docs/trade.md): at the cost of the
     // 9-tap Scalable default it replaced (0.95-1.09 times over six runs, inside the runs'

@@ -69,9 +69,16 @@ double LookSearch::objective(const AoScore& s) const {
     return frameWeight * s.psnr + s.psnrOccluded - kBrightPenaltyDb * excess;
 }
 
+namespace {
+
+struct FittedLook {
+    AoSettings settings;
+    AoScore score;  // the search's own evaluation of it: a caller comparing fits need not score it again
+};
+
 // The step halves from 1/8 of the range each level; after the moves along each axis a jump
 // along the move just made follows (the intensity-contrast ridge is diagonal).
-Result<AoSettings> searchLook(const LookScorer& score, const AoSettings& start, const LookSearch& search, const std::string& label) {
+Result<FittedLook> fitLook(const LookScorer& score, const AoSettings& start, const LookSearch& search, const std::string& label) {
     const std::vector<LookParameter> params = lookParametersOf(start.technique.value());
     auto settingsAt = [&](const std::vector<double>& u) {
         AoSettings s = start;
@@ -83,8 +90,7 @@ Result<AoSettings> searchLook(const LookScorer& score, const AoSettings& start, 
     Result<AoScore> first = score(start);
     if (!first) return first.status();
     size_t evaluations = 1;
-    double bestObjective = search.objective(first.value());
-    double bestSigned = first->signedOccluded;
+    AoScore bestScore = first.value();
     // Scores the point u (clamped to the cube); keeps it when better. *improved says so.
     auto tryPoint = [&](std::vector<double> u, bool* improved) -> Status {
         for (double& x : u) x = std::clamp(x, 0.0, 1.0);
@@ -93,13 +99,13 @@ Result<AoSettings> searchLook(const LookScorer& score, const AoSettings& start, 
         Result<AoScore> r = score(settingsAt(u));
         if (!r) return r.status();
         ++evaluations;
-        if (search.objective(r.value()) > bestObjective + 1e-6)
-            bestObjective = search.objective(r.value()), bestSigned = r->signedOccluded, best = u, *improved = true;
+        if (search.objective(r.value()) > search.objective(bestScore) + 1e-6) bestScore = r.value(), best = u, *improved = true;
         return Status::ok();
     };
     auto progress = [&](const std::string& stage) {
-        std::cout << "  " << label << " " << stage << ": " << describeLook(settingsAt(best)) << " -> training objective " << fixed(bestObjective, 2)
-                  << " dB, signed error occluded " << fixed(bestSigned, 3) << " (" << evaluations << " evaluations)" << std::endl;
+        std::cout << "  " << label << " " << stage << ": " << describeLook(settingsAt(best)) << " -> training objective "
+                  << fixed(search.objective(bestScore), 2) << " dB, signed error occluded " << fixed(bestScore.signedOccluded, 3) << " ("
+                  << evaluations << " evaluations)" << std::endl;
     };
     progress("start");
     bool improved = false;
@@ -128,24 +134,29 @@ Result<AoSettings> searchLook(const LookScorer& score, const AoSettings& start, 
         }
         progress("fine, step " + fixed(step, 4));
     }
-    return settingsAt(best);
+    return FittedLook{settingsAt(best), bestScore};
+}
+
+}  // namespace
+
+Result<AoSettings> searchLook(const LookScorer& score, const AoSettings& start, const LookSearch& search, const std::string& label) {
+    Result<FittedLook> fitted = fitLook(score, start, search, label);
+    if (!fitted) return fitted.status();
+    return fitted->settings;
 }
 
 Result<AoSettings> searchLookFrom(const LookScorer& score, const std::vector<AoSettings>& starts, const LookSearch& search,
                                   const std::string& label) {
-    std::optional<AoSettings> best;
-    double bestObjective = 0;
+    if (starts.empty()) return invalidArgument("searchLookFrom starts", "empty", "at least one look");
+    std::optional<FittedLook> best;
     for (size_t i = 0; i < starts.size(); ++i) {
         const std::string from = starts.size() > 1 ? label + " (start " + std::to_string(i + 1) + " of " + std::to_string(starts.size()) + ")"
                                                    : label;
-        Result<AoSettings> fitted = searchLook(score, starts[i], search, from);
+        Result<FittedLook> fitted = fitLook(score, starts[i], search, from);
         if (!fitted) return fitted.status();
-        Result<AoScore> r = score(fitted.value());
-        if (!r) return r.status();
-        if (!best || search.objective(r.value()) > bestObjective + 1e-6) best = fitted.value(), bestObjective = search.objective(r.value());
+        if (!best || search.objective(fitted->score) > search.objective(best->score) + 1e-6) best = fitted.value();
     }
-    if (!best) return invalidArgument("searchLookFrom starts", "empty", "at least one look");
-    return *best;
+    return best->settings;
 }
 
 }  // namespace sfx::tools
