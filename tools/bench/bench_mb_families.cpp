@@ -203,6 +203,8 @@ int main(int argc, char** argv) {
     std::optional<float> radius;
     std::optional<uint32_t> highTaps;
     std::optional<float> highRadius;
+    std::optional<uint32_t> currentTaps;
+    std::optional<float> currentRadius;
     MotionBlurCandidate candidates[2];  // the CPU reference's, current and high tier
     double hiddenNear = 0;
     app.add_option("--width", width, "picture width")->capture_default_str();
@@ -224,6 +226,8 @@ int main(int argc, char** argv) {
     app.add_option("--radius", radius, "override MotionBlurSettings::maxRadiusPx (at 720 rows) on both tiers");
     app.add_option("--high-taps", highTaps, "the high tier's profile taps (a candidate default; --taps overrides it)");
     app.add_option("--high-radius", highRadius, "the high tier's profile radius at 720 rows (a candidate default)");
+    app.add_option("--current-taps", currentTaps, "the current tier's profile taps (a candidate default; --taps overrides it)");
+    app.add_option("--current-radius", currentRadius, "the current tier's profile radius at 720 rows (a candidate default)");
     app.add_option("--hidden-near", hiddenNear,
                    "candidate, both tiers' CPU reference: the hidden background's colour weighted by distance^-P (0 = today's)")
         ->capture_default_str();
@@ -263,6 +267,8 @@ int main(int argc, char** argv) {
     TierProfile profiles[2] = {tiers::profile(Tier::Current), tiers::profile(Tier::High)};  // indexed by tier == High
     if (highTaps) profiles[1].mbTaps = *highTaps;
     if (highRadius) profiles[1].mbMaxRadiusPx = *highRadius;
+    if (currentTaps) profiles[0].mbTaps = *currentTaps;
+    if (currentRadius) profiles[0].mbMaxRadiusPx = *currentRadius;
 
     auto writeDoc = [&]() -> int {
         const DocSetup setup{raster, sweep, width, height, instants, seed, layouts, rasterBackend, profiles, settings};
