@@ -62,9 +62,15 @@ const ViewSpec kViews[] = {
 };
 // clang-format on
 
+bool hasSolidSheet(const TradeView& view) {
+    const std::string suffix = kSolidSheetSuffix;
+    return view.family == "thin" && view.scene.size() > suffix.size() && view.scene.ends_with(suffix);
+}
+
 const ViewSpec* findView(const TradeView& view) {
+    const std::string variant = hasSolidSheet(view) ? view.scene.substr(0, view.scene.size() - std::string(kSolidSheetSuffix).size()) : view.scene;
     for (const ViewSpec& v : kViews)
-        if (view.family == v.family && view.scene == v.variant) return &v;
+        if (view.family == v.family && variant == v.variant) return &v;
     return nullptr;
 }
 
@@ -168,8 +174,9 @@ RasterScene blocksScene(uint32_t seed) {
 }
 
 // Thin occluders on an open floor (sky beyond): free posts, a railing (posts, top and middle
-// rails) and a thin sheet held above the floor on four thin legs.
-RasterScene thinScene(uint32_t seed) {
+// rails) and a thin sheet held above the floor on four thin legs, or in its place a solid block
+// of the sheet's footprint and height (solidSheet).
+RasterScene thinScene(uint32_t seed, bool solidSheet) {
     Rng rng(seed);
     RasterScene s;
     s.meshes = {floorQuad(8.0f)};
@@ -180,6 +187,10 @@ RasterScene thinScene(uint32_t seed) {
     s.meshes.push_back(box({x0, 0.97, z - 0.025}, {x0 + length, 1.02, z + 0.025}));
     s.meshes.push_back(box({x0, 0.48, z - 0.02}, {x0 + length, 0.52, z + 0.02}));
     const double w = rng.in(1.0, 1.6), d = rng.in(0.6, 1.0), h = rng.in(0.1, 0.4), cx = rng.in(-0.5, 1.0), cz = rng.in(0.0, 1.0);
+    if (solidSheet) {
+        s.meshes.push_back(box({cx - w / 2, 0, cz - d / 2}, {cx + w / 2, h + 0.02, cz + d / 2}));
+        return s;
+    }
     s.meshes.push_back(box({cx - w / 2, h, cz - d / 2}, {cx + w / 2, h + 0.02, cz + d / 2}));
     for (double sx : {-1.0, 1.0})
         for (double sz : {-1.0, 1.0}) s.meshes.push_back(post({cx + sx * (w / 2 - 0.05), 0, cz + sz * (d / 2 - 0.05)}, 0.02, h));
@@ -281,6 +292,11 @@ std::vector<TradeView> allFamilyViews() {
     return views;
 }
 
+TradeView withSolidSheet(TradeView view) {
+    if (view.family == "thin" && !hasSolidSheet(view)) view.scene += kSolidSheetSuffix;
+    return view;
+}
+
 std::string describeCamera(const TradeView& view) {
     const ViewSpec* v = findView(view);
     if (!v) return "unknown view";
@@ -296,7 +312,7 @@ Result<RasterScene> familyScene(const TradeView& view) {
     RasterScene s;
     const std::string family = v->family;
     if (family == "blocks") s = blocksScene(v->seed);
-    if (family == "thin") s = thinScene(v->seed);
+    if (family == "thin") s = thinScene(v->seed, hasSolidSheet(view));
     if (family == "interior") s = interiorScene(v->seed);
     if (family == "independent") s = independentScene(v->variant);
     if (family == "meshes") {

@@ -27,6 +27,13 @@ std::vector<TradeView> familyViews(bool heldOut);
 // Every family's views, training families first.
 std::vector<TradeView> allFamilyViews();
 
+// A thin view with its sheet and legs replaced by a solid block of the sheet's footprint and
+// height, the same camera: its variant carries kSolidSheetSuffix ("thin.s33+solid"), so its truth
+// is cached apart. Any other view is returned as it is. It is no family's view: it measures what
+// the sheet alone costs an estimator (fit_ao --diagnose --solid-sheet).
+inline constexpr const char* kSolidSheetSuffix = "+solid";
+TradeView withSolidSheet(TradeView view);
+
 // The view's camera in words: "elevation 5 deg, azimuth 20 deg, fov-y 50, r 0.5".
 std::string describeCamera(const TradeView& view);
 
