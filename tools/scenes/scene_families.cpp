@@ -63,12 +63,11 @@ const ViewSpec kViews[] = {
 // clang-format on
 
 bool hasSolidSheet(const TradeView& view) {
-    const std::string suffix = kSolidSheetSuffix;
-    return view.family == "thin" && view.scene.size() > suffix.size() && view.scene.ends_with(suffix);
+    return view.family == "thin" && view.scene.size() > kSolidSheetSuffix.size() && view.scene.ends_with(kSolidSheetSuffix);
 }
 
 const ViewSpec* findView(const TradeView& view) {
-    const std::string variant = hasSolidSheet(view) ? view.scene.substr(0, view.scene.size() - std::string(kSolidSheetSuffix).size()) : view.scene;
+    const std::string variant = hasSolidSheet(view) ? view.scene.substr(0, view.scene.size() - kSolidSheetSuffix.size()) : view.scene;
     for (const ViewSpec& v : kViews)
         if (view.family == v.family && variant == v.variant) return &v;
     return nullptr;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "scene.hpp"
@@ -31,7 +32,7 @@ std::vector<TradeView> allFamilyViews();
 // height, the same camera: its variant carries kSolidSheetSuffix ("thin.s33+solid"), so its truth
 // is cached apart. Any other view is returned as it is. It is no family's view: it measures what
 // the sheet alone costs an estimator (fit_ao --diagnose --solid-sheet).
-inline constexpr const char* kSolidSheetSuffix = "+solid";
+inline constexpr std::string_view kSolidSheetSuffix = "+solid";
 TradeView withSolidSheet(TradeView view);
 
 // The view's camera in words: "elevation 5 deg, azimuth 20 deg, fov-y 50, r 0.5".
