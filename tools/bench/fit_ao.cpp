@@ -12,7 +12,7 @@
 // (ao_leave_one_out.hpp): <out-dir>/ao_loo.csv and its section of <out-dir>/ao_families.md. The
 // search is tools/bench/common/ao_look_search.*. --epsilon holds AoSettings::epsilon (Alchemy's
 // falloff guard) at a value through the fit (docs/ao_families.md measures it as a look
-// parameter). --diagnose --solid-sheet scores the held-out thin views with a solid block in
+// parameter); --radius-exponent scores a look whose intensity follows the radius. --diagnose --solid-sheet scores the held-out thin views with a solid block in
 // place of the sheet on legs, to tell what the sheet costs from what the view does. The truth
 // comes from the same cache as bench_trade. A program, not a test.
 #include <CLI/CLI.hpp>
@@ -60,6 +60,7 @@ struct Options {
     bool leaveOneOut = false;           // fit on every family and on every family but one, score each
     std::vector<std::string> variants;  // --diagnose: only the variants whose names contain one of these (none: all)
     std::optional<float> epsilon;       // AoSettings::epsilon for the fit (unset: the settings' default)
+    double radiusExponent = 0;          // a look whose intensity follows the radius (AoEvaluator::setRadiusExponent)
 };
 
 // Each family's score from a run's comparisons (one per case; AoCase::view indexes `views`).
@@ -271,6 +272,11 @@ int main(int argc, char** argv) {
     app.add_option("--frame-weight", o.search.frameWeight, "the objective: this x frame PSNR + PSNR where occluded (0: occluded only)")
         ->capture_default_str();
     app.add_option("--epsilon", o.epsilon, "AoSettings::epsilon during the fit, in units of radius^2 (unset: the settings' default)");
+    app.add_option("--radius-exponent", o.radiusExponent,
+                   "every score with the look's intensity times (r / 0.5)^-A, r in world units (a look that follows the radius; not in "
+                   "the SDK), [0, 2]")
+        ->check(CLI::Range(0.0, 2.0))
+        ->capture_default_str();
     app.add_flag("--leave-one-out", o.leaveOneOut,
                  "fit on every family and on every family but one (from --start), score each family under each "
                  "(<out-dir>/ao_loo.csv, ao_families.md)");
@@ -330,6 +336,7 @@ int main(int argc, char** argv) {
         if (machine.empty()) machine = dev.value()->caps().deviceName;
         std::cout << "[" << elapsed() << " s] " << dev.value()->caps().summary() << ", tier " << toString(tier) << std::endl;
         tools::AoEvaluator ev(*dev.value(), tier, o.width, o.height);
+        ev.setRadiusExponent(o.radiusExponent);
         if (Status st = ev.prepare(views); !st) {
             std::cerr << "fit_ao: " << st.toString() << "\n";
             return 1;
