@@ -12,9 +12,10 @@
 // (ao_leave_one_out.hpp): <out-dir>/ao_loo.csv and its section of <out-dir>/ao_families.md. The
 // search is tools/bench/common/ao_look_search.*. --epsilon holds AoSettings::epsilon (Alchemy's
 // falloff guard) at a value through the fit (docs/ao_families.md measures it as a look
-// parameter); --radius-exponent scores a look whose intensity follows the radius. --diagnose --solid-sheet scores the held-out thin views with a solid block in
-// place of the sheet on legs, to tell what the sheet costs from what the view does. The truth
-// comes from the same cache as bench_trade. A program, not a test.
+// parameter); --radius-exponent scores a look whose intensity follows the radius. --diagnose
+// --solid-sheet scores the held-out thin views with a solid block in place of the sheet on legs,
+// to tell what the sheet costs from the rest. The truth comes from the same cache as
+// bench_trade. A program, not a test.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
