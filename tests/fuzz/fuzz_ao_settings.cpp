@@ -36,6 +36,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     s.horizon.steps = fuzz::hostileOptionalCount(in);
     s.horizon.thickness = fuzz::hostileOptionalFloat(in);
     s.horizon.falloff = fuzz::hostileOptionalFloat(in);
+    // Last, and only where input is left, so the corpus written before them keeps its meaning.
+    if (in.remaining_bytes() > 0) {
+        s.metresPerUnit = fuzz::hostileFloat(in);
+        s.radiusExponent = fuzz::hostileOptionalFloat(in);
+    }
 
     const Status valid = validateAoSettings(s, profile);
     Result<AoConfig> config = resolveAoConfig(s, profile, mipLevelsAllowed, outputRows);
@@ -47,6 +52,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const AoConfig& c = config.value();
     for (double v : {c.radius, c.intensity, c.contrast, c.bias, c.sumExponent, c.epsilon, c.spiralTurns, c.maxRadiusPx})
         if (!std::isfinite(v)) std::abort();
+    // A radius-following intensity stays inside the intensity's own range.
+    if (!(c.intensity >= 0 && c.intensity <= 100)) std::abort();
     if (c.samples < 1 || c.samples > uint32_t(shared::SFX_AO_MAX_SAMPLES)) std::abort();
     if (c.mirrored && c.samples % 2 != 0) std::abort();
     if (c.blurRadius > uint32_t(shared::SFX_AO_MAX_BLUR_RADIUS)) std::abort();

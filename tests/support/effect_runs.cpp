@@ -149,6 +149,8 @@ AoSettings aoTestSettings(AoTechnique t, double scale) {
     s.radius = float(0.5 * scale);
     // The papers' look, not the tier's calibrated one, which would move the analytic expectations.
     s.intensity = t == AoTechnique::Scalable ? 2.0f : 1.0f;
+    s.radiusExponent = 0.0f;               // one intensity at every radius, as the papers
+    s.metresPerUnit = float(1.0 / scale);  // a scaled scene is the same scene in other units
     s.contrast = 1.0f;
     if (t == AoTechnique::Alchemy || t == AoTechnique::Scalable) s.bias = t == AoTechnique::Alchemy ? kAoAlchemyDefaultBias : kAoScalableDefaultBias;
     s.crease.bias = 0.25f;

@@ -39,6 +39,8 @@ AoConfig configFor(AoTechnique t, Tier tier, double scale = 1.0, bool blur = tru
     s.contrast = 1.0f;
     if (t != AoTechnique::Crease) s.bias = t == AoTechnique::Alchemy ? kAoAlchemyDefaultBias : kAoScalableDefaultBias;
     s.sumExponent = kAoScalableCourseSumExponent;
+    s.radiusExponent = 0.0f;               // one intensity at every radius, as the papers
+    s.metresPerUnit = float(1.0 / scale);  // a scaled scene is the same scene in other units
     s.crease.bias = 0.25f;
     s.crease.range = float(1.0 / radius);  // the article's 1 world unit at scale 1, in units of the radius
     s.crease.fadeStart = float(50 * scale);

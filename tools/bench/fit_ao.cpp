@@ -58,10 +58,10 @@ struct Options {
     bool solidSheet = false;      // --diagnose: the held-out thin views with a solid block for the sheet
     std::string start = "paper";  // where the search starts: the papers' look, the tier table's, or both (the better fit)
     tools::LookSearch search;
-    bool leaveOneOut = false;           // fit on every family and on every family but one, score each
-    std::vector<std::string> variants;  // --diagnose: only the variants whose names contain one of these (none: all)
-    std::optional<float> epsilon;       // AoSettings::epsilon for the fit (unset: the settings' default)
-    double radiusExponent = 0;          // a look whose intensity follows the radius (AoEvaluator::setRadiusExponent)
+    bool leaveOneOut = false;             // fit on every family and on every family but one, score each
+    std::vector<std::string> variants;    // --diagnose: only the variants whose names contain one of these (none: all)
+    std::optional<float> epsilon;         // AoSettings::epsilon for the fit (unset: the settings' default)
+    std::optional<float> radiusExponent;  // AoSettings::radiusExponent of every start; unset: the tier table's look's
 };
 
 // Each family's score from a run's comparisons (one per case; AoCase::view indexes `views`).
@@ -101,7 +101,8 @@ Status diagnose(tools::AoEvaluator& ev, Tier tier, AoTechnique technique, const 
         {"every-family look",
          [tier](AoSettings&, TierProfile& p) {
              const bool high = tier == Tier::High;
-             p.aoLook[0].contrast = high ? 2.05353f : 1.59634f;      // alchemy
+             // alchemy, with the intensity it was fitted beside and one intensity at every radius
+             p.aoLook[0] = {.intensity = high ? 0.392128f : 0.472871f, .contrast = high ? 2.05353f : 1.59634f, .bias = high ? 1e-7f : 1.59371e-7f};
              p.aoLook[1].intensity = high ? 0.223607f : 0.0789174f;  // scalable
              if (high) p.aoLook[1].bias = 0.0625002f;
          }},
@@ -274,10 +275,9 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--epsilon", o.epsilon, "AoSettings::epsilon during the fit, in units of radius^2 (unset: the settings' default)");
     app.add_option("--radius-exponent", o.radiusExponent,
-                   "every score with the look's intensity times (r / 0.5)^-A, r in world units (a look that follows the radius; not in "
-                   "the SDK), [0, 2]")
-        ->check(CLI::Range(0.0, 2.0))
-        ->capture_default_str();
+                   "A, AoSettings::radiusExponent of every start (intensity times (r / 0.5 m)^-A; the families are in metres), [0, 2]; "
+                   "not given: the tier table's look's")
+        ->check(CLI::Range(0.0, 2.0));
     app.add_flag("--leave-one-out", o.leaveOneOut,
                  "fit on every family and on every family but one (from --start), score each family under each "
                  "(<out-dir>/ao_loo.csv, ao_families.md)");
@@ -337,7 +337,6 @@ int main(int argc, char** argv) {
         if (machine.empty()) machine = dev.value()->caps().deviceName;
         std::cout << "[" << elapsed() << " s] " << dev.value()->caps().summary() << ", tier " << toString(tier) << std::endl;
         tools::AoEvaluator ev(*dev.value(), tier, o.width, o.height);
-        ev.setRadiusExponent(o.radiusExponent);
         if (Status st = ev.prepare(views); !st) {
             std::cerr << "fit_ao: " << st.toString() << "\n";
             return 1;
@@ -359,10 +358,14 @@ int main(int argc, char** argv) {
             // The tier table's look first: it is the look a fit is judged against (and the search's
             // "before"), and with --start both a tie keeps it.
             std::vector<AoSettings> starts;
-            if (o.start != "paper") starts.push_back(tools::tierLook(technique, tiers::choose(dev.value()->caps(), tier)->profile));
+            const AoSettings tableLook = tools::tierLook(technique, tiers::choose(dev.value()->caps(), tier)->profile);
+            if (o.start != "paper") starts.push_back(tableLook);
             if (o.start != "tier") starts.push_back(tools::paperLook(technique));
-            for (AoSettings& s : starts)
+            // A is chosen, not searched: every start shares it (docs/ao_families.md says how it was chosen).
+            for (AoSettings& s : starts) {
                 if (o.epsilon) s.epsilon = *o.epsilon;
+                s.radiusExponent = o.radiusExponent.value_or(tableLook.radiusExponent.value());
+            }
             const AoSettings& start = starts.front();
             if (o.leaveOneOut) {
                 Result<tools::LeaveOneOut> r = tools::leaveOneOut(ev, views, allCases, starts, o.search, label);
@@ -400,17 +403,18 @@ int main(int argc, char** argv) {
     if (o.leaveOneOut) return writeLeaveOneOut(o, looRuns, allCases, views, machine, seconds()) ? 0 : 1;
     std::filesystem::create_directories(o.outDir);
     std::ofstream csv(o.outDir + "/ao_fit.csv");
-    csv << "tier,technique,intensity,contrast,bias,sum_exponent,crease_range,crease_bias,training_psnr_db,training_psnr_occluded_db,heldout_psnr_db,"
+    csv << "tier,technique,intensity,contrast,bias,sum_exponent,crease_range,crease_bias,radius_exponent,training_psnr_db,training_psnr_occluded_db,"
+           "heldout_psnr_db,"
            "heldout_psnr_occluded_db,heldout_signed_error_occluded,before_heldout_psnr_db,before_heldout_psnr_occluded_db,none_heldout_psnr_db,"
            "none_heldout_psnr_occluded_db\n";
     for (const FitRow& r : rows) {
         const AoSettings& rs = r.settings;
         csv << r.tier << "," << r.technique << "," << rs.intensity.value() << "," << rs.contrast.value() << "," << rs.bias.value() << ","
             << (rs.technique == AoTechnique::Scalable ? rs.sumExponent.value() : -1.0f) << "," << rs.crease.range.value() << ","
-            << rs.crease.bias.value() << "," << fixed(r.trainingScore.psnr, 3) << "," << fixed(r.trainingScore.psnrOccluded, 3) << ","
-            << fixed(r.heldOut.psnr, 3) << "," << fixed(r.heldOut.psnrOccluded, 3) << "," << fixed(r.heldOut.signedOccluded, 4) << ","
-            << fixed(r.before.psnr, 3) << "," << fixed(r.before.psnrOccluded, 3) << "," << fixed(none["held-out"].psnr, 3) << ","
-            << fixed(none["held-out"].psnrOccluded, 3) << "\n";
+            << rs.crease.bias.value() << "," << rs.radiusExponent.value() << "," << fixed(r.trainingScore.psnr, 3) << ","
+            << fixed(r.trainingScore.psnrOccluded, 3) << "," << fixed(r.heldOut.psnr, 3) << "," << fixed(r.heldOut.psnrOccluded, 3) << ","
+            << fixed(r.heldOut.signedOccluded, 4) << "," << fixed(r.before.psnr, 3) << "," << fixed(r.before.psnrOccluded, 3) << ","
+            << fixed(none["held-out"].psnr, 3) << "," << fixed(none["held-out"].psnrOccluded, 3) << "\n";
     }
     if (Status st = tools::replaceMarkdownSection(o.outDir + "/trade.md", "fit_ao",
                                                   markdown(o, rows, none, trainingViews, heldOutViews, machine.empty() ? "no device" : machine));

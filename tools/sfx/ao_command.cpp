@@ -26,10 +26,11 @@ struct AoFlags {
     std::string preset = kDefaultPreset;  // one of the tier's presets (sfx info --rules)
     uint32_t runs = 0;                    // > 0: time the dispatch, median of runs after a warm-up
     float radius = 0.5f;
-    std::optional<float> intensity, contrast, bias, sumExponent;  // unset: the tier's calibrated look
-    std::optional<uint32_t> samples, blurRadius;                  // unset: the tier's
-    std::optional<uint32_t> slices, steps;                        // horizon; unset: the tier's
-    std::optional<float> thickness, falloff;                      // horizon; unset: the tier's
+    float metresPerUnit = 1.0f;
+    std::optional<float> intensity, contrast, bias, sumExponent, radiusExponent;  // unset: the tier's calibrated look
+    std::optional<uint32_t> samples, blurRadius;                                  // unset: the tier's
+    std::optional<uint32_t> slices, steps;                                        // horizon; unset: the tier's
+    std::optional<float> thickness, falloff;                                      // horizon; unset: the tier's
     bool noBlur = false;
     bool showPlan = false;
 };
@@ -37,7 +38,9 @@ struct AoFlags {
 // The flags' ranges (the settings table's rows), named as flags, before any file is read.
 Status checkFlags(const AoFlags& f) {
     SFX_TRY(checkSetting(Setting::AoRadius, f.radius, "--radius"));
+    SFX_TRY(checkSetting(Setting::AoMetresPerUnit, f.metresPerUnit, "--metres-per-unit"));
     if (f.intensity) SFX_TRY(checkSetting(Setting::AoIntensity, *f.intensity, "--intensity"));
+    if (f.radiusExponent) SFX_TRY(checkSetting(Setting::AoRadiusExponent, *f.radiusExponent, "--radius-exponent"));
     if (f.contrast) SFX_TRY(checkSetting(Setting::AoContrast, *f.contrast, "--contrast"));
     if (f.bias) SFX_TRY(checkSetting(Setting::AoBias, *f.bias, "--bias"));
     if (f.sumExponent) SFX_TRY(checkSetting(Setting::AoSumExponent, *f.sumExponent, "--sum-exponent"));
@@ -88,7 +91,9 @@ int runAo(const AoFlags& f) {
     if (!parseAoResolution(f.resolution, &s.resolution))
         return fail(cmd, invalidArgument("--resolution", "'" + f.resolution + "'", "tier, full or half"));
     s.radius = f.radius;
+    s.metresPerUnit = f.metresPerUnit;
     s.intensity = f.intensity;
+    s.radiusExponent = f.radiusExponent;
     s.contrast = f.contrast;
     s.bias = f.bias;
     s.sumExponent = f.sumExponent;
@@ -207,7 +212,9 @@ Command addAoCommand(CLI::App& app) {
                       "view-space normals file (x right, y up, camera looking down -z; signed float xyz in PFM/EXR)");
     const std::string tier = "; not given: the tier's calibrated value";
     c.app->add_option("--radius", flags->radius, settingHelp(Setting::AoRadius))->capture_default_str();
+    c.app->add_option("--metres-per-unit", flags->metresPerUnit, settingHelp(Setting::AoMetresPerUnit))->capture_default_str();
     c.app->add_option("--intensity", flags->intensity, settingHelp(Setting::AoIntensity) + tier);
+    c.app->add_option("--radius-exponent", flags->radiusExponent, settingHelp(Setting::AoRadiusExponent) + tier);
     c.app->add_option("--contrast", flags->contrast, settingHelp(Setting::AoContrast) + tier);
     c.app->add_option("--bias", flags->bias, settingHelp(Setting::AoBias) + tier);
     c.app->add_option("--sum-exponent", flags->sumExponent, settingHelp(Setting::AoSumExponent) + tier);

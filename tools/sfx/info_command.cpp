@@ -63,6 +63,13 @@ const ParameterRow kParameterRows[] = {
     {"scalable AO look (intensity, contrast, bias, sum exponent)", [](const TierProfile& p) { return look(p.aoLook[1], LookOf::Scalable); }},
     {"crease AO look (intensity, contrast, range, bias)", [](const TierProfile& p) { return look(p.aoLook[2], LookOf::Crease); }},
     {"horizon AO look (a power on the visibility)", [](const TierProfile& p) { return look(p.aoLook[3], LookOf::Horizon); }},
+    {"AO looks' radius exponent (alchemy, scalable, crease, horizon)",
+     [](const TierProfile& p) {
+         char buf[96];
+         std::snprintf(buf, sizeof buf, "%g, %g, %g, %g", p.aoLook[0].radiusExponent, p.aoLook[1].radiusExponent, p.aoLook[2].radiusExponent,
+                       p.aoLook[3].radiusExponent);
+         return std::string(buf);
+     }},
     {"motion blur taps (centre included)", [](const TierProfile& p) { return std::to_string(p.mbTaps); }},
     {"motion blur max radius (px at 720 rows)", [](const TierProfile& p) { return std::to_string(int(p.mbMaxRadiusPx)); }},
     {"motion blur tile edge (px at 720 rows)", [](const TierProfile& p) { return std::to_string(int(p.mbTilePx)); }},

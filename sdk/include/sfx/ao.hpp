@@ -40,6 +40,10 @@ bool parseAoResolution(const std::string& text, AoResolution* out);
 // no longer a normal float, GPUs flush it to 0 and a centre tap would compute 0 / 0.
 inline constexpr float kAoMinRadius = 1e-4f;
 
+// The radius in metres at which a look that follows the radius (AoLook::radiusExponent) has its
+// intensity: the radius the looks were fitted around (docs/trade.md).
+inline constexpr double kAoRadiusExponentReferenceMetres = 0.5;
+
 // Ranges: docs/settings.md (sfx/settings_ranges.hpp); out of range is InvalidArgument naming the
 // field. An unset (nullopt) look field takes the tier preset's calibrated AoLook (docs/trade.md);
 // an unset count takes the tier's.
@@ -64,9 +68,16 @@ struct AoHorizonSettings {
 
 struct AoSettings {
     std::optional<AoTechnique> technique;  // unset: the tier preset's (TierProfile::aoTechnique)
-    float radius = 0.5f;                   // world-space sampling radius (Alchemy, Scalable)
-    std::optional<float> intensity;        // sigma, scales occlusion (all techniques)
-    std::optional<float> contrast;         // k: visibility = max(0, 1 - occlusion)^k
+    float radius = 0.5f;                   // world-space sampling radius (every technique)
+    // The scene's scale: metres per world unit (0.01 for a world in centimetres). The
+    // estimators are scale-free, but a look that follows the radius (radiusExponent) was fitted
+    // on scenes of human scale, with the radius in metres.
+    float metresPerUnit = 1.0f;
+    std::optional<float> intensity;  // sigma, scales occlusion (all techniques)
+    // A: the intensity used is intensity * (radius * metresPerUnit / 0.5 m)^-A, so a small radius
+    // darkens as much as the truth does (docs/ao_families.md). 0 = the intensity as given.
+    std::optional<float> radiusExponent;
+    std::optional<float> contrast;  // k: visibility = max(0, 1 - occlusion)^k
     // Alchemy: beta, a distance per unit of depth (the paper's kAoAlchemyDefaultBias).
     // Scalable: subtracted from each tap's cosine (the paper's kAoScalableDefaultBias).
     std::optional<float> bias;

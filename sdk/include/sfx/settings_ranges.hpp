@@ -13,7 +13,9 @@ namespace sfx {
 
 enum class Setting : uint32_t {
     AoRadius,
+    AoMetresPerUnit,
     AoIntensity,
+    AoRadiusExponent,
     AoContrast,
     AoBias,
     AoSumExponent,

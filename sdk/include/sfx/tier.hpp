@@ -43,6 +43,9 @@ struct AoLook {
     float sumExponent = 2.0f;  // Scalable only: the exponent of the normalised tap sum (the course's 2)
     float creaseRange = 2.0f;  // crease only (in units of AoSettings.radius)
     float creaseBias = 0.25f;  // crease only
+    // A: the intensity follows the radius, sigma * (r_m / kAoRadiusExponentReferenceMetres)^-A
+    // with r_m the radius in metres (AoSettings.metresPerUnit). 0: one intensity at every radius.
+    float radiusExponent = 0.0f;
 };
 
 // The parameters effects read: one quality preset of one tier. The values live in the tier

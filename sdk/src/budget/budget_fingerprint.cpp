@@ -33,14 +33,15 @@ struct Fnv1a {
 // field added to TierProfile (or removed from it) from building until it is listed here: one
 // left out would keep cached costs of presets that differ in it. Every member is 4 bytes or a
 // bool, laid out alike on the ABIs the SDK builds for.
-static_assert(sizeof(TierProfile) == 180, "TierProfile changed: fingerprint its fields in addProfile, then update this size");
+static_assert(sizeof(TierProfile) == 196, "TierProfile changed: fingerprint its fields in addProfile, then update this size");
 void addProfile(Fnv1a& f, const TierProfile& p) {
     f.value(p.tier), f.value(p.aoTechnique), f.value(p.aoScalableTaps), f.value(p.aoScalableMirrored), f.value(p.aoScalableMaxRadiusPx);
     f.value(p.aoUsesDepthMip), f.value(p.aoDepthMipLevels), f.value(p.aoAlchemySamples), f.value(p.aoBlurRadiusPx), f.value(p.aoCreaseTaps);
     f.value(p.aoHorizonSlices), f.value(p.aoHorizonSteps), f.value(p.aoHorizonThickness);
     f.value(p.aoHorizonFalloff);
     for (const AoLook& l : p.aoLook)
-        f.value(l.intensity), f.value(l.contrast), f.value(l.bias), f.value(l.sumExponent), f.value(l.creaseRange), f.value(l.creaseBias);
+        f.value(l.intensity), f.value(l.contrast), f.value(l.bias), f.value(l.sumExponent), f.value(l.creaseRange), f.value(l.creaseBias),
+            f.value(l.radiusExponent);
     f.value(p.aoPackedDepthTarget), f.value(p.aoHalfResolution), f.value(p.aoMaxDepthLayers);
     f.value(p.mbTaps), f.value(p.mbMaxRadiusPx), f.value(p.mbTilePx), f.value(p.mbJitterSize), f.value(p.abufferOit);
 }

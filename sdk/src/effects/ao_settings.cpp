@@ -28,6 +28,15 @@ Status checkLookField(Setting id, const std::optional<float>& value, const char*
     return checkSetting(id, lookValue, lookField);
 }
 
+// The intensity a dispatch uses: the set or looked-up sigma, times (r_m / 0.5 m)^-A when the
+// look follows the radius. A = 0 leaves sigma exactly as it is.
+double resolvedIntensity(const AoSettings& s, const AoLook& look) {
+    const double sigma = s.intensity.value_or(look.intensity);
+    const double exponent = s.radiusExponent.value_or(look.radiusExponent);
+    if (exponent == 0.0) return sigma;
+    return sigma * std::pow(double(s.radius) * double(s.metresPerUnit) / kAoRadiusExponentReferenceMetres, -exponent);
+}
+
 }  // namespace
 
 const char* toString(AoTechnique technique) {
@@ -94,6 +103,13 @@ Status validateAoSettings(const AoSettings& s, const TierProfile& profile) {
     SFX_TRY(checkSetting(Setting::AoRadius, s.radius));
     const AoLook& look = profile.aoLook[uint32_t(technique)];
     SFX_TRY(checkLookField(Setting::AoIntensity, s.intensity, "AoDesc.profile.aoLook.intensity", look.intensity));
+    SFX_TRY(checkSetting(Setting::AoMetresPerUnit, s.metresPerUnit));
+    SFX_TRY(checkLookField(Setting::AoRadiusExponent, s.radiusExponent, "AoDesc.profile.aoLook.radiusExponent", look.radiusExponent));
+    // A small radius in metres raises a radius-following intensity without bound: refused, not clamped.
+    if (const double sigma = resolvedIntensity(s, look); !inRange(settingRange(Setting::AoIntensity), sigma))
+        return invalidArgument("AoSettings.radius", num(s.radius) + " at metresPerUnit " + num(s.metresPerUnit) + " (intensity " + num(sigma) + ")",
+                               "a radius in metres for which intensity * (radius * metresPerUnit / 0.5)^-radiusExponent stays within " +
+                                   rangeText(settingRange(Setting::AoIntensity)));
     SFX_TRY(checkLookField(Setting::AoContrast, s.contrast, "AoDesc.profile.aoLook.contrast", look.contrast));
     SFX_TRY(checkLookField(Setting::AoBias, s.bias, "AoDesc.profile.aoLook.bias", look.bias));
     SFX_TRY(checkLookField(Setting::AoSumExponent, s.sumExponent, "AoDesc.profile.aoLook.sumExponent", look.sumExponent));
@@ -155,7 +171,7 @@ Result<AoConfig> resolveAoConfig(const AoSettings& s, const TierProfile& profile
     c.technique = s.technique.value_or(profile.aoTechnique);
     c.radius = s.radius;
     const AoLook& look = profile.aoLook[uint32_t(c.technique)];
-    c.intensity = s.intensity.value_or(look.intensity);
+    c.intensity = resolvedIntensity(s, look);
     c.contrast = s.contrast.value_or(look.contrast);
     c.epsilon = s.epsilon;
     c.normals = s.normals;

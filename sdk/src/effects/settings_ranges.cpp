@@ -20,11 +20,15 @@ constexpr bool kOpen = true, kClosed = false;
 
 // Bounds from the shaders' limits are the shared headers' constants; kAoMinRadius and
 // kMbMinSoftDepthExtent say why their minimums are what they are. The epsilon's minimum is the
-// float nearest 1e-8, and crease.range's the float nearest 0.01, so the documented minimums can be set.
+// float nearest 1e-8, crease.range's the float nearest 0.01 and metresPerUnit's the float nearest 1e-6, so
+// the documented minimums can be set.
 const SettingRange kRows[] = {
     {S::AoRadius, "AoSettings.radius", kAoMinRadius, 1000, kClosed, kClosed, "world units",
      "world-space sampling radius (every technique; Crease's range is in units of it)"},
+    {S::AoMetresPerUnit, "AoSettings.metresPerUnit", double(1e-6f), 1e6, kClosed, kClosed, "m", "metres per world unit (0.01 for centimetres)"},
     {S::AoIntensity, "AoSettings.intensity", 0, 100, kClosed, kClosed, "", "sigma: scales occlusion"},
+    {S::AoRadiusExponent, "AoSettings.radiusExponent", 0, 2, kClosed, kClosed, "",
+     "A: intensity * (radius in metres / 0.5)^-A, the look following the radius"},
     {S::AoContrast, "AoSettings.contrast", 0.1, 10, kClosed, kClosed, "", "k: visibility = max(0, 1 - occlusion)^k"},
     {S::AoBias, "AoSettings.bias", 0, 1, kClosed, kClosed, "", "Alchemy: beta per unit of depth; Scalable: subtracted from each tap's cosine"},
     {S::AoSumExponent, "AoSettings.sumExponent", 0.5, 4, kClosed, kClosed, "", "Scalable: exponent of the normalised tap sum"},

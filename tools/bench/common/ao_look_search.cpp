@@ -45,6 +45,7 @@ AoSettings paperLook(AoTechnique t) {
     // The article's range of 1 world unit at the default radius (0.5), in units of the radius.
     s.crease.range = 2.0f, s.crease.bias = 0.25f;
     if (t == AoTechnique::Scalable) s.sumExponent = kAoScalableCourseSumExponent;
+    s.radiusExponent = 0.0f;  // one intensity at every radius
     return s;
 }
 
@@ -55,12 +56,14 @@ AoSettings tierLook(AoTechnique t, const TierProfile& profile) {
     if (t != AoTechnique::Crease) s.bias = look.bias;
     if (t == AoTechnique::Scalable) s.sumExponent = look.sumExponent;
     s.crease.range = look.creaseRange, s.crease.bias = look.creaseBias;
+    s.radiusExponent = look.radiusExponent;
     return s;
 }
 
 std::string describeLook(const AoSettings& s) {
     std::ostringstream o;
     for (const LookParameter& p : lookParametersOf(s.technique.value())) o << (o.tellp() ? ", " : "") << p.name << " " << p.of(s);
+    if (s.radiusExponent.value_or(0.0f) != 0.0f) o << ", radius exponent " << *s.radiusExponent;
     return o.str();
 }
 

@@ -85,14 +85,7 @@ Result<std::vector<truth::Comparison>> AoEvaluator::run(AoSettings s, const std:
     for (const AoCase& c : cases) {
         const ViewInputs& in = *inputs_[c.view];
         s.radius = float(c.radius);
-        AoSettings caseSettings = s;
-        TierProfile caseProfile = profile_;
-        if (radiusExponent_ != 0.0) {
-            const float scale = float(std::pow(c.radius / kRadiusExponentReference, -radiusExponent_));
-            if (caseSettings.intensity) caseSettings.intensity = *caseSettings.intensity * scale;
-            caseProfile.aoLook[uint32_t(s.technique.value_or(profile_.aoTechnique))].intensity *= scale;
-        }
-        Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev_, {width_, height_, caseProfile, caseSettings, in.depthKind()});
+        Result<std::unique_ptr<AmbientObscurance>> ao = AmbientObscurance::create(dev_, {width_, height_, profile_, s, in.depthKind()});
         if (!ao) return ao.status();
         SFX_TRY(ao.value()->dispatch({DepthSource{in.depth(), in.depthKind(), in.camera()}, in.normals(), out_}));
         SFX_TRY(dev_.flush());

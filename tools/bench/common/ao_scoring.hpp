@@ -47,10 +47,6 @@ AoScore noAoScore(const std::vector<AoCase>& cases);
 // technique the moment it exists.
 std::vector<AoTechnique> allAoTechniques();
 
-// The radius at which a radius-following look (AoEvaluator::setRadiusExponent) keeps its
-// intensity: the trade's radius.
-constexpr double kRadiusExponentReference = 0.5;
-
 // Renders and scores settings on one tier's device (a preset's profile, default the tier's),
 // every case of a set.
 class AoEvaluator {
@@ -61,10 +57,6 @@ public:
     AoEvaluator& operator=(const AoEvaluator&) = delete;
     Status prepare(const std::vector<TradeView>& views);
     void setProfile(const TierProfile& profile) { profile_ = profile; }
-    // A look whose intensity follows the radius, measured here and not in the SDK: each case's
-    // intensity times (r / kRadiusExponentReference)^-exponent, r in the families' world units
-    // (metres). 0, the default, is the SDK's look.
-    void setRadiusExponent(double exponent) { radiusExponent_ = exponent; }
     // Each case with settings.radius = the case's radius; visibilities, when given, receives each
     // case's output.
     Result<std::vector<truth::Comparison>> run(AoSettings settings, const std::vector<AoCase>& cases,
@@ -83,7 +75,6 @@ private:
     TextureHandle out_;
     std::vector<std::unique_ptr<ViewInputs>> inputs_;
     size_t evaluations_ = 0;
-    double radiusExponent_ = 0.0;
 };
 
 }  // namespace sfx::tools
