@@ -56,6 +56,7 @@ sfx::Result<std::unique_ptr<sfx::AmbientObscurance>> createAo(sfx::Device& devic
 
     sfx::AoSettings settings;                                     // ranges: docs/settings.md; bad
     settings.radius = 0.5f;                                       // values are named errors, not clamps
+    settings.metresPerUnit = 1.0f;                                // your world's scale (0.01: centimetres)
     settings.intensity = std::nullopt;                            // unset: the tier's calibrated value
     auto ao = sfx::AmbientObscurance::create(device, {width, height, tier->profile, settings, depthKind});
     if (ao) std::cout << ao.value()->plan().describe();           // passes and bytes it holds
