@@ -12,7 +12,7 @@
 // (ao_leave_one_out.hpp): <out-dir>/ao_loo.csv and its section of <out-dir>/ao_families.md. The
 // search is tools/bench/common/ao_look_search.*. --epsilon holds AoSettings::epsilon (Alchemy's
 // falloff guard) at a value through the fit (docs/ao_families.md measures it as a look
-// parameter); --radius-exponent scores a look whose intensity follows the radius. --diagnose
+// parameter); --radius-exponent holds AoSettings::radiusExponent (A) for every start. --diagnose
 // --solid-sheet scores the held-out thin views with a solid block in place of the sheet on legs,
 // to tell what the sheet costs from the rest. The truth comes from the same cache as
 // bench_trade. A program, not a test.
@@ -404,9 +404,8 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(o.outDir);
     std::ofstream csv(o.outDir + "/ao_fit.csv");
     csv << "tier,technique,intensity,contrast,bias,sum_exponent,crease_range,crease_bias,radius_exponent,training_psnr_db,training_psnr_occluded_db,"
-           "heldout_psnr_db,"
-           "heldout_psnr_occluded_db,heldout_signed_error_occluded,before_heldout_psnr_db,before_heldout_psnr_occluded_db,none_heldout_psnr_db,"
-           "none_heldout_psnr_occluded_db\n";
+           "heldout_psnr_db,heldout_psnr_occluded_db,heldout_signed_error_occluded,before_heldout_psnr_db,before_heldout_psnr_occluded_db,"
+           "none_heldout_psnr_db,none_heldout_psnr_occluded_db\n";
     for (const FitRow& r : rows) {
         const AoSettings& rs = r.settings;
         csv << r.tier << "," << r.technique << "," << rs.intensity.value() << "," << rs.contrast.value() << "," << rs.bias.value() << ","
